@@ -1,0 +1,155 @@
+//! The one shared vocabulary downstream of the interpreter: segments in the (z, r) half plane.
+
+pub use gcode::Span;
+
+/// A point in the half plane: `z` axial (mm), `r` radius (mm) = X / 2.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Pt {
+    /// Axial coordinate, mm.
+    pub z: f64,
+    /// Radius, mm (X / 2).
+    pub r: f64,
+}
+
+impl Pt {
+    /// A point from axial coordinate and radius.
+    pub const fn new(z: f64, r: f64) -> Self {
+        Self { z, r }
+    }
+    /// Euclidean distance to `other`.
+    pub fn dist(self, other: Self) -> f64 {
+        (self.z - other.z).hypot(self.r - other.r)
+    }
+}
+
+/// How the tool moves along a segment.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Motion {
+    /// G00 positioning: must never touch stock.
+    Rapid,
+    /// G01/G02/G03 or a cycle's cutting feed.
+    Feed,
+    /// Thread cutting (G32/G92/G76): the tool is stamped at every lead.
+    Thread,
+}
+
+/// Circular interpolation data. Directions are as seen in the drawing (Z right, X up):
+/// G03 is counter-clockwise, G02 clockwise.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arc {
+    /// Centre of the arc.
+    pub center: Pt,
+    /// Counter-clockwise (G03) when true.
+    pub ccw: bool,
+}
+
+/// How the feed word is to be read when timing a segment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Feed {
+    /// Rapid traverse at the machine's rates.
+    Rapid,
+    /// mm/min (G98).
+    PerMinute(f64),
+    /// mm/rev (G99), with the spindle state in force.
+    PerRev {
+        /// Feed, mm/rev.
+        feed: f64,
+        /// Spindle speed mode in force.
+        spindle: Spindle,
+    },
+}
+
+/// Spindle speed in force for a segment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Spindle {
+    /// G97: constant rev/min.
+    Rpm(f64),
+    /// G96: constant surface speed m/min, clamped at `max_rpm` (G50 S; 0 = no clamp).
+    Css {
+        /// Surface speed, m/min.
+        vc: f64,
+        /// Clamp, rev/min (0 = none).
+        max_rpm: f64,
+    },
+}
+
+/// One tool move: a straight line or an arc from `from` to `to`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Segment {
+    /// Rapid, feed or thread.
+    pub motion: Motion,
+    /// Start point of the programmed (reference) point.
+    pub from: Pt,
+    /// End point.
+    pub to: Pt,
+    /// Present for G02/G03 arcs.
+    pub arc: Option<Arc>,
+    /// Tool number `tt` of the `Tttoo` in force (0: no T word yet).
+    pub tool: u32,
+    /// Thread lead (mm) for [`Motion::Thread`], else 0.
+    pub lead: f64,
+    /// Feed in force, for cycle time.
+    pub feed: Feed,
+    /// The block that produced this segment.
+    pub span: Span,
+}
+
+impl Segment {
+    /// Length of the path, mm.
+    pub fn length(&self) -> f64 {
+        match self.arc {
+            None => self.from.dist(self.to),
+            Some(a) => {
+                let rad = a.center.dist(self.from);
+                rad * self.sweep_angle().abs()
+            }
+        }
+    }
+
+    /// Signed swept angle of an arc in radians (positive counter-clockwise); 0 for lines.
+    /// A full circle (start == end) sweeps ±2π.
+    pub fn sweep_angle(&self) -> f64 {
+        let Some(a) = self.arc else { return 0.0 };
+        let a0 = (self.from.r - a.center.r).atan2(self.from.z - a.center.z);
+        let a1 = (self.to.r - a.center.r).atan2(self.to.z - a.center.z);
+        let tau = std::f64::consts::TAU;
+        let mut d = a1 - a0;
+        if a.ccw {
+            while d <= 1e-12 {
+                d += tau;
+            }
+            while d > tau + 1e-12 {
+                d -= tau;
+            }
+        } else {
+            while d >= -1e-12 {
+                d -= tau;
+            }
+            while d < -tau - 1e-12 {
+                d += tau;
+            }
+        }
+        d
+    }
+
+    /// Points along the segment such that no chord strays more than `tol` mm from the
+    /// true arc (lines give their two end points). Always starts at `from`, ends at `to`.
+    pub fn polyline(&self, tol: f64) -> Vec<Pt> {
+        let Some(a) = self.arc else { return vec![self.from, self.to] };
+        let rad = a.center.dist(self.from);
+        let sweep = self.sweep_angle();
+        let tol = tol.max(1e-6);
+        // sagitta s = rad (1 - cos(θ/2)) <= tol
+        let max_step = if rad <= tol { std::f64::consts::PI } else { 2.0 * (1.0 - tol / rad).acos() };
+        let n = ((sweep.abs() / max_step).ceil() as usize).clamp(1, 100_000);
+        let a0 = (self.from.r - a.center.r).atan2(self.from.z - a.center.z);
+        let mut pts = Vec::with_capacity(n + 1);
+        pts.push(self.from);
+        for i in 1..n {
+            let t = a0 + sweep * i as f64 / n as f64;
+            pts.push(Pt::new(a.center.z + rad * t.cos(), a.center.r + rad * t.sin()));
+        }
+        pts.push(self.to);
+        pts
+    }
+}

@@ -1,0 +1,3 @@
+//! Report -> SVG, PNG and JSON.
+mod report;
+pub use report::*;

@@ -1,0 +1,174 @@
+//! The finished result of one simulation, as plain data. The render crate draws and
+//! serialises it; it knows nothing of how it was computed.
+//!
+//! Coordinates are `[z, r]` in mm (r = radius = X / 2), the simulator's half plane.
+//! The JSON writer converts to program coordinates `[z, x]` (x = diameter).
+
+/// A polygon with holes in `[z, r]`; the outer ring counter-clockwise, holes clockwise.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Shape {
+    /// Outer boundary, not closed (first point not repeated).
+    pub outer: Vec<[f64; 2]>,
+    /// Holes, same convention.
+    pub holes: Vec<Vec<[f64; 2]>>,
+}
+
+/// The kind of a toolpath polyline, for styling.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PathKind {
+    /// G00: drawn dashed.
+    Rapid,
+    /// Cutting feed: drawn solid.
+    Feed,
+    /// Thread cutting.
+    Thread,
+}
+
+/// One programmed move (arcs already chorded), with the line that produced it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PathLine {
+    /// Rapid, feed or thread.
+    pub kind: PathKind,
+    /// Source line (1-based).
+    pub line: u32,
+    /// The reference point's path in `[z, r]`.
+    pub points: Vec<[f64; 2]>,
+}
+
+/// A rapid move that ran into stock.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Crash {
+    /// Source line of the rapid.
+    pub line: u32,
+    /// Source column.
+    pub column: u32,
+    /// Where the tool first met stock, z (mm).
+    pub z: f64,
+    /// Where the tool first met stock, r (mm radius).
+    pub r: f64,
+    /// Stock area the rapid swept through, mm² of the half section.
+    pub area_mm2: f64,
+}
+
+/// Part material removed that should have stayed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Gouge {
+    /// Source line whose sweep made it.
+    pub line: u32,
+    /// Position (deepest point), z.
+    pub z: f64,
+    /// Position (deepest point), r.
+    pub r: f64,
+    /// Area, mm² of the half section.
+    pub area_mm2: f64,
+    /// Largest distance from the intended boundary, mm.
+    pub depth_mm: f64,
+}
+
+/// Summary of final part versus intended shape.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Deviation {
+    /// Total overcut area (gouges), mm².
+    pub overcut_area_mm2: f64,
+    /// Total undercut area (leftovers), mm².
+    pub undercut_area_mm2: f64,
+    /// Deepest overcut, mm.
+    pub max_overcut_mm: f64,
+    /// Thickest leftover, mm.
+    pub max_undercut_mm: f64,
+}
+
+/// An alarm or warning with its place in the program (line 0: not tied to a line).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagnostic {
+    /// 1-based line, 0 when the message concerns no line (e.g. a tool table default).
+    pub line: u32,
+    /// 1-based column.
+    pub column: u32,
+    /// Short stable code, e.g. `E-ARC-RADIUS` or `W-TOOL-DEFAULT`.
+    pub code: String,
+    /// What happened and what to change.
+    pub message: String,
+}
+
+/// The blank, as described and as a polygon.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct StockInfo {
+    /// Human description, e.g. `bar Ø125 × 110, face at Z0`.
+    pub description: String,
+    /// The blank's half section.
+    pub shapes: Vec<Shape>,
+}
+
+/// Everything the reports show.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Report {
+    /// Program file name as given, e.g. `O0002.nc`.
+    pub program: String,
+    /// Program number or title, e.g. `O0002`; may be empty.
+    pub title: String,
+    /// The blank.
+    pub stock: StockInfo,
+    /// The final half section after all removal.
+    pub final_part: Vec<Shape>,
+    /// The intended part (dashed overlay); empty when none is known.
+    pub intended: Vec<Shape>,
+    /// The toolpath, one entry per segment.
+    pub toolpath: Vec<PathLine>,
+    /// Rapids into stock.
+    pub crashes: Vec<Crash>,
+    /// Overcuts against the intended shape.
+    pub gouges: Vec<Gouge>,
+    /// Leftovers, drawn orange (areas only; no line attribution).
+    pub leftovers: Vec<Shape>,
+    /// Gouge areas, drawn red.
+    pub gouge_shapes: Vec<Shape>,
+    /// `None` when there is no intended shape.
+    pub deviation: Option<Deviation>,
+    /// Controller alarms (the run stopped or is wrong).
+    pub alarms: Vec<Diagnostic>,
+    /// Warnings (assumed defaults, spindle stopped, …).
+    pub warnings: Vec<Diagnostic>,
+    /// One line per tool used, e.g. `T01 turning V 35°, r0.4, tip 3`.
+    pub tools: Vec<String>,
+    /// Removed half-section area, mm².
+    pub removed_area_mm2: f64,
+    /// Removed volume (solid of revolution), mm³.
+    pub removed_volume_mm3: f64,
+    /// Number of segments simulated.
+    pub segments: usize,
+    /// Rapid segments among them.
+    pub rapid_segments: usize,
+    /// Estimated cycle time, s.
+    pub cycle_time_s: f64,
+    /// Deviation tolerance, mm.
+    pub tolerance_mm: f64,
+}
+
+/// The one-word outcome shown in the title block and the JSON.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verdict {
+    /// No alarm, crash or gouge.
+    Clean,
+    /// A controller alarm stopped or corrupted the run.
+    Alarm,
+    /// A rapid ran into stock.
+    Crash,
+    /// Part material removed.
+    Gouge,
+}
+
+impl Report {
+    /// Worst finding first: alarm, crash, gouge, else clean.
+    pub fn verdict(&self) -> Verdict {
+        if !self.alarms.is_empty() {
+            Verdict::Alarm
+        } else if !self.crashes.is_empty() {
+            Verdict::Crash
+        } else if !self.gouges.is_empty() {
+            Verdict::Gouge
+        } else {
+            Verdict::Clean
+        }
+    }
+}

@@ -1,0 +1,1 @@
+//! Blank, tool outlines, sweeps, material removal.
