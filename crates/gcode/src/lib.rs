@@ -1,3 +1,12 @@
 //! Text -> program: blocks, words, numbers and their source spans. No geometry, no modal state.
+//!
+//! ```
+//! let p = gcode::parse("O0002;\nG90 X120 Z-110 F200;").unwrap();
+//! assert_eq!(p.main().unwrap().blocks[0].words[1].value, 120.0);
+//! ```
+mod parse;
+mod program;
 mod span;
+pub use parse::{parse, ParseError};
+pub use program::{Block, Note, Program, Subprogram, Word};
 pub use span::Span;

@@ -1,0 +1,97 @@
+//! The parsed program: O programs made of blocks made of words.
+
+use crate::Span;
+
+/// An address letter with its number, e.g. `X100.` or `G75.1`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Word {
+    /// Upper-case address letter.
+    pub letter: char,
+    /// The value as written (calculator type: `X100` is 100.0).
+    pub value: f64,
+    /// Whether a decimal point was written (`X100.` yes, `P1500` no). Increment-unit
+    /// words (G74/G75 P/Q) must not have one.
+    pub has_point: bool,
+    /// Where the word stands (letter through last digit).
+    pub span: Span,
+}
+
+impl Word {
+    /// The value of a G or M code in tenths, so `G75.1` is 751 and `G01` is 10.
+    /// `None` when the number has more than one decimal or is out of range.
+    pub fn code_tenths(&self) -> Option<i32> {
+        let t = self.value * 10.0;
+        let r = t.round();
+        ((t - r).abs() < 1e-6 && r.abs() < 1e7).then_some(r as i32)
+    }
+}
+
+/// One block: the words between two end-of-block characters.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Block {
+    /// Words in the order written, without the N word and comments.
+    pub words: Vec<Word>,
+    /// The sequence number (`N14`), if any.
+    pub seq: Option<u32>,
+    /// Span of the N word, if any.
+    pub seq_span: Option<Span>,
+    /// `/` block delete was written at the start.
+    pub block_delete: bool,
+    /// The whole block's text span (first to last significant character).
+    pub span: Span,
+}
+
+impl Block {
+    /// The first word with this letter.
+    pub fn get(&self, letter: char) -> Option<&Word> {
+        self.words.iter().find(|w| w.letter == letter)
+    }
+    /// Whether a word with this letter is present.
+    pub fn has(&self, letter: char) -> bool {
+        self.get(letter).is_some()
+    }
+}
+
+/// One program (`O1234` up to the next `O` or the end of the tape).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Subprogram {
+    /// The O number, `None` for blocks before any O word.
+    pub number: Option<u32>,
+    /// Span of the O word.
+    pub span: Span,
+    /// The blocks.
+    pub blocks: Vec<Block>,
+}
+
+/// A note the reader made while accepting something unusual.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Note {
+    /// Where.
+    pub span: Span,
+    /// What was assumed.
+    pub message: String,
+}
+
+/// A whole file: the main program first, then any further O programs (subprograms).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Program {
+    /// Main program first.
+    pub programs: Vec<Subprogram>,
+    /// Things accepted with an assumption (shown as warnings in the report).
+    pub notes: Vec<Note>,
+}
+
+impl Program {
+    /// The main program: the first one in the file.
+    pub fn main(&self) -> Option<&Subprogram> {
+        self.programs.first()
+    }
+    /// Find an O program by number.
+    pub fn find(&self, number: u32) -> Option<&Subprogram> {
+        self.programs.iter().find(|p| p.number == Some(number))
+    }
+    /// Number of blocks in all programs.
+    pub fn block_count(&self) -> usize {
+        self.programs.iter().map(|p| p.blocks.len()).sum()
+    }
+}
