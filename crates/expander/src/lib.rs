@@ -1,3 +1,20 @@
-//! Program -> toolpath: the modal interpreter and its segments.
+//! Program -> toolpath: the modal interpreter, (later) the canned cycles and tool nose
+//! radius compensation. Knows nothing of stock or pictures.
+//!
+//! ```
+//! let program = gcode::parse("G99 M3 S500 T0101\nG0 X40 Z2\nG1 Z-20 F0.2\nM30").unwrap();
+//! let tp = expander::expand(&program, &expander::Machine::default(), &Default::default());
+//! assert!(tp.alarms.is_empty());
+//! assert_eq!(tp.segments.last().unwrap().to, expander::Pt::new(-20.0, 20.0));
+//! ```
+mod alarm;
+pub mod arc;
+mod interp;
+mod machine;
+pub mod timing;
 pub mod toolpath;
+
+pub use alarm::Diagnostic;
+pub use interp::{expand, Options, Toolpath};
+pub use machine::{FeedMode, Increment, Machine, PqUnits, ProfileError, RapidPath};
 pub use toolpath::{Arc, Feed, Motion, Pt, Segment, Span, Spindle};

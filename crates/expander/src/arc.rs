@@ -1,0 +1,102 @@
+//! Circular interpolation: the centre from R or from I/K, with the controller's checks.
+
+use crate::Pt;
+
+/// Why an arc cannot be made.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ArcError {
+    /// R is shorter than half the chord by more than the tolerance.
+    RadiusTooSmall {
+        /// Programmed R.
+        r: f64,
+        /// Half the chord, the least R that reaches.
+        half_chord: f64,
+    },
+    /// R form with start = end: the centre is undefined.
+    FullCircleWithR,
+    /// R ≤ 0.
+    NonPositiveRadius,
+    /// I/K: the end point is not on the circle through the start.
+    EndNotOnCircle {
+        /// Radius at the start.
+        r_start: f64,
+        /// Radius at the end.
+        r_end: f64,
+    },
+}
+
+/// An end radius may differ from the start radius by this much (mm) …
+const END_TOL_MM: f64 = 0.005;
+/// … or this fraction of the radius, whichever is larger (spec: alarm when both are exceeded).
+const END_TOL_REL: f64 = 0.001;
+
+/// Centre of an arc of radius `r` (≤ 180°) from `from` to `to`.
+/// Counter-clockwise arcs of at most a half turn have their centre left of the chord.
+pub fn centre_from_radius(from: Pt, to: Pt, r: f64, ccw: bool) -> Result<Pt, ArcError> {
+    if r <= 0.0 {
+        return Err(ArcError::NonPositiveRadius);
+    }
+    let (dz, dr) = (to.z - from.z, to.r - from.r);
+    let chord = dz.hypot(dr);
+    if chord < 1e-9 {
+        return Err(ArcError::FullCircleWithR);
+    }
+    let half = chord / 2.0;
+    let deficit = half - r;
+    if deficit > END_TOL_MM.max(END_TOL_REL * r) {
+        return Err(ArcError::RadiusTooSmall { r, half_chord: half });
+    }
+    // Within tolerance of a half circle: the centre is the midpoint.
+    let d = (r * r - half * half).max(0.0).sqrt();
+    let (nz, nr) = (-dr / chord, dz / chord); // left normal of the chord
+    let side = if ccw { 1.0 } else { -1.0 };
+    Ok(Pt::new((from.z + to.z) / 2.0 + side * d * nz, (from.r + to.r) / 2.0 + side * d * nr))
+}
+
+/// Check an I/K centre: the end must lie on the circle through the start.
+pub fn check_centre(from: Pt, to: Pt, centre: Pt) -> Result<(), ArcError> {
+    let (r_start, r_end) = (centre.dist(from), centre.dist(to));
+    let diff = (r_start - r_end).abs();
+    if diff > END_TOL_MM && diff > END_TOL_REL * r_start {
+        return Err(ArcError::EndNotOnCircle { r_start, r_end });
+    }
+    if r_start < 1e-9 {
+        return Err(ArcError::NonPositiveRadius);
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seed_004_dome_is_centred_on_the_axis_line() {
+        // G03 X30 Z-10 R10 from (Z0, X10): centre (Z-10, X10) i.e. r = 5.
+        let c = centre_from_radius(Pt::new(0.0, 5.0), Pt::new(-10.0, 15.0), 10.0, true).unwrap();
+        assert!((c.z + 10.0).abs() < 1e-9 && (c.r - 5.0).abs() < 1e-9, "{c:?}");
+    }
+
+    #[test]
+    fn seed_003_concave_fillet() {
+        // G02 X160 W-20 R20 from Φ120 at Z-50: centre (Z-50, Φ160) = r 80.
+        let c = centre_from_radius(Pt::new(-50.0, 60.0), Pt::new(-70.0, 80.0), 20.0, false).unwrap();
+        assert!((c.z + 50.0).abs() < 1e-9 && (c.r - 80.0).abs() < 1e-9, "{c:?}");
+    }
+
+    #[test]
+    fn radius_too_small() {
+        let e = centre_from_radius(Pt::new(0.0, 0.0), Pt::new(-10.0, 0.0), 4.0, true).unwrap_err();
+        assert!(matches!(e, ArcError::RadiusTooSmall { .. }));
+        // a rounding-sized deficit is accepted as a half circle
+        assert!(centre_from_radius(Pt::new(0.0, 0.0), Pt::new(-10.0, 0.0), 4.999, true).is_ok());
+    }
+
+    #[test]
+    fn ik_end_tolerance() {
+        let from = Pt::new(0.0, 10.0);
+        let c = Pt::new(0.0, 0.0);
+        assert!(check_centre(from, Pt::new(10.004, 0.0), c).is_ok());
+        assert!(check_centre(from, Pt::new(10.02, 0.0), c).is_err());
+    }
+}

@@ -1,0 +1,655 @@
+//! The modal interpreter: runs the blocks like a controller and emits segments.
+//!
+//! Order within one block (FANUC/GSK practice): modal G codes, F, S, T and M03/M04/M08
+//! first; then the block's one motion (or G04/G28/G50); then M05/M09, M98/M99 and the
+//! program end. A controller alarm stops the run; the segments made so far are kept.
+
+use crate::arc::{self, ArcError};
+use crate::{Arc, Diagnostic, Feed, Machine, Motion, Pt, RapidPath, Segment, Span, Spindle};
+use gcode::{Block, Program, Word};
+
+/// Interpreter settings from the command line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Skip blocks that start with `/`.
+    pub block_delete: bool,
+    /// Stop with an alarm when the program expands to more segments than this.
+    pub max_segments: usize,
+    /// Stop with an alarm after executing this many blocks (endless loops).
+    pub max_blocks: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self { block_delete: false, max_segments: 5_000_000, max_blocks: 20_000_000 }
+    }
+}
+
+/// What the interpreter made of a program.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Toolpath {
+    /// The moves, in order.
+    pub segments: Vec<Segment>,
+    /// Controller alarms (at most one: an alarm stops the run).
+    pub alarms: Vec<Diagnostic>,
+    /// Warnings: the run went on.
+    pub warnings: Vec<Diagnostic>,
+    /// Total dwell time (G04), s.
+    pub dwell_s: f64,
+    /// Tool numbers used, in order of first use.
+    pub tools: Vec<u32>,
+    /// Main program number, e.g. `O0002`.
+    pub title: String,
+    /// Blocks executed.
+    pub blocks: usize,
+}
+
+/// FANUC's subprogram nesting limit.
+const MAX_NESTING: u32 = 4;
+
+/// Expand a parsed program into segments.
+pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath {
+    let mut it = Interp::new(machine, opts);
+    for note in &program.notes {
+        it.warn(note.span, "W-ANNOTATION", note.message.clone(), "");
+    }
+    if let Some(main) = program.main() {
+        it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
+        match it.run(program, 0, 0, 0) {
+            Ok(Exit::End) => {}
+            Ok(Exit::Return(_)) => unreachable!("M99 in the main program is an alarm"),
+            Err(alarm) => it.out.alarms.push(alarm),
+        }
+    }
+    it.out
+}
+
+enum Exit {
+    End,
+    Return(Option<u32>),
+}
+
+enum Flow {
+    Next,
+    End,
+    Call { number: u32, times: u32, span: Span },
+    Return { seq: Option<u32>, span: Span },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum MotionMode {
+    Rapid,
+    Line,
+    Cw,
+    Ccw,
+    Thread,
+}
+
+struct Interp<'m> {
+    machine: &'m Machine,
+    opts: &'m Options,
+    out: Toolpath,
+    /// Current position of the reference point, G54 frame.
+    pos: Pt,
+    /// Origin of the current work coordinate system in the G54 frame.
+    shift: Pt,
+    motion: MotionMode,
+    per_rev: bool,
+    inch: bool,
+    css: bool,
+    s_value: f64,
+    s_clamp: f64,
+    spindle_on: bool,
+    spindle_warned: bool,
+    feed: f64,
+    tool: u32,
+}
+
+/// Which words of a block something has used; the rest are reported, never skipped.
+struct Used(Vec<bool>);
+
+impl Used {
+    fn take<'b>(&mut self, b: &'b Block, letter: char) -> Option<&'b Word> {
+        let i = b.words.iter().position(|w| w.letter == letter)?;
+        self.0[i] = true;
+        Some(&b.words[i])
+    }
+}
+
+fn alarm(span: Span, code: &'static str, message: impl Into<String>, help: impl Into<String>) -> Diagnostic {
+    Diagnostic::new(span, code, message, help)
+}
+
+/// A G code's name and whether latsim runs it yet.
+fn cycle_name(tenths: i32) -> Option<&'static str> {
+    Some(match tenths {
+        410 => "G41 (tool nose radius compensation, left)",
+        420 => "G42 (tool nose radius compensation, right)",
+        700 => "G70 (finishing cycle)",
+        710 => "G71 (stock removal in turning)",
+        720 => "G72 (stock removal in facing)",
+        730 => "G73 (pattern repeating cycle)",
+        740 => "G74 (face grooving / peck drilling cycle)",
+        750 => "G75 (radial grooving cycle)",
+        751 => "G75.1 (radial trapezoid groove cycle)",
+        760 => "G76 (multiple threading cycle)",
+        900 => "G90 (axial turning cycle)",
+        920 => "G92 (threading cycle)",
+        940 => "G94 (face turning cycle)",
+        _ => return None,
+    })
+}
+
+fn g_name(w: &Word) -> String {
+    let t = w.code_tenths().unwrap_or(0);
+    if t % 10 == 0 {
+        format!("G{:02}", t / 10)
+    } else {
+        format!("G{}.{}", t / 10, t % 10)
+    }
+}
+
+impl<'m> Interp<'m> {
+    fn new(machine: &'m Machine, opts: &'m Options) -> Self {
+        Self {
+            machine,
+            opts,
+            out: Toolpath::default(),
+            pos: machine.home,
+            shift: Pt::default(),
+            motion: MotionMode::Rapid,
+            per_rev: machine.feed_mode == crate::FeedMode::G99,
+            inch: false,
+            css: false,
+            s_value: 0.0,
+            s_clamp: 0.0,
+            spindle_on: false,
+            spindle_warned: false,
+            feed: 0.0,
+            tool: 0,
+        }
+    }
+
+    fn warn(&mut self, span: Span, code: &'static str, message: impl Into<String>, help: impl Into<String>) {
+        self.out.warnings.push(Diagnostic::new(span, code, message, help));
+    }
+
+    /// Run one O program from block `start`; `depth` 0 is the main program.
+    fn run(&mut self, program: &Program, index: usize, start: usize, depth: u32) -> Result<Exit, Diagnostic> {
+        let blocks = &program.programs[index].blocks;
+        let mut i = start;
+        'blocks: while i < blocks.len() {
+            let b = &blocks[i];
+            if b.block_delete && self.opts.block_delete {
+                i += 1;
+                continue;
+            }
+            self.out.blocks += 1;
+            if self.out.blocks > self.opts.max_blocks {
+                return Err(alarm(
+                    b.span,
+                    "LS-LOOP",
+                    format!("more than {} blocks executed: the program does not end", self.opts.max_blocks),
+                    "check M98 repeat counts and M99 jumps for an endless loop",
+                ));
+            }
+            match self.block(b)? {
+                Flow::Next => i += 1,
+                Flow::End => return Ok(Exit::End),
+                Flow::Return { seq, span } => {
+                    if depth == 0 {
+                        return Err(alarm(
+                            span,
+                            "LS-M99-MAIN",
+                            "M99 in the main program would repeat it endlessly",
+                            "end the main program with M30 (or M02); M99 belongs at the end of a subprogram",
+                        ));
+                    }
+                    return Ok(Exit::Return(seq));
+                }
+                Flow::Call { number, times, span } => {
+                    let Some(sub) = program.programs.iter().position(|p| p.number == Some(number)) else {
+                        return Err(alarm(
+                            span,
+                            "PS078",
+                            format!("subprogram O{number:04} not found in this file"),
+                            "add the subprogram after M30 in the same file, starting with its O number",
+                        ));
+                    };
+                    if depth + 1 > MAX_NESTING {
+                        return Err(alarm(
+                            span,
+                            "PS077",
+                            format!("subprogram calls nested deeper than {MAX_NESTING} levels (a subprogram calling itself?)"),
+                            "remove the recursive M98 call or flatten the nesting",
+                        ));
+                    }
+                    for _ in 0..times {
+                        match self.run(program, sub, 0, depth + 1)? {
+                            Exit::End => return Ok(Exit::End),
+                            Exit::Return(None) => {}
+                            Exit::Return(Some(seq)) => {
+                                let Some(target) = blocks.iter().position(|x| x.seq == Some(seq)) else {
+                                    return Err(alarm(
+                                        span,
+                                        "PS078",
+                                        format!("M99 P{seq} returns to N{seq}, which the calling program does not have"),
+                                        "give the block to return to that sequence number",
+                                    ));
+                                };
+                                i = target;
+                                continue 'blocks;
+                            }
+                        }
+                    }
+                    i += 1;
+                }
+            }
+        }
+        let span = blocks.last().map(|b| b.span).unwrap_or_default();
+        if depth == 0 {
+            self.warn(span, "LS-NO-END", "the program ends without M30 or M02", "end the main program with M30");
+            Ok(Exit::End)
+        } else {
+            self.warn(span, "LS-NO-M99", "the subprogram ends without M99; returning", "end the subprogram with M99");
+            Ok(Exit::Return(None))
+        }
+    }
+
+    fn unit(&self) -> f64 {
+        if self.inch {
+            25.4
+        } else {
+            1.0
+        }
+    }
+
+    fn block(&mut self, b: &Block) -> Result<Flow, Diagnostic> {
+        let mut used = Used(vec![false; b.words.len()]);
+        // -- G codes: classify, check groups.
+        let mut motion: Option<(MotionMode, &Word)> = None;
+        let mut one_shot: Option<(i32, &Word)> = None;
+        for (i, w) in b.words.iter().enumerate() {
+            if w.letter != 'G' {
+                continue;
+            }
+            used.0[i] = true;
+            let Some(t) = w.code_tenths() else {
+                return Err(alarm(w.span, "PS010", format!("G{} is not a G code", w.value), "G codes are G00 … G99 (and G75.1)"));
+            };
+            if let Some(name) = cycle_name(t) {
+                return Err(alarm(
+                    w.span,
+                    "LS-NOT-IMPLEMENTED",
+                    format!("{name} is not implemented yet in this version of latsim"),
+                    "the cycle is recognised but cannot be simulated yet; remove it or wait for the release that adds it",
+                ));
+            }
+            let mut set_motion = |m: MotionMode| {
+                if let Some((_, first)) = motion {
+                    return Err(alarm(
+                        w.span,
+                        "PS010",
+                        format!("{} and {} are both motion codes (group 01)", g_name(first), g_name(w)),
+                        "keep one motion code per block",
+                    ));
+                }
+                motion = Some((m, w));
+                Ok(())
+            };
+            match t {
+                0 => set_motion(MotionMode::Rapid)?,
+                10 => set_motion(MotionMode::Line)?,
+                20 => set_motion(MotionMode::Cw)?,
+                30 => set_motion(MotionMode::Ccw)?,
+                320 => set_motion(MotionMode::Thread)?,
+                40 | 280 | 500 => {
+                    if let Some((_, first)) = one_shot {
+                        return Err(alarm(
+                            w.span,
+                            "PS010",
+                            format!("{} and {} in one block", g_name(first), g_name(w)),
+                            "put each of them in a block of its own",
+                        ));
+                    }
+                    one_shot = Some((t, w));
+                }
+                200 => self.inch = true,
+                210 => self.inch = false,
+                400 => {} // compensation off: the power-on state, nothing to undo yet
+                540 | 550 | 560 | 570 | 580 | 590 => {
+                    self.shift = self.machine.work_offsets[((t - 540) / 10) as usize];
+                }
+                960 => self.css = true,
+                970 => self.css = false,
+                980 => self.per_rev = false,
+                990 => self.per_rev = true,
+                _ => {
+                    return Err(alarm(
+                        w.span,
+                        "PS010",
+                        format!("{} is not a G code this lathe knows", g_name(w)),
+                        "see spec/language.md for the supported codes",
+                    ))
+                }
+            }
+        }
+        if let (Some((_, m)), Some((_, o))) = (motion, one_shot) {
+            return Err(alarm(o.span, "PS010", format!("{} cannot share a block with {}", g_name(o), g_name(m)), "split the block in two"));
+        }
+        // -- F, S, T.
+        if let Some(f) = used.take(b, 'F') {
+            if f.value < 0.0 {
+                return Err(alarm(f.span, "PS011", "negative feed", "F must be positive"));
+            }
+            self.feed = f.value;
+        }
+        if let Some(s) = used.take(b, 'S') {
+            if s.value < 0.0 {
+                return Err(alarm(s.span, "LS-VALUE", "negative spindle speed", "S must be positive"));
+            }
+            if one_shot.map(|(t, _)| t) == Some(500) {
+                self.s_clamp = s.value;
+            } else {
+                self.s_value = if self.css && self.inch { s.value * 0.3048 } else { s.value };
+            }
+        }
+        if let Some(t) = used.take(b, 'T') {
+            if t.has_point || t.value < 0.0 || t.value > 9999.0 {
+                return Err(alarm(t.span, "LS-T-WORD", "T must be four digits Tttoo", "write e.g. T0101: tool 01 with offset 01"));
+            }
+            let v = t.value as u32;
+            let (tool, offset) = (v / 100, v % 100);
+            if tool == 0 && offset != 0 {
+                self.warn(
+                    t.span,
+                    "LS-T-WORD",
+                    format!("T{v} read as tool 00 with offset {offset:02}"),
+                    format!("write T{offset:02}{offset:02} for tool {offset} with offset {offset}"),
+                );
+            }
+            if tool != 0 {
+                self.tool = tool;
+                if !self.out.tools.contains(&tool) {
+                    self.out.tools.push(tool);
+                }
+            }
+        }
+        // -- M codes, part 1 (before motion).
+        let mut after: Vec<(u32, &Word)> = vec![];
+        for (i, w) in b.words.iter().enumerate() {
+            if w.letter != 'M' {
+                continue;
+            }
+            used.0[i] = true;
+            if w.has_point || w.value < 0.0 || w.value.fract() != 0.0 {
+                return Err(alarm(w.span, "PS010", format!("M{} is not an M code", w.value), "M codes are whole numbers"));
+            }
+            match w.value as u32 {
+                3 | 4 => {
+                    self.spindle_on = true;
+                    self.spindle_warned = false;
+                }
+                8 | 0 | 1 => {}
+                m @ (2 | 30 | 5 | 9 | 98 | 99) => after.push((m, w)),
+                m => {
+                    return Err(alarm(
+                        w.span,
+                        "LS-UNKNOWN-M",
+                        format!("M{m:02} is not an M code this lathe knows"),
+                        "supported: M00 M01 M02 M03 M04 M05 M08 M09 M30 M98 M99",
+                    ))
+                }
+            }
+        }
+        // -- the block's action.
+        match one_shot {
+            Some((40, w)) => self.dwell(b, &mut used, w)?,
+            Some((280, w)) => self.g28(b, &mut used, w)?,
+            Some((500, _)) => self.g50(b, &mut used)?,
+            _ => {
+                if let Some((m, _)) = motion {
+                    self.motion = m;
+                }
+                self.motion_block(b, &mut used)?;
+            }
+        }
+        // -- M codes, part 2 (after motion).
+        let mut flow = Flow::Next;
+        for (m, w) in after {
+            match m {
+                5 => self.spindle_on = false,
+                9 => {}
+                2 | 30 => flow = Flow::End,
+                98 => {
+                    let p = used.take(b, 'P').ok_or_else(|| alarm(w.span, "PS078", "M98 without P", "write M98 P<program number>, e.g. M98 P1234"))?;
+                    if p.has_point || p.value < 1.0 || p.value > 99_999_999.0 {
+                        return Err(alarm(p.span, "PS078", "M98 P needs a program number", "P is [repeat count (4 digits)] + program number (4 digits), e.g. P30010"));
+                    }
+                    let v = p.value as u32;
+                    let (mut times, number) = if v > 9999 { (v / 10000, v % 10000) } else { (1, v) };
+                    if let Some(l) = used.take(b, 'L') {
+                        if l.has_point || l.value < 1.0 || l.value > 9999.0 {
+                            return Err(alarm(l.span, "LS-VALUE", "L must be a repeat count 1 … 9999", "write e.g. L3"));
+                        }
+                        times = l.value as u32;
+                    }
+                    flow = Flow::Call { number, times: times.max(1), span: w.span };
+                }
+                99 => {
+                    let seq = match used.take(b, 'P') {
+                        Some(p) if p.has_point || p.value < 0.0 => {
+                            return Err(alarm(p.span, "LS-VALUE", "M99 P needs a sequence number", "write e.g. M99 P20 to return to N20"));
+                        }
+                        Some(p) => Some(p.value as u32),
+                        None => None,
+                    };
+                    flow = Flow::Return { seq, span: w.span };
+                }
+                _ => {}
+            }
+        }
+        if let Some(i) = used.0.iter().position(|u| !u) {
+            let w = &b.words[i];
+            return Err(alarm(
+                w.span,
+                "LS-WORD-UNUSED",
+                format!("address {} has no meaning in this block", w.letter),
+                "remove the word, or use the code that takes it (e.g. R with G02/G03)",
+            ));
+        }
+        Ok(flow)
+    }
+
+    /// The target of X/U Z/W in the G54 frame; `None` when no axis word is given.
+    fn target(&self, b: &Block, used: &mut Used) -> Result<Option<Pt>, Diagnostic> {
+        let u = self.unit();
+        let mut p = self.pos;
+        let mut any = false;
+        for (abs, inc, radius_div) in [('X', 'U', 2.0), ('Z', 'W', 1.0)] {
+            let a = used.take(b, abs);
+            let i = used.take(b, inc);
+            if let (Some(a), Some(i)) = (a, i) {
+                return Err(alarm(i.span, "LS-AXIS-TWICE", format!("{abs} and {inc} both given (first at {})", a.span), format!("give the end point either absolute ({abs}) or incremental ({inc})")));
+            }
+            let axis = if abs == 'X' { &mut p.r } else { &mut p.z };
+            let shift = if abs == 'X' { self.shift.r } else { self.shift.z };
+            if let Some(a) = a {
+                *axis = a.value * u / radius_div + shift;
+                any = true;
+            }
+            if let Some(i) = i {
+                *axis += i.value * u / radius_div;
+                any = true;
+            }
+        }
+        Ok(any.then_some(p))
+    }
+
+    fn feed_for(&mut self, span: Span, motion: Motion) -> Result<Feed, Diagnostic> {
+        if motion == Motion::Rapid {
+            return Ok(Feed::Rapid);
+        }
+        if !self.spindle_on && !self.spindle_warned {
+            self.spindle_warned = true;
+            self.warn(span, "LS-SPINDLE-STOPPED", "cutting with the spindle stopped (no M03/M04 in force)", "start the spindle with M03 or M04 before cutting; a real tool would break");
+        }
+        if self.feed <= 0.0 {
+            return Err(alarm(span, "PS011", "cutting move with no feed rate (F is 0 or was never given)", "give F in this block or before it"));
+        }
+        let f = self.feed * self.unit();
+        if motion == Motion::Thread {
+            return Ok(Feed::PerRev { feed: f, spindle: self.spindle() });
+        }
+        Ok(if self.per_rev { Feed::PerRev { feed: f, spindle: self.spindle() } } else { Feed::PerMinute(f) })
+    }
+
+    fn spindle(&self) -> Spindle {
+        if self.css {
+            Spindle::Css { vc: self.s_value, max_rpm: if self.s_clamp > 0.0 { self.s_clamp } else { self.machine.max_rpm } }
+        } else {
+            Spindle::Rpm(self.s_value)
+        }
+    }
+
+    fn push(&mut self, b: &Block, motion: Motion, to: Pt, arc: Option<Arc>, lead: f64) -> Result<(), Diagnostic> {
+        if self.out.segments.len() >= self.opts.max_segments {
+            return Err(alarm(b.span, "LS-TOO-LONG", format!("the program expands to more than {} moves", self.opts.max_segments), "split the program, or check for a repeat count that is far too large"));
+        }
+        let feed = self.feed_for(b.span, motion)?;
+        self.out.segments.push(Segment { motion, from: self.pos, to, arc, tool: self.tool, lead, feed, span: b.span });
+        self.pos = to;
+        Ok(())
+    }
+
+    fn rapid(&mut self, b: &Block, to: Pt) -> Result<(), Diagnostic> {
+        if to.dist(self.pos) < 1e-12 {
+            return Ok(());
+        }
+        if self.machine.rapid_path == RapidPath::PerAxis {
+            // Both axes start together at their own rates; the shorter one arrives first.
+            let (dz, dr) = (to.z - self.pos.z, to.r - self.pos.r);
+            let (tz, tr) = (dz.abs() / self.machine.rapid_z, dr.abs() / self.machine.rapid_x);
+            let t = tz.min(tr);
+            if t > 0.0 && (tz - tr).abs() > 1e-12 {
+                let knee = Pt::new(self.pos.z + dz.signum() * self.machine.rapid_z * t, self.pos.r + dr.signum() * self.machine.rapid_x * t);
+                self.push(b, Motion::Rapid, knee, None, 0.0)?;
+            }
+        }
+        self.push(b, Motion::Rapid, to, None, 0.0)
+    }
+
+    fn motion_block(&mut self, b: &Block, used: &mut Used) -> Result<(), Diagnostic> {
+        let is_arc = matches!(self.motion, MotionMode::Cw | MotionMode::Ccw);
+        let r_word = if is_arc { used.take(b, 'R') } else { None };
+        let i_word = if is_arc { used.take(b, 'I') } else { None };
+        let k_word = if is_arc { used.take(b, 'K') } else { None };
+        let Some(to) = self.target(b, used)? else {
+            if let Some(w) = r_word.or(i_word).or(k_word) {
+                return Err(alarm(w.span, "LS-ARC", "arc data without an end point", "give the arc's end point with X/U and Z/W"));
+            }
+            return Ok(());
+        };
+        match self.motion {
+            MotionMode::Rapid => self.rapid(b, to),
+            MotionMode::Line | MotionMode::Thread if to.dist(self.pos) < 1e-12 => Ok(()),
+            MotionMode::Line => self.push(b, Motion::Feed, to, None, 0.0),
+            MotionMode::Thread => {
+                let lead = self.feed * self.unit();
+                self.push(b, Motion::Thread, to, None, lead)
+            }
+            MotionMode::Cw | MotionMode::Ccw => {
+                let ccw = self.motion == MotionMode::Ccw;
+                let u = self.unit();
+                let from = self.pos;
+                let centre = match (r_word, i_word, k_word) {
+                    (Some(r), None, None) => arc::centre_from_radius(from, to, r.value * u, ccw).map_err(|e| arc_alarm(r.span, e))?,
+                    (None, None, None) => {
+                        return Err(alarm(b.span, "LS-ARC", "G02/G03 without R or I/K", "give the radius R, or the centre offset I (radius) and K"));
+                    }
+                    (Some(r), _, _) => {
+                        return Err(alarm(r.span, "LS-ARC", "arc given both R and I/K", "give either R or I/K, not both"));
+                    }
+                    (None, i, k) => {
+                        let c = Pt::new(from.z + k.map_or(0.0, |k| k.value * u), from.r + i.map_or(0.0, |i| i.value * u));
+                        let span = i.or(k).map(|w| w.span).unwrap_or(b.span);
+                        arc::check_centre(from, to, c).map_err(|e| arc_alarm(span, e))?;
+                        c
+                    }
+                };
+                self.push(b, Motion::Feed, to, Some(Arc { center: centre, ccw }), 0.0)
+            }
+        }
+    }
+
+    fn dwell(&mut self, b: &Block, used: &mut Used, g: &Word) -> Result<(), Diagnostic> {
+        let p = used.take(b, 'P');
+        let x = used.take(b, 'X').or_else(|| used.take(b, 'U'));
+        let seconds = match (p, x) {
+            (Some(p), None) => {
+                if p.has_point {
+                    return Err(alarm(p.span, "LS-VALUE", "G04 P is in milliseconds and takes no decimal point", "write G04 P1500 for 1.5 s, or G04 X1.5"));
+                }
+                p.value / 1000.0
+            }
+            (None, Some(x)) => x.value,
+            (None, None) => return Err(alarm(g.span, "LS-VALUE", "G04 without a time", "write G04 P<ms> or G04 X<seconds>")),
+            (Some(p), Some(_)) => return Err(alarm(p.span, "LS-VALUE", "G04 with both P and X/U", "give the dwell once")),
+        };
+        if seconds < 0.0 {
+            return Err(alarm(g.span, "LS-VALUE", "negative dwell", "give a positive time"));
+        }
+        self.out.dwell_s += seconds;
+        Ok(())
+    }
+
+    /// G28: rapid to the intermediate point, then the named axes to the reference point.
+    fn g28(&mut self, b: &Block, used: &mut Used, g: &Word) -> Result<(), Diagnostic> {
+        let x_given = b.has('X') || b.has('U');
+        let z_given = b.has('Z') || b.has('W');
+        let Some(mid) = self.target(b, used)? else {
+            return Err(alarm(g.span, "LS-VALUE", "G28 without an axis", "write e.g. G28 U0 W0 to return both axes through the current position"));
+        };
+        self.rapid(b, mid)?;
+        let home = self.machine.home;
+        let to = Pt::new(if z_given { home.z } else { mid.z }, if x_given { home.r } else { mid.r });
+        self.rapid(b, to)
+    }
+
+    /// G50: the current position gets the given work coordinates; G50 S is handled with S.
+    fn g50(&mut self, b: &Block, used: &mut Used) -> Result<(), Diagnostic> {
+        let u = self.unit();
+        if let Some(x) = used.take(b, 'X') {
+            self.shift.r = self.pos.r - x.value * u / 2.0;
+        }
+        if let Some(z) = used.take(b, 'Z') {
+            self.shift.z = self.pos.z - z.value * u;
+        }
+        if let Some(du) = used.take(b, 'U') {
+            self.shift.r -= du.value * u / 2.0;
+        }
+        if let Some(dw) = used.take(b, 'W') {
+            self.shift.z -= dw.value * u;
+        }
+        Ok(())
+    }
+}
+
+fn arc_alarm(span: Span, e: ArcError) -> Diagnostic {
+    match e {
+        ArcError::RadiusTooSmall { r, half_chord } => alarm(
+            span,
+            "PS020",
+            format!("arc radius R{r} is too small to reach the end point (at least {half_chord:.3} needed)"),
+            "check the end point and the radius: R must be at least half the distance between start and end",
+        ),
+        ArcError::FullCircleWithR => alarm(span, "PS020", "arc with R whose end point equals its start", "a full circle needs I/K, not R"),
+        ArcError::NonPositiveRadius => alarm(span, "PS020", "arc radius must be positive", "arcs over 180° are not possible with R on this lathe; use I/K or split the arc"),
+        ArcError::EndNotOnCircle { r_start, r_end } => alarm(
+            span,
+            "PS020",
+            format!("arc end point is not on the circle: radius {r_start:.4} at the start, {r_end:.4} at the end"),
+            "correct I/K (I is a radius value) or the end point",
+        ),
+    }
+}

@@ -1,0 +1,240 @@
+//! The machine profile (`--machine F`): what differs between one lathe and the next.
+//!
+//! ```toml
+//! increment = "is-b"        # least input increment: "is-b" 0.001 mm | "is-c" 0.0001 mm
+//! pq_units = "increment"    # G74/G75/G75.1/G76 P and Q: "increment" | "mm" (GSK NO182.7)
+//! feed_mode = "g98"         # power-on feed mode: "g98" mm/min | "g99" mm/rev
+//! rapid_x = 6000.0          # rapid traverse, mm/min of tool travel along X (radial)
+//! rapid_z = 8000.0          # rapid traverse, mm/min along Z
+//! rapid_path = "straight"   # "straight" | "per-axis" (each axis at its own rate: a dog-leg)
+//! home = [150.0, 250.0]     # reference point [z, x] in G54 coordinates (x = diameter)
+//! max_rpm = 4000.0          # spindle limit used for G96 when no G50 S clamp is given
+//! [work_offsets]            # G55..G59 origins relative to G54, [z, x]
+//! g55 = [-50.0, 0.0]
+//! ```
+
+use crate::Pt;
+
+/// Least input increment system.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+pub enum Increment {
+    /// 0.001 mm (the default).
+    #[serde(rename = "is-b")]
+    IsB,
+    /// 0.0001 mm (seed 000's G75.1 example).
+    #[serde(rename = "is-c")]
+    IsC,
+}
+
+impl Increment {
+    /// One increment in mm.
+    pub fn mm(self) -> f64 {
+        match self {
+            Self::IsB => 0.001,
+            Self::IsC => 0.0001,
+        }
+    }
+    /// Parse the CLI spelling `is-b` / `is-c` (case-insensitive).
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s.to_ascii_lowercase().as_str() {
+            "is-b" | "isb" | "b" => Some(Self::IsB),
+            "is-c" | "isc" | "c" => Some(Self::IsC),
+            _ => None,
+        }
+    }
+}
+
+/// Feed mode at power-on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum FeedMode {
+    /// mm/min.
+    G98,
+    /// mm/rev.
+    G99,
+}
+
+/// How G00 moves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum RapidPath {
+    /// Interpolated straight line (the default).
+    Straight,
+    /// Each axis at its own rate: diagonal first, then the longer axis alone.
+    PerAxis,
+}
+
+/// Units of the P/Q depth and step words of G74/G75/G75.1/G76.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum PqUnits {
+    /// Least input increments, no decimal point (FANUC, GSK default).
+    Increment,
+    /// Millimetres.
+    Mm,
+}
+
+/// A lathe's settings. `Machine::default()` is a GSK980TDi-like lathe.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Machine {
+    /// IS-B or IS-C.
+    pub increment: Increment,
+    /// P/Q units of the grooving and threading cycles.
+    pub pq_units: PqUnits,
+    /// Power-on feed mode.
+    pub feed_mode: FeedMode,
+    /// Rapid rate along X (radial travel), mm/min.
+    pub rapid_x: f64,
+    /// Rapid rate along Z, mm/min.
+    pub rapid_z: f64,
+    /// Rapid path shape.
+    pub rapid_path: RapidPath,
+    /// Reference point in G54 coordinates, (z, r).
+    pub home: Pt,
+    /// Spindle limit, rev/min (G96 without G50 S).
+    pub max_rpm: f64,
+    /// Origins of G54..G59 relative to G54, (z, r).
+    pub work_offsets: [Pt; 6],
+}
+
+impl Default for Machine {
+    fn default() -> Self {
+        Self {
+            increment: Increment::IsB,
+            pq_units: PqUnits::Increment,
+            feed_mode: FeedMode::G98,
+            rapid_x: 6000.0,
+            rapid_z: 8000.0,
+            rapid_path: RapidPath::Straight,
+            home: Pt::new(150.0, 125.0),
+            max_rpm: 4000.0,
+            work_offsets: [Pt::default(); 6],
+        }
+    }
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct File {
+    increment: Option<Increment>,
+    pq_units: Option<PqUnits>,
+    feed_mode: Option<FeedMode>,
+    rapid_x: Option<f64>,
+    rapid_z: Option<f64>,
+    rapid_path: Option<RapidPath>,
+    home: Option<[f64; 2]>,
+    max_rpm: Option<f64>,
+    work_offsets: Option<Offsets>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Offsets {
+    g54: Option<[f64; 2]>,
+    g55: Option<[f64; 2]>,
+    g56: Option<[f64; 2]>,
+    g57: Option<[f64; 2]>,
+    g58: Option<[f64; 2]>,
+    g59: Option<[f64; 2]>,
+}
+
+/// A machine profile that could not be read.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{message}")]
+pub struct ProfileError {
+    /// 1-based line (0 if unknown).
+    pub line: u32,
+    /// 1-based column.
+    pub column: u32,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl Machine {
+    /// Read a profile; absent keys keep the defaults.
+    pub fn from_toml(text: &str) -> Result<Self, ProfileError> {
+        let file: File = toml::from_str(text).map_err(|e| {
+            let (line, column) = e.span().map(|s| line_col(text, s.start)).unwrap_or((0, 0));
+            ProfileError { line, column, message: e.message().to_string() }
+        })?;
+        let mut m = Self::default();
+        let bad = |message: String| ProfileError { line: 0, column: 0, message };
+        if let Some(v) = file.increment {
+            m.increment = v;
+        }
+        if let Some(v) = file.pq_units {
+            m.pq_units = v;
+        }
+        if let Some(v) = file.feed_mode {
+            m.feed_mode = v;
+        }
+        if let Some(v) = file.rapid_path {
+            m.rapid_path = v;
+        }
+        for (name, v, slot) in [("rapid_x", file.rapid_x, &mut m.rapid_x), ("rapid_z", file.rapid_z, &mut m.rapid_z), ("max_rpm", file.max_rpm, &mut m.max_rpm)] {
+            if let Some(v) = v {
+                if !(v.is_finite() && v > 0.0) {
+                    return Err(bad(format!("{name} must be a positive number, got {v}")));
+                }
+                *slot = v;
+            }
+        }
+        let pt = |name: &str, v: [f64; 2]| {
+            if v.iter().all(|c| c.is_finite()) {
+                Ok(Pt::new(v[0], v[1] / 2.0))
+            } else {
+                Err(bad(format!("{name} must be finite [z, x]")))
+            }
+        };
+        if let Some(h) = file.home {
+            m.home = pt("home", h)?;
+        }
+        if let Some(o) = file.work_offsets {
+            for (i, (name, v)) in [("g54", o.g54), ("g55", o.g55), ("g56", o.g56), ("g57", o.g57), ("g58", o.g58), ("g59", o.g59)].into_iter().enumerate() {
+                if let Some(v) = v {
+                    m.work_offsets[i] = pt(name, v)?;
+                }
+            }
+        }
+        Ok(m)
+    }
+
+    /// Millimetres per P/Q unit of the grooving/threading cycles.
+    pub fn pq_mm(&self) -> f64 {
+        match self.pq_units {
+            PqUnits::Increment => self.increment.mm(),
+            PqUnits::Mm => 1.0,
+        }
+    }
+}
+
+/// 1-based line and column (in characters) of a byte offset.
+pub(crate) fn line_col(text: &str, offset: usize) -> (u32, u32) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() as u32 + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) as u32 + 1;
+    (line, col)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_a_profile() {
+        let m = Machine::from_toml("increment = \"is-c\"\nrapid_path = \"per-axis\"\nhome = [100.0, 200.0]\n[work_offsets]\ng55 = [-10.0, 0.0]").unwrap();
+        assert_eq!(m.increment, Increment::IsC);
+        assert_eq!(m.rapid_path, RapidPath::PerAxis);
+        assert_eq!(m.home, Pt::new(100.0, 100.0));
+        assert_eq!(m.work_offsets[1], Pt::new(-10.0, 0.0));
+        assert!((m.pq_mm() - 0.0001).abs() < 1e-12);
+    }
+
+    #[test]
+    fn unknown_key_is_an_error_with_position() {
+        let e = Machine::from_toml("increment = \"is-b\"\nrapid_y = 5").unwrap_err();
+        assert_eq!(e.line, 2);
+        let e = Machine::from_toml("rapid_x = -5.0").unwrap_err();
+        assert!(e.message.contains("positive"));
+    }
+}

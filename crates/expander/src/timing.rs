@@ -1,0 +1,86 @@
+//! Cycle time: rapids at the machine's rates, feeds per minute or per revolution
+//! (G96 follows the diameter, clamped), plus dwells.
+
+use crate::{Feed, Machine, Segment, Spindle};
+
+/// Time of one segment in seconds. Per-revolution feeds with the spindle at 0 rev/min
+/// cannot be timed and count 0 (the interpreter has already warned about them).
+pub fn segment_time(seg: &Segment, machine: &Machine) -> f64 {
+    let len = seg.length();
+    if len == 0.0 {
+        return 0.0;
+    }
+    match seg.feed {
+        Feed::Rapid => {
+            // Each axis at its own rate; the slower axis decides.
+            let tz = (seg.to.z - seg.from.z).abs() / machine.rapid_z;
+            let tr = (seg.to.r - seg.from.r).abs() / machine.rapid_x;
+            tz.max(tr) * 60.0
+        }
+        Feed::PerMinute(f) => len / f * 60.0,
+        Feed::PerRev { feed, spindle } => match spindle {
+            Spindle::Rpm(n) if n > 0.0 => len / (feed * n.min(machine.max_rpm)) * 60.0,
+            Spindle::Rpm(_) => 0.0,
+            Spindle::Css { vc, max_rpm } => {
+                // Integrate dt = ds / (f · n(r)) along the path; 32 steps bound the error
+                // of the 1/r variation well below a second for any real move.
+                let pts = seg.polyline(0.01);
+                let mut t = 0.0;
+                for w in pts.windows(2) {
+                    let steps = 32;
+                    for k in 0..steps {
+                        let u = (k as f64 + 0.5) / steps as f64;
+                        let r = (w[0].r + (w[1].r - w[0].r) * u).abs();
+                        let n = rpm_css(vc, r, max_rpm);
+                        if n > 0.0 {
+                            t += w[0].dist(w[1]) / steps as f64 / (feed * n) * 60.0;
+                        }
+                    }
+                }
+                t
+            }
+        },
+    }
+}
+
+/// Spindle speed under G96 at radius `r` mm: n = 1000·vc / (π·D), clamped at `max_rpm`.
+pub fn rpm_css(vc: f64, r: f64, max_rpm: f64) -> f64 {
+    let d = 2.0 * r;
+    if d <= 1e-9 {
+        return max_rpm;
+    }
+    (1000.0 * vc / (std::f64::consts::PI * d)).min(max_rpm)
+}
+
+/// Total cycle time of a toolpath, s.
+pub fn cycle_time(segments: &[Segment], dwell_s: f64, machine: &Machine) -> f64 {
+    segments.iter().map(|s| segment_time(s, machine)).sum::<f64>() + dwell_s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Motion, Pt, Span};
+
+    fn seg(from: Pt, to: Pt, feed: Feed) -> Segment {
+        Segment { motion: Motion::Feed, from, to, arc: None, tool: 1, lead: 0.0, feed, span: Span::default() }
+    }
+
+    #[test]
+    fn per_minute_and_per_rev() {
+        let m = Machine::default();
+        let s = seg(Pt::new(0.0, 10.0), Pt::new(-100.0, 10.0), Feed::PerMinute(200.0));
+        assert!((segment_time(&s, &m) - 30.0).abs() < 1e-9);
+        let s = seg(Pt::new(0.0, 10.0), Pt::new(-30.0, 10.0), Feed::PerRev { feed: 0.1, spindle: Spindle::Rpm(600.0) });
+        assert!((segment_time(&s, &m) - 30.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn css_at_constant_diameter() {
+        let m = Machine::default();
+        // Φ100, vc 150 m/min: n = 477.46 rev/min; 50 mm at 0.2 mm/rev = 250 rev -> 31.4 s
+        let s = seg(Pt::new(0.0, 50.0), Pt::new(-50.0, 50.0), Feed::PerRev { feed: 0.2, spindle: Spindle::Css { vc: 150.0, max_rpm: 3000.0 } });
+        let n = 1000.0 * 150.0 / (std::f64::consts::PI * 100.0);
+        assert!((segment_time(&s, &m) - 250.0 / n * 60.0).abs() < 1e-6);
+    }
+}
