@@ -1,3 +1,64 @@
 //! Report -> SVG, PNG and JSON.
+//!
+//! The picture is a 1600 × 1000 px SVG (user units = px), rasterised 1:1 into a
+//! 1600 × 1000 PNG. Coordinates inside the SVG are mm under a view transform, so path
+//! data keeps sub-micron detail; the toolpath is thinned to what the picture can show.
+//!
+//! The JSON is a stable contract in program coordinates (`z`, `x` = diameter):
+//! `program`, `title`, `verdict`, `stock`, `final`, `removed_area_mm2`,
+//! `removed_volume_mm3`, `segments`, `cycle_time_s`, `tolerance_mm`, `tools`, `alarms`,
+//! `warnings`, `crashes`, `gouges`, `deviation`. Numbers are rounded to 6 decimals;
+//! non-finite numbers are written as `null`.
+mod block;
+mod detail;
+mod json;
+mod layout;
+mod marks;
+mod path;
+mod png;
 mod report;
+mod scale;
+mod svg;
+mod text;
+
 pub use report::*;
+
+/// Width of the SVG and PNG, px.
+pub const WIDTH_PX: u32 = layout::W as u32;
+/// Height of the SVG and PNG, px.
+pub const HEIGHT_PX: u32 = layout::H as u32;
+
+/// Why a PNG could not be produced.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    /// The generated SVG did not parse (a bug in this crate).
+    #[error("internal SVG error: {0}")]
+    Svg(String),
+    /// The pixmap could not be allocated.
+    #[error("cannot allocate a {0} × {1} pixmap")]
+    Size(u32, u32),
+    /// PNG encoding failed.
+    #[error("PNG encoding failed: {0}")]
+    Encode(String),
+}
+
+/// The full report picture as an SVG document (1600 × 1000 px).
+pub fn svg(report: &Report) -> String {
+    svg::svg(report)
+}
+
+/// The same picture rasterised (anti-aliased, embedded DejaVu Sans), as PNG bytes of
+/// 1600 × 1000 px. Deterministic: the same report gives the same bytes.
+pub fn png(report: &Report) -> Result<Vec<u8>, RenderError> {
+    png::rasterise(&svg::svg(report))
+}
+
+/// The machine-readable report as pretty JSON (see the crate docs for the fields).
+pub fn json(report: &Report) -> String {
+    json::json(report)
+}
+
+/// The JSON word of a verdict: `clean`, `alarm`, `crash` or `gouge`.
+pub fn verdict_word(v: Verdict) -> &'static str {
+    json::verdict_word(v)
+}

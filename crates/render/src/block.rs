@@ -1,0 +1,190 @@
+//! The title block in the right column: verdict, program, stock, tools, removal, cycle
+//! time, tolerance, deviation, then the alarms and warnings as `line N: message`.
+
+use crate::layout::{colour, FS_SMALL, FS_TEXT, FS_VERDICT, RIGHT_BOTTOM, RIGHT_W, RIGHT_X};
+use crate::report::{Diagnostic, Report, Verdict};
+use crate::svg::Doc;
+use crate::text::{chars_fitting, duration, mm, plural, quantity, wrap};
+
+/// Width of the label column.
+const LABEL_W: f64 = 118.0;
+/// Row pitch of label/value rows.
+const ROW: f64 = 22.0;
+/// Row pitch of diagnostic lines.
+const DIAG_ROW: f64 = 18.0;
+/// Tools listed before "+N more".
+const MAX_TOOLS: usize = 4;
+
+/// The verdict line and its colour.
+fn verdict_text(report: &Report) -> (String, &'static str) {
+    let mut parts = Vec::new();
+    if !report.alarms.is_empty() {
+        parts.push(plural(report.alarms.len(), "alarm", "alarms"));
+    }
+    if !report.crashes.is_empty() {
+        parts.push(plural(report.crashes.len(), "crash", "crashes"));
+    }
+    if !report.gouges.is_empty() {
+        let deepest = report
+            .gouges
+            .iter()
+            .map(|g| g.depth_mm)
+            .filter(|d| d.is_finite())
+            .fold(0.0, f64::max);
+        parts.push(format!(
+            "{} (max {})",
+            plural(report.gouges.len(), "gouge", "gouges"),
+            mm(deepest)
+        ));
+    }
+    match report.verdict() {
+        Verdict::Clean => ("CLEAN — no gouge, no crash".to_string(), colour::OK),
+        v => {
+            let word = match v {
+                Verdict::Alarm => "ALARM",
+                Verdict::Crash => "CRASH",
+                _ => "GOUGE",
+            };
+            (format!("{word} — {}", parts.join(", ")), colour::BAD)
+        }
+    }
+}
+
+/// One diagnostic as text.
+fn diag_text(d: &Diagnostic) -> String {
+    let msg = d.message.trim();
+    let msg = if msg.is_empty() { d.code.as_str() } else { msg };
+    if d.line == 0 {
+        msg.to_string()
+    } else {
+        format!("line {}: {msg}", d.line)
+    }
+}
+
+struct Block<'a> {
+    doc: &'a mut Doc,
+    y: f64,
+}
+
+impl Block<'_> {
+    /// A label/value row; the value wraps to at most `max_lines` lines.
+    fn row(&mut self, label: &str, value: &str, size: f64, fill: &str, max_lines: usize) {
+        let vx = RIGHT_X + LABEL_W;
+        let chars = chars_fitting(RIGHT_W - LABEL_W, size);
+        self.doc.text(RIGHT_X, self.y, FS_TEXT, "start", colour::MUTED, label);
+        let lines = wrap(value, chars, max_lines);
+        if lines.is_empty() {
+            self.doc.text(vx, self.y, size, "start", colour::MUTED, "—");
+            self.y += ROW;
+        }
+        for l in lines {
+            self.doc.text(vx, self.y, size, "start", fill, &l);
+            self.y += ROW;
+        }
+    }
+
+    /// A list of diagnostics with a header, within `rows` diagnostic rows (header
+    /// included); shows "+N more" when they don't all fit.
+    fn diags(&mut self, title: &str, list: &[Diagnostic], fill: &str, rows: usize) {
+        if list.is_empty() || rows == 0 {
+            return;
+        }
+        self.y += 6.0;
+        self.doc.text(RIGHT_X, self.y, FS_TEXT, "start", fill, &format!("{title} ({})", list.len()));
+        self.y += DIAG_ROW + 2.0;
+        let mut left = rows.saturating_sub(1);
+        let chars = chars_fitting(RIGHT_W - 14.0, FS_SMALL);
+        for (i, d) in list.iter().enumerate() {
+            let remaining_after = list.len() - i - 1;
+            let lines = wrap(&diag_text(d), chars, 2);
+            // Keep a row for "+N more" unless this is the last item.
+            let need = lines.len() + usize::from(remaining_after > 0);
+            if need > left {
+                if left == 0 {
+                    break;
+                }
+                self.doc.text(RIGHT_X + 14.0, self.y, FS_SMALL, "start", colour::MUTED, &format!("+{} more", list.len() - i));
+                self.y += DIAG_ROW;
+                return;
+            }
+            for (j, l) in lines.iter().enumerate() {
+                let x = if j == 0 { RIGHT_X + 14.0 } else { RIGHT_X + 28.0 };
+                self.doc.text(x, self.y, FS_SMALL, "start", colour::INK, l);
+                self.y += DIAG_ROW;
+                left -= 1;
+            }
+        }
+    }
+}
+
+/// Draw the title block starting below `top`.
+pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
+    doc.raw("<g id=\"title-block\">\n");
+    let mut b = Block { doc, y: top + 24.0 };
+    let (verdict, vc) = verdict_text(report);
+    b.row("verdict", &verdict, FS_VERDICT, vc, 2);
+
+    let mut program = report.program.clone();
+    if !report.title.is_empty() && !program.starts_with(&report.title) {
+        program = format!("{program} ({})", report.title);
+    }
+    b.row("program", &program, FS_TEXT, colour::INK, 2);
+    let feed = report.segments.saturating_sub(report.rapid_segments);
+    b.row(
+        "moves",
+        &format!("{} (rapid {}, feed {feed})", report.segments, report.rapid_segments),
+        FS_TEXT,
+        colour::INK,
+        1,
+    );
+    b.row("stock", &report.stock.description, FS_TEXT, colour::INK, 2);
+    if report.tools.is_empty() {
+        b.row("tools", "", FS_TEXT, colour::INK, 1);
+    }
+    for (i, t) in report.tools.iter().take(MAX_TOOLS).enumerate() {
+        b.row(if i == 0 { "tools" } else { "" }, t, FS_TEXT, colour::INK, 1);
+    }
+    if report.tools.len() > MAX_TOOLS {
+        b.row("", &format!("+{} more", report.tools.len() - MAX_TOOLS), FS_TEXT, colour::MUTED, 1);
+    }
+    b.row(
+        "removed",
+        &format!(
+            "{} mm² section / {} mm³",
+            quantity(report.removed_area_mm2),
+            quantity(report.removed_volume_mm3)
+        ),
+        FS_TEXT,
+        colour::INK,
+        1,
+    );
+    b.row("cycle time", &duration(report.cycle_time_s), FS_TEXT, colour::INK, 1);
+    b.row("tolerance", &mm(report.tolerance_mm), FS_TEXT, colour::INK, 1);
+    if let Some(d) = &report.deviation {
+        b.row(
+            "overcut",
+            &format!("{} mm², max {}", quantity(d.overcut_area_mm2), mm(d.max_overcut_mm)),
+            FS_TEXT,
+            colour::INK,
+            1,
+        );
+        b.row(
+            "undercut",
+            &format!("{} mm², max {}", quantity(d.undercut_area_mm2), mm(d.max_undercut_mm)),
+            FS_TEXT,
+            colour::INK,
+            1,
+        );
+    }
+
+    // Share what is left between alarms and warnings; alarms first but warnings keep
+    // room for their header, one item and "+N more".
+    let rows = ((RIGHT_BOTTOM - b.y - 12.0) / DIAG_ROW).floor().max(0.0) as usize;
+    let warn_min = if report.warnings.is_empty() { 0 } else { 4.min(rows) };
+    let alarm_rows = if report.alarms.is_empty() { 0 } else { rows.saturating_sub(warn_min) };
+    let y0 = b.y;
+    b.diags("alarms", &report.alarms, colour::BAD, alarm_rows);
+    let used = ((b.y - y0) / DIAG_ROW).ceil() as usize + 1;
+    b.diags("warnings", &report.warnings, colour::WARN, rows.saturating_sub(used));
+    b.doc.raw("</g>\n");
+}

@@ -1,0 +1,188 @@
+//! The machine-readable report: a stable contract in program coordinates (`z`, `x` =
+//! diameter). Private serialisation structs keep the contract independent of `Report`.
+
+use serde::Serialize;
+
+use crate::report::{Diagnostic, Report, Shape, Verdict};
+
+/// Round to 6 decimals; non-finite values become `null` (JSON has no NaN).
+fn r6(v: f64) -> Option<f64> {
+    if !v.is_finite() {
+        return None;
+    }
+    let r = (v * 1e6).round() / 1e6;
+    // Huge values would overflow the rounding; keep them as they are.
+    let r = if r.is_finite() { r } else { v };
+    Some(if r == 0.0 { 0.0 } else { r })
+}
+
+/// `[z, r]` -> `[z, x]` with x = 2r.
+fn zx(p: &[f64; 2]) -> [Option<f64>; 2] {
+    [r6(p[0]), r6(2.0 * p[1])]
+}
+
+#[derive(Serialize)]
+struct Polygon {
+    outer: Vec<[Option<f64>; 2]>,
+    holes: Vec<Vec<[Option<f64>; 2]>>,
+}
+
+impl Polygon {
+    fn from(s: &Shape) -> Self {
+        Self {
+            outer: s.outer.iter().map(zx).collect(),
+            holes: s
+                .holes
+                .iter()
+                .map(|h| h.iter().map(zx).collect())
+                .collect(),
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct Stock {
+    description: String,
+    polygons: Vec<Polygon>,
+}
+
+#[derive(Serialize)]
+struct Diag<'a> {
+    line: u32,
+    column: u32,
+    code: &'a str,
+    message: &'a str,
+}
+
+impl<'a> Diag<'a> {
+    fn from(d: &'a Diagnostic) -> Self {
+        Self {
+            line: d.line,
+            column: d.column,
+            code: &d.code,
+            message: &d.message,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct CrashJ {
+    line: u32,
+    column: u32,
+    z: Option<f64>,
+    x: Option<f64>,
+    area_mm2: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct GougeJ {
+    line: u32,
+    z: Option<f64>,
+    x: Option<f64>,
+    area_mm2: Option<f64>,
+    depth_mm: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct DeviationJ {
+    overcut_area_mm2: Option<f64>,
+    undercut_area_mm2: Option<f64>,
+    max_overcut_mm: Option<f64>,
+    max_undercut_mm: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct Doc<'a> {
+    program: &'a str,
+    title: &'a str,
+    verdict: &'static str,
+    stock: Stock,
+    #[serde(rename = "final")]
+    final_part: Vec<Polygon>,
+    removed_area_mm2: Option<f64>,
+    removed_volume_mm3: Option<f64>,
+    segments: usize,
+    cycle_time_s: Option<f64>,
+    tolerance_mm: Option<f64>,
+    tools: &'a [String],
+    alarms: Vec<Diag<'a>>,
+    warnings: Vec<Diag<'a>>,
+    crashes: Vec<CrashJ>,
+    gouges: Vec<GougeJ>,
+    deviation: Option<DeviationJ>,
+}
+
+/// The word used for a verdict in the JSON.
+pub(crate) fn verdict_word(v: Verdict) -> &'static str {
+    match v {
+        Verdict::Clean => "clean",
+        Verdict::Alarm => "alarm",
+        Verdict::Crash => "crash",
+        Verdict::Gouge => "gouge",
+    }
+}
+
+/// Pretty JSON of the report (see the crate docs for the contract).
+pub(crate) fn json(report: &Report) -> String {
+    let doc = Doc {
+        program: &report.program,
+        title: &report.title,
+        verdict: verdict_word(report.verdict()),
+        stock: Stock {
+            description: report.stock.description.clone(),
+            polygons: report.stock.shapes.iter().map(Polygon::from).collect(),
+        },
+        final_part: report.final_part.iter().map(Polygon::from).collect(),
+        removed_area_mm2: r6(report.removed_area_mm2),
+        removed_volume_mm3: r6(report.removed_volume_mm3),
+        segments: report.segments,
+        cycle_time_s: r6(report.cycle_time_s),
+        tolerance_mm: r6(report.tolerance_mm),
+        tools: &report.tools,
+        alarms: report.alarms.iter().map(Diag::from).collect(),
+        warnings: report.warnings.iter().map(Diag::from).collect(),
+        crashes: report
+            .crashes
+            .iter()
+            .map(|c| CrashJ {
+                line: c.line,
+                column: c.column,
+                z: r6(c.z),
+                x: r6(2.0 * c.r),
+                area_mm2: r6(c.area_mm2),
+            })
+            .collect(),
+        gouges: report
+            .gouges
+            .iter()
+            .map(|g| GougeJ {
+                line: g.line,
+                z: r6(g.z),
+                x: r6(2.0 * g.r),
+                area_mm2: r6(g.area_mm2),
+                depth_mm: r6(g.depth_mm),
+            })
+            .collect(),
+        deviation: report.deviation.as_ref().map(|d| DeviationJ {
+            overcut_area_mm2: r6(d.overcut_area_mm2),
+            undercut_area_mm2: r6(d.undercut_area_mm2),
+            max_overcut_mm: r6(d.max_overcut_mm),
+            max_undercut_mm: r6(d.max_undercut_mm),
+        }),
+    };
+    // Serialising plain structs of strings, integers and Option<f64> cannot fail.
+    serde_json::to_string_pretty(&doc).unwrap_or_else(|_| "{}".to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounding() {
+        assert_eq!(r6(1.23456789), Some(1.234568));
+        assert_eq!(r6(-0.0000001), Some(0.0));
+        assert_eq!(r6(f64::NAN), None);
+        assert_eq!(r6(1e300), Some(1e300));
+    }
+}

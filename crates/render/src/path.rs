@@ -1,0 +1,271 @@
+//! SVG path data in mm, written by hand (f64, enough decimals for sub-micron detail),
+//! thinned to what the picture can show.
+
+use std::collections::HashSet;
+use std::fmt::Write as _;
+
+use crate::report::{PathKind, PathLine, Shape};
+use crate::scale::Bbox;
+use crate::text::num;
+
+/// Decimals for shape coordinates (mm): 1 nm.
+const SHAPE_DECIMALS: usize = 6;
+/// Decimals for toolpath coordinates (mm): 0.1 µm, sub-micron and compact.
+const PATH_DECIMALS: usize = 4;
+
+fn dist2(a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (dz, dr) = (a[0] - b[0], a[1] - b[1]);
+    dz * dz + dr * dr
+}
+
+fn finite(p: &[f64; 2]) -> bool {
+    p[0].is_finite() && p[1].is_finite()
+}
+
+fn push_pt(d: &mut String, cmd: char, p: [f64; 2], decimals: usize) {
+    // Writing to a String cannot fail.
+    let _ = write!(d, "{cmd}{},{}", num(p[0], decimals), num(p[1], decimals));
+}
+
+/// Append one closed ring, dropping vertices closer than `min_dist` (mm) to the previous
+/// kept one; rings that collapse below three vertices are smaller than a pixel and skipped.
+fn ring(d: &mut String, pts: &[[f64; 2]], min_dist: f64) {
+    let md2 = min_dist * min_dist;
+    let mut kept: Vec<[f64; 2]> = Vec::with_capacity(pts.len().min(4096));
+    for p in pts.iter().filter(|p| finite(p)) {
+        match kept.last() {
+            Some(l) if dist2(*l, *p) <= md2 => {}
+            _ => kept.push(*p),
+        }
+    }
+    // The closing edge may also be tiny.
+    while kept.len() > 3 && dist2(kept[0], kept[kept.len() - 1]) <= md2 {
+        kept.pop();
+    }
+    if kept.len() < 3 {
+        return;
+    }
+    for (i, p) in kept.iter().enumerate() {
+        push_pt(d, if i == 0 { 'M' } else { 'L' }, *p, SHAPE_DECIMALS);
+    }
+    d.push('Z');
+}
+
+/// Path data for shapes with holes (draw with `fill-rule="evenodd"`).
+pub(crate) fn shapes_d(shapes: &[Shape], min_dist: f64) -> String {
+    let mut d = String::new();
+    for s in shapes {
+        ring(&mut d, &s.outer, min_dist);
+        for h in &s.holes {
+            ring(&mut d, h, min_dist);
+        }
+    }
+    d
+}
+
+/// The toolpath as one path per kind, thinned.
+#[derive(Debug, Default)]
+pub(crate) struct ToolpathD {
+    /// Path data of rapids.
+    pub(crate) rapid: String,
+    /// Path data of feeds.
+    pub(crate) feed: String,
+    /// Path data of threading moves.
+    pub(crate) thread: String,
+    /// Points written in total.
+    pub(crate) points: usize,
+    /// 1 when every distinct segment was drawn; k when only every k-th was.
+    pub(crate) stride: usize,
+}
+
+impl ToolpathD {
+    /// Whether whole segments were dropped to respect the point cap.
+    pub(crate) fn thinned(&self) -> bool {
+        self.stride > 1
+    }
+}
+
+#[derive(Default)]
+struct KindWriter {
+    d: String,
+    /// Last point written (or pending), the one new points are measured from.
+    last: Option<[f64; 2]>,
+    /// A subpath start not yet written: only flushed once a line follows it.
+    pending_move: Option<[f64; 2]>,
+    points: usize,
+}
+
+impl KindWriter {
+    fn line(&mut self, pts: &[[f64; 2]], md2: f64) {
+        for (i, p) in pts.iter().enumerate() {
+            if !finite(p) {
+                self.last = None;
+                self.pending_move = None;
+                continue;
+            }
+            let near = self.last.is_some_and(|l| dist2(l, *p) <= md2);
+            if near {
+                continue;
+            }
+            if i == 0 || self.last.is_none() {
+                // Discontinuous start: begin a new subpath lazily.
+                self.pending_move = Some(*p);
+                self.last = Some(*p);
+                continue;
+            }
+            if let Some(m) = self.pending_move.take() {
+                push_pt(&mut self.d, 'M', m, PATH_DECIMALS);
+                self.points += 1;
+            }
+            push_pt(&mut self.d, 'L', *p, PATH_DECIMALS);
+            self.points += 1;
+            self.last = Some(*p);
+        }
+    }
+}
+
+type Key = (u8, [i64; 6]);
+
+/// Quantised identity of a segment: its kind, first, middle and last points on a grid of
+/// `grid` mm, direction-independent, so re-cut moves (pecks, spring passes) draw once.
+fn key(l: &PathLine, grid: f64) -> Option<Key> {
+    let n = l.points.len();
+    let q = |p: [f64; 2]| -> Option<[i64; 2]> {
+        let a = (p[0] / grid).round();
+        let b = (p[1] / grid).round();
+        (a.is_finite() && b.is_finite() && a.abs() < 9e15 && b.abs() < 9e15)
+            .then_some([a as i64, b as i64])
+    };
+    let a = q(*l.points.first()?)?;
+    let m = q(l.points[n / 2])?;
+    let b = q(l.points[n - 1])?;
+    let (a, b) = if a <= b { (a, b) } else { (b, a) };
+    let kind = match l.kind {
+        PathKind::Rapid => 0,
+        PathKind::Feed => 1,
+        PathKind::Thread => 2,
+    };
+    Some((kind, [a[0], a[1], m[0], m[1], b[0], b[1]]))
+}
+
+fn one_pass(lines: &[PathLine], min_dist: f64, window: &Bbox, stride: usize) -> ToolpathD {
+    let md2 = min_dist * min_dist;
+    let mut w: [KindWriter; 3] = Default::default();
+    let mut seen: HashSet<Key> = HashSet::new();
+    let mut nth = 0usize;
+    for l in lines {
+        if l.points.is_empty() {
+            continue;
+        }
+        let mut b = Bbox::EMPTY;
+        for p in &l.points {
+            b.add(*p);
+        }
+        if !b.overlaps(window) {
+            continue;
+        }
+        if let Some(k) = key(l, min_dist) {
+            if !seen.insert(k) {
+                continue;
+            }
+        }
+        nth += 1;
+        if (nth - 1) % stride != 0 {
+            continue;
+        }
+        let i = match l.kind {
+            PathKind::Rapid => 0,
+            PathKind::Feed => 1,
+            PathKind::Thread => 2,
+        };
+        w[i].line(&l.points, md2);
+    }
+    let [r, f, t] = w;
+    ToolpathD {
+        points: r.points + f.points + t.points,
+        rapid: r.d,
+        feed: f.d,
+        thread: t.d,
+        stride,
+    }
+}
+
+/// Thin the toolpath for a view: only segments touching `window` (mm), duplicates drawn
+/// once, points closer than `min_dist` (mm) to the previous kept point dropped, and at
+/// most about `cap` points: beyond that only every k-th segment is drawn.
+pub(crate) fn toolpath_d(lines: &[PathLine], min_dist: f64, window: &Bbox, cap: usize) -> ToolpathD {
+    let min_dist = if min_dist.is_finite() && min_dist > 0.0 {
+        min_dist
+    } else {
+        1e-6
+    };
+    let mut out = one_pass(lines, min_dist, window, 1);
+    let mut tries = 0;
+    while out.points > cap && tries < 40 {
+        let ratio = out.points as f64 / cap.max(1) as f64;
+        let stride = ((out.stride as f64 * ratio).ceil() as usize).max(out.stride + 1);
+        out = one_pass(lines, min_dist, window, stride);
+        tries += 1;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(kind: PathKind, pts: &[[f64; 2]]) -> PathLine {
+        PathLine {
+            kind,
+            line: 1,
+            points: pts.to_vec(),
+        }
+    }
+
+    #[test]
+    fn consecutive_moves_merge_and_tiny_steps_drop() {
+        let lines = vec![
+            line(PathKind::Feed, &[[0.0, 10.0], [-1.0, 10.0]]),
+            line(PathKind::Feed, &[[-1.0, 10.0], [-1.001, 10.0]]),
+            line(PathKind::Feed, &[[-1.001, 10.0], [-5.0, 10.0]]),
+            line(PathKind::Rapid, &[[-5.0, 10.0], [-5.0, 20.0]]),
+        ];
+        let w = Bbox::new(-100.0, 100.0, -100.0, 100.0);
+        let t = toolpath_d(&lines, 0.01, &w, 1000);
+        assert_eq!(t.feed, "M0,10L-1,10L-5,10");
+        assert_eq!(t.rapid, "M-5,10L-5,20");
+        assert_eq!(t.points, 5);
+        assert!(!t.thinned());
+    }
+
+    #[test]
+    fn repeated_moves_draw_once_and_cap_holds() {
+        let mut lines = Vec::new();
+        for i in 0..10_000 {
+            let z = -(i as f64) * 0.5;
+            lines.push(line(PathKind::Feed, &[[z, 20.0], [z, 10.0]]));
+            lines.push(line(PathKind::Rapid, &[[z, 10.0], [z, 20.0]]));
+            lines.push(line(PathKind::Feed, &[[z, 20.0], [z, 10.0]]));
+        }
+        let w = Bbox::new(-1e4, 1e4, -1e4, 1e4);
+        let t = toolpath_d(&lines, 0.01, &w, 1_000);
+        assert!(t.points <= 1_000, "{}", t.points);
+        assert!(t.thinned());
+    }
+
+    #[test]
+    fn nan_points_do_not_leak() {
+        let lines = vec![line(PathKind::Feed, &[[0.0, 1.0], [f64::NAN, 2.0], [3.0, 4.0], [5.0, 4.0]])];
+        let t = toolpath_d(&lines, 0.01, &Bbox::new(-9.0, 9.0, -9.0, 9.0), 100);
+        assert!(!t.feed.contains("NaN"));
+        assert_eq!(t.feed, "M3,4L5,4");
+        let s = shapes_d(
+            &[Shape {
+                outer: vec![[0.0, 0.0], [f64::NAN, 1.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+                holes: vec![vec![[0.0, 0.0]]],
+            }],
+            1e-6,
+        );
+        assert_eq!(s, "M0,0L1,0L1,1L0,1Z");
+    }
+}

@@ -1,0 +1,48 @@
+//! Rasterise the report SVG with resvg (tiny-skia, anti-aliased) using the DejaVu Sans
+//! font embedded in the binary, so the picture never depends on system fonts.
+
+use std::sync::OnceLock;
+
+use image::ImageEncoder as _;
+use resvg::{tiny_skia, usvg};
+
+use crate::RenderError;
+
+/// The one font the pictures use, shipped in the repository.
+static DEJAVU_SANS: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
+
+/// Options with a font database holding only the embedded font (built once).
+fn options() -> &'static usvg::Options<'static> {
+    static OPT: OnceLock<usvg::Options<'static>> = OnceLock::new();
+    OPT.get_or_init(|| {
+        let mut opt = usvg::Options {
+            font_family: "DejaVu Sans".to_string(),
+            ..usvg::Options::default()
+        };
+        opt.fontdb_mut().load_font_data(DEJAVU_SANS.to_vec());
+        // Generic families resolve to the same font.
+        opt.fontdb_mut().set_sans_serif_family("DejaVu Sans");
+        opt
+    })
+}
+
+/// Rasterise an SVG string at 1:1 (its own width and height in px) on white, to PNG.
+pub(crate) fn rasterise(svg: &str) -> Result<Vec<u8>, RenderError> {
+    let tree = usvg::Tree::from_str(svg, options()).map_err(|e| RenderError::Svg(e.to_string()))?;
+    let size = tree.size().to_int_size();
+    let (w, h) = (size.width(), size.height());
+    let mut pixmap = tiny_skia::Pixmap::new(w, h).ok_or(RenderError::Size(w, h))?;
+    pixmap.fill(tiny_skia::Color::WHITE);
+    resvg::render(&tree, tiny_skia::Transform::default(), &mut pixmap.as_mut());
+    // Opaque background: drop alpha, RGB is exact (premultiplied by 255).
+    let rgb: Vec<u8> = pixmap
+        .data()
+        .chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    let mut out = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut out)
+        .write_image(&rgb, w, h, image::ExtendedColorType::Rgb8)
+        .map_err(|e| RenderError::Encode(e.to_string()))?;
+    Ok(out)
+}

@@ -1,0 +1,241 @@
+//! Text helpers: XML escaping, approximate text measurement, wrapping, number formats.
+//!
+//! Widths are estimates for DejaVu Sans (about 0.6 em per character); we err wide so
+//! that text placed by these numbers never overlaps its neighbours.
+
+/// Average advance of one character in em, slightly generous for DejaVu Sans.
+const EM_PER_CHAR: f64 = 0.62;
+
+/// Escape a string for XML text and attribute values.
+pub(crate) fn esc(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            // Control characters are not allowed in XML 1.0.
+            c if (c as u32) < 0x20 && c != '\t' => out.push(' '),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// Approximate rendered width of `s` in px at `size` px.
+pub(crate) fn width(s: &str, size: f64) -> f64 {
+    s.chars().count() as f64 * size * EM_PER_CHAR
+}
+
+/// How many characters fit in `px` at `size`.
+pub(crate) fn chars_fitting(px: f64, size: f64) -> usize {
+    if !(px > 0.0) {
+        return 0;
+    }
+    (px / (size * EM_PER_CHAR)).floor() as usize
+}
+
+/// Cut `s` to at most `max` characters, ending with an ellipsis when cut.
+pub(crate) fn truncate(s: &str, max: usize) -> String {
+    let n = s.chars().count();
+    if n <= max {
+        return s.to_string();
+    }
+    if max == 0 {
+        return String::new();
+    }
+    let mut out: String = s.chars().take(max - 1).collect();
+    out.push('…');
+    out
+}
+
+/// Word-wrap `s` to lines of at most `max` characters, at most `max_lines` lines; the
+/// last line is truncated with an ellipsis when text remains.
+pub(crate) fn wrap(s: &str, max: usize, max_lines: usize) -> Vec<String> {
+    let max = max.max(4);
+    let mut lines: Vec<String> = Vec::new();
+    let mut cur = String::new();
+    for word in s.split_whitespace() {
+        let wlen = word.chars().count();
+        let clen = cur.chars().count();
+        if clen > 0 && clen + 1 + wlen <= max {
+            cur.push(' ');
+            cur.push_str(word);
+            continue;
+        }
+        if clen > 0 {
+            lines.push(std::mem::take(&mut cur));
+        }
+        // A single word longer than a line is hard-broken.
+        let mut rest: Vec<char> = word.chars().collect();
+        while rest.len() > max {
+            lines.push(rest[..max].iter().collect());
+            rest.drain(..max);
+        }
+        cur = rest.into_iter().collect();
+    }
+    if !cur.is_empty() {
+        lines.push(cur);
+    }
+    if lines.len() > max_lines {
+        lines.truncate(max_lines);
+        if let Some(last) = lines.last_mut() {
+            let t = truncate(last, max.saturating_sub(1));
+            *last = if t.ends_with('…') { t } else { format!("{t}…") };
+        }
+    }
+    lines
+}
+
+/// Format a number for SVG path data: up to `decimals` decimals, trailing zeros trimmed,
+/// never `-0`.
+pub(crate) fn num(v: f64, decimals: usize) -> String {
+    if !v.is_finite() {
+        return "0".to_string();
+    }
+    let mut s = format!("{v:.decimals$}");
+    if s.contains('.') {
+        while s.ends_with('0') {
+            s.pop();
+        }
+        if s.ends_with('.') {
+            s.pop();
+        }
+    }
+    if s == "-0" {
+        s = "0".to_string();
+    }
+    s
+}
+
+/// Format a tick label: `decimals` fixed, with a typographic minus.
+pub(crate) fn tick_label(v: f64, decimals: usize) -> String {
+    let s = num(v, decimals);
+    match s.strip_prefix('-') {
+        Some(rest) => format!("\u{2212}{rest}"),
+        None => s,
+    }
+}
+
+/// Group thousands with a space: `59812.4` -> `59 812`.
+pub(crate) fn grouped(v: f64, decimals: usize) -> String {
+    if !v.is_finite() {
+        return "—".to_string();
+    }
+    let s = format!("{:.decimals$}", v.abs());
+    let (int, frac) = match s.split_once('.') {
+        Some((i, f)) => (i.to_string(), Some(f.to_string())),
+        None => (s.clone(), None),
+    };
+    let digits: Vec<char> = int.chars().collect();
+    let mut out = String::new();
+    for (i, c) in digits.iter().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            out.push(' ');
+        }
+        out.push(*c);
+    }
+    if let Some(f) = frac {
+        out.push('.');
+        out.push_str(&f);
+    }
+    if v < 0.0 && out.chars().any(|c| c.is_ascii_digit() && c != '0') {
+        out.insert(0, '\u{2212}');
+    }
+    out
+}
+
+/// An area or volume with a sensible number of decimals.
+pub(crate) fn quantity(v: f64) -> String {
+    let a = v.abs();
+    if !v.is_finite() {
+        "—".to_string()
+    } else if a >= 1000.0 {
+        grouped(v, 0)
+    } else if a >= 10.0 {
+        grouped(v, 1)
+    } else if a >= 0.1 || a == 0.0 {
+        grouped(v, 2)
+    } else {
+        grouped(v, 4)
+    }
+}
+
+/// A length in mm, e.g. `0.01 mm`.
+pub(crate) fn mm(v: f64) -> String {
+    if !v.is_finite() {
+        return "—".to_string();
+    }
+    let s = num(v, 4);
+    format!("{s} mm")
+}
+
+/// Cycle time as `1 min 42 s`, `42 s`, `2 h 05 min 10 s`.
+pub(crate) fn duration(secs: f64) -> String {
+    if !secs.is_finite() || secs < 0.0 {
+        return "—".to_string();
+    }
+    if secs < 10.0 {
+        return format!("{} s", num(secs, 1));
+    }
+    let total = secs.round() as u64;
+    let (h, m, s) = (total / 3600, (total / 60) % 60, total % 60);
+    if h > 0 {
+        format!("{h} h {m:02} min {s:02} s")
+    } else if m > 0 {
+        format!("{m} min {s} s")
+    } else {
+        format!("{s} s")
+    }
+}
+
+/// `1 crash`, `2 crashes`.
+pub(crate) fn plural(n: usize, one: &str, many: &str) -> String {
+    if n == 1 {
+        format!("1 {one}")
+    } else {
+        format!("{n} {many}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn duration_formats() {
+        assert_eq!(duration(102.0), "1 min 42 s");
+        assert_eq!(duration(42.4), "42 s");
+        assert_eq!(duration(3.26), "3.3 s");
+        assert_eq!(duration(3725.0), "1 h 02 min 05 s");
+        assert_eq!(duration(f64::NAN), "—");
+    }
+
+    #[test]
+    fn numbers() {
+        assert_eq!(num(1.500000, 6), "1.5");
+        assert_eq!(num(-0.0000001, 6), "0");
+        assert_eq!(num(f64::NAN, 6), "0");
+        assert_eq!(grouped(59812.4, 0), "59 812");
+        assert_eq!(grouped(1234567.25, 1), "1 234 567.2");
+        assert_eq!(tick_label(-10.0, 0), "\u{2212}10");
+    }
+
+    #[test]
+    fn wrapping_stays_within_limits() {
+        let lines = wrap("the quick brown fox jumps over the lazy dog again", 12, 2);
+        assert_eq!(lines.len(), 2);
+        assert!(lines.iter().all(|l| l.chars().count() <= 12));
+        assert!(lines[1].ends_with('…'));
+        let lines = wrap("Ø125×110 ünïcödé", 5, 10);
+        assert!(lines.iter().all(|l| l.chars().count() <= 5));
+        assert_eq!(truncate("abcdef", 4), "abc…");
+    }
+
+    #[test]
+    fn escaping() {
+        assert_eq!(esc("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+    }
+}

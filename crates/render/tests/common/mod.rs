@@ -1,0 +1,100 @@
+//! Hand-built reports shared by the integration tests.
+#![allow(dead_code)]
+
+use render::*;
+
+fn shape(outer: &[[f64; 2]]) -> Shape {
+    Shape { outer: outer.to_vec(), holes: vec![] }
+}
+
+fn mv(kind: PathKind, line: u32, pts: &[[f64; 2]]) -> PathLine {
+    PathLine { kind, line, points: pts.to_vec() }
+}
+
+/// A Φ40 × 60 bar turned to Φ36 with a 5 mm groove, one crash (a rapid into the
+/// shoulder), one slightly deep groove (a gouge against the intended Φ28.4), one warning.
+pub(crate) fn groove_bar() -> Report {
+    use PathKind::*;
+    let blank = shape(&[[-60.0, 0.0], [0.0, 0.0], [0.0, 20.0], [-60.0, 20.0]]);
+    let part = |groove_r: f64| {
+        shape(&[
+            [-60.0, 0.0],
+            [0.0, 0.0],
+            [0.0, 17.0],
+            [-1.0, 18.0],
+            [-20.0, 18.0],
+            [-20.0, groove_r],
+            [-25.0, groove_r],
+            [-25.0, 18.0],
+            [-40.0, 18.0],
+            [-40.0, 20.0],
+            [-60.0, 20.0],
+        ])
+    };
+    Report {
+        program: "O0042.nc".into(),
+        title: "O0042".into(),
+        stock: StockInfo {
+            description: "bar Ø40 × 60, face at Z0".into(),
+            shapes: vec![blank],
+        },
+        final_part: vec![part(14.0)],
+        intended: vec![part(14.2)],
+        toolpath: vec![
+            mv(Rapid, 3, &[[100.0, 100.0], [2.0, 22.0], [2.0, 18.0]]),
+            mv(Feed, 5, &[[2.0, 18.0], [-40.0, 18.0]]),
+            mv(Feed, 6, &[[-40.0, 18.0], [-40.0, 21.0]]),
+            mv(Rapid, 7, &[[-40.0, 21.0], [2.0, 21.0], [2.0, 16.0]]),
+            mv(Feed, 8, &[[2.0, 16.0], [0.0, 17.0], [-1.0, 18.0]]),
+            mv(Rapid, 10, &[[-1.0, 18.0], [-1.0, 21.0], [-20.0, 21.0]]),
+            mv(Feed, 11, &[[-20.0, 21.0], [-20.0, 14.0]]),
+            mv(Rapid, 12, &[[-20.0, 14.0], [-20.0, 21.0], [-25.0, 21.0]]),
+            mv(Feed, 13, &[[-25.0, 21.0], [-25.0, 14.0], [-20.0, 14.0]]),
+            mv(Rapid, 14, &[[-20.0, 14.0], [-20.0, 21.0], [-45.0, 21.0], [-50.0, 12.0]]),
+            mv(Rapid, 15, &[[-50.0, 12.0], [-50.0, 25.0], [100.0, 100.0]]),
+        ],
+        crashes: vec![Crash { line: 14, column: 1, z: -46.667, r: 18.0, area_mm2: 21.5 }],
+        gouges: vec![Gouge { line: 11, z: -22.5, r: 14.0, area_mm2: 1.0, depth_mm: 0.2 }],
+        gouge_shapes: vec![shape(&[[-25.0, 14.0], [-20.0, 14.0], [-20.0, 14.2], [-25.0, 14.2]])],
+        leftovers: vec![],
+        deviation: Some(Deviation {
+            overcut_area_mm2: 1.0,
+            undercut_area_mm2: 0.0,
+            max_overcut_mm: 0.2,
+            max_undercut_mm: 0.0,
+        }),
+        alarms: vec![],
+        warnings: vec![Diagnostic {
+            line: 9,
+            column: 1,
+            code: "W-TOOL-DEFAULT".into(),
+            message: "T02 has no entry in the tool table; using the default 3 mm grooving blade referenced at its left corner".into(),
+        }],
+        tools: vec!["T01 turning D 55°, r0.4, tip 3".into(), "T02 grooving 5 mm, ref. left corner (default)".into()],
+        removed_area_mm2: 163.0,
+        removed_volume_mm3: 19_123.4,
+        segments: 11,
+        rapid_segments: 5,
+        cycle_time_s: 102.0,
+        tolerance_mm: 0.01,
+    }
+}
+
+/// A report with `n` segments: a grooving pattern of pecks, each distinct, over a bar.
+pub(crate) fn many_segments(n: usize) -> Report {
+    let mut r = groove_bar();
+    r.toolpath.clear();
+    let mut i = 0usize;
+    while r.toolpath.len() < n {
+        let z = -((i % 5000) as f64) * 0.0117 - 1.0;
+        let depth = 18.0 - (i / 5000) as f64 * 0.013;
+        r.toolpath.push(mv(PathKind::Feed, (i + 1) as u32, &[[z, 21.0], [z, depth]]));
+        if r.toolpath.len() < n {
+            r.toolpath.push(mv(PathKind::Rapid, (i + 1) as u32, &[[z, depth], [z, 21.0]]));
+        }
+        i += 1;
+    }
+    r.segments = n;
+    r.rapid_segments = n / 2;
+    r
+}
