@@ -1,0 +1,113 @@
+//! The SVG: layers and texts present, sizes bounded for huge toolpaths, no panics.
+mod common;
+
+use render::{PathKind, PathLine, Report, Shape};
+
+#[test]
+fn has_layers_legend_and_title_block() {
+    let s = render::svg(&common::groove_bar());
+    assert!(s.starts_with("<svg"));
+    assert!(s.trim_end().ends_with("</svg>"));
+    for needle in [
+        r#"id="toolpath""#,
+        r#"id="legend""#,
+        r#"id="title-block""#,
+        r#"id="details""#,
+        r#"font-family="DejaVu Sans""#,
+        "Z (mm)",
+        "X/2 (mm)",
+        "CRASH — 1 crash, 1 gouge",
+        "crash line 14",
+        "1 min 42 s",
+        "bar Ø40 × 60, face at Z0",
+        "warnings (1)",
+        "line 9: T02",
+        "clip-path=",
+    ] {
+        assert!(s.contains(needle), "missing {needle}");
+    }
+    assert!(!s.contains("NaN"));
+}
+
+#[test]
+fn clean_report_says_clean() {
+    let mut r = common::groove_bar();
+    r.crashes.clear();
+    r.gouges.clear();
+    r.gouge_shapes.clear();
+    let s = render::svg(&r);
+    assert!(s.contains("CLEAN — no gouge, no crash"));
+    assert!(!s.contains(r#"id="details""#));
+}
+
+#[test]
+fn million_segments_stay_bounded() {
+    let r = common::many_segments(1_000_000);
+    let t = std::time::Instant::now();
+    let s = render::svg(&r);
+    println!("svg of 10^6 segments: {} bytes in {:?}", s.len(), t.elapsed());
+    // 200k points at ~16 bytes, plus the page.
+    assert!(s.len() < 5_000_000, "{} bytes", s.len());
+    assert!(s.contains("toolpath thinned"));
+}
+
+#[test]
+fn small_toolpath_is_not_thinned() {
+    let s = render::svg(&common::groove_bar());
+    assert!(!s.contains("toolpath thinned"));
+}
+
+#[test]
+fn png_time_for_1e5_segments() {
+    let r = common::many_segments(100_000);
+    let t = std::time::Instant::now();
+    let png = render::png(&r).unwrap();
+    println!("png of 10^5 segments: {} bytes in {:?}", png.len(), t.elapsed());
+}
+
+#[test]
+fn degenerate_reports_do_not_panic() {
+    let nan = f64::NAN;
+    let mut reports = vec![Report::default()];
+    let mut r = common::groove_bar();
+    r.final_part.clear();
+    reports.push(r);
+    let mut r = common::groove_bar();
+    r.toolpath.clear();
+    r.stock.shapes.clear();
+    reports.push(r);
+    let mut r = common::groove_bar();
+    r.final_part.push(Shape { outer: vec![[nan, nan], [1.0, nan]], holes: vec![vec![]] });
+    r.toolpath.push(PathLine { kind: PathKind::Thread, line: 1, points: vec![[nan, 1.0], [f64::INFINITY, 2.0]] });
+    r.toolpath.push(PathLine { kind: PathKind::Feed, line: 2, points: vec![] });
+    r.crashes[0].z = nan;
+    r.gouges[0].depth_mm = nan;
+    r.cycle_time_s = nan;
+    r.removed_area_mm2 = f64::INFINITY;
+    r.tolerance_mm = nan;
+    reports.push(r);
+    // A single point and a huge coordinate.
+    let mut r = Report::default();
+    r.toolpath.push(PathLine { kind: PathKind::Rapid, line: 1, points: vec![[1e300, -1e300], [0.0, 0.0]] });
+    r.final_part.push(Shape { outer: vec![[5.0, 5.0]], holes: vec![] });
+    reports.push(r);
+    // Many diagnostics, tools and long words.
+    let mut r = common::groove_bar();
+    for i in 0..50 {
+        r.alarms.push(render::Diagnostic {
+            line: i,
+            column: 1,
+            code: "E-X".into(),
+            message: format!("alarm {i} {}", "x".repeat(200)),
+        });
+    }
+    r.tools = (0..20).map(|i| format!("T{i:02} {}", "long ".repeat(30))).collect();
+    r.program = "<&>\"".repeat(100);
+    reports.push(r);
+    for r in &reports {
+        let s = render::svg(r);
+        assert!(!s.contains("NaN") && !s.contains("inf"), "non-finite number in SVG");
+        render::png(r).expect("renders");
+        serde_json::from_str::<serde_json::Value>(&render::json(r)).expect("valid JSON");
+    }
+}
