@@ -1,1 +1,48 @@
-//! Blank, tool outlines, sweeps, material removal.
+//! Blank, tool outlines, sweeps, material removal, crash detection and measures.
+//!
+//! Everything here lives in the (z, r) half plane, mm, f64 (r = X / 2), except the TOML
+//! files, which are in program coordinates (z, x = diameter). The crate knows nothing of
+//! G-code text: it consumes [`expander::Segment`]s.
+//!
+//! ```
+//! use stock::{Blank, ToolTable, SimOptions, simulate, area};
+//! let blank = Blank::bar(20.0, 10.0, 0.0, None).unwrap();
+//! let sim = simulate(&blank, &ToolTable::empty(), &[], &SimOptions::default(), &mut |_| {});
+//! assert!((area(&sim.final_shapes) - 100.0).abs() < 1e-6);
+//! ```
+
+mod blank;
+mod error;
+mod geom;
+mod measure;
+mod outline;
+mod overlay;
+mod profile;
+mod removal;
+mod sweep;
+mod tools;
+
+pub use blank::Blank;
+pub use error::StockError;
+pub use measure::{area, hausdorff, revolved_volume, symmetric_difference_area};
+pub use outline::Outline;
+pub use overlay::BoolOp;
+pub use profile::profile_from_toml;
+pub use removal::{simulate, Crash, SimOptions, Simulation, CRASH_MIN_AREA};
+pub use tools::{AxisDir, Insert, Tool, ToolTable};
+
+/// A polygon with holes in (z, r): `outer` counter-clockwise, `holes` clockwise; rings are
+/// not closed (the first point is not repeated).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Shape {
+    /// Outer boundary, counter-clockwise.
+    pub outer: Vec<[f64; 2]>,
+    /// Holes, clockwise.
+    pub holes: Vec<Vec<[f64; 2]>>,
+}
+
+/// Boolean operation between two shape sets (non-zero fill), on a grid fitted to both.
+/// Rings holding a non-finite coordinate are ignored.
+pub fn boolean(a: &[Shape], b: &[Shape], op: BoolOp) -> Vec<Shape> {
+    overlay::boolean(a, b, op)
+}

@@ -1,0 +1,326 @@
+//! Material removal: final = blank − ⋃ sweeps, with rapid crashes as exact events.
+//!
+//! How it stays fast for 10⁶ moves (measured figures in `PERFORMANCE.md`):
+//! - every boolean runs in `i_overlay`'s integer core on one fixed grid (see `overlay.rs`);
+//! - the stock is cut into Z strips, each its own small polygon set, so a boolean call
+//!   only sees the stock near the move; strips are independent, so they run in parallel;
+//! - within a strip, sweeps are subtracted in batches of [`BATCH`]: one call removes the
+//!   union of the batch (no sweep-by-sweep subtraction from an ever-growing polygon, no
+//!   single giant call with k² tool-tool intersections);
+//! - sweeps whose box misses a strip's stock box (air cuts) never reach a boolean call,
+//!   and collinear overlapping feeds (pecks) were already merged into one sweep.
+//!
+//! Crashes: a rapid whose box meets a strip's stock box flushes that strip's batch (so
+//! the stock is exactly the stock after every earlier move) and intersects its sweep with
+//! it; the overlaps of all strips add up to the crash area.
+
+use crate::geom::{point_in_ring, point_segment, Rect, P};
+use crate::overlay::{Engine, Grid, IPt, IShapes};
+use crate::sweep::{IBox, Item, SweepBuilder, Sweeps};
+use crate::{area, revolved_volume, Blank, Shape, ToolTable};
+use expander::Segment;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// Smallest overlap (mm²) between a rapid's sweep and the stock that counts as a crash.
+/// The threshold actually used for a rapid is the larger of this and 2 × grid step × the
+/// sweep's perimeter, the biggest sliver rounding to the grid can create along an edge the
+/// rapid shares with an earlier cut (a few 10⁻⁵ mm² for a 100 mm bar: ~0.1 nm grid step).
+pub const CRASH_MIN_AREA: f64 = 1e-6;
+
+/// Sweeps subtracted per boolean call in a strip.
+const BATCH: usize = 16;
+/// Target width of a Z strip, mm.
+const STRIP_WIDTH: f64 = 2.0;
+/// Upper bound on the number of strips.
+const MAX_STRIPS: usize = 256;
+/// Segments handled between two progress reports (also bounds the sweeps held in memory).
+const EPOCH: usize = 32_768;
+
+/// Options of a removal run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SimOptions {
+    /// Chord tolerance for arcs, mm (default 0.001).
+    pub chord_tol: f64,
+}
+
+impl Default for SimOptions {
+    fn default() -> Self {
+        Self { chord_tol: 0.001 }
+    }
+}
+
+/// A rapid move whose sweep overlapped the stock present at that moment.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Crash {
+    /// Index of the rapid in the input slice.
+    pub segment: usize,
+    /// (z, r) where it first meets stock: the point of the overlap nearest the rapid's start.
+    pub at: [f64; 2],
+    /// Area of stock the rapid's sweep overlapped, mm².
+    pub area: f64,
+}
+
+/// The result of a removal run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Simulation {
+    /// The part after every move.
+    pub final_shapes: Vec<Shape>,
+    /// Rapids through stock, in program order.
+    pub crashes: Vec<Crash>,
+    /// Area of the half section removed, mm².
+    pub removed_area: f64,
+    /// Volume removed (solid of revolution), mm³.
+    pub removed_volume: f64,
+    /// (first segment index, message): skipped moves, defaulted tools.
+    pub warnings: Vec<(usize, String)>,
+}
+
+/// One Z strip of the stock.
+struct Strip {
+    stock: IShapes,
+    bbox: IBox,
+    pending: Vec<u32>,
+}
+
+/// Part of a crash seen by one strip.
+struct Fragment {
+    seg: usize,
+    eps: f64,
+    area: f64,
+    dist: f64,
+    at: P,
+}
+
+fn bbox_of(shapes: &IShapes) -> IBox {
+    let mut b = IBox::EMPTY;
+    for s in shapes {
+        if let Some(outer) = s.first() {
+            for &p in outer {
+                b.add(p);
+            }
+        }
+    }
+    b
+}
+
+/// True when every point of `inner` is inside or on the convex counter-clockwise `outer`.
+fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
+    let n = outer.len();
+    n >= 3
+        && (0..n).all(|i| {
+            let (a, b) = (outer[i], outer[(i + 1) % n]);
+            let (ex, ey) = (i64::from(b.x - a.x), i64::from(b.y - a.y));
+            inner.iter().all(|p| ex * i64::from(p.y - a.y) - ey * i64::from(p.x - a.x) >= 0)
+        })
+}
+
+impl Strip {
+    fn flush(&mut self, sweeps: &Sweeps, engine: &mut Engine) {
+        if self.pending.is_empty() {
+            return;
+        }
+        let items = &sweeps.items;
+        let clips = self.pending.iter().flat_map(|&i| sweeps.polys_of(&items[i as usize]));
+        self.stock = engine.difference(&self.stock, clips);
+        self.bbox = bbox_of(&self.stock);
+        self.pending.clear();
+    }
+
+    /// True when the rapid's sweep lies inside one pending sweep polygon (already cut).
+    fn covered_by_pending(&self, sweeps: &Sweeps, it: &Item) -> bool {
+        sweeps.polys_of(it).all(|rp| {
+            self.pending.iter().rev().any(|&j| sweeps.polys_of(&sweeps.items[j as usize]).any(|pp| convex_contains(pp, rp)))
+        })
+    }
+
+    fn process(&mut self, sweeps: &Sweeps, list: &[u32], grid: &Grid, engine: &mut Engine, frags: &mut Vec<Fragment>) {
+        for &i in list {
+            let it = &sweeps.items[i as usize];
+            if !it.bbox.overlaps(&self.bbox) {
+                continue; // air in this strip
+            }
+            if it.rapid && !self.covered_by_pending(sweeps, it) {
+                self.flush(sweeps, engine);
+                if it.bbox.overlaps(&self.bbox) {
+                    let overlap = engine.intersection(&self.stock, sweeps.polys_of(it));
+                    let a = grid.area(&overlap);
+                    if a > 0.0 {
+                        let (dist, at) = nearest(grid, &overlap, it.start);
+                        frags.push(Fragment { seg: it.seg, eps: it.eps, area: a, dist, at });
+                    }
+                }
+            }
+            self.pending.push(i);
+            if self.pending.len() >= BATCH {
+                self.flush(sweeps, engine);
+            }
+        }
+        self.flush(sweeps, engine);
+    }
+}
+
+/// Point of `shapes` nearest to `p` (p itself when inside) and its distance.
+fn nearest(grid: &Grid, shapes: &IShapes, p: P) -> (f64, P) {
+    let mut best = (f64::INFINITY, p);
+    for s in shapes {
+        let rings: Vec<Vec<P>> = s.iter().map(|r| r.iter().map(|&q| grid.to_float(q)).collect()).collect();
+        if let Some((outer, holes)) = rings.split_first() {
+            if point_in_ring(p, outer) && !holes.iter().any(|h| point_in_ring(p, h)) {
+                return (0.0, p);
+            }
+        }
+        for r in &rings {
+            for k in 0..r.len() {
+                let (d, q) = point_segment(p, r[k], r[(k + 1) % r.len()]);
+                if d < best.0 {
+                    best = (d, q);
+                }
+            }
+        }
+    }
+    best
+}
+
+/// Removes material: `blank` minus the sweep of every segment's tool outline, in order,
+/// reporting rapids that run through stock as [`Crash`]es. `progress` is called now and
+/// then with the number of segments processed. Never panics: moves with non-finite
+/// coordinates are skipped with a warning.
+pub fn simulate(
+    blank: &Blank,
+    tools: &ToolTable,
+    segments: &[Segment],
+    opts: &SimOptions,
+    progress: &mut dyn FnMut(usize),
+) -> Simulation {
+    let tol = if opts.chord_tol.is_finite() && opts.chord_tol > 0.0 { opts.chord_tol } else { 0.001 };
+    let mut warnings = Vec::new();
+    let shapes: Vec<Shape> =
+        blank.shapes.iter().filter(|s| s.outer.iter().flat_map(|p| p.iter()).all(|v| v.is_finite() && v.abs() < 1e9)).cloned().collect();
+    let bb = Rect::of(shapes.iter().flat_map(|s| s.outer.iter()));
+    if shapes.len() != blank.shapes.len() {
+        warnings.push((0, "blank shapes with non-finite coordinates were ignored".to_string()));
+    }
+    if bb.is_empty() || area(&shapes) <= 0.0 {
+        warnings.push((0, "the blank is empty: nothing to cut".to_string()));
+        progress(segments.len());
+        return Simulation { final_shapes: Vec::new(), crashes: Vec::new(), removed_area: 0.0, removed_volume: 0.0, warnings };
+    }
+
+    // Sweeps are clipped to the blank's box plus a margin: outside it there is no stock
+    // to remove, and clipping keeps huge coordinates from coarsening the grid.
+    let margin = 1.0 + 1e-3 * bb.size();
+    let clip = bb.grown(margin);
+    let grid = Grid::new(bb.grown(2.0 * margin));
+    let mut engine = Engine::new();
+    let stock = grid.shapes_to_int(&shapes);
+
+    let (x0, x1) = (grid.to_int(clip.min).x, grid.to_int(clip.max).x);
+    let (y0, y1) = (grid.to_int(clip.min).y, grid.to_int(clip.max).y);
+    let n_strips = (((clip.max[0] - clip.min[0]) / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
+    let bounds: Vec<i32> =
+        (0..=n_strips).map(|k| (i64::from(x0) + (i64::from(x1) - i64::from(x0)) * k as i64 / n_strips as i64) as i32).collect();
+    let strips: Vec<Mutex<Strip>> = (0..n_strips)
+        .map(|k| {
+            let (a, b) = (bounds[k], bounds[k + 1]);
+            let rect = [IPt::new(a, y0), IPt::new(b, y0), IPt::new(b, y1), IPt::new(a, y1)];
+            let part = engine.intersection(&stock, [&rect[..]]);
+            Mutex::new(Strip { bbox: bbox_of(&part), stock: part, pending: Vec::new() })
+        })
+        .collect();
+
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(n_strips);
+    let mut builder = SweepBuilder::new(&grid, clip, tools, tol);
+    let mut fragments: Vec<Fragment> = Vec::new();
+    let mut done = 0;
+    while done < segments.len() || done == 0 {
+        let end = (done + EPOCH).min(segments.len());
+        for (k, seg) in segments[done..end].iter().enumerate() {
+            builder.push(done + k, seg);
+        }
+        if end == segments.len() {
+            builder.flush_run();
+        }
+        let sweeps = builder.take();
+        let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n_strips];
+        for (i, it) in sweeps.items.iter().enumerate() {
+            // strips whose Z range the sweep's box touches
+            let lo = bounds.partition_point(|&b| b <= it.bbox.min[0]).saturating_sub(1);
+            let hi = bounds.partition_point(|&b| b < it.bbox.max[0]).min(n_strips);
+            for list in &mut lists[lo..hi.max(lo + 1).min(n_strips)] {
+                list.push(i as u32);
+            }
+        }
+        let next = AtomicUsize::new(0);
+        let work = |engine: &mut Engine| {
+            let mut frags = Vec::new();
+            loop {
+                let k = next.fetch_add(1, Ordering::Relaxed);
+                if k >= n_strips {
+                    break;
+                }
+                if lists[k].is_empty() {
+                    continue;
+                }
+                // a poisoned lock only means another worker panicked; its data is still whole
+                let mut strip = strips[k].lock().unwrap_or_else(|e| e.into_inner());
+                strip.process(&sweeps, &lists[k], &grid, engine, &mut frags);
+            }
+            frags
+        };
+        let total: usize = lists.iter().map(Vec::len).sum();
+        let mut new_frags = if threads <= 1 || total < 256 {
+            work(&mut engine)
+        } else {
+            std::thread::scope(|s| {
+                let handles: Vec<_> = (1..threads).map(|_| s.spawn(|| work(&mut Engine::new()))).collect();
+                let mut all = work(&mut engine);
+                for h in handles {
+                    // a worker that panicked lost its fragments; the strips stay consistent
+                    all.extend(h.join().unwrap_or_default());
+                }
+                all
+            })
+        };
+        fragments.append(&mut new_frags);
+        done = end;
+        progress(done);
+        if segments.is_empty() {
+            break;
+        }
+    }
+    let parts: Vec<IShapes> = strips.into_iter().map(|m| m.into_inner().unwrap_or_else(|e| e.into_inner()).stock).collect();
+    let final_int = engine.union(&parts);
+    let final_shapes = grid.shapes_to_float(&final_int);
+    let crashes = merge_fragments(fragments);
+    warnings.extend(builder.warnings);
+    warnings.sort_by_key(|w| w.0);
+    let removed_area = area(&shapes) - area(&final_shapes);
+    let removed_volume = revolved_volume(&shapes) - revolved_volume(&final_shapes);
+    Simulation { final_shapes, crashes, removed_area, removed_volume, warnings }
+}
+
+/// Adds up the overlaps each strip saw for a rapid; the contact point is the one nearest
+/// the rapid's start over all strips.
+fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
+    frags.sort_by_key(|f| f.seg);
+    let mut out: Vec<Crash> = Vec::new();
+    let mut i = 0;
+    while i < frags.len() {
+        let seg = frags[i].seg;
+        let mut j = i;
+        let (mut total, mut best) = (0.0, &frags[i]);
+        while j < frags.len() && frags[j].seg == seg {
+            total += frags[j].area;
+            if frags[j].dist < best.dist {
+                best = &frags[j];
+            }
+            j += 1;
+        }
+        if total > frags[i].eps {
+            out.push(Crash { segment: seg, at: best.at, area: total });
+        }
+        i = j;
+    }
+    out
+}

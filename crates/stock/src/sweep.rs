@@ -1,0 +1,346 @@
+//! Sweeps: the area a tool outline covers during one move, as convex polygons on the grid.
+//!
+//! The sweep of a convex part along a straight move is the convex hull of the part at both
+//! ends (a Minkowski sum with the move); arcs are chorded and each chord swept; thread
+//! moves stamp the outline once per lead. Consecutive collinear feeds that overlap (pecks
+//! re-cutting the same line) merge into one sweep, exactly: the union of the sweeps of a
+//! convex part along two overlapping collinear intervals is its sweep along their union.
+
+use crate::geom::{clip_convex, sweep_convex, Rect, P};
+use crate::outline::Outline;
+use crate::overlay::{Grid, IPt};
+use crate::ToolTable;
+use expander::{Motion, Segment};
+use std::collections::HashMap;
+use std::ops::Range;
+
+/// Most stamps one thread move may make before it is swept continuously instead.
+pub(crate) const MAX_THREAD_STAMPS: usize = 100_000;
+/// Distance under which points count as on the same line when merging moves, mm.
+const COLLINEAR_TOL: f64 = 1e-9;
+
+/// An integer bounding box.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct IBox {
+    pub(crate) min: [i32; 2],
+    pub(crate) max: [i32; 2],
+}
+
+impl IBox {
+    /// Contains nothing.
+    pub(crate) const EMPTY: Self = Self { min: [i32::MAX; 2], max: [i32::MIN; 2] };
+
+    /// Grows the box to contain `p`.
+    pub(crate) fn add(&mut self, p: IPt) {
+        self.min = [self.min[0].min(p.x), self.min[1].min(p.y)];
+        self.max = [self.max[0].max(p.x), self.max[1].max(p.y)];
+    }
+
+    /// True when the boxes share at least a point.
+    pub(crate) fn overlaps(&self, o: &Self) -> bool {
+        self.min[0] <= o.max[0] && o.min[0] <= self.max[0] && self.min[1] <= o.max[1] && o.min[1] <= self.max[1]
+    }
+}
+
+/// One unit of removal: the sweep of one move (or of a merged run of collinear feeds).
+#[derive(Debug, Clone)]
+pub(crate) struct Item {
+    /// Index of the (last) segment this sweep comes from.
+    pub(crate) seg: usize,
+    /// A rapid: its overlap with the stock is a crash.
+    pub(crate) rapid: bool,
+    /// Its polygons, indices into [`Sweeps::polys`].
+    pub(crate) polys: Range<u32>,
+    /// Bounding box of all its polygons.
+    pub(crate) bbox: IBox,
+    /// Reference point at the start of the move (for the crash contact point).
+    pub(crate) start: P,
+    /// Overlap area above which a rapid is a crash, mm².
+    pub(crate) eps: f64,
+}
+
+/// A list of sweeps with their polygons stored flat.
+#[derive(Debug, Default)]
+pub(crate) struct Sweeps {
+    pts: Vec<IPt>,
+    polys: Vec<Range<u32>>,
+    /// The sweeps, in program order.
+    pub(crate) items: Vec<Item>,
+}
+
+impl Sweeps {
+    /// The polygons of one item.
+    pub(crate) fn polys_of(&self, it: &Item) -> impl Iterator<Item = &[IPt]> + Clone {
+        self.polys[it.polys.start as usize..it.polys.end as usize].iter().map(|r| &self.pts[r.start as usize..r.end as usize])
+    }
+}
+
+/// A run of merged collinear feeds: the segment a -> b on one line.
+struct Run {
+    tool: u32,
+    a: P,
+    b: P,
+    last: usize,
+}
+
+impl Run {
+    /// Line parameters of p and q, when both lie on the run's line.
+    fn params(&self, p: P, q: P) -> Option<(f64, f64, f64)> {
+        let d = [self.b[0] - self.a[0], self.b[1] - self.a[1]];
+        let len = d[0].hypot(d[1]);
+        if len <= COLLINEAR_TOL {
+            return None;
+        }
+        let u = [d[0] / len, d[1] / len];
+        let off = |x: P| u[0] * (x[1] - self.a[1]) - u[1] * (x[0] - self.a[0]);
+        let along = |x: P| u[0] * (x[0] - self.a[0]) + u[1] * (x[1] - self.a[1]);
+        (off(p).abs() <= COLLINEAR_TOL && off(q).abs() <= COLLINEAR_TOL).then(|| (along(p), along(q), len))
+    }
+
+    /// Extends the run by the feed p -> q when it is collinear and overlaps.
+    fn try_extend(&mut self, p: P, q: P) -> bool {
+        let near = |x: P, y: P| (x[0] - y[0]).hypot(x[1] - y[1]) <= COLLINEAR_TOL;
+        if near(self.a, self.b) {
+            // a run of one point merges with any move through that point's start
+            if near(p, self.a) {
+                (self.a, self.b) = (p, q);
+                return true;
+            }
+            return false;
+        }
+        let Some((tp, tq, len)) = self.params(p, q) else { return false };
+        let (lo, hi) = (tp.min(tq), tp.max(tq));
+        if lo > len + COLLINEAR_TOL || hi < -COLLINEAR_TOL {
+            return false;
+        }
+        let u = [(self.b[0] - self.a[0]) / len, (self.b[1] - self.a[1]) / len];
+        let (nlo, nhi) = (lo.min(0.0), hi.max(len));
+        let a = self.a;
+        self.a = [a[0] + u[0] * nlo, a[1] + u[1] * nlo];
+        self.b = [a[0] + u[0] * nhi, a[1] + u[1] * nhi];
+        true
+    }
+
+    /// True when the move p -> q lies within the run (its sweep is inside the run's sweep).
+    fn contains(&self, p: P, q: P) -> bool {
+        match self.params(p, q) {
+            Some((tp, tq, len)) => tp.min(tq) >= -COLLINEAR_TOL && tp.max(tq) <= len + COLLINEAR_TOL,
+            None => {
+                let near = |x: P| (x[0] - self.a[0]).hypot(x[1] - self.a[1]) <= COLLINEAR_TOL;
+                near(self.b) && near(p) && near(q)
+            }
+        }
+    }
+}
+
+/// Turns segments into sweeps on the grid, in order.
+pub(crate) struct SweepBuilder<'a> {
+    grid: &'a Grid,
+    clip: Rect,
+    tools: &'a ToolTable,
+    tol: f64,
+    outlines: HashMap<u32, Outline>,
+    run: Option<Run>,
+    scratch: Vec<P>,
+    /// (first segment index, message) for skipped moves and defaulted tools.
+    pub(crate) warnings: Vec<(usize, String)>,
+    /// The sweeps built so far.
+    pub(crate) out: Sweeps,
+}
+
+impl<'a> SweepBuilder<'a> {
+    /// A builder that clips sweeps to `clip` (which must lie inside the grid's rectangle).
+    pub(crate) fn new(grid: &'a Grid, clip: Rect, tools: &'a ToolTable, chord_tol: f64) -> Self {
+        Self {
+            grid,
+            clip,
+            tools,
+            tol: chord_tol,
+            outlines: HashMap::new(),
+            run: None,
+            scratch: Vec::new(),
+            warnings: Vec::new(),
+            out: Sweeps::default(),
+        }
+    }
+
+    /// The outline of tool `t`, warning once per tool number when it is defaulted.
+    fn outline(&mut self, t: u32, idx: usize) -> Outline {
+        if let Some(o) = self.outlines.get(&t) {
+            return o.clone();
+        }
+        let (o, warning) = self.tools.outline(t);
+        if let Some(w) = warning {
+            self.warnings.push((idx, w));
+        }
+        self.outlines.insert(t, o.clone());
+        o
+    }
+
+    /// Adds segment number `idx`.
+    pub(crate) fn push(&mut self, idx: usize, seg: &Segment) {
+        let finite = |v: f64| v.is_finite() && v.abs() < 1e12;
+        let arc_ok = seg.arc.is_none_or(|a| finite(a.center.z) && finite(a.center.r));
+        if !(finite(seg.from.z) && finite(seg.from.r) && finite(seg.to.z) && finite(seg.to.r) && arc_ok) {
+            self.flush_run();
+            self.warnings.push((idx, "a move with a non-finite or absurdly large coordinate was skipped".into()));
+            return;
+        }
+        let (p, q) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
+        if seg.arc.is_none() && seg.motion != Motion::Thread {
+            if let Some(run) = &mut self.run {
+                if run.tool == seg.tool {
+                    match seg.motion {
+                        Motion::Feed if run.try_extend(p, q) => {
+                            run.last = idx;
+                            return;
+                        }
+                        // inside the sweep of feeds just made: it meets no stock, removes nothing
+                        Motion::Rapid if run.contains(p, q) => return,
+                        _ => {}
+                    }
+                }
+            }
+            self.flush_run();
+            if seg.motion == Motion::Feed {
+                self.outline(seg.tool, idx);
+                self.run = Some(Run { tool: seg.tool, a: p, b: q, last: idx });
+                return;
+            }
+        } else {
+            self.flush_run();
+        }
+        let outline = self.outline(seg.tool, idx);
+        let rapid = seg.motion == Motion::Rapid;
+        if seg.motion == Motion::Thread {
+            if let Some(stamps) = self.thread_stamps(idx, seg) {
+                self.emit_stamps(idx, &outline, &stamps, p);
+                return;
+            }
+        }
+        let path: Vec<P> = seg.polyline(self.tol).iter().map(|pt| [pt.z, pt.r]).collect();
+        self.emit_path(idx, rapid, &outline, &path);
+    }
+
+    /// Positions of the outline for a thread move: every lead from the start, and the end;
+    /// `None` (with a warning) when the move must be swept continuously instead.
+    fn thread_stamps(&mut self, idx: usize, seg: &Segment) -> Option<Vec<P>> {
+        let (p, q) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
+        if seg.arc.is_some() {
+            self.warnings.push((idx, "circular thread move: swept continuously".into()));
+            return None;
+        }
+        // the lead is measured along the dominant axis (Z for straight and taper threads)
+        let len = (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
+        if !(seg.lead.is_finite() && seg.lead > 0.0) {
+            self.warnings.push((idx, format!("thread move with lead {}: swept continuously", seg.lead)));
+            return None;
+        }
+        let n = (len / seg.lead).floor();
+        if n > MAX_THREAD_STAMPS as f64 {
+            self.warnings.push((idx, format!("thread move of {n} leads (more than {MAX_THREAD_STAMPS}): swept continuously")));
+            return None;
+        }
+        let mut pts: Vec<P> = (0..=n as usize)
+            .map(|k| {
+                let t = if len > 0.0 { k as f64 * seg.lead / len } else { 0.0 };
+                [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]
+            })
+            .collect();
+        pts.push(q);
+        Some(pts)
+    }
+
+    /// Ends the current merged run, emitting its sweep.
+    pub(crate) fn flush_run(&mut self) {
+        if let Some(run) = self.run.take() {
+            let outline = self.outline(run.tool, run.last);
+            self.emit_path(run.last, false, &outline, &[run.a, run.b]);
+        }
+    }
+
+    fn emit_path(&mut self, idx: usize, rapid: bool, outline: &Outline, path: &[P]) {
+        let start = path[0];
+        let item = self.begin();
+        for w in path.windows(2) {
+            let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
+            for part in &outline.parts {
+                self.scratch.clear();
+                self.scratch.extend(part.iter().map(|v| [v[0] + w[0][0], v[1] + w[0][1]]));
+                let poly = sweep_convex(&self.scratch, d);
+                self.add_poly(&poly);
+            }
+        }
+        self.end(item, idx, rapid, start);
+    }
+
+    fn emit_stamps(&mut self, idx: usize, outline: &Outline, at: &[P], start: P) {
+        let item = self.begin();
+        for p in at {
+            for part in &outline.parts {
+                let poly: Vec<P> = part.iter().map(|v| [v[0] + p[0], v[1] + p[1]]).collect();
+                self.add_poly(&poly);
+            }
+        }
+        self.end(item, idx, false, start);
+    }
+
+    fn begin(&self) -> (u32, f64) {
+        (self.out.polys.len() as u32, 0.0)
+    }
+
+    fn add_poly(&mut self, poly: &[P]) {
+        let quick = Rect::of(poly);
+        let inside = quick.min[0] >= self.clip.min[0]
+            && quick.min[1] >= self.clip.min[1]
+            && quick.max[0] <= self.clip.max[0]
+            && quick.max[1] <= self.clip.max[1];
+        let clipped;
+        let poly = if inside {
+            poly
+        } else {
+            if quick.max[0] < self.clip.min[0]
+                || quick.min[0] > self.clip.max[0]
+                || quick.max[1] < self.clip.min[1]
+                || quick.min[1] > self.clip.max[1]
+            {
+                return;
+            }
+            clipped = clip_convex(poly, &self.clip);
+            &clipped[..]
+        };
+        if poly.len() < 3 {
+            return;
+        }
+        let start = self.out.pts.len() as u32;
+        let grid = self.grid;
+        self.out.pts.extend(poly.iter().map(|&p| grid.to_int(p)));
+        self.out.polys.push(start..self.out.pts.len() as u32);
+    }
+
+    fn end(&mut self, (first, _): (u32, f64), idx: usize, rapid: bool, start: P) {
+        let last = self.out.polys.len() as u32;
+        if last == first {
+            return; // wholly outside the envelope: air
+        }
+        let mut bbox = IBox::EMPTY;
+        let mut perimeter = 0.0;
+        for r in &self.out.polys[first as usize..last as usize] {
+            let ring = &self.out.pts[r.start as usize..r.end as usize];
+            for (k, &p) in ring.iter().enumerate() {
+                bbox.add(p);
+                let q = ring[(k + 1) % ring.len()];
+                perimeter += f64::from(q.x - p.x).hypot(f64::from(q.y - p.y));
+            }
+        }
+        perimeter *= self.grid.step();
+        // rounding to the grid can open slivers of at most a grid step along any edge
+        let eps = crate::CRASH_MIN_AREA.max(2.0 * self.grid.step() * perimeter);
+        self.out.items.push(Item { seg: idx, rapid, polys: first..last, bbox, start, eps });
+    }
+
+    /// Takes the sweeps built so far (the current run, if any, stays open).
+    pub(crate) fn take(&mut self) -> Sweeps {
+        std::mem::take(&mut self.out)
+    }
+}
