@@ -4,10 +4,10 @@
 use crate::layout::{colour, FS_SMALL, FS_TEXT, FS_VERDICT, RIGHT_BOTTOM, RIGHT_W, RIGHT_X};
 use crate::report::{Diagnostic, Report, Verdict};
 use crate::svg::Doc;
-use crate::text::{chars_fitting, duration, mm, plural, quantity, wrap};
+use crate::text::{chars_fitting, duration, grouped, mm, plural, quantity, wrap};
 
 /// Width of the label column.
-const LABEL_W: f64 = 118.0;
+const LABEL_W: f64 = 104.0;
 /// Row pitch of label/value rows.
 const ROW: f64 = 22.0;
 /// Row pitch of diagnostic lines.
@@ -32,7 +32,7 @@ fn verdict_text(report: &Report) -> (String, &'static str) {
             .filter(|d| d.is_finite())
             .fold(0.0, f64::max);
         parts.push(format!(
-            "{} (max {})",
+            "{} ({} deep)",
             plural(report.gouges.len(), "gouge", "gouges"),
             mm(deepest)
         ));
@@ -71,7 +71,8 @@ impl Block<'_> {
     fn row(&mut self, label: &str, value: &str, size: f64, fill: &str, max_lines: usize) {
         let vx = RIGHT_X + LABEL_W;
         let chars = chars_fitting(RIGHT_W - LABEL_W, size);
-        self.doc.text(RIGHT_X, self.y, FS_TEXT, "start", colour::MUTED, label);
+        self.doc
+            .text(RIGHT_X, self.y, FS_TEXT, "start", colour::MUTED, label);
         let lines = wrap(value, chars, max_lines);
         if lines.is_empty() {
             self.doc.text(vx, self.y, size, "start", colour::MUTED, "—");
@@ -90,25 +91,42 @@ impl Block<'_> {
             return;
         }
         self.y += 6.0;
-        self.doc.text(RIGHT_X, self.y, FS_TEXT, "start", fill, &format!("{title} ({})", list.len()));
+        self.doc.text(
+            RIGHT_X,
+            self.y,
+            FS_TEXT,
+            "start",
+            fill,
+            &format!("{title} ({})", list.len()),
+        );
         self.y += DIAG_ROW + 2.0;
         let mut left = rows.saturating_sub(1);
         let chars = chars_fitting(RIGHT_W - 14.0, FS_SMALL);
         for (i, d) in list.iter().enumerate() {
-            let remaining_after = list.len() - i - 1;
-            let lines = wrap(&diag_text(d), chars, 2);
             // Keep a row for "+N more" unless this is the last item.
-            let need = lines.len() + usize::from(remaining_after > 0);
-            if need > left {
-                if left == 0 {
-                    break;
+            let more_row = usize::from(i + 1 < list.len());
+            let max_lines = 2.min(left.saturating_sub(more_row));
+            if max_lines == 0 {
+                if left > 0 {
+                    let more = format!("+{} more", list.len() - i);
+                    self.doc.text(
+                        RIGHT_X + 14.0,
+                        self.y,
+                        FS_SMALL,
+                        "start",
+                        colour::MUTED,
+                        &more,
+                    );
+                    self.y += DIAG_ROW;
                 }
-                self.doc.text(RIGHT_X + 14.0, self.y, FS_SMALL, "start", colour::MUTED, &format!("+{} more", list.len() - i));
-                self.y += DIAG_ROW;
                 return;
             }
-            for (j, l) in lines.iter().enumerate() {
-                let x = if j == 0 { RIGHT_X + 14.0 } else { RIGHT_X + 28.0 };
+            for (j, l) in wrap(&diag_text(d), chars, max_lines).iter().enumerate() {
+                let x = if j == 0 {
+                    RIGHT_X + 14.0
+                } else {
+                    RIGHT_X + 28.0
+                };
                 self.doc.text(x, self.y, FS_SMALL, "start", colour::INK, l);
                 self.y += DIAG_ROW;
                 left -= 1;
@@ -117,10 +135,35 @@ impl Block<'_> {
     }
 }
 
-/// Draw the title block starting below `top`.
-pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
-    doc.raw("<g id=\"title-block\">\n");
-    let mut b = Block { doc, y: top + 24.0 };
+/// Rows a diagnostics list would like at least: its header and up to `items` items
+/// (two lines each at most) and a "+N more" line.
+fn diag_rows_wanted(list: &[Diagnostic], items: usize) -> usize {
+    if list.is_empty() {
+        return 0;
+    }
+    let chars = chars_fitting(RIGHT_W - 14.0, FS_SMALL);
+    let lines: usize = list
+        .iter()
+        .take(items)
+        .map(|d| wrap(&diag_text(d), chars, 2).len())
+        .sum();
+    1 + lines + usize::from(list.len() > items)
+}
+
+/// Height the title block needs (fixed rows plus a useful share of the diagnostics), so
+/// the detail views above it can give way.
+pub(crate) fn min_height(report: &Report) -> f64 {
+    let mut scratch = Doc { out: String::new() };
+    let mut b = Block {
+        doc: &mut scratch,
+        y: 0.0,
+    };
+    fixed_rows(&mut b, report);
+    let diag = diag_rows_wanted(&report.alarms, 3) + diag_rows_wanted(&report.warnings, 2);
+    b.y + 24.0 + 12.0 + diag as f64 * DIAG_ROW + 12.0
+}
+
+fn fixed_rows(b: &mut Block, report: &Report) {
     let (verdict, vc) = verdict_text(report);
     b.row("verdict", &verdict, FS_VERDICT, vc, 2);
 
@@ -132,7 +175,12 @@ pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
     let feed = report.segments.saturating_sub(report.rapid_segments);
     b.row(
         "moves",
-        &format!("{} (rapid {}, feed {feed})", report.segments, report.rapid_segments),
+        &format!(
+            "{} (rapid {}, feed {})",
+            grouped(report.segments as f64, 0),
+            grouped(report.rapid_segments as f64, 0),
+            grouped(feed as f64, 0)
+        ),
         FS_TEXT,
         colour::INK,
         1,
@@ -142,10 +190,22 @@ pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
         b.row("tools", "", FS_TEXT, colour::INK, 1);
     }
     for (i, t) in report.tools.iter().take(MAX_TOOLS).enumerate() {
-        b.row(if i == 0 { "tools" } else { "" }, t, FS_TEXT, colour::INK, 1);
+        b.row(
+            if i == 0 { "tools" } else { "" },
+            t,
+            FS_TEXT,
+            colour::INK,
+            1,
+        );
     }
     if report.tools.len() > MAX_TOOLS {
-        b.row("", &format!("+{} more", report.tools.len() - MAX_TOOLS), FS_TEXT, colour::MUTED, 1);
+        b.row(
+            "",
+            &format!("+{} more", report.tools.len() - MAX_TOOLS),
+            FS_TEXT,
+            colour::MUTED,
+            1,
+        );
     }
     b.row(
         "removed",
@@ -158,33 +218,60 @@ pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
         colour::INK,
         1,
     );
-    b.row("cycle time", &duration(report.cycle_time_s), FS_TEXT, colour::INK, 1);
-    b.row("tolerance", &mm(report.tolerance_mm), FS_TEXT, colour::INK, 1);
+    b.row(
+        "cycle time",
+        &duration(report.cycle_time_s),
+        FS_TEXT,
+        colour::INK,
+        1,
+    );
+    b.row(
+        "tolerance",
+        &mm(report.tolerance_mm),
+        FS_TEXT,
+        colour::INK,
+        1,
+    );
     if let Some(d) = &report.deviation {
         b.row(
-            "overcut",
-            &format!("{} mm², max {}", quantity(d.overcut_area_mm2), mm(d.max_overcut_mm)),
+            "deviation",
+            &format!(
+                "over {} mm² (max {}), under {} mm² (max {})",
+                quantity(d.overcut_area_mm2),
+                mm(d.max_overcut_mm),
+                quantity(d.undercut_area_mm2),
+                mm(d.max_undercut_mm)
+            ),
             FS_TEXT,
             colour::INK,
-            1,
-        );
-        b.row(
-            "undercut",
-            &format!("{} mm², max {}", quantity(d.undercut_area_mm2), mm(d.max_undercut_mm)),
-            FS_TEXT,
-            colour::INK,
-            1,
+            2,
         );
     }
+}
 
-    // Share what is left between alarms and warnings; alarms first but warnings keep
-    // room for their header, one item and "+N more".
+/// Draw the title block starting below `top`.
+pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
+    doc.raw("<g id=\"title-block\">\n");
+    let mut b = Block { doc, y: top + 24.0 };
+    fixed_rows(&mut b, report);
+
+    // Share what is left: alarms first, but warnings keep room for their header, an
+    // item and "+N more" when there is room at all.
     let rows = ((RIGHT_BOTTOM - b.y - 12.0) / DIAG_ROW).floor().max(0.0) as usize;
-    let warn_min = if report.warnings.is_empty() { 0 } else { 4.min(rows) };
-    let alarm_rows = if report.alarms.is_empty() { 0 } else { rows.saturating_sub(warn_min) };
+    let warn_min = diag_rows_wanted(&report.warnings, 1).min(3);
+    let alarm_rows = if rows >= warn_min + 3 {
+        rows - warn_min
+    } else {
+        rows
+    };
     let y0 = b.y;
     b.diags("alarms", &report.alarms, colour::BAD, alarm_rows);
-    let used = ((b.y - y0) / DIAG_ROW).ceil() as usize + 1;
-    b.diags("warnings", &report.warnings, colour::WARN, rows.saturating_sub(used));
+    let used = ((b.y - y0) / DIAG_ROW).ceil() as usize;
+    b.diags(
+        "warnings",
+        &report.warnings,
+        colour::WARN,
+        rows.saturating_sub(used),
+    );
     b.doc.raw("</g>\n");
 }

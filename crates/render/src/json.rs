@@ -31,11 +31,7 @@ impl Polygon {
     fn from(s: &Shape) -> Self {
         Self {
             outer: s.outer.iter().map(zx).collect(),
-            holes: s
-                .holes
-                .iter()
-                .map(|h| h.iter().map(zx).collect())
-                .collect(),
+            holes: s.holes.iter().map(|h| h.iter().map(zx).collect()).collect(),
         }
     }
 }

@@ -14,7 +14,7 @@ pub(crate) const MAIN: [f64; 4] = [100.0, 64.0, 940.0, 776.0];
 /// Left edge and width of the right column (detail views, title block).
 pub(crate) const RIGHT_X: f64 = 1100.0;
 /// Width of the right column.
-pub(crate) const RIGHT_W: f64 = 470.0;
+pub(crate) const RIGHT_W: f64 = 484.0;
 /// Top of the right column.
 pub(crate) const RIGHT_TOP: f64 = 64.0;
 /// Lowest baseline in the right column.
@@ -31,7 +31,7 @@ pub(crate) const FS_TEXT: f64 = 14.0;
 /// Long lists (diagnostics) and detail titles.
 pub(crate) const FS_SMALL: f64 = 13.0;
 /// The verdict.
-pub(crate) const FS_VERDICT: f64 = 17.0;
+pub(crate) const FS_VERDICT: f64 = 16.0;
 
 /// Colours.
 pub(crate) mod colour {

@@ -47,7 +47,7 @@ pub fn svg(report: &Report) -> String {
     svg::svg(report)
 }
 
-/// The same picture rasterised (anti-aliased, embedded DejaVu Sans), as PNG bytes of
+/// The same picture rasterised (anti-aliased, embedded `DejaVu Sans`), as PNG bytes of
 /// 1600 × 1000 px. Deterministic: the same report gives the same bytes.
 pub fn png(report: &Report) -> Result<Vec<u8>, RenderError> {
     png::rasterise(&svg::svg(report))

@@ -2,9 +2,9 @@
 //! where it overlaps neither the frame nor another label.
 
 use crate::layout::{colour, FS_TEXT};
+use crate::report::Report;
 use crate::scale::View;
 use crate::svg::{marker, Doc};
-use crate::report::Report;
 use crate::text::width;
 
 /// At most this many labelled markers of each kind (the title block lists the rest).
@@ -43,22 +43,32 @@ fn place(v: &View, x: f64, y: f64, w: f64, h: f64, placed: &[Rect]) -> Option<Re
             && top + h <= inner[1] + inner[3];
         // Keep the marker itself visible too.
         let marker_box = [x - 9.0, y - 9.0, 18.0, 18.0];
-        (inside && !overlaps(&r, &marker_box) && placed.iter().all(|p| !overlaps(&r, p))).then_some(r)
+        (inside && !overlaps(&r, &marker_box) && placed.iter().all(|p| !overlaps(&r, p)))
+            .then_some(r)
     })
 }
 
 /// Draw markers and labels for crashes (purple) and gouges (red).
 pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
     let mut placed: Vec<Rect> = Vec::new();
-    let crashes = report.crashes.iter().map(|c| (c.z, c.r, c.line, "crash", colour::CRASH));
-    let gouges = report.gouges.iter().map(|g| (g.z, g.r, g.line, "gouge", colour::GOUGE));
-    let items: Vec<_> = crashes.take(MAX_LABELS).chain(gouges.take(MAX_LABELS)).collect();
+    let crashes = report
+        .crashes
+        .iter()
+        .map(|c| (c.z, c.r, c.line, "crash", colour::CRASH));
+    let gouges = report
+        .gouges
+        .iter()
+        .map(|g| (g.z, g.r, g.line, "gouge", colour::GOUGE));
+    let items: Vec<_> = crashes
+        .take(MAX_LABELS)
+        .chain(gouges.take(MAX_LABELS))
+        .collect();
     doc.raw("<g id=\"findings\">\n");
     // Markers first, so labels can avoid all of them.
     let mut shown = Vec::new();
     for &(z, r, line, what, c) in &items {
         let (x, y) = (v.x(z), v.y(r));
-        if !(x.is_finite() && y.is_finite()) || !v.contains_px(x, y) {
+        if !(x.is_finite() && y.is_finite() && v.contains_px(x, y)) {
             continue;
         }
         if what == "crash" {
@@ -84,7 +94,13 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
         let ly = r[1] + r[3] / 2.0;
         let (dx, dy) = (lx - x, ly - y);
         let len = (dx * dx + dy * dy).sqrt().max(1e-9);
-        doc.line([x + dx / len * 9.0, y + dy / len * 9.0], [lx, ly], c, 1.3, "");
+        doc.line(
+            [x + dx / len * 9.0, y + dy / len * 9.0],
+            [lx, ly],
+            c,
+            1.3,
+            "",
+        );
         doc.raw(&format!(
             "<rect x=\"{:.2}\" y=\"{:.2}\" width=\"{:.2}\" height=\"{:.2}\" rx=\"3\" fill=\"#ffffff\" fill-opacity=\"0.9\" stroke=\"{c}\" stroke-width=\"1\"/>\n",
             r[0], r[1], r[2], r[3]

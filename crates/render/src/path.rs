@@ -193,7 +193,12 @@ fn one_pass(lines: &[PathLine], min_dist: f64, window: &Bbox, stride: usize) -> 
 /// Thin the toolpath for a view: only segments touching `window` (mm), duplicates drawn
 /// once, points closer than `min_dist` (mm) to the previous kept point dropped, and at
 /// most about `cap` points: beyond that only every k-th segment is drawn.
-pub(crate) fn toolpath_d(lines: &[PathLine], min_dist: f64, window: &Bbox, cap: usize) -> ToolpathD {
+pub(crate) fn toolpath_d(
+    lines: &[PathLine],
+    min_dist: f64,
+    window: &Bbox,
+    cap: usize,
+) -> ToolpathD {
     let min_dist = if min_dist.is_finite() && min_dist > 0.0 {
         min_dist
     } else {
@@ -255,13 +260,22 @@ mod tests {
 
     #[test]
     fn nan_points_do_not_leak() {
-        let lines = vec![line(PathKind::Feed, &[[0.0, 1.0], [f64::NAN, 2.0], [3.0, 4.0], [5.0, 4.0]])];
+        let lines = vec![line(
+            PathKind::Feed,
+            &[[0.0, 1.0], [f64::NAN, 2.0], [3.0, 4.0], [5.0, 4.0]],
+        )];
         let t = toolpath_d(&lines, 0.01, &Bbox::new(-9.0, 9.0, -9.0, 9.0), 100);
         assert!(!t.feed.contains("NaN"));
         assert_eq!(t.feed, "M3,4L5,4");
         let s = shapes_d(
             &[Shape {
-                outer: vec![[0.0, 0.0], [f64::NAN, 1.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+                outer: vec![
+                    [0.0, 0.0],
+                    [f64::NAN, 1.0],
+                    [1.0, 0.0],
+                    [1.0, 1.0],
+                    [0.0, 1.0],
+                ],
                 holes: vec![vec![[0.0, 0.0]]],
             }],
             1e-6,

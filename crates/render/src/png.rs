@@ -1,4 +1,4 @@
-//! Rasterise the report SVG with resvg (tiny-skia, anti-aliased) using the DejaVu Sans
+//! Rasterise the report SVG with resvg (tiny-skia, anti-aliased) using the `DejaVu Sans`
 //! font embedded in the binary, so the picture never depends on system fonts.
 
 use std::sync::OnceLock;

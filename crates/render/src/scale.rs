@@ -153,10 +153,7 @@ impl View {
         let w = data.w().max(1e-6);
         let h = data.h().max(1e-6);
         let s = (px[2] / w).min(px[3] / h);
-        let (cz, cr) = (
-            (data.zmin + data.zmax) / 2.0,
-            (data.rmin + data.rmax) / 2.0,
-        );
+        let (cz, cr) = ((data.zmin + data.zmax) / 2.0, (data.rmin + data.rmax) / 2.0);
         let (hw, hh) = (px[2] / s / 2.0, px[3] / s / 2.0);
         Self {
             mm: Bbox::new(cz - hw, cz + hw, cr - hh, cr + hh),

@@ -79,7 +79,15 @@ impl Doc {
 
     /// A path in mm inside a view transform; widths and dashes are given in px and
     /// converted so they look the same at any scale.
-    pub(crate) fn mm_path(&mut self, v: &View, d: &str, fill: &str, stroke: &str, px_w: f64, dash: &[f64]) {
+    pub(crate) fn mm_path(
+        &mut self,
+        v: &View,
+        d: &str,
+        fill: &str,
+        stroke: &str,
+        px_w: f64,
+        dash: &[f64],
+    ) {
         if d.is_empty() {
             return;
         }
@@ -98,31 +106,81 @@ impl Doc {
 
 /// Shapes and toolpath of a view, in mm under its transform: used by the main view and
 /// the detail views alike. `mirror`: also draw the lighter lower half.
-pub(crate) fn draw_content(doc: &mut Doc, report: &Report, v: &View, mirror: bool, point_cap: usize, toolpath_id: Option<&str>) -> bool {
+pub(crate) fn draw_content(
+    doc: &mut Doc,
+    report: &Report,
+    v: &View,
+    mirror: bool,
+    point_cap: usize,
+    toolpath_id: Option<&str>,
+) -> bool {
     let md = MIN_PX / v.s;
     let blank = shapes_d(&report.stock.shapes, md);
     let part = shapes_d(&report.final_part, md);
     if mirror {
-        let _ = writeln!(doc.out, r#"<g id="mirror" transform="{}">"#, v.transform(true));
+        let _ = writeln!(
+            doc.out,
+            r#"<g id="mirror" transform="{}">"#,
+            v.transform(true)
+        );
         doc.mm_path(v, &blank, colour::BLANK_MIRROR, "#d5d0c4", 1.0, &[]);
         doc.mm_path(v, &part, colour::PART_MIRROR, "#b9c4d3", 1.0, &[]);
         doc.raw("</g>\n");
     }
-    let _ = writeln!(doc.out, r#"<g id="{}" transform="{}">"#, if mirror { "section" } else { "detail-section" }, v.transform(false));
+    let _ = writeln!(
+        doc.out,
+        r#"<g id="{}" transform="{}">"#,
+        if mirror { "section" } else { "detail-section" },
+        v.transform(false)
+    );
     doc.mm_path(v, &blank, colour::BLANK, colour::BLANK_EDGE, 1.0, &[]);
     doc.mm_path(v, &part, colour::PART, colour::PART_EDGE, 1.3, &[]);
-    doc.mm_path(v, &shapes_d(&report.leftovers, md), colour::LEFTOVER, colour::LEFTOVER, 0.8, &[]);
-    doc.mm_path(v, &shapes_d(&report.gouge_shapes, md), colour::GOUGE, colour::GOUGE, 0.8, &[]);
-    doc.mm_path(v, &shapes_d(&report.intended, md), "none", colour::INTENDED, 1.6, &[7.0, 4.0]);
+    doc.mm_path(
+        v,
+        &shapes_d(&report.leftovers, md),
+        colour::LEFTOVER,
+        colour::LEFTOVER,
+        0.8,
+        &[],
+    );
+    doc.mm_path(
+        v,
+        &shapes_d(&report.gouge_shapes, md),
+        colour::GOUGE,
+        colour::GOUGE,
+        0.8,
+        &[],
+    );
+    doc.mm_path(
+        v,
+        &shapes_d(&report.intended, md),
+        "none",
+        colour::INTENDED,
+        1.6,
+        &[7.0, 4.0],
+    );
     doc.raw("</g>\n");
 
-    let tp = toolpath_d(&report.toolpath, md, &v.mm.grow(v.mm.w().max(v.mm.h()) * 0.05), point_cap);
+    let tp = toolpath_d(
+        &report.toolpath,
+        md,
+        &v.mm.grow(v.mm.w().max(v.mm.h()) * 0.05),
+        point_cap,
+    );
     match toolpath_id {
         Some(id) => {
-            let _ = writeln!(doc.out, r#"<g id="{id}" transform="{}" opacity="0.9">"#, v.transform(false));
+            let _ = writeln!(
+                doc.out,
+                r#"<g id="{id}" transform="{}" opacity="0.9">"#,
+                v.transform(false)
+            );
         }
         None => {
-            let _ = writeln!(doc.out, r#"<g transform="{}" opacity="0.9">"#, v.transform(false));
+            let _ = writeln!(
+                doc.out,
+                r#"<g transform="{}" opacity="0.9">"#,
+                v.transform(false)
+            );
         }
     }
     doc.mm_path(v, &tp.rapid, "none", colour::RAPID, 1.1, &[5.0, 4.0]);
@@ -152,12 +210,26 @@ pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
     for &t in &zt {
         let x = v.x(t);
         doc.line([x, y1], [x, y1 + 5.0], colour::INK, 1.0, "");
-        doc.text(x, y1 + 19.0, FS_TICK, "middle", colour::INK, &tick_label(t, dec));
+        doc.text(
+            x,
+            y1 + 19.0,
+            FS_TICK,
+            "middle",
+            colour::INK,
+            &tick_label(t, dec),
+        );
     }
     for &t in &rt {
         let y = v.y(t);
         doc.line([x0 - 5.0, y], [x0, y], colour::INK, 1.0, "");
-        doc.text(x0 - 8.0, y + FS_TICK * 0.35, FS_TICK, "end", colour::INK, &tick_label(t, dec));
+        doc.text(
+            x0 - 8.0,
+            y + FS_TICK * 0.35,
+            FS_TICK,
+            "end",
+            colour::INK,
+            &tick_label(t, dec),
+        );
     }
     step
 }
@@ -166,7 +238,13 @@ pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
 pub(crate) fn centre_line(doc: &mut Doc, v: &View) {
     let y = v.y(0.0);
     if y >= v.px[1] && y <= v.bottom() {
-        doc.line([v.px[0], y], [v.right(), y], "#2b2f36", 1.0, r#"stroke-dasharray="16 4 3 4""#);
+        doc.line(
+            [v.px[0], y],
+            [v.right(), y],
+            "#2b2f36",
+            1.0,
+            r#"stroke-dasharray="16 4 3 4""#,
+        );
     }
 }
 
@@ -181,7 +259,9 @@ fn tick_room(v: &View) -> f64 {
 
 /// The full report picture.
 pub(crate) fn svg(report: &Report) -> String {
-    let mut doc = Doc { out: String::with_capacity(64 * 1024) };
+    let mut doc = Doc {
+        out: String::with_capacity(64 * 1024),
+    };
     let _ = writeln!(
         doc.out,
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="DejaVu Sans">"#,
@@ -192,7 +272,10 @@ pub(crate) fn svg(report: &Report) -> String {
 
     // Title line.
     let mut title = report.program.clone();
-    let stem = report.program.rsplit_once('.').map_or(report.program.as_str(), |(s, _)| s);
+    let stem = report
+        .program
+        .rsplit_once('.')
+        .map_or(report.program.as_str(), |(s, _)| s);
     if !report.title.is_empty() && report.title != stem && report.title != report.program {
         title = format!("{title} ({})", report.title);
     }
@@ -203,7 +286,14 @@ pub(crate) fn svg(report: &Report) -> String {
         title = "latsim report".to_string();
     }
     let max_chars = crate::text::chars_fitting(MAIN[2], FS_TITLE);
-    doc.text(MAIN[0], MAIN[1] - 16.0, FS_TITLE, "start", colour::INK, &truncate(&title, max_chars));
+    doc.text(
+        MAIN[0],
+        MAIN[1] - 16.0,
+        FS_TITLE,
+        "start",
+        colour::INK,
+        &truncate(&title, max_chars),
+    );
 
     // Main view.
     let v = View::fit(layout::main_window(report), MAIN);
@@ -218,7 +308,14 @@ pub(crate) fn svg(report: &Report) -> String {
     centre_line(&mut doc, &v);
     doc.raw("</g>\n");
     doc.rect(MAIN, "none", "#2b2f36", 1.2);
-    doc.text(MAIN[0] + MAIN[2] / 2.0, v.bottom() + 42.0, FS_TEXT, "middle", colour::INK, "Z (mm)");
+    doc.text(
+        MAIN[0] + MAIN[2] / 2.0,
+        v.bottom() + 42.0,
+        FS_TEXT,
+        "middle",
+        colour::INK,
+        "Z (mm)",
+    );
     let _ = writeln!(
         doc.out,
         r#"<text x="0" y="0" font-size="{FS_TEXT}" text-anchor="middle" fill="{}" transform="translate(34 {}) rotate(-90)">X/2 (mm)</text>"#,
@@ -228,7 +325,12 @@ pub(crate) fn svg(report: &Report) -> String {
 
     crate::marks::findings(&mut doc, report, &v);
     legend(&mut doc, report, thinned);
-    let used = detail::details(&mut doc, report, &v);
+    let used = detail::details(
+        &mut doc,
+        report,
+        &v,
+        layout::RIGHT_BOTTOM - block::min_height(report),
+    );
     block::title_block(&mut doc, report, used);
     doc.raw("</svg>\n");
     doc.out
@@ -245,7 +347,10 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
     let has = |k: PathKind| report.toolpath.iter().any(|l| l.kind == k);
     let mut items: Vec<(Sw, &str)> = vec![
         (Sw::Fill(colour::PART, colour::PART_EDGE), "final part"),
-        (Sw::Fill(colour::BLANK, colour::BLANK_EDGE), "blank (removed)"),
+        (
+            Sw::Fill(colour::BLANK, colour::BLANK_EDGE),
+            "blank (removed)",
+        ),
     ];
     if !report.intended.is_empty() {
         items.push((Sw::Line(colour::INTENDED, "7 4"), "intended (dashed)"));
@@ -278,7 +383,11 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
         match sw {
             Sw::Fill(f, s) => doc.rect([x, y - 12.0, 22.0, 14.0], f, s, 1.0),
             Sw::Line(c, dash) => {
-                let extra = if dash.is_empty() { String::new() } else { format!(r#"stroke-dasharray="{dash}""#) };
+                let extra = if dash.is_empty() {
+                    String::new()
+                } else {
+                    format!(r#"stroke-dasharray="{dash}""#)
+                };
                 doc.line([x, y - 5.0], [x + 22.0, y - 5.0], c, 2.2, &extra);
             }
             Sw::Marker => marker(doc, x + 11.0, y - 5.0, colour::CRASH),

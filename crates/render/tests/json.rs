@@ -48,7 +48,12 @@ fn field_names_are_the_contract() {
         assert!(!g[k].is_null(), "gouge.{k}");
     }
     let d = &v["deviation"];
-    for k in ["overcut_area_mm2", "undercut_area_mm2", "max_overcut_mm", "max_undercut_mm"] {
+    for k in [
+        "overcut_area_mm2",
+        "undercut_area_mm2",
+        "max_overcut_mm",
+        "max_undercut_mm",
+    ] {
         assert!(d[k].is_number(), "deviation.{k}");
     }
     assert_eq!(v["segments"], 11);

@@ -19,7 +19,10 @@ fn dir() -> PathBuf {
 
 /// Pixels differing by more than the tolerance, and the diff picture.
 fn compare(expected: &RgbImage, actual: &RgbImage) -> (usize, RgbImage) {
-    let (w, h) = (expected.width().max(actual.width()), expected.height().max(actual.height()));
+    let (w, h) = (
+        expected.width().max(actual.width()),
+        expected.height().max(actual.height()),
+    );
     let mut diff = RgbImage::from_pixel(w, h, Rgb([255, 255, 255]));
     let mut bad = 0;
     for y in 0..h {
@@ -27,7 +30,11 @@ fn compare(expected: &RgbImage, actual: &RgbImage) -> (usize, RgbImage) {
             let e = expected.get_pixel_checked(x, y);
             let a = actual.get_pixel_checked(x, y);
             let differs = match (e, a) {
-                (Some(e), Some(a)) => e.0.iter().zip(a.0).any(|(p, q)| p.abs_diff(q) > CHANNEL_TOL),
+                (Some(e), Some(a)) => {
+                    e.0.iter()
+                        .zip(a.0)
+                        .any(|(p, q)| p.abs_diff(q) > CHANNEL_TOL)
+                }
                 _ => true,
             };
             if differs {
@@ -69,8 +76,12 @@ fn check(name: &str, report: &render::Report) -> Result<(), String> {
         std::fs::write(&reference, &png).map_err(|e| e.to_string())?;
         return Ok(());
     }
-    let expected = std::fs::read(&reference)
-        .map_err(|e| format!("{}: {e} (run with LATSIM_BLESS=1 to create it)", reference.display()))?;
+    let expected = std::fs::read(&reference).map_err(|e| {
+        format!(
+            "{}: {e} (run with LATSIM_BLESS=1 to create it)",
+            reference.display()
+        )
+    })?;
     let (expected, actual) = (decode(&expected), decode(&png));
     let (bad, diff) = compare(&expected, &actual);
     if bad <= MAX_BAD_PIXELS && expected.dimensions() == actual.dimensions() {

@@ -16,7 +16,7 @@ fn has_layers_legend_and_title_block() {
         r#"font-family="DejaVu Sans""#,
         "Z (mm)",
         "X/2 (mm)",
-        "CRASH — 1 crash, 1 gouge",
+        "CRASH — 1 crash, 1 gouge (0.2 mm deep)",
         "crash line 14",
         "1 min 42 s",
         "bar Ø40 × 60, face at Z0",
@@ -45,7 +45,11 @@ fn million_segments_stay_bounded() {
     let r = common::many_segments(1_000_000);
     let t = std::time::Instant::now();
     let s = render::svg(&r);
-    println!("svg of 10^6 segments: {} bytes in {:?}", s.len(), t.elapsed());
+    println!(
+        "svg of 10^6 segments: {} bytes in {:?}",
+        s.len(),
+        t.elapsed()
+    );
     // 200k points at ~16 bytes, plus the page.
     assert!(s.len() < 5_000_000, "{} bytes", s.len());
     assert!(s.contains("toolpath thinned"));
@@ -62,7 +66,11 @@ fn png_time_for_1e5_segments() {
     let r = common::many_segments(100_000);
     let t = std::time::Instant::now();
     let png = render::png(&r).unwrap();
-    println!("png of 10^5 segments: {} bytes in {:?}", png.len(), t.elapsed());
+    println!(
+        "png of 10^5 segments: {} bytes in {:?}",
+        png.len(),
+        t.elapsed()
+    );
 }
 
 #[test]
@@ -77,9 +85,20 @@ fn degenerate_reports_do_not_panic() {
     r.stock.shapes.clear();
     reports.push(r);
     let mut r = common::groove_bar();
-    r.final_part.push(Shape { outer: vec![[nan, nan], [1.0, nan]], holes: vec![vec![]] });
-    r.toolpath.push(PathLine { kind: PathKind::Thread, line: 1, points: vec![[nan, 1.0], [f64::INFINITY, 2.0]] });
-    r.toolpath.push(PathLine { kind: PathKind::Feed, line: 2, points: vec![] });
+    r.final_part.push(Shape {
+        outer: vec![[nan, nan], [1.0, nan]],
+        holes: vec![vec![]],
+    });
+    r.toolpath.push(PathLine {
+        kind: PathKind::Thread,
+        line: 1,
+        points: vec![[nan, 1.0], [f64::INFINITY, 2.0]],
+    });
+    r.toolpath.push(PathLine {
+        kind: PathKind::Feed,
+        line: 2,
+        points: vec![],
+    });
     r.crashes[0].z = nan;
     r.gouges[0].depth_mm = nan;
     r.cycle_time_s = nan;
@@ -88,8 +107,15 @@ fn degenerate_reports_do_not_panic() {
     reports.push(r);
     // A single point and a huge coordinate.
     let mut r = Report::default();
-    r.toolpath.push(PathLine { kind: PathKind::Rapid, line: 1, points: vec![[1e300, -1e300], [0.0, 0.0]] });
-    r.final_part.push(Shape { outer: vec![[5.0, 5.0]], holes: vec![] });
+    r.toolpath.push(PathLine {
+        kind: PathKind::Rapid,
+        line: 1,
+        points: vec![[1e300, -1e300], [0.0, 0.0]],
+    });
+    r.final_part.push(Shape {
+        outer: vec![[5.0, 5.0]],
+        holes: vec![],
+    });
     reports.push(r);
     // Many diagnostics, tools and long words.
     let mut r = common::groove_bar();
@@ -101,12 +127,17 @@ fn degenerate_reports_do_not_panic() {
             message: format!("alarm {i} {}", "x".repeat(200)),
         });
     }
-    r.tools = (0..20).map(|i| format!("T{i:02} {}", "long ".repeat(30))).collect();
+    r.tools = (0..20)
+        .map(|i| format!("T{i:02} {}", "long ".repeat(30)))
+        .collect();
     r.program = "<&>\"".repeat(100);
     reports.push(r);
     for r in &reports {
         let s = render::svg(r);
-        assert!(!s.contains("NaN") && !s.contains("inf"), "non-finite number in SVG");
+        assert!(
+            !s.contains("NaN") && !s.contains("inf"),
+            "non-finite number in SVG"
+        );
         render::png(r).expect("renders");
         serde_json::from_str::<serde_json::Value>(&render::json(r)).expect("valid JSON");
     }

@@ -4,11 +4,18 @@
 use render::*;
 
 fn shape(outer: &[[f64; 2]]) -> Shape {
-    Shape { outer: outer.to_vec(), holes: vec![] }
+    Shape {
+        outer: outer.to_vec(),
+        holes: vec![],
+    }
 }
 
 fn mv(kind: PathKind, line: u32, pts: &[[f64; 2]]) -> PathLine {
-    PathLine { kind, line, points: pts.to_vec() }
+    PathLine {
+        kind,
+        line,
+        points: pts.to_vec(),
+    }
 }
 
 /// A Φ40 × 60 bar turned to Φ36 with a 5 mm groove, one crash (a rapid into the
@@ -88,9 +95,14 @@ pub(crate) fn many_segments(n: usize) -> Report {
     while r.toolpath.len() < n {
         let z = -((i % 5000) as f64) * 0.0117 - 1.0;
         let depth = 18.0 - (i / 5000) as f64 * 0.013;
-        r.toolpath.push(mv(PathKind::Feed, (i + 1) as u32, &[[z, 21.0], [z, depth]]));
+        r.toolpath
+            .push(mv(PathKind::Feed, (i + 1) as u32, &[[z, 21.0], [z, depth]]));
         if r.toolpath.len() < n {
-            r.toolpath.push(mv(PathKind::Rapid, (i + 1) as u32, &[[z, depth], [z, 21.0]]));
+            r.toolpath.push(mv(
+                PathKind::Rapid,
+                (i + 1) as u32,
+                &[[z, depth], [z, 21.0]],
+            ));
         }
         i += 1;
     }
