@@ -324,3 +324,162 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{hausdorff, symmetric_difference_area, Insert, Tool};
+    use expander::{Arc, Feed, Motion, Pt, Span};
+
+    fn seg(motion: Motion, from: [f64; 2], to: [f64; 2]) -> Segment {
+        Segment {
+            motion,
+            from: Pt::new(from[0], from[1]),
+            to: Pt::new(to[0], to[1]),
+            arc: None,
+            tool: 1,
+            lead: 0.0,
+            feed: Feed::Rapid,
+            span: Span::default(),
+        }
+    }
+
+    fn rect(z0: f64, z1: f64, r0: f64, r1: f64) -> Shape {
+        Shape { outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]], holes: vec![] }
+    }
+
+    fn run(blank: &Blank, tools: &ToolTable, segs: &[Segment]) -> Simulation {
+        simulate(blank, tools, segs, &SimOptions::default(), &mut |_| {})
+    }
+
+    fn v35() -> ToolTable {
+        ToolTable::from_tools(vec![(
+            1,
+            Tool::Turning { insert: Insert::V, nose_radius: 0.4, tip: 3, entering_angle: 93.0, edge: 11.0 },
+        )])
+    }
+
+    #[test]
+    fn straight_turning_pass_removes_exactly_the_rectangle() {
+        let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
+        let sim = run(&blank, &v35(), &[seg(Motion::Feed, [5.0, 20.0], [-115.0, 20.0])]);
+        let expected = [rect(-110.0, 0.0, 0.0, 20.0)];
+        let d = symmetric_difference_area(&sim.final_shapes, &expected);
+        assert!(d < 1e-6 * 2200.0, "symmetric difference {d}");
+        assert!((sim.removed_area - 110.0 * 5.0).abs() < 1e-6, "{}", sim.removed_area);
+        let pi = std::f64::consts::PI;
+        assert!((sim.removed_volume - pi * (625.0 - 400.0) * 110.0).abs() < 1e-3, "{}", sim.removed_volume);
+        assert!(sim.crashes.is_empty());
+    }
+
+    #[test]
+    fn arc_with_a_sharp_tool_gives_the_arc() {
+        let tools = ToolTable::from_tools(vec![(
+            1,
+            Tool::Turning { insert: Insert::V, nose_radius: 0.0, tip: 3, entering_angle: 93.0, edge: 11.0 },
+        )]);
+        let blank = Blank::bar(40.0, 50.0, 0.0, None).unwrap();
+        let mut arc = seg(Motion::Feed, [0.0, 10.0], [-10.0, 20.0]);
+        arc.arc = Some(Arc { center: Pt::new(-10.0, 10.0), ccw: true });
+        let segs = [seg(Motion::Feed, [5.0, 10.0], [0.0, 10.0]), arc, seg(Motion::Feed, [-10.0, 20.0], [-12.0, 20.0])];
+        let sim = run(&blank, &tools, &segs);
+        // the intended dome, chorded 100 times finer than the simulation
+        let mut outer = vec![[-50.0, 0.0], [0.0, 0.0]];
+        outer.extend(arc.polyline(1e-5).iter().map(|p| [p.z, p.r]));
+        outer.push([-50.0, 20.0]);
+        let expected = [Shape { outer, holes: vec![] }];
+        let h = hausdorff(&sim.final_shapes, &expected);
+        assert!(h < 0.002, "hausdorff {h}");
+        // and it is a real cut, not the blank
+        assert!(sim.removed_area > 20.0, "{}", sim.removed_area);
+    }
+
+    #[test]
+    fn rapid_into_the_stock_is_a_crash() {
+        let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
+        let segs = [
+            seg(Motion::Rapid, [10.0, 30.0], [10.0, 20.0]),
+            seg(Motion::Rapid, [10.0, 20.0], [-20.0, 20.0]),
+            // back out along the same line: inside its own earlier sweep, no second crash
+            seg(Motion::Rapid, [-20.0, 20.0], [10.0, 20.0]),
+            // straight up from there would plough the sliver the 87° edge left: a crash
+            seg(Motion::Rapid, [-20.0, 20.0], [-20.0, 40.0]),
+        ];
+        let sim = run(&blank, &v35(), &segs);
+        assert_eq!(sim.crashes.iter().map(|c| c.segment).collect::<Vec<_>>(), vec![1, 3], "{:?}", sim.crashes);
+        let c = &sim.crashes[0];
+        assert_eq!(c.segment, 1);
+        // it ploughed through r 20..25 over z -20..0 (less the sliver under the 87° edge)
+        assert!(c.area > 99.0 && c.area <= 100.0, "{}", c.area);
+        let total: f64 = sim.crashes.iter().map(|c| c.area).sum();
+        assert!((total - sim.removed_area).abs() < 1e-6, "{total} vs {}", sim.removed_area);
+        assert!((c.at[0] - 0.0).abs() < 1e-6 && (c.at[1] - 20.0).abs() < 1e-6, "{:?}", c.at);
+    }
+
+    #[test]
+    fn rapid_in_air_is_not_a_crash() {
+        let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
+        let segs = [seg(Motion::Rapid, [10.0, 30.0], [-20.0, 30.0]), seg(Motion::Rapid, [-20.0, 30.0], [-20.0, 25.0])];
+        let sim = run(&blank, &v35(), &segs);
+        assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
+        assert!(sim.removed_area.abs() < 1e-9);
+    }
+
+    #[test]
+    fn rapid_through_material_cut_earlier_in_the_batch_is_not_a_crash() {
+        let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
+        let back = seg(Motion::Rapid, [-20.0, 22.0], [10.0, 22.0]);
+        let segs = [seg(Motion::Feed, [10.0, 20.0], [-20.0, 20.0]), seg(Motion::Feed, [-20.0, 20.0], [-20.0, 22.0]), back];
+        let sim = run(&blank, &v35(), &segs);
+        assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
+        // the same rapid without the feeds before it ploughs through stock
+        let sim = run(&blank, &v35(), &[back]);
+        assert_eq!(sim.crashes.len(), 1);
+        assert_eq!(sim.crashes[0].segment, 0);
+        // and a crash many batches later still carries its own index
+        let mut many: Vec<Segment> = (0..100).map(|_| seg(Motion::Rapid, [10.0, 40.0], [10.0, 45.0])).collect();
+        many.push(back);
+        let sim = run(&blank, &v35(), &many);
+        assert_eq!(sim.crashes.iter().map(|c| c.segment).collect::<Vec<_>>(), vec![100]);
+    }
+
+    #[test]
+    fn thread_pass_stamps_one_tooth_per_lead() {
+        let tools = ToolTable::from_tools(vec![(1, Tool::Threading { angle: 60.0, tip_flat: 0.0 })]);
+        let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
+        let mut t = seg(Motion::Thread, [5.0, 24.0], [-30.0, 24.0]);
+        t.lead = 2.0;
+        let sim = run(&blank, &tools, &[t]);
+        // stamps at z = 5, 3, ..., -29 and at the end -30; those at z <= -1 are in the bar
+        let tooth = 30f64.to_radians().tan(); // 1 mm deep, 2 tan 30° wide: area tan 30°
+        let overlap = (tooth - 0.5) * (tooth - 0.5) / tooth; // the last two teeth are 1 mm apart
+        let expected = 16.0 * tooth - overlap;
+        assert!((sim.removed_area - expected).abs() < 1e-6, "{} vs {expected}", sim.removed_area);
+    }
+
+    #[test]
+    fn bad_input_is_skipped_with_a_warning_never_a_panic() {
+        let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
+        let mut arc = seg(Motion::Feed, [1e300, 0.0], [0.0, 1e300]);
+        arc.arc = Some(Arc { center: Pt::new(f64::NAN, 0.0), ccw: false });
+        let mut thread = seg(Motion::Thread, [0.0, 24.0], [-1e6, 24.0]);
+        thread.lead = 1e-9;
+        let segs = [
+            seg(Motion::Feed, [f64::NAN, 1.0], [0.0, 0.0]),
+            seg(Motion::Rapid, [f64::INFINITY, 1.0], [0.0, f64::NEG_INFINITY]),
+            arc,
+            seg(Motion::Feed, [1e11, 20.0], [-1e11, 20.0]),
+            seg(Motion::Feed, [3.0, 3.0], [3.0, 3.0]),
+            thread,
+        ];
+        let mut calls = Vec::new();
+        let sim = simulate(&blank, &ToolTable::empty(), &segs, &SimOptions { chord_tol: -1.0 }, &mut |n| calls.push(n));
+        assert!(sim.warnings.iter().any(|(i, _)| *i == 0));
+        assert!(sim.warnings.iter().any(|(i, _)| *i == 1));
+        assert!(sim.warnings.iter().any(|(i, _)| *i == 2));
+        assert!(sim.warnings.iter().any(|(i, w)| *i == 5 && w.contains("swept continuously")));
+        // the huge pass still turned the whole bar down to r 20
+        assert!((area(&sim.final_shapes) - 110.0 * 20.0).abs() < 1e-6, "{}", area(&sim.final_shapes));
+        assert_eq!(calls.last(), Some(&segs.len()));
+    }
+}
