@@ -233,19 +233,18 @@ fn fixed_rows(b: &mut Block, report: &Report) {
         1,
     );
     if let Some(d) = &report.deviation {
-        b.row(
-            "deviation",
-            &format!(
-                "over {} mm² (max {}), under {} mm² (max {})",
-                quantity(d.overcut_area_mm2),
-                mm(d.max_overcut_mm),
-                quantity(d.undercut_area_mm2),
-                mm(d.max_undercut_mm)
-            ),
-            FS_TEXT,
-            colour::INK,
-            2,
+        let over = format!(
+            "{} mm², max {}",
+            quantity(d.overcut_area_mm2),
+            mm(d.max_overcut_mm)
         );
+        let under = format!(
+            "{} mm², max {}",
+            quantity(d.undercut_area_mm2),
+            mm(d.max_undercut_mm)
+        );
+        b.row("overcut", &over, FS_TEXT, colour::INK, 1);
+        b.row("undercut", &under, FS_TEXT, colour::INK, 1);
     }
 }
 

@@ -97,7 +97,7 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
     for (i, f) in list.iter().enumerate() {
         let rect = [
             RIGHT_X + LABEL_ROOM,
-            top + 8.0,
+            top + 10.0,
             RIGHT_W - LABEL_ROOM,
             plot_h,
         ];
@@ -105,7 +105,7 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
         let max = chars_fitting(RIGHT_W, FS_SMALL);
         doc.text(
             RIGHT_X,
-            top - 2.0,
+            top - 4.0,
             FS_SMALL,
             "start",
             colour::INK,

@@ -193,7 +193,19 @@ pub(crate) fn draw_content(
 /// Grid lines, frame, tick marks and labels of a view. Returns the tick step.
 pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
     let (x0, y0, x1, y1) = (v.px[0], v.px[1], v.right(), v.bottom());
-    let step = nice_step(min_px / v.s);
+    // Widen the step until the widest label fits between ticks with room to spare.
+    let mut step = nice_step(min_px / v.s);
+    for _ in 0..4 {
+        let dec = step_decimals(step);
+        let widest = [v.mm.zmin, v.mm.zmax]
+            .iter()
+            .map(|t| width(&tick_label((t / step).round() * step, dec), FS_TICK))
+            .fold(0.0, f64::max);
+        if step * v.s >= widest + 14.0 {
+            break;
+        }
+        step = nice_step((widest + 14.0) / v.s);
+    }
     let dec = step_decimals(step);
     let zt = ticks(v.mm.zmin, v.mm.zmax, step);
     let rt = ticks(v.mm.rmin, v.mm.rmax, step);
@@ -210,14 +222,12 @@ pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
     for &t in &zt {
         let x = v.x(t);
         doc.line([x, y1], [x, y1 + 5.0], colour::INK, 1.0, "");
-        doc.text(
-            x,
-            y1 + 19.0,
-            FS_TICK,
-            "middle",
-            colour::INK,
-            &tick_label(t, dec),
-        );
+        let label = tick_label(t, dec);
+        // A label that would run off the page is left out (its tick stays).
+        let half = width(&label, FS_TICK) / 2.0;
+        if x + half <= layout::W - 4.0 && x - half >= 4.0 {
+            doc.text(x, y1 + 19.0, FS_TICK, "middle", colour::INK, &label);
+        }
     }
     for &t in &rt {
         let y = v.y(t);

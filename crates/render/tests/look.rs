@@ -1,7 +1,9 @@
-//! Writes pictures to tests/out for a human to look at (not a check).
+//! Writes pictures to tests/out for a human to look at (not a check); run with
+//! `cargo test -p render --test look -- --ignored`.
 mod common;
 
 #[test]
+#[ignore = "writes pictures for a human: cargo test -p render --test look -- --ignored"]
 fn write_pictures() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/out");
     std::fs::create_dir_all(&dir).unwrap();
@@ -11,6 +13,7 @@ fn write_pictures() {
 }
 
 #[test]
+#[ignore = "writes pictures for a human: cargo test -p render --test look -- --ignored"]
 fn write_more_pictures() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/out");
     std::fs::create_dir_all(&dir).unwrap();
@@ -47,4 +50,96 @@ fn write_more_pictures() {
         holes: vec![],
     });
     std::fs::write(dir.join("alarms.png"), render::png(&r).unwrap()).unwrap();
+}
+
+#[test]
+#[ignore = "writes pictures for a human: cargo test -p render --test look -- --ignored"]
+fn write_big_part_picture() {
+    use render::*;
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/out");
+    std::fs::create_dir_all(&dir).unwrap();
+    let sq = |z0: f64, z1: f64, r0: f64, r1: f64| Shape {
+        outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]],
+        holes: vec![],
+    };
+    // A fillet by chords, a thread zone, a bore (hole-free tube section).
+    let mut outer = vec![[-110.0, 20.0], [0.0, 20.0], [0.0, 50.0]];
+    for i in 0..=40 {
+        let a = std::f64::consts::FRAC_PI_2 * i as f64 / 40.0;
+        outer.push([-10.0 - 10.0 * a.sin(), 50.0 + 10.0 - 10.0 * a.cos()]);
+    }
+    outer.extend([[-60.0, 60.0], [-60.0, 62.5], [-110.0, 62.5]]);
+    let mut tp = vec![PathLine {
+        kind: PathKind::Rapid,
+        line: 2,
+        points: vec![[200.0, 100.0], [2.0, 64.0]],
+    }];
+    for k in 0..8 {
+        let r = 62.0 - k as f64 * 1.5;
+        tp.push(PathLine {
+            kind: PathKind::Feed,
+            line: 10 + k,
+            points: vec![[2.0, r], [-60.0, r], [-60.0, r + 1.0]],
+        });
+        tp.push(PathLine {
+            kind: PathKind::Rapid,
+            line: 10 + k,
+            points: vec![[-60.0, r + 1.0], [2.0, r + 1.0], [2.0, r - 1.5]],
+        });
+    }
+    for k in 0..4 {
+        let r = 50.0 - 0.3 * k as f64;
+        tp.push(PathLine {
+            kind: PathKind::Thread,
+            line: 30,
+            points: vec![[2.0, r], [-8.0, r]],
+        });
+    }
+    let r = Report {
+        program: "O0001.nc".into(),
+        title: "FLANGE SHAFT".into(),
+        stock: StockInfo {
+            description: "tube Ø125 × 110, bore Ø40, face at Z0".into(),
+            shapes: vec![sq(-110.0, 0.0, 20.0, 62.5)],
+        },
+        final_part: vec![Shape {
+            outer,
+            holes: vec![],
+        }],
+        toolpath: tp,
+        gouges: vec![Gouge {
+            line: 31,
+            z: -18.0,
+            r: 57.0,
+            area_mm2: 0.0004,
+            depth_mm: 0.004,
+        }],
+        gouge_shapes: vec![sq(-18.05, -17.95, 56.996, 57.0)],
+        warnings: (0..3)
+            .map(|i| Diagnostic {
+                line: 40 + i,
+                column: 1,
+                code: "W".into(),
+                message: "spindle stopped during feed".into(),
+            })
+            .collect(),
+        tools: vec![
+            "T01 turning C 80°, r0.8, tip 3".into(),
+            "T04 threading 60°".into(),
+        ],
+        removed_area_mm2: 1234.5,
+        removed_volume_mm3: 1_234_567.0,
+        segments: 21,
+        rapid_segments: 9,
+        cycle_time_s: 4000.0,
+        tolerance_mm: 0.001,
+        deviation: Some(Deviation {
+            overcut_area_mm2: 0.0004,
+            undercut_area_mm2: 0.0,
+            max_overcut_mm: 0.004,
+            max_undercut_mm: 0.0,
+        }),
+        ..Report::default()
+    };
+    std::fs::write(dir.join("big.png"), render::png(&r).unwrap()).unwrap();
 }
