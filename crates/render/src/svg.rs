@@ -129,8 +129,9 @@ pub(crate) fn draw_content(
     }
     let _ = writeln!(
         doc.out,
-        r#"<g id="{}" transform="{}">"#,
-        if mirror { "section" } else { "detail-section" },
+        r#"<g{} transform="{}">"#,
+        // Ids must be unique: only the main view's section gets one.
+        if mirror { r#" id="section""# } else { "" },
         v.transform(false)
     );
     doc.mm_path(v, &blank, colour::BLANK, colour::BLANK_EDGE, 1.0, &[]);

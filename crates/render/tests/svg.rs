@@ -27,6 +27,16 @@ fn has_layers_legend_and_title_block() {
         assert!(s.contains(needle), "missing {needle}");
     }
     assert!(!s.contains("NaN"));
+    // Ids are unique.
+    let mut ids: Vec<&str> = s
+        .split(" id=\"")
+        .skip(1)
+        .map(|t| t.split('"').next().unwrap())
+        .collect();
+    let n = ids.len();
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids.len(), n, "duplicate ids");
 }
 
 #[test]
