@@ -1,1 +1,38 @@
-fn main() {}
+//! `latsim`: simulate a FANUC/GSK lathe program on a blank and report the part it makes.
+//!
+//! The CLI only wires the stages (`gcode` → `expander` → `stock` → `render`) and owns
+//! files, flags, progress and exit codes.
+
+mod cli;
+mod diag;
+mod expand_cmd;
+mod input;
+mod report;
+mod run;
+mod write;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+/// Exit status: the run finished and found nothing wrong.
+const EXIT_CLEAN: u8 = 0;
+/// The run finished but found an alarm, crash or gouge (the report is written).
+const EXIT_FINDINGS: u8 = 1;
+/// Nothing could be simulated (usage, unreadable input, parse error).
+const EXIT_UNUSABLE: u8 = 2;
+
+fn main() -> ExitCode {
+    let args = match cli::Cli::try_parse() {
+        Ok(a) => a,
+        Err(e) => {
+            let _ = e.print();
+            return ExitCode::from(if e.use_stderr() { EXIT_UNUSABLE } else { EXIT_CLEAN });
+        }
+    };
+    let code = match args.command {
+        cli::Command::Run(a) => run::run(&a),
+        cli::Command::Check(a) => run::check(&a),
+        cli::Command::Expand(a) => expand_cmd::expand(&a),
+    };
+    ExitCode::from(code)
+}

@@ -1,0 +1,107 @@
+//! The command line: flag names are a contract (spec/simulation.md).
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// latsim — 2D lathe toolpath simulator with material removal.
+#[derive(Debug, Parser)]
+#[command(name = "latsim", version, about, long_about = None)]
+pub(crate) struct Cli {
+    #[command(subcommand)]
+    pub(crate) command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub(crate) enum Command {
+    /// Simulate a program on a blank and write the SVG, PNG and JSON report.
+    Run(RunArgs),
+    /// Read and expand a program and report its alarms (no material removal).
+    Check(ProgramArgs),
+    /// Print the expanded toolpath, one row per segment.
+    Expand(ExpandArgs),
+}
+
+/// Options that shape how a program is read and interpreted.
+#[derive(Debug, Args, Clone)]
+pub(crate) struct ProgramArgs {
+    /// The program file (FANUC / GSK lathe G-code).
+    pub(crate) program: PathBuf,
+    /// Machine profile (TOML): increment system, P/Q units, rapid rates, home position.
+    #[arg(long, value_name = "F")]
+    pub(crate) machine: Option<PathBuf>,
+    /// Least input increment, overriding the machine profile.
+    #[arg(long, value_enum, value_name = "SYSTEM")]
+    pub(crate) increment: Option<IncrementArg>,
+    /// Skip blocks that start with '/'.
+    #[arg(long)]
+    pub(crate) block_delete: bool,
+    /// No progress bar and no warnings on the terminal.
+    #[arg(long, short)]
+    pub(crate) quiet: bool,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub(crate) enum IncrementArg {
+    /// 0.001 mm
+    #[value(name = "is-b")]
+    IsB,
+    /// 0.0001 mm
+    #[value(name = "is-c")]
+    IsC,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct RunArgs {
+    #[command(flatten)]
+    pub(crate) program: ProgramArgs,
+    /// Bar blank DIAMETERxLENGTH in mm, right face at Z0 (e.g. 125x110).
+    #[arg(long, value_name = "DxL")]
+    pub(crate) stock: Option<String>,
+    /// Z of the blank's right face (default 0).
+    #[arg(long, value_name = "Z", allow_hyphen_values = true, default_value_t = 0.0)]
+    pub(crate) stock_z: f64,
+    /// Bore diameter: makes the bar a tube.
+    #[arg(long, value_name = "D")]
+    pub(crate) bore: Option<f64>,
+    /// Blank profile (TOML: start and path in program coordinates) for castings and forgings.
+    #[arg(long, value_name = "F", conflicts_with = "stock")]
+    pub(crate) stock_file: Option<PathBuf>,
+    /// Tool table (TOML, [[tool]] entries).
+    #[arg(long, value_name = "F")]
+    pub(crate) tools: Option<PathBuf>,
+    /// Tool to use before the program's first T word (default: the table's first entry).
+    #[arg(long, value_name = "N")]
+    pub(crate) tool: Option<u32>,
+    /// Write the JSON report here.
+    #[arg(long, value_name = "F")]
+    pub(crate) json: Option<PathBuf>,
+    /// Write the SVG report here.
+    #[arg(long, value_name = "F")]
+    pub(crate) svg: Option<PathBuf>,
+    /// Write the PNG report here.
+    #[arg(long, value_name = "F")]
+    pub(crate) png: Option<PathBuf>,
+    /// Folder for the default outputs <prog>.svg, <prog>.png, <prog>.json (default: current folder).
+    #[arg(long, value_name = "DIR")]
+    pub(crate) out: Option<PathBuf>,
+    /// Deviation tolerance in mm for gouges and leftovers.
+    #[arg(long, value_name = "MM", default_value_t = 0.01)]
+    pub(crate) tol: f64,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum, PartialEq, Eq)]
+pub(crate) enum Format {
+    /// Comma-separated values with a header row.
+    Csv,
+    /// A JSON array of objects.
+    Json,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct ExpandArgs {
+    #[command(flatten)]
+    pub(crate) program: ProgramArgs,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    pub(crate) format: Format,
+}

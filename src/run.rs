@@ -1,0 +1,145 @@
+//! `latsim run` and `latsim check`.
+
+use crate::cli::{ProgramArgs, RunArgs};
+use crate::diag;
+use crate::input::{self, Loaded};
+use crate::write::write_atomic;
+use crate::{EXIT_CLEAN, EXIT_FINDINGS, EXIT_UNUSABLE};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+/// `latsim check`: read and expand, print alarms; no removal.
+pub(crate) fn check(args: &ProgramArgs) -> u8 {
+    let Ok(loaded) = input::load_program(args) else { return EXIT_UNUSABLE };
+    input::print_diagnostics(&loaded, args.quiet);
+    let tp = &loaded.toolpath;
+    println!(
+        "{}: {} blocks, {} segments, {} alarm(s), {} warning(s)",
+        loaded.source.name,
+        loaded.blocks,
+        tp.segments.len(),
+        tp.alarms.len(),
+        tp.warnings.len()
+    );
+    if tp.alarms.is_empty() {
+        EXIT_CLEAN
+    } else {
+        EXIT_FINDINGS
+    }
+}
+
+/// Where each report goes: the explicit paths, or all three into `--out`.
+fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
+    let explicit: Vec<(PathBuf, &'static str)> = [(&args.svg, "svg"), (&args.png, "png"), (&args.json, "json")]
+        .into_iter()
+        .filter_map(|(p, kind)| p.clone().map(|p| (p, kind)))
+        .collect();
+    if !explicit.is_empty() {
+        return explicit;
+    }
+    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    ["svg", "png", "json"].into_iter().map(|kind| (dir.join(format!("{stem}.{kind}")), kind)).collect()
+}
+
+/// `latsim run`: the whole pipeline; writes the reports and returns the exit status.
+pub(crate) fn run(args: &RunArgs) -> u8 {
+    if !(args.tol.is_finite() && args.tol > 0.0) {
+        diag::print_plain(&format!("--tol {} is not a positive length", args.tol), "give the deviation tolerance in mm, e.g. --tol 0.01");
+        return EXIT_UNUSABLE;
+    }
+    // Read everything before any work, so a bad flag fails fast.
+    let Ok(blank) = input::load_blank(args) else { return EXIT_UNUSABLE };
+    let Ok(tools) = input::load_tools(args) else { return EXIT_UNUSABLE };
+    let Ok(loaded) = input::load_program(&args.program) else { return EXIT_UNUSABLE };
+    input::print_diagnostics(&loaded, args.program.quiet);
+    let quiet = args.program.quiet;
+
+    let segments = with_start_tool(&loaded, args.tool);
+    let bar = progress_bar(segments.len() as u64, quiet);
+    let mut tick = |done: usize| {
+        if let Some(b) = &bar {
+            b.set_position(done as u64);
+        }
+    };
+    let sim = stock::simulate(&blank, &tools, &segments, &stock::SimOptions::default(), &mut tick);
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+
+    let name = args.program.program.file_name().map_or_else(|| loaded.source.name.clone(), |n| n.to_string_lossy().into_owned());
+    let stem = args.program.program.file_stem().map_or_else(|| "program".to_string(), |s| s.to_string_lossy().into_owned());
+    let report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
+
+    let mut inputs = vec![args.program.program.clone()];
+    inputs.extend(args.tools.clone());
+    inputs.extend(args.stock_file.clone());
+    inputs.extend(args.program.machine.clone());
+    for (path, kind) in outputs(args, &stem) {
+        let bytes = match kind {
+            "svg" => render::svg(&report).into_bytes(),
+            "json" => render::json(&report).into_bytes(),
+            _ => match render::png(&report) {
+                Ok(b) => b,
+                Err(e) => {
+                    diag::print_plain(&format!("cannot render the PNG: {e}"), "");
+                    return EXIT_UNUSABLE;
+                }
+            },
+        };
+        if let Err(e) = write_atomic(&path, &bytes, &inputs) {
+            diag::print_plain(&e, "choose another output path with --out, --svg, --png or --json");
+            return EXIT_UNUSABLE;
+        }
+    }
+
+    for c in &report.crashes {
+        eprintln!(
+            "{}:{}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm² of stock",
+            loaded.source.name,
+            c.line,
+            c.column,
+            c.z,
+            2.0 * c.r,
+            c.area_mm2
+        );
+    }
+    let verdict = report.verdict();
+    println!(
+        "{}: {:?} — {} segments, removed {:.1} mm² / {:.0} mm³, cycle time {:.1} s, {} alarm(s), {} crash(es)",
+        name,
+        verdict,
+        report.segments,
+        report.removed_area_mm2,
+        report.removed_volume_mm3,
+        report.cycle_time_s,
+        report.alarms.len(),
+        report.crashes.len()
+    );
+    if verdict == render::Verdict::Clean {
+        EXIT_CLEAN
+    } else {
+        EXIT_FINDINGS
+    }
+}
+
+/// Segments with "no T word yet" given the `--tool N` tool.
+fn with_start_tool(loaded: &Loaded, tool: Option<u32>) -> Vec<expander::Segment> {
+    let mut segs = loaded.toolpath.segments.clone();
+    if let Some(t) = tool {
+        for s in segs.iter_mut().filter(|s| s.tool == 0) {
+            s.tool = t;
+        }
+    }
+    segs
+}
+
+fn progress_bar(len: u64, quiet: bool) -> Option<indicatif::ProgressBar> {
+    if quiet || !std::io::stderr().is_terminal() || len < 10_000 {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(len);
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} removing material {bar:40} {pos}/{len} moves ({eta})") {
+        bar.set_style(style);
+    }
+    Some(bar)
+}
