@@ -1,0 +1,94 @@
+//! Shared helpers of the end-to-end tests: run the CLI, run the pipeline as a library,
+//! build hand-computed expected polygons.
+#![allow(dead_code, unreachable_pub)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The repository root.
+pub fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A file under `assets/`.
+pub fn asset(rel: &str) -> PathBuf {
+    root().join("assets").join(rel)
+}
+
+/// Result of one CLI call.
+pub struct Out {
+    pub code: i32,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+/// Run the `latsim` binary with `args`.
+pub fn latsim(args: &[&str]) -> Out {
+    let out = Command::new(env!("CARGO_BIN_EXE_latsim")).args(args).env("NO_COLOR", "1").output().expect("latsim runs");
+    Out {
+        code: out.status.code().unwrap_or(-1),
+        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
+}
+
+/// Write `text` as `name` in a fresh temporary folder and return its path (the folder lives
+/// as long as the returned guard).
+pub fn temp_program(name: &str, text: &[u8]) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).unwrap();
+    (dir, path)
+}
+
+/// Parse, expand and simulate in-process.
+pub fn simulate(program: &str, blank: &stock::Blank, tools: &stock::ToolTable) -> (expander::Toolpath, stock::Simulation) {
+    let p = gcode::parse(program).expect("program parses");
+    let tp = expander::expand(&p, &expander::Machine::default(), &expander::Options::default());
+    assert!(tp.alarms.is_empty(), "alarms: {:?}", tp.alarms);
+    let sim = stock::simulate(blank, tools, &tp.segments, &stock::SimOptions::default(), &mut |_| {});
+    (tp, sim)
+}
+
+/// Read an asset as text.
+pub fn read(path: &Path) -> String {
+    std::fs::read_to_string(path).unwrap()
+}
+
+/// Centre of an arc of radius `r` (≤ 180°) from `a` to `b`, counter-clockwise if `ccw`,
+/// written out here so the expected geometry does not reuse the interpreter's code.
+pub fn arc_centre(a: [f64; 2], b: [f64; 2], r: f64, ccw: bool) -> [f64; 2] {
+    let (dz, dr) = (b[0] - a[0], b[1] - a[1]);
+    let c = (dz * dz + dr * dr).sqrt();
+    let h = (r * r - c * c / 4.0).sqrt();
+    let s = if ccw { 1.0 } else { -1.0 };
+    [(a[0] + b[0]) / 2.0 - s * h * dr / c, (a[1] + b[1]) / 2.0 + s * h * dz / c]
+}
+
+/// Points of an arc from `a` to `b` about `centre` (exclusive of `a`, inclusive of `b`), every `step` rad.
+pub fn arc_points(a: [f64; 2], b: [f64; 2], centre: [f64; 2], ccw: bool, out: &mut Vec<[f64; 2]>) {
+    let r = ((a[0] - centre[0]).powi(2) + (a[1] - centre[1]).powi(2)).sqrt();
+    let t0 = (a[1] - centre[1]).atan2(a[0] - centre[0]);
+    let mut t1 = (b[1] - centre[1]).atan2(b[0] - centre[0]);
+    if ccw && t1 < t0 {
+        t1 += std::f64::consts::TAU;
+    }
+    if !ccw && t1 > t0 {
+        t1 -= std::f64::consts::TAU;
+    }
+    let n = 2000;
+    for i in 1..n {
+        let t = t0 + (t1 - t0) * i as f64 / n as f64;
+        out.push([centre[0] + r * t.cos(), centre[1] + r * t.sin()]);
+    }
+    out.push(b);
+}
+
+/// A shape from one counter-clockwise or clockwise ring (orientation fixed here).
+pub fn shape(mut ring: Vec<[f64; 2]>) -> stock::Shape {
+    let a: f64 = ring.iter().zip(ring.iter().cycle().skip(1)).map(|(p, q)| p[0] * q[1] - q[0] * p[1]).sum();
+    if a < 0.0 {
+        ring.reverse();
+    }
+    stock::Shape { outer: ring, holes: vec![] }
+}
