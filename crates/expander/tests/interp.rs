@@ -1,0 +1,204 @@
+//! The modal interpreter, block by block.
+
+use expander::{expand, Feed, Machine, Motion, Options, Pt, RapidPath, Spindle, Toolpath};
+
+fn run_with(src: &str, machine: &Machine, opts: &Options) -> Toolpath {
+    expand(&gcode::parse(src).unwrap(), machine, opts)
+}
+
+fn run(src: &str) -> Toolpath {
+    run_with(src, &Machine::default(), &Options::default())
+}
+
+fn ends(tp: &Toolpath) -> Vec<(f64, f64)> {
+    tp.segments.iter().map(|s| ((s.to.z * 1e6).round() / 1e6, (2e6 * s.to.r).round() / 1e6)).collect()
+}
+
+/// One readable line per segment, for snapshots.
+fn listing(tp: &Toolpath) -> String {
+    let mut s = String::new();
+    for seg in &tp.segments {
+        let kind = match (seg.motion, seg.arc) {
+            (Motion::Rapid, _) => "G00".to_string(),
+            (Motion::Feed, None) => "G01".to_string(),
+            (Motion::Feed, Some(a)) => format!("{} c(Z{:.3} X{:.3})", if a.ccw { "G03" } else { "G02" }, a.center.z, 2.0 * a.center.r),
+            (Motion::Thread, _) => format!("G32 lead {}", seg.lead),
+        };
+        s += &format!(
+            "line {:>2}: {kind} Z{:.3} X{:.3} -> Z{:.3} X{:.3} T{:02}\n",
+            seg.span.line,
+            seg.from.z,
+            2.0 * seg.from.r,
+            seg.to.z,
+            2.0 * seg.to.r,
+            seg.tool
+        );
+    }
+    for a in tp.alarms.iter().chain(&tp.warnings) {
+        s += &format!("{a}\n");
+    }
+    s
+}
+
+#[test]
+fn seed_004_contour_expansion() {
+    let src = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/programs/seed004-contour.nc")).unwrap();
+    insta::assert_snapshot!(listing(&run(&src)));
+}
+
+#[test]
+fn absolute_incremental_and_mixed() {
+    let tp = run("M3 S500\nG0 X100 Z10\nG1 U-20 W-5 F100\nX50 W-10\nG0 U10\n");
+    assert_eq!(ends(&tp), vec![(10.0, 100.0), (5.0, 80.0), (-5.0, 50.0), (-5.0, 60.0)]);
+    assert!(tp.alarms.is_empty());
+}
+
+#[test]
+fn modal_motion_and_feed_carry_over() {
+    let tp = run("M3 S500\nG1 X20 Z0 F150\nZ-10\nG0 X40\nZ5\n");
+    let kinds: Vec<_> = tp.segments.iter().map(|s| s.motion).collect();
+    assert_eq!(kinds, vec![Motion::Feed, Motion::Feed, Motion::Rapid, Motion::Rapid]);
+    assert_eq!(tp.segments[1].feed, Feed::PerMinute(150.0));
+}
+
+#[test]
+fn arc_with_ik_centre() {
+    // G02 from (Z0, X20) to (Z-10, X40) centred at (Z-10, X20): I = 0, K = -10.
+    let tp = run("M3 S500\nG0 X20 Z0\nG2 X40 Z-10 I0 K-10 F100\n");
+    let a = tp.segments[1].arc.unwrap();
+    assert_eq!((a.center, a.ccw), (Pt::new(-10.0, 10.0), false));
+    let tp = run("M3 S500\nG0 X20 Z0\nG2 X40 Z-10 I1 K-10 F100\n");
+    assert_eq!(tp.alarms[0].code, "PS020");
+}
+
+#[test]
+fn feed_modes_and_spindle() {
+    let tp = run("G99 G96 S150 M3\nG50 S2000\nG0 X40 Z2\nG1 Z-10 F0.2\nG97 S800\nG1 Z-20\nG98 G1 Z-30 F100\n");
+    assert_eq!(tp.segments[1].feed, Feed::PerRev { feed: 0.2, spindle: Spindle::Css { vc: 150.0, max_rpm: 2000.0 } });
+    assert_eq!(tp.segments[2].feed, Feed::PerRev { feed: 0.2, spindle: Spindle::Rpm(800.0) });
+    assert_eq!(tp.segments[3].feed, Feed::PerMinute(100.0));
+}
+
+#[test]
+fn power_on_feed_mode_comes_from_the_profile() {
+    let m = Machine { feed_mode: expander::FeedMode::G99, ..Machine::default() };
+    let tp = run_with("M3 S500\nG1 X20 Z0 F0.1\n", &m, &Options::default());
+    assert!(matches!(tp.segments[0].feed, Feed::PerRev { .. }));
+}
+
+#[test]
+fn inch_mode_converts_to_mm() {
+    let tp = run("G20 M3 S500\nG0 X2. Z1.\n");
+    assert_eq!(ends(&tp), vec![(25.4, 50.8)]);
+}
+
+#[test]
+fn g28_returns_through_the_intermediate_point_on_the_named_axes() {
+    let m = Machine::default();
+    let tp = run("G0 X40 Z5\nG28 U0\nG0 X40 Z5\nG28 U0 W0\n");
+    let home = m.home;
+    assert_eq!(tp.segments[1].to, Pt::new(5.0, home.r), "only X goes home");
+    assert_eq!(tp.segments.last().unwrap().to, home);
+}
+
+#[test]
+fn g50_sets_the_current_position() {
+    // At (Z5, X40) declare it Z0 X0: then G0 X10 Z-1 is 5 mm radius up, 6 mm left.
+    let tp = run("G0 X40 Z5\nG50 X0 Z0\nG0 X10 Z-1\n");
+    assert_eq!(tp.segments[1].to, Pt::new(4.0, 25.0));
+}
+
+#[test]
+fn work_offsets_from_the_profile() {
+    let mut m = Machine::default();
+    m.work_offsets[1] = Pt::new(-50.0, 0.0);
+    let tp = run_with("G55 G0 X40 Z0\nG54 G0 X40 Z0\n", &m, &Options::default());
+    assert_eq!(ends(&tp), vec![(-50.0, 40.0), (0.0, 40.0)]);
+}
+
+#[test]
+fn per_axis_rapids_make_a_dog_leg() {
+    let m = Machine { rapid_path: RapidPath::PerAxis, rapid_x: 5000.0, rapid_z: 5000.0, home: Pt::new(100.0, 50.0), ..Machine::default() };
+    let tp = run_with("G0 X40 Z0\n", &m, &Options::default());
+    // from (Z100, r50) to (Z0, r20): both axes move 30 mm together, then Z alone.
+    assert_eq!(tp.segments.len(), 2);
+    assert_eq!(tp.segments[0].to, Pt::new(70.0, 20.0));
+}
+
+#[test]
+fn dwell_counts_time() {
+    let tp = run("G04 P1500\nG04 X2.5\nG4 U1\n");
+    assert!((tp.dwell_s - 5.0).abs() < 1e-9);
+    assert_eq!(run("G04 P1.5\n").alarms[0].code, "LS-VALUE");
+}
+
+#[test]
+fn subprograms_repeat_and_return() {
+    let src = "O0001;\nG0 X40 Z0;\nM98 P30002;\nM98 P2 L2;\nM30;\nO0002;\nG0 W-1;\nM99;\n";
+    let tp = run(src);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert_eq!(tp.segments.len(), 1 + 3 + 2);
+    assert_eq!(tp.segments.last().unwrap().to.z, -5.0);
+    assert_eq!(tp.segments[1].span.line, 7, "subprogram segments carry the subprogram's line");
+}
+
+#[test]
+fn m99_p_returns_to_a_sequence_number() {
+    let src = "O0001;\nM98 P2;\nG0 X10;\nN50 G0 X20 Z0;\nM30;\nO0002;\nG0 X30 Z0;\nM99 P50;\n";
+    let tp = run(src);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert_eq!(ends(&tp), vec![(0.0, 30.0), (0.0, 20.0)], "the X10 block is skipped");
+}
+
+#[test]
+fn endless_loops_are_bounded() {
+    let src = "O0001;\nN1 M98 P2;\nM30;\nO0002;\nG0 W1;\nG0 W-1;\nM99 P1;\n";
+    let tp = run_with(src, &Machine::default(), &Options { max_blocks: 10_000, ..Options::default() });
+    assert_eq!(tp.alarms[0].code, "LS-LOOP");
+    let tp = run_with("O1;\nM98 P9999 L9999\nM30\nO9999\nG0 W1\nG0 W-1\nM99\n", &Machine::default(), &Options { max_segments: 1000, ..Options::default() });
+    assert_eq!(tp.alarms[0].code, "LS-TOO-LONG");
+}
+
+#[test]
+fn block_delete_is_optional() {
+    let src = "G0 X40 Z0\n/G0 X20\n";
+    assert_eq!(run(src).segments.len(), 2);
+    assert_eq!(run_with(src, &Machine::default(), &Options { block_delete: true, ..Options::default() }).segments.len(), 1);
+}
+
+#[test]
+fn tools_are_tracked() {
+    let tp = run("T0101\nG0 X40 Z0\nT0303\nG0 X50\nT0300\n");
+    assert_eq!(tp.tools, vec![1, 3]);
+    assert_eq!((tp.segments[0].tool, tp.segments[1].tool), (1, 3));
+}
+
+#[test]
+fn cutting_with_the_spindle_stopped_is_a_warning() {
+    let tp = run("G0 X40 Z2\nG1 Z-10 F100\nG1 Z-20\nM3 S500\nG1 Z-30\nM5\nG1 Z-40\n");
+    let w: Vec<_> = tp.warnings.iter().filter(|w| w.code == "LS-SPINDLE-STOPPED").map(|w| w.span.line).collect();
+    assert_eq!(w, vec![2, 7]);
+}
+
+#[test]
+fn conflicts_and_unused_words_are_alarms() {
+    assert_eq!(run("G0 G1 X10\n").alarms[0].code, "PS010");
+    assert_eq!(run("G1 X10 U5 F1\n").alarms[0].code, "LS-AXIS-TWICE");
+    assert_eq!(run("G1 X10 R5 F1\n").alarms[0].code, "LS-WORD-UNUSED");
+    assert_eq!(run("G2 X10 Z5 R5 I1 F1 M3\n").alarms[0].code, "LS-ARC");
+    assert_eq!(run("G65 P1\n").alarms[0].code, "PS010");
+}
+
+#[test]
+fn a_run_stops_at_the_alarm() {
+    let tp = run("G0 X40 Z2\nG12\nG0 X50\n");
+    assert_eq!(tp.segments.len(), 1);
+    assert_eq!(tp.alarms.len(), 1);
+    assert_eq!(tp.alarms[0].span.line, 2);
+}
+
+#[test]
+fn g32_threads_carry_the_lead() {
+    let tp = run("M3 S300\nG0 X20 Z5\nG32 Z-20 F1.5\n");
+    assert_eq!((tp.segments[1].motion, tp.segments[1].lead), (Motion::Thread, 1.5));
+}
