@@ -58,7 +58,12 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "DxL")]
     pub(crate) stock: Option<String>,
     /// Z of the blank's right face (default 0).
-    #[arg(long, value_name = "Z", allow_hyphen_values = true, default_value_t = 0.0)]
+    #[arg(
+        long,
+        value_name = "Z",
+        allow_hyphen_values = true,
+        default_value_t = 0.0
+    )]
     pub(crate) stock_z: f64,
     /// Bore diameter: makes the bar a tube.
     #[arg(long, value_name = "D")]

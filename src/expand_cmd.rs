@@ -49,13 +49,17 @@ fn row(s: &Segment) -> Row {
 
 /// Print every segment; alarms go to stderr and make the exit status 1.
 pub(crate) fn expand(args: &ExpandArgs) -> u8 {
-    let Ok(loaded) = input::load_program(&args.program) else { return EXIT_UNUSABLE };
+    let Ok(loaded) = input::load_program(&args.program) else {
+        return EXIT_UNUSABLE;
+    };
     input::print_diagnostics(&loaded, args.program.quiet);
     let rows = loaded.toolpath.segments.iter().map(row);
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     let written = match args.format {
-        Format::Json => serde_json::to_writer_pretty(&mut out, &rows.collect::<Vec<_>>()).map_err(std::io::Error::other).and_then(|_| writeln!(out)),
+        Format::Json => serde_json::to_writer_pretty(&mut out, &rows.collect::<Vec<_>>())
+            .map_err(std::io::Error::other)
+            .and_then(|_| writeln!(out)),
         Format::Csv => (|| {
             writeln!(out, "line,column,kind,z0,x0,z1,x1,cz,cx,dir,tool")?;
             let opt = |v: Option<f64>| v.map(|v| v.to_string()).unwrap_or_default();

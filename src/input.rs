@@ -19,12 +19,29 @@ pub(crate) struct Loaded {
 
 /// Read a text file whole, with a clear message when it is missing, too big or not text.
 pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
-    let meta = std::fs::metadata(path).map_err(|e| diag::print_plain(&format!("cannot read {what} {}: {e}", path.display()), "check the path"))?;
+    let meta = std::fs::metadata(path).map_err(|e| {
+        diag::print_plain(
+            &format!("cannot read {what} {}: {e}", path.display()),
+            "check the path",
+        )
+    })?;
     if meta.len() > MAX_PROGRAM_BYTES {
-        diag::print_plain(&format!("{what} {} is {} bytes, more than latsim reads", path.display(), meta.len()), "split the file");
+        diag::print_plain(
+            &format!(
+                "{what} {} is {} bytes, more than latsim reads",
+                path.display(),
+                meta.len()
+            ),
+            "split the file",
+        );
         return Err(());
     }
-    let bytes = std::fs::read(path).map_err(|e| diag::print_plain(&format!("cannot read {what} {}: {e}", path.display()), "check the path and its permissions"))?;
+    let bytes = std::fs::read(path).map_err(|e| {
+        diag::print_plain(
+            &format!("cannot read {what} {}: {e}", path.display()),
+            "check the path and its permissions",
+        )
+    })?;
     String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
         diag::print_plain(
@@ -40,8 +57,18 @@ fn load_machine(args: &ProgramArgs) -> Result<Machine, ()> {
         Some(path) => {
             let text = read_text(path, "machine profile")?;
             Machine::from_toml(&text).map_err(|e| {
-                let src = Source { name: path.display().to_string(), text: text.clone() };
-                diag::print_line_col(&src, e.line as usize, e.column as usize, "machine", &e.message, "see the machine profile keys in README.md");
+                let src = Source {
+                    name: path.display().to_string(),
+                    text: text.clone(),
+                };
+                diag::print_line_col(
+                    &src,
+                    e.line as usize,
+                    e.column as usize,
+                    "machine",
+                    &e.message,
+                    "see the machine profile keys in README.md",
+                );
             })?
         }
     };
@@ -58,39 +85,85 @@ fn load_machine(args: &ProgramArgs) -> Result<Machine, ()> {
 pub(crate) fn load_program(args: &ProgramArgs) -> Result<Loaded, ()> {
     let machine = load_machine(args)?;
     let text = read_text(&args.program, "program")?;
-    let source = Source { name: args.program.display().to_string(), text };
+    let source = Source {
+        name: args.program.display().to_string(),
+        text,
+    };
     let program = gcode::parse(&source.text).map_err(|e| {
-        diag::print_at(&source, e.span.offset, e.span.len, "parse", &e.message, &e.help, false);
+        diag::print_at(
+            &source,
+            e.span.offset,
+            e.span.len,
+            "parse",
+            &e.message,
+            &e.help,
+            false,
+        );
     })?;
     let blocks = program.block_count();
     if blocks == 0 {
-        diag::print_plain(&format!("{}: nothing to simulate, the file has no blocks", source.name), "give a program file with at least one block");
+        diag::print_plain(
+            &format!(
+                "{}: nothing to simulate, the file has no blocks",
+                source.name
+            ),
+            "give a program file with at least one block",
+        );
         return Err(());
     }
-    let opts = Options { block_delete: args.block_delete, ..Options::default() };
+    let opts = Options {
+        block_delete: args.block_delete,
+        ..Options::default()
+    };
     let toolpath = expander::expand(&program, &machine, &opts);
-    Ok(Loaded { source, machine, toolpath, blocks })
+    Ok(Loaded {
+        source,
+        machine,
+        toolpath,
+        blocks,
+    })
 }
 
 /// Print the interpreter's alarms (always) and warnings (unless quiet).
 pub(crate) fn print_diagnostics(loaded: &Loaded, quiet: bool) {
     for a in &loaded.toolpath.alarms {
-        diag::print_at(&loaded.source, a.span.offset, a.span.len, a.code, &a.message, &a.help, false);
+        diag::print_at(
+            &loaded.source,
+            a.span.offset,
+            a.span.len,
+            a.code,
+            &a.message,
+            &a.help,
+            false,
+        );
     }
     if !quiet {
         const SHOWN: usize = 10;
         for w in loaded.toolpath.warnings.iter().take(SHOWN) {
-            diag::print_at(&loaded.source, w.span.offset, w.span.len, w.code, &w.message, &w.help, true);
+            diag::print_at(
+                &loaded.source,
+                w.span.offset,
+                w.span.len,
+                w.code,
+                &w.message,
+                &w.help,
+                true,
+            );
         }
         if loaded.toolpath.warnings.len() > SHOWN {
-            eprintln!("… and {} more warnings (all are in the report)", loaded.toolpath.warnings.len() - SHOWN);
+            eprintln!(
+                "… and {} more warnings (all are in the report)",
+                loaded.toolpath.warnings.len() - SHOWN
+            );
         }
     }
 }
 
 /// The tool table from `--tools`, or an empty one (every tool gets the documented default).
 pub(crate) fn load_tools(args: &RunArgs) -> Result<stock::ToolTable, ()> {
-    let Some(path) = &args.tools else { return Ok(stock::ToolTable::empty()) };
+    let Some(path) = &args.tools else {
+        return Ok(stock::ToolTable::empty());
+    };
     let text = read_text(path, "tool table")?;
     stock::ToolTable::from_toml(&text).map_err(|e| print_stock_error(path, &text, &e))
 }
@@ -99,7 +172,8 @@ pub(crate) fn load_tools(args: &RunArgs) -> Result<stock::ToolTable, ()> {
 pub(crate) fn load_blank(args: &RunArgs) -> Result<stock::Blank, ()> {
     if let Some(path) = &args.stock_file {
         let text = read_text(path, "stock file")?;
-        return stock::Blank::from_profile_toml(&text, 0.001).map_err(|e| print_stock_error(path, &text, &e));
+        return stock::Blank::from_profile_toml(&text, 0.001)
+            .map_err(|e| print_stock_error(path, &text, &e));
     }
     let Some(dims) = &args.stock else {
         diag::print_plain("no blank given", "give the blank with --stock DIAMETERxLENGTH (e.g. --stock 125x110) or --stock-file profile.toml");
@@ -111,10 +185,29 @@ pub(crate) fn load_blank(args: &RunArgs) -> Result<stock::Blank, ()> {
 }
 
 fn print_stock_error(path: &Path, text: &str, e: &stock::StockError) {
-    let src = Source { name: path.display().to_string(), text: text.to_string() };
+    let src = Source {
+        name: path.display().to_string(),
+        text: text.to_string(),
+    };
     match e {
-        stock::StockError::Toml { line, column, message, help, .. } => diag::print_line_col(&src, *line, *column, "toml", message, help),
-        stock::StockError::Tool { line, .. } => diag::print_line_col(&src, *line, 1, "tool", &e.to_string(), e.help().unwrap_or("")),
-        other => diag::print_plain(&format!("{}: {other}", path.display()), other.help().unwrap_or("")),
+        stock::StockError::Toml {
+            line,
+            column,
+            message,
+            help,
+            ..
+        } => diag::print_line_col(&src, *line, *column, "toml", message, help),
+        stock::StockError::Tool { line, .. } => diag::print_line_col(
+            &src,
+            *line,
+            1,
+            "tool",
+            &e.to_string(),
+            e.help().unwrap_or(""),
+        ),
+        other => diag::print_plain(
+            &format!("{}: {other}", path.display()),
+            other.help().unwrap_or(""),
+        ),
     }
 }

@@ -26,7 +26,11 @@ fn main() -> ExitCode {
         Ok(a) => a,
         Err(e) => {
             let _ = e.print();
-            return ExitCode::from(if e.use_stderr() { EXIT_UNUSABLE } else { EXIT_CLEAN });
+            return ExitCode::from(if e.use_stderr() {
+                EXIT_UNUSABLE
+            } else {
+                EXIT_CLEAN
+            });
         }
     };
     let code = match args.command {

@@ -5,11 +5,19 @@ use expander::{Motion, Segment};
 use render::{Crash, Diagnostic, PathKind, PathLine, Report, Shape, StockInfo};
 
 fn shape(s: &stock::Shape) -> Shape {
-    Shape { outer: s.outer.clone(), holes: s.holes.clone() }
+    Shape {
+        outer: s.outer.clone(),
+        holes: s.holes.clone(),
+    }
 }
 
 fn diagnostic(d: &expander::Diagnostic) -> Diagnostic {
-    Diagnostic { line: d.span.line, column: d.span.column, code: d.code.to_string(), message: d.message.clone() }
+    Diagnostic {
+        line: d.span.line,
+        column: d.span.column,
+        code: d.code.to_string(),
+        message: d.message.clone(),
+    }
 }
 
 /// The toolpath as drawn: arcs chorded at a drawing tolerance (the removal uses its own).
@@ -19,24 +27,55 @@ fn path_line(seg: &Segment) -> PathLine {
         Motion::Feed => PathKind::Feed,
         Motion::Thread => PathKind::Thread,
     };
-    PathLine { kind, line: seg.span.line, points: seg.polyline(0.01).into_iter().map(|p| [p.z, p.r]).collect() }
+    PathLine {
+        kind,
+        line: seg.span.line,
+        points: seg.polyline(0.01).into_iter().map(|p| [p.z, p.r]).collect(),
+    }
+}
+
+/// One title-block line per tool; "tool 0" is whatever cuts before the first T word.
+fn tool_line(tools: &stock::ToolTable, t: u32) -> String {
+    match (t, tools.numbers().first()) {
+        (0, Some(&first)) => format!("{} (no T word)", tools.describe(first)),
+        (0, None) => format!("{} (no T word)", tools.describe(0)),
+        _ => tools.describe(t),
+    }
 }
 
 /// Everything a finished run shows.
-pub(crate) fn build(loaded: &Loaded, program_name: &str, blank: &stock::Blank, tools: &stock::ToolTable, sim: &stock::Simulation, tol: f64) -> Report {
+pub(crate) fn build(
+    loaded: &Loaded,
+    program_name: &str,
+    blank: &stock::Blank,
+    tools: &stock::ToolTable,
+    sim: &stock::Simulation,
+    tol: f64,
+) -> Report {
     let tp = &loaded.toolpath;
     let crashes = sim
         .crashes
         .iter()
         .map(|c| {
             let span = tp.segments[c.segment].span;
-            Crash { line: span.line, column: span.column, z: c.at[0], r: c.at[1], area_mm2: c.area }
+            Crash {
+                line: span.line,
+                column: span.column,
+                z: c.at[0],
+                r: c.at[1],
+                area_mm2: c.area,
+            }
         })
         .collect();
     let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(diagnostic).collect();
     for (seg, message) in &sim.warnings {
         let span = tp.segments.get(*seg).map(|s| s.span).unwrap_or_default();
-        warnings.push(Diagnostic { line: span.line, column: span.column, code: "LS-STOCK".into(), message: message.clone() });
+        warnings.push(Diagnostic {
+            line: span.line,
+            column: span.column,
+            code: "LS-STOCK".into(),
+            message: message.clone(),
+        });
     }
     let mut tool_numbers: Vec<u32> = tp.tools.clone();
     if tp.segments.iter().any(|s| s.tool == 0) {
@@ -45,17 +84,24 @@ pub(crate) fn build(loaded: &Loaded, program_name: &str, blank: &stock::Blank, t
     Report {
         program: program_name.to_string(),
         title: tp.title.clone(),
-        stock: StockInfo { description: blank.description.clone(), shapes: blank.shapes.iter().map(shape).collect() },
+        stock: StockInfo {
+            description: blank.description.clone(),
+            shapes: blank.shapes.iter().map(shape).collect(),
+        },
         final_part: sim.final_shapes.iter().map(shape).collect(),
         toolpath: tp.segments.iter().map(path_line).collect(),
         crashes,
         alarms: tp.alarms.iter().map(diagnostic).collect(),
         warnings,
-        tools: tool_numbers.iter().map(|&t| if t == 0 { format!("before any T word: {}", tools.describe(0)) } else { tools.describe(t) }).collect(),
+        tools: tool_numbers.iter().map(|&t| tool_line(tools, t)).collect(),
         removed_area_mm2: sim.removed_area,
         removed_volume_mm3: sim.removed_volume,
         segments: tp.segments.len(),
-        rapid_segments: tp.segments.iter().filter(|s| s.motion == Motion::Rapid).count(),
+        rapid_segments: tp
+            .segments
+            .iter()
+            .filter(|s| s.motion == Motion::Rapid)
+            .count(),
         cycle_time_s: expander::timing::cycle_time(&tp.segments, tp.dwell_s, &loaded.machine),
         tolerance_mm: tol,
         ..Report::default()

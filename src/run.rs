@@ -10,7 +10,9 @@ use std::path::PathBuf;
 
 /// `latsim check`: read and expand, print alarms; no removal.
 pub(crate) fn check(args: &ProgramArgs) -> u8 {
-    let Ok(loaded) = input::load_program(args) else { return EXIT_UNUSABLE };
+    let Ok(loaded) = input::load_program(args) else {
+        return EXIT_UNUSABLE;
+    };
     input::print_diagnostics(&loaded, args.quiet);
     let tp = &loaded.toolpath;
     println!(
@@ -30,27 +32,40 @@ pub(crate) fn check(args: &ProgramArgs) -> u8 {
 
 /// Where each report goes: the explicit paths, or all three into `--out`.
 fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
-    let explicit: Vec<(PathBuf, &'static str)> = [(&args.svg, "svg"), (&args.png, "png"), (&args.json, "json")]
-        .into_iter()
-        .filter_map(|(p, kind)| p.clone().map(|p| (p, kind)))
-        .collect();
+    let explicit: Vec<(PathBuf, &'static str)> =
+        [(&args.svg, "svg"), (&args.png, "png"), (&args.json, "json")]
+            .into_iter()
+            .filter_map(|(p, kind)| p.clone().map(|p| (p, kind)))
+            .collect();
     if !explicit.is_empty() {
         return explicit;
     }
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    ["svg", "png", "json"].into_iter().map(|kind| (dir.join(format!("{stem}.{kind}")), kind)).collect()
+    ["svg", "png", "json"]
+        .into_iter()
+        .map(|kind| (dir.join(format!("{stem}.{kind}")), kind))
+        .collect()
 }
 
 /// `latsim run`: the whole pipeline; writes the reports and returns the exit status.
 pub(crate) fn run(args: &RunArgs) -> u8 {
     if !(args.tol.is_finite() && args.tol > 0.0) {
-        diag::print_plain(&format!("--tol {} is not a positive length", args.tol), "give the deviation tolerance in mm, e.g. --tol 0.01");
+        diag::print_plain(
+            &format!("--tol {} is not a positive length", args.tol),
+            "give the deviation tolerance in mm, e.g. --tol 0.01",
+        );
         return EXIT_UNUSABLE;
     }
     // Read everything before any work, so a bad flag fails fast.
-    let Ok(blank) = input::load_blank(args) else { return EXIT_UNUSABLE };
-    let Ok(tools) = input::load_tools(args) else { return EXIT_UNUSABLE };
-    let Ok(loaded) = input::load_program(&args.program) else { return EXIT_UNUSABLE };
+    let Ok(blank) = input::load_blank(args) else {
+        return EXIT_UNUSABLE;
+    };
+    let Ok(tools) = input::load_tools(args) else {
+        return EXIT_UNUSABLE;
+    };
+    let Ok(loaded) = input::load_program(&args.program) else {
+        return EXIT_UNUSABLE;
+    };
     input::print_diagnostics(&loaded, args.program.quiet);
     let quiet = args.program.quiet;
 
@@ -61,13 +76,25 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
             b.set_position(done as u64);
         }
     };
-    let sim = stock::simulate(&blank, &tools, &segments, &stock::SimOptions::default(), &mut tick);
+    let sim = stock::simulate(
+        &blank,
+        &tools,
+        &segments,
+        &stock::SimOptions::default(),
+        &mut tick,
+    );
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
 
-    let name = args.program.program.file_name().map_or_else(|| loaded.source.name.clone(), |n| n.to_string_lossy().into_owned());
-    let stem = args.program.program.file_stem().map_or_else(|| "program".to_string(), |s| s.to_string_lossy().into_owned());
+    let name = args.program.program.file_name().map_or_else(
+        || loaded.source.name.clone(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let stem = args.program.program.file_stem().map_or_else(
+        || "program".to_string(),
+        |s| s.to_string_lossy().into_owned(),
+    );
     let report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
 
     let mut inputs = vec![args.program.program.clone()];
@@ -87,7 +114,10 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
             },
         };
         if let Err(e) = write_atomic(&path, &bytes, &inputs) {
-            diag::print_plain(&e, "choose another output path with --out, --svg, --png or --json");
+            diag::print_plain(
+                &e,
+                "choose another output path with --out, --svg, --png or --json",
+            );
             return EXIT_UNUSABLE;
         }
     }
@@ -138,7 +168,9 @@ fn progress_bar(len: u64, quiet: bool) -> Option<indicatif::ProgressBar> {
         return None;
     }
     let bar = indicatif::ProgressBar::new(len);
-    if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} removing material {bar:40} {pos}/{len} moves ({eta})") {
+    if let Ok(style) = indicatif::ProgressStyle::with_template(
+        "{spinner} removing material {bar:40} {pos}/{len} moves ({eta})",
+    ) {
         bar.set_style(style);
     }
     Some(bar)

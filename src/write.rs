@@ -8,16 +8,24 @@ pub(crate) fn write_atomic(path: &Path, bytes: &[u8], inputs: &[PathBuf]) -> Res
     let canon = |p: &Path| std::fs::canonicalize(p).ok();
     if let Some(target) = canon(path) {
         if inputs.iter().any(|i| canon(i).as_ref() == Some(&target)) {
-            return Err(format!("refusing to overwrite the input file {}", path.display()));
+            return Err(format!(
+                "refusing to overwrite the input file {}",
+                path.display()
+            ));
         }
     }
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create folder {}: {e}", dir.display()))?;
-    let mut tmp = tempfile::NamedTempFile::new_in(&dir).map_err(|e| format!("cannot write in {}: {e}", dir.display()))?;
-    tmp.write_all(bytes).and_then(|_| tmp.flush()).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-    tmp.persist(path).map_err(|e| format!("cannot write {}: {}", path.display(), e.error))?;
+    std::fs::create_dir_all(&dir)
+        .map_err(|e| format!("cannot create folder {}: {e}", dir.display()))?;
+    let mut tmp = tempfile::NamedTempFile::new_in(&dir)
+        .map_err(|e| format!("cannot write in {}: {e}", dir.display()))?;
+    tmp.write_all(bytes)
+        .and_then(|_| tmp.flush())
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    tmp.persist(path)
+        .map_err(|e| format!("cannot write {}: {}", path.display(), e.error))?;
     Ok(())
 }

@@ -13,20 +13,40 @@ fn case(name: &str, text: &[u8], code: i32, needles: &[&str]) {
             args.extend(["--stock", "40x50", "--out", out_dir.to_str().unwrap()]);
         }
         let out = latsim(&args);
-        assert_eq!(out.code, code, "{cmd} {name}: exit {} stderr:\n{}", out.code, out.stderr);
-        assert!(!out.stderr.contains("panicked"), "{cmd} {name} panicked:\n{}", out.stderr);
+        assert_eq!(
+            out.code, code,
+            "{cmd} {name}: exit {} stderr:\n{}",
+            out.code, out.stderr
+        );
+        assert!(
+            !out.stderr.contains("panicked"),
+            "{cmd} {name} panicked:\n{}",
+            out.stderr
+        );
         for n in needles {
-            assert!(out.stderr.contains(n), "{cmd} {name}: {n:?} missing from:\n{}", out.stderr);
+            assert!(
+                out.stderr.contains(n),
+                "{cmd} {name}: {n:?} missing from:\n{}",
+                out.stderr
+            );
         }
         if cmd == "run" && code == 2 {
-            assert!(!out_dir.exists(), "nothing may be written when nothing was simulated");
+            assert!(
+                !out_dir.exists(),
+                "nothing may be written when nothing was simulated"
+            );
         }
     }
 }
 
 #[test]
 fn unknown_g_code_is_an_alarm_at_its_word() {
-    case("unknown.nc", b"G0 X50 Z5\nM3 S500\nG12 X10\nM30\n", 1, &["unknown.nc:3:1", "G12", "PS010"]);
+    case(
+        "unknown.nc",
+        b"G0 X50 Z5\nM3 S500\nG12 X10\nM30\n",
+        1,
+        &["unknown.nc:3:1", "G12", "PS010"],
+    );
 }
 
 #[test]
@@ -36,22 +56,42 @@ fn unknown_m_code() {
 
 #[test]
 fn malformed_number() {
-    case("num.nc", b"G0 X50 Z5\nG1 X1.2.3 F1\n", 2, &["num.nc:2:4", "malformed number"]);
+    case(
+        "num.nc",
+        b"G0 X50 Z5\nG1 X1.2.3 F1\n",
+        2,
+        &["num.nc:2:4", "malformed number"],
+    );
 }
 
 #[test]
 fn missing_value() {
-    case("missing.nc", b"G0 X50 Z5\nG1 Z F100\n", 2, &["missing.nc:2:4", "has no value"]);
+    case(
+        "missing.nc",
+        b"G0 X50 Z5\nG1 Z F100\n",
+        2,
+        &["missing.nc:2:4", "has no value"],
+    );
 }
 
 #[test]
 fn arc_radius_too_small() {
-    case("arc.nc", b"M3 S500\nG0 X20 Z2\nG1 Z0 F100\nG3 X40 Z-30 R5\nM30\n", 1, &["arc.nc:4:13", "too small", "PS020"]);
+    case(
+        "arc.nc",
+        b"M3 S500\nG0 X20 Z2\nG1 Z0 F100\nG3 X40 Z-30 R5\nM30\n",
+        1,
+        &["arc.nc:4:13", "too small", "PS020"],
+    );
 }
 
 #[test]
 fn recursive_m98_ends_with_the_nesting_alarm() {
-    case("rec.nc", b"O0001;\nM98 P2;\nM30;\nO0002;\nG0 X50 Z5;\nM98 P2;\nM99;\n", 1, &["rec.nc:6:1", "PS077"]);
+    case(
+        "rec.nc",
+        b"O0001;\nM98 P2;\nM30;\nO0002;\nG0 X50 Z5;\nM98 P2;\nM99;\n",
+        1,
+        &["rec.nc:6:1", "PS077"],
+    );
 }
 
 #[test]
@@ -67,13 +107,28 @@ fn missing_subprogram() {
 #[test]
 fn empty_file() {
     case("empty.nc", b"", 2, &["nothing to simulate"]);
-    case("comments.nc", b"%\n(only a comment)\n%\n", 2, &["nothing to simulate"]);
+    case(
+        "comments.nc",
+        b"%\n(only a comment)\n%\n",
+        2,
+        &["nothing to simulate"],
+    );
 }
 
 #[test]
 fn binary_garbage() {
-    case("bin.nc", &[0x7f, 0x45, 0x4c, 0x46, 0x02, 0x01, 0x01, 0x00, 0xff, 0xfe], 2, &["not UTF-8"]);
-    case("ctl.nc", b"\x00\x01\x02G1", 2, &["ctl.nc:1:1", "control character"]);
+    case(
+        "bin.nc",
+        &[0x7f, 0x45, 0x4c, 0x46, 0x02, 0x01, 0x01, 0x00, 0xff, 0xfe],
+        2,
+        &["not UTF-8"],
+    );
+    case(
+        "ctl.nc",
+        b"\x00\x01\x02G1",
+        2,
+        &["ctl.nc:1:1", "control character"],
+    );
 }
 
 #[test]
@@ -83,7 +138,12 @@ fn unused_word_is_not_skipped() {
 
 #[test]
 fn feed_missing() {
-    case("feed.nc", b"M3 S500\nG0 X50 Z5\nG1 X40\n", 1, &["feed.nc:3:1", "PS011"]);
+    case(
+        "feed.nc",
+        b"M3 S500\nG0 X50 Z5\nG1 X40\n",
+        1,
+        &["feed.nc:3:1", "PS011"],
+    );
 }
 
 #[test]
@@ -98,7 +158,14 @@ fn missing_files_and_bad_flags() {
     let out = latsim(&["run", prog.to_str().unwrap()]);
     assert_eq!(out.code, 2);
     assert!(out.stderr.contains("--stock"), "{}", out.stderr);
-    let out = latsim(&["run", prog.to_str().unwrap(), "--stock", "40x50", "--tol", "-1"]);
+    let out = latsim(&[
+        "run",
+        prog.to_str().unwrap(),
+        "--stock",
+        "40x50",
+        "--tol",
+        "-1",
+    ]);
     assert_eq!(out.code, 2);
     let out = latsim(&["frobnicate"]);
     assert_eq!(out.code, 2);
@@ -108,8 +175,19 @@ fn missing_files_and_bad_flags() {
 fn bad_tool_table_points_at_its_line() {
     let (dir, prog) = temp_program("ok.nc", b"G0 X50 Z5\nM30\n");
     let tools = dir.path().join("tools.toml");
-    std::fs::write(&tools, "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"Q\"\n").unwrap();
-    let out = latsim(&["run", prog.to_str().unwrap(), "--stock", "40x50", "--tools", tools.to_str().unwrap()]);
+    std::fs::write(
+        &tools,
+        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"Q\"\n",
+    )
+    .unwrap();
+    let out = latsim(&[
+        "run",
+        prog.to_str().unwrap(),
+        "--stock",
+        "40x50",
+        "--tools",
+        tools.to_str().unwrap(),
+    ]);
     assert_eq!(out.code, 2, "{}", out.stderr);
     assert!(out.stderr.contains("tools.toml:"), "{}", out.stderr);
 }
@@ -118,7 +196,14 @@ fn bad_tool_table_points_at_its_line() {
 fn the_input_is_never_overwritten() {
     let (dir, prog) = temp_program("p.nc", b"G0 X50 Z5\nM30\n");
     let before = std::fs::read(&prog).unwrap();
-    let out = latsim(&["run", prog.to_str().unwrap(), "--stock", "40x50", "--json", prog.to_str().unwrap()]);
+    let out = latsim(&[
+        "run",
+        prog.to_str().unwrap(),
+        "--stock",
+        "40x50",
+        "--json",
+        prog.to_str().unwrap(),
+    ]);
     assert_eq!(out.code, 2, "{}", out.stderr);
     assert_eq!(std::fs::read(&prog).unwrap(), before);
     drop(dir);

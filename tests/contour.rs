@@ -34,7 +34,10 @@ fn seed_004_contour_with_a_sharp_insert_is_the_programmed_profile() {
     let sym = stock::symmetric_difference_area(&sim.final_shapes, &want);
     let h = stock::hausdorff(&sim.final_shapes, &want);
     let area = stock::area(&want);
-    eprintln!("segments {}, symmetric difference {sym:.6} mm² of {area:.1}, Hausdorff {h:.5} mm", tp.segments.len());
+    eprintln!(
+        "segments {}, symmetric difference {sym:.6} mm² of {area:.1}, Hausdorff {h:.5} mm",
+        tp.segments.len()
+    );
     assert!(h <= 0.01, "Hausdorff {h} mm > 0.01 mm");
     // Arcs are chorded at 0.001 mm: the chords lose at most 0.001 mm × 26 mm of arc.
     assert!(sym <= 0.026, "symmetric difference {sym} mm²");
@@ -62,8 +65,16 @@ fn the_cli_reports_the_same_part() {
     assert_eq!(v["verdict"], "clean");
     let removed = v["removed_area_mm2"].as_f64().unwrap();
     let want = 18.0 * 40.0 - stock::area(&[expected()]);
-    assert!((removed - want).abs() < 0.026, "removed {removed} mm², expected {want}");
+    assert!(
+        (removed - want).abs() < 0.026,
+        "removed {removed} mm², expected {want}"
+    );
     // x in the JSON is a diameter: the final part touches Φ36.
-    let max_x = v["final"][0]["outer"].as_array().unwrap().iter().map(|p| p[1].as_f64().unwrap()).fold(0.0, f64::max);
+    let max_x = v["final"][0]["outer"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p[1].as_f64().unwrap())
+        .fold(0.0, f64::max);
     assert!((max_x - 36.0).abs() < 1e-6, "max x {max_x}");
 }

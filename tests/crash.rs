@@ -25,7 +25,11 @@ fn rapid_into_stock_is_reported_at_its_line_with_area() {
     assert_eq!(seg.span.line, 8, "crash at the G00 X30. Z-10. block");
     // The tip plunges from (Z5, r25) to (Z-10, r15) through the Φ36 turned surface: real stock.
     assert!(c.area > 1.0, "area {}", c.area);
-    assert!(c.at[1] <= 18.0 + 1e-6 && c.at[0] <= 0.0 + 1e-6, "first contact {:?}", c.at);
+    assert!(
+        c.at[1] <= 18.0 + 1e-6 && c.at[0] <= 0.0 + 1e-6,
+        "first contact {:?}",
+        c.at
+    );
 }
 
 #[test]

@@ -24,7 +24,11 @@ pub struct Out {
 
 /// Run the `latsim` binary with `args`.
 pub fn latsim(args: &[&str]) -> Out {
-    let out = Command::new(env!("CARGO_BIN_EXE_latsim")).args(args).env("NO_COLOR", "1").output().expect("latsim runs");
+    let out = Command::new(env!("CARGO_BIN_EXE_latsim"))
+        .args(args)
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("latsim runs");
     Out {
         code: out.status.code().unwrap_or(-1),
         stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -42,11 +46,25 @@ pub fn temp_program(name: &str, text: &[u8]) -> (tempfile::TempDir, PathBuf) {
 }
 
 /// Parse, expand and simulate in-process.
-pub fn simulate(program: &str, blank: &stock::Blank, tools: &stock::ToolTable) -> (expander::Toolpath, stock::Simulation) {
+pub fn simulate(
+    program: &str,
+    blank: &stock::Blank,
+    tools: &stock::ToolTable,
+) -> (expander::Toolpath, stock::Simulation) {
     let p = gcode::parse(program).expect("program parses");
-    let tp = expander::expand(&p, &expander::Machine::default(), &expander::Options::default());
+    let tp = expander::expand(
+        &p,
+        &expander::Machine::default(),
+        &expander::Options::default(),
+    );
     assert!(tp.alarms.is_empty(), "alarms: {:?}", tp.alarms);
-    let sim = stock::simulate(blank, tools, &tp.segments, &stock::SimOptions::default(), &mut |_| {});
+    let sim = stock::simulate(
+        blank,
+        tools,
+        &tp.segments,
+        &stock::SimOptions::default(),
+        &mut |_| {},
+    );
     (tp, sim)
 }
 
@@ -62,7 +80,10 @@ pub fn arc_centre(a: [f64; 2], b: [f64; 2], r: f64, ccw: bool) -> [f64; 2] {
     let c = (dz * dz + dr * dr).sqrt();
     let h = (r * r - c * c / 4.0).sqrt();
     let s = if ccw { 1.0 } else { -1.0 };
-    [(a[0] + b[0]) / 2.0 - s * h * dr / c, (a[1] + b[1]) / 2.0 + s * h * dz / c]
+    [
+        (a[0] + b[0]) / 2.0 - s * h * dr / c,
+        (a[1] + b[1]) / 2.0 + s * h * dz / c,
+    ]
 }
 
 /// Points of an arc from `a` to `b` about `centre` (exclusive of `a`, inclusive of `b`), every `step` rad.
@@ -86,9 +107,16 @@ pub fn arc_points(a: [f64; 2], b: [f64; 2], centre: [f64; 2], ccw: bool, out: &m
 
 /// A shape from one counter-clockwise or clockwise ring (orientation fixed here).
 pub fn shape(mut ring: Vec<[f64; 2]>) -> stock::Shape {
-    let a: f64 = ring.iter().zip(ring.iter().cycle().skip(1)).map(|(p, q)| p[0] * q[1] - q[0] * p[1]).sum();
+    let a: f64 = ring
+        .iter()
+        .zip(ring.iter().cycle().skip(1))
+        .map(|(p, q)| p[0] * q[1] - q[0] * p[1])
+        .sum();
     if a < 0.0 {
         ring.reverse();
     }
-    stock::Shape { outer: ring, holes: vec![] }
+    stock::Shape {
+        outer: ring,
+        holes: vec![],
+    }
 }

@@ -17,8 +17,18 @@ pub struct Diagnostic {
 
 impl Diagnostic {
     /// A new diagnostic.
-    pub fn new(span: Span, code: &'static str, message: impl Into<String>, help: impl Into<String>) -> Self {
-        Self { span, code, message: message.into(), help: help.into() }
+    pub fn new(
+        span: Span,
+        code: &'static str,
+        message: impl Into<String>,
+        help: impl Into<String>,
+    ) -> Self {
+        Self {
+            span,
+            code,
+            message: message.into(),
+            help: help.into(),
+        }
     }
 }
 

@@ -44,13 +44,19 @@ pub fn centre_from_radius(from: Pt, to: Pt, r: f64, ccw: bool) -> Result<Pt, Arc
     let half = chord / 2.0;
     let deficit = half - r;
     if deficit > END_TOL_MM.max(END_TOL_REL * r) {
-        return Err(ArcError::RadiusTooSmall { r, half_chord: half });
+        return Err(ArcError::RadiusTooSmall {
+            r,
+            half_chord: half,
+        });
     }
     // Within tolerance of a half circle: the centre is the midpoint.
     let d = (r * r - half * half).max(0.0).sqrt();
     let (nz, nr) = (-dr / chord, dz / chord); // left normal of the chord
     let side = if ccw { 1.0 } else { -1.0 };
-    Ok(Pt::new((from.z + to.z) / 2.0 + side * d * nz, (from.r + to.r) / 2.0 + side * d * nr))
+    Ok(Pt::new(
+        (from.z + to.z) / 2.0 + side * d * nz,
+        (from.r + to.r) / 2.0 + side * d * nr,
+    ))
 }
 
 /// Check an I/K centre: the end must lie on the circle through the start.
@@ -74,14 +80,21 @@ mod tests {
     fn seed_004_dome_is_centred_on_the_axis_line() {
         // G03 X30 Z-10 R10 from (Z0, X10): centre (Z-10, X10) i.e. r = 5.
         let c = centre_from_radius(Pt::new(0.0, 5.0), Pt::new(-10.0, 15.0), 10.0, true).unwrap();
-        assert!((c.z + 10.0).abs() < 1e-9 && (c.r - 5.0).abs() < 1e-9, "{c:?}");
+        assert!(
+            (c.z + 10.0).abs() < 1e-9 && (c.r - 5.0).abs() < 1e-9,
+            "{c:?}"
+        );
     }
 
     #[test]
     fn seed_003_concave_fillet() {
         // G02 X160 W-20 R20 from Φ120 at Z-50: centre (Z-50, Φ160) = r 80.
-        let c = centre_from_radius(Pt::new(-50.0, 60.0), Pt::new(-70.0, 80.0), 20.0, false).unwrap();
-        assert!((c.z + 50.0).abs() < 1e-9 && (c.r - 80.0).abs() < 1e-9, "{c:?}");
+        let c =
+            centre_from_radius(Pt::new(-50.0, 60.0), Pt::new(-70.0, 80.0), 20.0, false).unwrap();
+        assert!(
+            (c.z + 50.0).abs() < 1e-9 && (c.r - 80.0).abs() < 1e-9,
+            "{c:?}"
+        );
     }
 
     #[test]

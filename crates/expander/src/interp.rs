@@ -5,8 +5,10 @@
 //! program end. A controller alarm stops the run; the segments made so far are kept.
 
 use crate::arc::{self, ArcError};
+use crate::cycles::{self, Cycle, Retained};
+use crate::words::Words;
 use crate::{Arc, Diagnostic, Feed, Machine, Motion, Pt, RapidPath, Segment, Span, Spindle};
-use gcode::{Block, Program, Word};
+use gcode::{Block, Program, Subprogram, Word};
 
 /// Interpreter settings from the command line.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -21,7 +23,11 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Self { block_delete: false, max_segments: 5_000_000, max_blocks: 20_000_000 }
+        Self {
+            block_delete: false,
+            max_segments: 5_000_000,
+            max_blocks: 20_000_000,
+        }
     }
 }
 
@@ -72,8 +78,17 @@ enum Exit {
 enum Flow {
     Next,
     End,
-    Call { number: u32, times: u32, span: Span },
-    Return { seq: Option<u32>, span: Span },
+    Call {
+        number: u32,
+        times: u32,
+        span: Span,
+    },
+    Return {
+        seq: Option<u32>,
+        span: Span,
+    },
+    /// Continue at this block index (G70–G73 skip their finishing shape).
+    Jump(usize),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -83,6 +98,8 @@ enum MotionMode {
     Cw,
     Ccw,
     Thread,
+    /// A modal canned cycle (G90/G92/G94), by code in tenths.
+    Cycle(i32),
 }
 
 struct Interp<'m> {
@@ -103,41 +120,16 @@ struct Interp<'m> {
     spindle_warned: bool,
     feed: f64,
     tool: u32,
+    retained: Retained,
 }
 
-/// Which words of a block something has used; the rest are reported, never skipped.
-struct Used(Vec<bool>);
-
-impl Used {
-    fn take<'b>(&mut self, b: &'b Block, letter: char) -> Option<&'b Word> {
-        let i = b.words.iter().position(|w| w.letter == letter)?;
-        self.0[i] = true;
-        Some(&b.words[i])
-    }
-}
-
-fn alarm(span: Span, code: &'static str, message: impl Into<String>, help: impl Into<String>) -> Diagnostic {
+fn alarm(
+    span: Span,
+    code: &'static str,
+    message: impl Into<String>,
+    help: impl Into<String>,
+) -> Diagnostic {
     Diagnostic::new(span, code, message, help)
-}
-
-/// A G code's name and whether latsim runs it yet.
-fn cycle_name(tenths: i32) -> Option<&'static str> {
-    Some(match tenths {
-        410 => "G41 (tool nose radius compensation, left)",
-        420 => "G42 (tool nose radius compensation, right)",
-        700 => "G70 (finishing cycle)",
-        710 => "G71 (stock removal in turning)",
-        720 => "G72 (stock removal in facing)",
-        730 => "G73 (pattern repeating cycle)",
-        740 => "G74 (face grooving / peck drilling cycle)",
-        750 => "G75 (radial grooving cycle)",
-        751 => "G75.1 (radial trapezoid groove cycle)",
-        760 => "G76 (multiple threading cycle)",
-        900 => "G90 (axial turning cycle)",
-        920 => "G92 (threading cycle)",
-        940 => "G94 (face turning cycle)",
-        _ => return None,
-    })
 }
 
 fn g_name(w: &Word) -> String {
@@ -167,15 +159,30 @@ impl<'m> Interp<'m> {
             spindle_warned: false,
             feed: 0.0,
             tool: 0,
+            retained: Retained::default(),
         }
     }
 
-    fn warn(&mut self, span: Span, code: &'static str, message: impl Into<String>, help: impl Into<String>) {
-        self.out.warnings.push(Diagnostic::new(span, code, message, help));
+    fn warn(
+        &mut self,
+        span: Span,
+        code: &'static str,
+        message: impl Into<String>,
+        help: impl Into<String>,
+    ) {
+        self.out
+            .warnings
+            .push(Diagnostic::new(span, code, message, help));
     }
 
     /// Run one O program from block `start`; `depth` 0 is the main program.
-    fn run(&mut self, program: &Program, index: usize, start: usize, depth: u32) -> Result<Exit, Diagnostic> {
+    fn run(
+        &mut self,
+        program: &Program,
+        index: usize,
+        start: usize,
+        depth: u32,
+    ) -> Result<Exit, Diagnostic> {
         let blocks = &program.programs[index].blocks;
         let mut i = start;
         'blocks: while i < blocks.len() {
@@ -189,12 +196,16 @@ impl<'m> Interp<'m> {
                 return Err(alarm(
                     b.span,
                     "LS-LOOP",
-                    format!("more than {} blocks executed: the program does not end", self.opts.max_blocks),
+                    format!(
+                        "more than {} blocks executed: the program does not end",
+                        self.opts.max_blocks
+                    ),
                     "check M98 repeat counts and M99 jumps for an endless loop",
                 ));
             }
-            match self.block(b)? {
+            match self.block(&program.programs[index], i)? {
                 Flow::Next => i += 1,
+                Flow::Jump(j) => i = j,
                 Flow::End => return Ok(Exit::End),
                 Flow::Return { seq, span } => {
                     if depth == 0 {
@@ -207,8 +218,16 @@ impl<'m> Interp<'m> {
                     }
                     return Ok(Exit::Return(seq));
                 }
-                Flow::Call { number, times, span } => {
-                    let Some(sub) = program.programs.iter().position(|p| p.number == Some(number)) else {
+                Flow::Call {
+                    number,
+                    times,
+                    span,
+                } => {
+                    let Some(sub) = program
+                        .programs
+                        .iter()
+                        .position(|p| p.number == Some(number))
+                    else {
                         return Err(alarm(
                             span,
                             "PS078",
@@ -229,7 +248,8 @@ impl<'m> Interp<'m> {
                             Exit::End => return Ok(Exit::End),
                             Exit::Return(None) => {}
                             Exit::Return(Some(seq)) => {
-                                let Some(target) = blocks.iter().position(|x| x.seq == Some(seq)) else {
+                                let Some(target) = blocks.iter().position(|x| x.seq == Some(seq))
+                                else {
                                     return Err(alarm(
                                         span,
                                         "PS078",
@@ -248,10 +268,20 @@ impl<'m> Interp<'m> {
         }
         let span = blocks.last().map(|b| b.span).unwrap_or_default();
         if depth == 0 {
-            self.warn(span, "LS-NO-END", "the program ends without M30 or M02", "end the main program with M30");
+            self.warn(
+                span,
+                "LS-NO-END",
+                "the program ends without M30 or M02",
+                "end the main program with M30",
+            );
             Ok(Exit::End)
         } else {
-            self.warn(span, "LS-NO-M99", "the subprogram ends without M99; returning", "end the subprogram with M99");
+            self.warn(
+                span,
+                "LS-NO-M99",
+                "the subprogram ends without M99; returning",
+                "end the subprogram with M99",
+            );
             Ok(Exit::Return(None))
         }
     }
@@ -264,8 +294,9 @@ impl<'m> Interp<'m> {
         }
     }
 
-    fn block(&mut self, b: &Block) -> Result<Flow, Diagnostic> {
-        let mut used = Used(vec![false; b.words.len()]);
+    fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
+        let b = &sub.blocks[index];
+        let mut used = Words::new(b);
         // -- G codes: classify, check groups.
         let mut motion: Option<(MotionMode, &Word)> = None;
         let mut one_shot: Option<(i32, &Word)> = None;
@@ -273,16 +304,21 @@ impl<'m> Interp<'m> {
             if w.letter != 'G' {
                 continue;
             }
-            used.0[i] = true;
+            used.mark(i);
             let Some(t) = w.code_tenths() else {
-                return Err(alarm(w.span, "PS010", format!("G{} is not a G code", w.value), "G codes are G00 … G99 (and G75.1)"));
+                return Err(alarm(
+                    w.span,
+                    "PS010",
+                    format!("G{} is not a G code", w.value),
+                    "G codes are G00 … G99 (and G75.1)",
+                ));
             };
-            if let Some(name) = cycle_name(t) {
+            if t == 410 || t == 420 {
                 return Err(alarm(
                     w.span,
                     "LS-NOT-IMPLEMENTED",
-                    format!("{name} is not implemented yet in this version of latsim"),
-                    "the cycle is recognised but cannot be simulated yet; remove it or wait for the release that adds it",
+                    format!("{} (tool nose radius compensation) is not implemented yet in this version of latsim", g_name(w)),
+                    "compensation is recognised but cannot be simulated yet; remove G41/G42 or wait for the release that adds it",
                 ));
             }
             let mut set_motion = |m: MotionMode| {
@@ -290,7 +326,11 @@ impl<'m> Interp<'m> {
                     return Err(alarm(
                         w.span,
                         "PS010",
-                        format!("{} and {} are both motion codes (group 01)", g_name(first), g_name(w)),
+                        format!(
+                            "{} and {} are both motion codes (group 01)",
+                            g_name(first),
+                            g_name(w)
+                        ),
                         "keep one motion code per block",
                     ));
                 }
@@ -303,7 +343,8 @@ impl<'m> Interp<'m> {
                 20 => set_motion(MotionMode::Cw)?,
                 30 => set_motion(MotionMode::Ccw)?,
                 320 => set_motion(MotionMode::Thread)?,
-                40 | 280 | 500 => {
+                t if cycles::is_modal(t) => set_motion(MotionMode::Cycle(t))?,
+                t if t == 40 || t == 280 || t == 500 || cycles::is_cycle(t) => {
                     if let Some((_, first)) = one_shot {
                         return Err(alarm(
                             w.span,
@@ -335,28 +376,52 @@ impl<'m> Interp<'m> {
             }
         }
         if let (Some((_, m)), Some((_, o))) = (motion, one_shot) {
-            return Err(alarm(o.span, "PS010", format!("{} cannot share a block with {}", g_name(o), g_name(m)), "split the block in two"));
+            return Err(alarm(
+                o.span,
+                "PS010",
+                format!("{} cannot share a block with {}", g_name(o), g_name(m)),
+                "split the block in two",
+            ));
         }
         // -- F, S, T.
-        if let Some(f) = used.take(b, 'F') {
+        if let Some(f) = used.take('F') {
             if f.value < 0.0 {
-                return Err(alarm(f.span, "PS011", "negative feed", "F must be positive"));
+                return Err(alarm(
+                    f.span,
+                    "PS011",
+                    "negative feed",
+                    "F must be positive",
+                ));
             }
             self.feed = f.value;
         }
-        if let Some(s) = used.take(b, 'S') {
+        if let Some(s) = used.take('S') {
             if s.value < 0.0 {
-                return Err(alarm(s.span, "LS-VALUE", "negative spindle speed", "S must be positive"));
+                return Err(alarm(
+                    s.span,
+                    "LS-VALUE",
+                    "negative spindle speed",
+                    "S must be positive",
+                ));
             }
             if one_shot.map(|(t, _)| t) == Some(500) {
                 self.s_clamp = s.value;
             } else {
-                self.s_value = if self.css && self.inch { s.value * 0.3048 } else { s.value };
+                self.s_value = if self.css && self.inch {
+                    s.value * 0.3048
+                } else {
+                    s.value
+                };
             }
         }
-        if let Some(t) = used.take(b, 'T') {
+        if let Some(t) = used.take('T') {
             if t.has_point || t.value < 0.0 || t.value > 9999.0 {
-                return Err(alarm(t.span, "LS-T-WORD", "T must be four digits Tttoo", "write e.g. T0101: tool 01 with offset 01"));
+                return Err(alarm(
+                    t.span,
+                    "LS-T-WORD",
+                    "T must be four digits Tttoo",
+                    "write e.g. T0101: tool 01 with offset 01",
+                ));
             }
             let v = t.value as u32;
             let (tool, offset) = (v / 100, v % 100);
@@ -381,9 +446,14 @@ impl<'m> Interp<'m> {
             if w.letter != 'M' {
                 continue;
             }
-            used.0[i] = true;
+            used.mark(i);
             if w.has_point || w.value < 0.0 || w.value.fract() != 0.0 {
-                return Err(alarm(w.span, "PS010", format!("M{} is not an M code", w.value), "M codes are whole numbers"));
+                return Err(alarm(
+                    w.span,
+                    "PS010",
+                    format!("M{} is not an M code", w.value),
+                    "M codes are whole numbers",
+                ));
             }
             match w.value as u32 {
                 3 | 4 => {
@@ -403,43 +473,76 @@ impl<'m> Interp<'m> {
             }
         }
         // -- the block's action.
+        let mut flow = Flow::Next;
         match one_shot {
-            Some((40, w)) => self.dwell(b, &mut used, w)?,
+            Some((40, w)) => self.dwell(&mut used, w)?,
             Some((280, w)) => self.g28(b, &mut used, w)?,
-            Some((500, _)) => self.g50(b, &mut used)?,
-            _ => {
+            Some((500, _)) => self.g50(&mut used)?,
+            Some((t, w)) => flow = self.cycle(t, Some(w), sub, index, &mut used)?,
+            None => {
                 if let Some((m, _)) = motion {
                     self.motion = m;
                 }
-                self.motion_block(b, &mut used)?;
+                if let MotionMode::Cycle(t) = self.motion {
+                    if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
+                        let g = motion.map(|(_, w)| w);
+                        flow = self.cycle(t, g, sub, index, &mut used)?;
+                    }
+                } else {
+                    self.motion_block(b, &mut used)?;
+                }
             }
         }
         // -- M codes, part 2 (after motion).
-        let mut flow = Flow::Next;
         for (m, w) in after {
             match m {
                 5 => self.spindle_on = false,
                 9 => {}
                 2 | 30 => flow = Flow::End,
                 98 => {
-                    let p = used.take(b, 'P').ok_or_else(|| alarm(w.span, "PS078", "M98 without P", "write M98 P<program number>, e.g. M98 P1234"))?;
+                    let p = used.take('P').ok_or_else(|| {
+                        alarm(
+                            w.span,
+                            "PS078",
+                            "M98 without P",
+                            "write M98 P<program number>, e.g. M98 P1234",
+                        )
+                    })?;
                     if p.has_point || p.value < 1.0 || p.value > 99_999_999.0 {
                         return Err(alarm(p.span, "PS078", "M98 P needs a program number", "P is [repeat count (4 digits)] + program number (4 digits), e.g. P30010"));
                     }
                     let v = p.value as u32;
-                    let (mut times, number) = if v > 9999 { (v / 10000, v % 10000) } else { (1, v) };
-                    if let Some(l) = used.take(b, 'L') {
+                    let (mut times, number) = if v > 9999 {
+                        (v / 10000, v % 10000)
+                    } else {
+                        (1, v)
+                    };
+                    if let Some(l) = used.take('L') {
                         if l.has_point || l.value < 1.0 || l.value > 9999.0 {
-                            return Err(alarm(l.span, "LS-VALUE", "L must be a repeat count 1 … 9999", "write e.g. L3"));
+                            return Err(alarm(
+                                l.span,
+                                "LS-VALUE",
+                                "L must be a repeat count 1 … 9999",
+                                "write e.g. L3",
+                            ));
                         }
                         times = l.value as u32;
                     }
-                    flow = Flow::Call { number, times: times.max(1), span: w.span };
+                    flow = Flow::Call {
+                        number,
+                        times: times.max(1),
+                        span: w.span,
+                    };
                 }
                 99 => {
-                    let seq = match used.take(b, 'P') {
+                    let seq = match used.take('P') {
                         Some(p) if p.has_point || p.value < 0.0 => {
-                            return Err(alarm(p.span, "LS-VALUE", "M99 P needs a sequence number", "write e.g. M99 P20 to return to N20"));
+                            return Err(alarm(
+                                p.span,
+                                "LS-VALUE",
+                                "M99 P needs a sequence number",
+                                "write e.g. M99 P20 to return to N20",
+                            ));
                         }
                         Some(p) => Some(p.value as u32),
                         None => None,
@@ -449,31 +552,32 @@ impl<'m> Interp<'m> {
                 _ => {}
             }
         }
-        if let Some(i) = used.0.iter().position(|u| !u) {
-            let w = &b.words[i];
-            return Err(alarm(
-                w.span,
-                "LS-WORD-UNUSED",
-                format!("address {} has no meaning in this block", w.letter),
-                "remove the word, or use the code that takes it (e.g. R with G02/G03)",
-            ));
-        }
+        used.check_all_used()?;
         Ok(flow)
     }
 
     /// The target of X/U Z/W in the G54 frame; `None` when no axis word is given.
-    fn target(&self, b: &Block, used: &mut Used) -> Result<Option<Pt>, Diagnostic> {
+    fn target(&self, used: &mut Words) -> Result<Option<Pt>, Diagnostic> {
         let u = self.unit();
         let mut p = self.pos;
         let mut any = false;
         for (abs, inc, radius_div) in [('X', 'U', 2.0), ('Z', 'W', 1.0)] {
-            let a = used.take(b, abs);
-            let i = used.take(b, inc);
+            let a = used.take(abs);
+            let i = used.take(inc);
             if let (Some(a), Some(i)) = (a, i) {
-                return Err(alarm(i.span, "LS-AXIS-TWICE", format!("{abs} and {inc} both given (first at {})", a.span), format!("give the end point either absolute ({abs}) or incremental ({inc})")));
+                return Err(alarm(
+                    i.span,
+                    "LS-AXIS-TWICE",
+                    format!("{abs} and {inc} both given (first at {})", a.span),
+                    format!("give the end point either absolute ({abs}) or incremental ({inc})"),
+                ));
             }
             let axis = if abs == 'X' { &mut p.r } else { &mut p.z };
-            let shift = if abs == 'X' { self.shift.r } else { self.shift.z };
+            let shift = if abs == 'X' {
+                self.shift.r
+            } else {
+                self.shift.z
+            };
             if let Some(a) = a {
                 *axis = a.value * u / radius_div + shift;
                 any = true;
@@ -492,32 +596,94 @@ impl<'m> Interp<'m> {
         }
         if !self.spindle_on && !self.spindle_warned {
             self.spindle_warned = true;
-            self.warn(span, "LS-SPINDLE-STOPPED", "cutting with the spindle stopped (no M03/M04 in force)", "start the spindle with M03 or M04 before cutting; a real tool would break");
+            self.warn(
+                span,
+                "LS-SPINDLE-STOPPED",
+                "cutting with the spindle stopped (no M03/M04 in force)",
+                "start the spindle with M03 or M04 before cutting; a real tool would break",
+            );
         }
         if self.feed <= 0.0 {
-            return Err(alarm(span, "PS011", "cutting move with no feed rate (F is 0 or was never given)", "give F in this block or before it"));
+            return Err(alarm(
+                span,
+                "PS011",
+                "cutting move with no feed rate (F is 0 or was never given)",
+                "give F in this block or before it",
+            ));
         }
         let f = self.feed * self.unit();
         if motion == Motion::Thread {
-            return Ok(Feed::PerRev { feed: f, spindle: self.spindle() });
+            return Ok(Feed::PerRev {
+                feed: f,
+                spindle: self.spindle(),
+            });
         }
-        Ok(if self.per_rev { Feed::PerRev { feed: f, spindle: self.spindle() } } else { Feed::PerMinute(f) })
+        Ok(if self.per_rev {
+            Feed::PerRev {
+                feed: f,
+                spindle: self.spindle(),
+            }
+        } else {
+            Feed::PerMinute(f)
+        })
     }
 
     fn spindle(&self) -> Spindle {
         if self.css {
-            Spindle::Css { vc: self.s_value, max_rpm: if self.s_clamp > 0.0 { self.s_clamp } else { self.machine.max_rpm } }
+            Spindle::Css {
+                vc: self.s_value,
+                max_rpm: if self.s_clamp > 0.0 {
+                    self.s_clamp
+                } else {
+                    self.machine.max_rpm
+                },
+            }
         } else {
             Spindle::Rpm(self.s_value)
         }
     }
 
-    fn push(&mut self, b: &Block, motion: Motion, to: Pt, arc: Option<Arc>, lead: f64) -> Result<(), Diagnostic> {
+    fn push(
+        &mut self,
+        b: &Block,
+        motion: Motion,
+        to: Pt,
+        arc: Option<Arc>,
+        lead: f64,
+    ) -> Result<(), Diagnostic> {
+        self.push_at(b.span, motion, to, arc, lead)
+    }
+
+    fn push_at(
+        &mut self,
+        span: Span,
+        motion: Motion,
+        to: Pt,
+        arc: Option<Arc>,
+        lead: f64,
+    ) -> Result<(), Diagnostic> {
         if self.out.segments.len() >= self.opts.max_segments {
-            return Err(alarm(b.span, "LS-TOO-LONG", format!("the program expands to more than {} moves", self.opts.max_segments), "split the program, or check for a repeat count that is far too large"));
+            return Err(alarm(
+                span,
+                "LS-TOO-LONG",
+                format!(
+                    "the program expands to more than {} moves",
+                    self.opts.max_segments
+                ),
+                "split the program, or check for a repeat count that is far too large",
+            ));
         }
-        let feed = self.feed_for(b.span, motion)?;
-        self.out.segments.push(Segment { motion, from: self.pos, to, arc, tool: self.tool, lead, feed, span: b.span });
+        let feed = self.feed_for(span, motion)?;
+        self.out.segments.push(Segment {
+            motion,
+            from: self.pos,
+            to,
+            arc,
+            tool: self.tool,
+            lead,
+            feed,
+            span,
+        });
         self.pos = to;
         Ok(())
     }
@@ -529,24 +695,35 @@ impl<'m> Interp<'m> {
         if self.machine.rapid_path == RapidPath::PerAxis {
             // Both axes start together at their own rates; the shorter one arrives first.
             let (dz, dr) = (to.z - self.pos.z, to.r - self.pos.r);
-            let (tz, tr) = (dz.abs() / self.machine.rapid_z, dr.abs() / self.machine.rapid_x);
+            let (tz, tr) = (
+                dz.abs() / self.machine.rapid_z,
+                dr.abs() / self.machine.rapid_x,
+            );
             let t = tz.min(tr);
             if t > 0.0 && (tz - tr).abs() > 1e-12 {
-                let knee = Pt::new(self.pos.z + dz.signum() * self.machine.rapid_z * t, self.pos.r + dr.signum() * self.machine.rapid_x * t);
+                let knee = Pt::new(
+                    self.pos.z + dz.signum() * self.machine.rapid_z * t,
+                    self.pos.r + dr.signum() * self.machine.rapid_x * t,
+                );
                 self.push(b, Motion::Rapid, knee, None, 0.0)?;
             }
         }
         self.push(b, Motion::Rapid, to, None, 0.0)
     }
 
-    fn motion_block(&mut self, b: &Block, used: &mut Used) -> Result<(), Diagnostic> {
+    fn motion_block(&mut self, b: &Block, used: &mut Words) -> Result<(), Diagnostic> {
         let is_arc = matches!(self.motion, MotionMode::Cw | MotionMode::Ccw);
-        let r_word = if is_arc { used.take(b, 'R') } else { None };
-        let i_word = if is_arc { used.take(b, 'I') } else { None };
-        let k_word = if is_arc { used.take(b, 'K') } else { None };
-        let Some(to) = self.target(b, used)? else {
+        let r_word = if is_arc { used.take('R') } else { None };
+        let i_word = if is_arc { used.take('I') } else { None };
+        let k_word = if is_arc { used.take('K') } else { None };
+        let Some(to) = self.target(used)? else {
             if let Some(w) = r_word.or(i_word).or(k_word) {
-                return Err(alarm(w.span, "LS-ARC", "arc data without an end point", "give the arc's end point with X/U and Z/W"));
+                return Err(alarm(
+                    w.span,
+                    "LS-ARC",
+                    "arc data without an end point",
+                    "give the arc's end point with X/U and Z/W",
+                ));
             }
             return Ok(());
         };
@@ -558,77 +735,173 @@ impl<'m> Interp<'m> {
                 let lead = self.feed * self.unit();
                 self.push(b, Motion::Thread, to, None, lead)
             }
+            MotionMode::Cycle(_) => Ok(()),
             MotionMode::Cw | MotionMode::Ccw => {
                 let ccw = self.motion == MotionMode::Ccw;
                 let u = self.unit();
                 let from = self.pos;
                 let centre = match (r_word, i_word, k_word) {
-                    (Some(r), None, None) => arc::centre_from_radius(from, to, r.value * u, ccw).map_err(|e| arc_alarm(r.span, e))?,
+                    (Some(r), None, None) => arc::centre_from_radius(from, to, r.value * u, ccw)
+                        .map_err(|e| arc_alarm(r.span, e))?,
                     (None, None, None) => {
-                        return Err(alarm(b.span, "LS-ARC", "G02/G03 without R or I/K", "give the radius R, or the centre offset I (radius) and K"));
+                        return Err(alarm(
+                            b.span,
+                            "LS-ARC",
+                            "G02/G03 without R or I/K",
+                            "give the radius R, or the centre offset I (radius) and K",
+                        ));
                     }
                     (Some(r), _, _) => {
-                        return Err(alarm(r.span, "LS-ARC", "arc given both R and I/K", "give either R or I/K, not both"));
+                        return Err(alarm(
+                            r.span,
+                            "LS-ARC",
+                            "arc given both R and I/K",
+                            "give either R or I/K, not both",
+                        ));
                     }
                     (None, i, k) => {
-                        let c = Pt::new(from.z + k.map_or(0.0, |k| k.value * u), from.r + i.map_or(0.0, |i| i.value * u));
+                        let c = Pt::new(
+                            from.z + k.map_or(0.0, |k| k.value * u),
+                            from.r + i.map_or(0.0, |i| i.value * u),
+                        );
                         let span = i.or(k).map(|w| w.span).unwrap_or(b.span);
                         arc::check_centre(from, to, c).map_err(|e| arc_alarm(span, e))?;
                         c
                     }
                 };
-                self.push(b, Motion::Feed, to, Some(Arc { center: centre, ccw }), 0.0)
+                self.push(
+                    b,
+                    Motion::Feed,
+                    to,
+                    Some(Arc {
+                        center: centre,
+                        ccw,
+                    }),
+                    0.0,
+                )
             }
         }
     }
 
-    fn dwell(&mut self, b: &Block, used: &mut Used, g: &Word) -> Result<(), Diagnostic> {
-        let p = used.take(b, 'P');
-        let x = used.take(b, 'X').or_else(|| used.take(b, 'U'));
+    /// Run a canned cycle and emit its moves with this block's span.
+    fn cycle<'b>(
+        &mut self,
+        code: i32,
+        g: Option<&'b Word>,
+        sub: &'b Subprogram,
+        index: usize,
+        used: &mut Words<'b>,
+    ) -> Result<Flow, Diagnostic> {
+        let b = &sub.blocks[index];
+        let out = {
+            let mut c = Cycle {
+                code,
+                g,
+                words: used,
+                start: self.pos,
+                shift: self.shift,
+                unit: self.unit(),
+                machine: self.machine,
+                retained: &mut self.retained,
+                program: sub,
+                index,
+            };
+            cycles::run(&mut c)?
+        };
+        self.out.warnings.extend(out.warnings);
+        let feed = self.feed;
+        for m in out.moves {
+            if let Some(f) = m.feed {
+                self.feed = f;
+            }
+            let span = m.span.unwrap_or(b.span);
+            if m.to.dist(self.pos) >= 1e-12 {
+                self.push_at(span, m.motion, m.to, m.arc, 0.0)?;
+            }
+        }
+        self.feed = feed;
+        Ok(out.resume_at.map_or(Flow::Next, Flow::Jump))
+    }
+
+    fn dwell(&mut self, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
+        let p = used.take('P');
+        let x = used.take('X').or_else(|| used.take('U'));
         let seconds = match (p, x) {
             (Some(p), None) => {
                 if p.has_point {
-                    return Err(alarm(p.span, "LS-VALUE", "G04 P is in milliseconds and takes no decimal point", "write G04 P1500 for 1.5 s, or G04 X1.5"));
+                    return Err(alarm(
+                        p.span,
+                        "LS-VALUE",
+                        "G04 P is in milliseconds and takes no decimal point",
+                        "write G04 P1500 for 1.5 s, or G04 X1.5",
+                    ));
                 }
                 p.value / 1000.0
             }
             (None, Some(x)) => x.value,
-            (None, None) => return Err(alarm(g.span, "LS-VALUE", "G04 without a time", "write G04 P<ms> or G04 X<seconds>")),
-            (Some(p), Some(_)) => return Err(alarm(p.span, "LS-VALUE", "G04 with both P and X/U", "give the dwell once")),
+            (None, None) => {
+                return Err(alarm(
+                    g.span,
+                    "LS-VALUE",
+                    "G04 without a time",
+                    "write G04 P<ms> or G04 X<seconds>",
+                ))
+            }
+            (Some(p), Some(_)) => {
+                return Err(alarm(
+                    p.span,
+                    "LS-VALUE",
+                    "G04 with both P and X/U",
+                    "give the dwell once",
+                ))
+            }
         };
         if seconds < 0.0 {
-            return Err(alarm(g.span, "LS-VALUE", "negative dwell", "give a positive time"));
+            return Err(alarm(
+                g.span,
+                "LS-VALUE",
+                "negative dwell",
+                "give a positive time",
+            ));
         }
         self.out.dwell_s += seconds;
         Ok(())
     }
 
     /// G28: rapid to the intermediate point, then the named axes to the reference point.
-    fn g28(&mut self, b: &Block, used: &mut Used, g: &Word) -> Result<(), Diagnostic> {
+    fn g28(&mut self, b: &Block, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
         let x_given = b.has('X') || b.has('U');
         let z_given = b.has('Z') || b.has('W');
-        let Some(mid) = self.target(b, used)? else {
-            return Err(alarm(g.span, "LS-VALUE", "G28 without an axis", "write e.g. G28 U0 W0 to return both axes through the current position"));
+        let Some(mid) = self.target(used)? else {
+            return Err(alarm(
+                g.span,
+                "LS-VALUE",
+                "G28 without an axis",
+                "write e.g. G28 U0 W0 to return both axes through the current position",
+            ));
         };
         self.rapid(b, mid)?;
         let home = self.machine.home;
-        let to = Pt::new(if z_given { home.z } else { mid.z }, if x_given { home.r } else { mid.r });
+        let to = Pt::new(
+            if z_given { home.z } else { mid.z },
+            if x_given { home.r } else { mid.r },
+        );
         self.rapid(b, to)
     }
 
     /// G50: the current position gets the given work coordinates; G50 S is handled with S.
-    fn g50(&mut self, b: &Block, used: &mut Used) -> Result<(), Diagnostic> {
+    fn g50(&mut self, used: &mut Words) -> Result<(), Diagnostic> {
         let u = self.unit();
-        if let Some(x) = used.take(b, 'X') {
+        if let Some(x) = used.take('X') {
             self.shift.r = self.pos.r - x.value * u / 2.0;
         }
-        if let Some(z) = used.take(b, 'Z') {
+        if let Some(z) = used.take('Z') {
             self.shift.z = self.pos.z - z.value * u;
         }
-        if let Some(du) = used.take(b, 'U') {
+        if let Some(du) = used.take('U') {
             self.shift.r -= du.value * u / 2.0;
         }
-        if let Some(dw) = used.take(b, 'W') {
+        if let Some(dw) = used.take('W') {
             self.shift.z -= dw.value * u;
         }
         Ok(())

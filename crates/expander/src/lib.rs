@@ -9,10 +9,12 @@
 //! ```
 mod alarm;
 pub mod arc;
+mod cycles;
 mod interp;
 mod machine;
 pub mod timing;
 pub mod toolpath;
+mod words;
 
 pub use alarm::Diagnostic;
 pub use interp::{expand, Options, Toolpath};

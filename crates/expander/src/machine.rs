@@ -155,10 +155,18 @@ impl Machine {
     pub fn from_toml(text: &str) -> Result<Self, ProfileError> {
         let file: File = toml::from_str(text).map_err(|e| {
             let (line, column) = e.span().map(|s| line_col(text, s.start)).unwrap_or((0, 0));
-            ProfileError { line, column, message: e.message().to_string() }
+            ProfileError {
+                line,
+                column,
+                message: e.message().to_string(),
+            }
         })?;
         let mut m = Self::default();
-        let bad = |message: String| ProfileError { line: 0, column: 0, message };
+        let bad = |message: String| ProfileError {
+            line: 0,
+            column: 0,
+            message,
+        };
         if let Some(v) = file.increment {
             m.increment = v;
         }
@@ -171,7 +179,11 @@ impl Machine {
         if let Some(v) = file.rapid_path {
             m.rapid_path = v;
         }
-        for (name, v, slot) in [("rapid_x", file.rapid_x, &mut m.rapid_x), ("rapid_z", file.rapid_z, &mut m.rapid_z), ("max_rpm", file.max_rpm, &mut m.max_rpm)] {
+        for (name, v, slot) in [
+            ("rapid_x", file.rapid_x, &mut m.rapid_x),
+            ("rapid_z", file.rapid_z, &mut m.rapid_z),
+            ("max_rpm", file.max_rpm, &mut m.max_rpm),
+        ] {
             if let Some(v) = v {
                 if !(v.is_finite() && v > 0.0) {
                     return Err(bad(format!("{name} must be a positive number, got {v}")));
@@ -190,7 +202,17 @@ impl Machine {
             m.home = pt("home", h)?;
         }
         if let Some(o) = file.work_offsets {
-            for (i, (name, v)) in [("g54", o.g54), ("g55", o.g55), ("g56", o.g56), ("g57", o.g57), ("g58", o.g58), ("g59", o.g59)].into_iter().enumerate() {
+            for (i, (name, v)) in [
+                ("g54", o.g54),
+                ("g55", o.g55),
+                ("g56", o.g56),
+                ("g57", o.g57),
+                ("g58", o.g58),
+                ("g59", o.g59),
+            ]
+            .into_iter()
+            .enumerate()
+            {
                 if let Some(v) = v {
                     m.work_offsets[i] = pt(name, v)?;
                 }

@@ -54,7 +54,11 @@ pub fn rpm_css(vc: f64, r: f64, max_rpm: f64) -> f64 {
 
 /// Total cycle time of a toolpath, s.
 pub fn cycle_time(segments: &[Segment], dwell_s: f64, machine: &Machine) -> f64 {
-    segments.iter().map(|s| segment_time(s, machine)).sum::<f64>() + dwell_s
+    segments
+        .iter()
+        .map(|s| segment_time(s, machine))
+        .sum::<f64>()
+        + dwell_s
 }
 
 #[cfg(test)]
@@ -63,15 +67,35 @@ mod tests {
     use crate::{Motion, Pt, Span};
 
     fn seg(from: Pt, to: Pt, feed: Feed) -> Segment {
-        Segment { motion: Motion::Feed, from, to, arc: None, tool: 1, lead: 0.0, feed, span: Span::default() }
+        Segment {
+            motion: Motion::Feed,
+            from,
+            to,
+            arc: None,
+            tool: 1,
+            lead: 0.0,
+            feed,
+            span: Span::default(),
+        }
     }
 
     #[test]
     fn per_minute_and_per_rev() {
         let m = Machine::default();
-        let s = seg(Pt::new(0.0, 10.0), Pt::new(-100.0, 10.0), Feed::PerMinute(200.0));
+        let s = seg(
+            Pt::new(0.0, 10.0),
+            Pt::new(-100.0, 10.0),
+            Feed::PerMinute(200.0),
+        );
         assert!((segment_time(&s, &m) - 30.0).abs() < 1e-9);
-        let s = seg(Pt::new(0.0, 10.0), Pt::new(-30.0, 10.0), Feed::PerRev { feed: 0.1, spindle: Spindle::Rpm(600.0) });
+        let s = seg(
+            Pt::new(0.0, 10.0),
+            Pt::new(-30.0, 10.0),
+            Feed::PerRev {
+                feed: 0.1,
+                spindle: Spindle::Rpm(600.0),
+            },
+        );
         assert!((segment_time(&s, &m) - 30.0).abs() < 1e-9);
     }
 
@@ -79,7 +103,17 @@ mod tests {
     fn css_at_constant_diameter() {
         let m = Machine::default();
         // Φ100, vc 150 m/min: n = 477.46 rev/min; 50 mm at 0.2 mm/rev = 250 rev -> 31.4 s
-        let s = seg(Pt::new(0.0, 50.0), Pt::new(-50.0, 50.0), Feed::PerRev { feed: 0.2, spindle: Spindle::Css { vc: 150.0, max_rpm: 3000.0 } });
+        let s = seg(
+            Pt::new(0.0, 50.0),
+            Pt::new(-50.0, 50.0),
+            Feed::PerRev {
+                feed: 0.2,
+                spindle: Spindle::Css {
+                    vc: 150.0,
+                    max_rpm: 3000.0,
+                },
+            },
+        );
         let n = 1000.0 * 150.0 / (std::f64::consts::PI * 100.0);
         assert!((segment_time(&s, &m) - 250.0 / n * 60.0).abs() < 1e-6);
     }

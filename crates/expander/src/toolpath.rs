@@ -135,19 +135,28 @@ impl Segment {
     /// Points along the segment such that no chord strays more than `tol` mm from the
     /// true arc (lines give their two end points). Always starts at `from`, ends at `to`.
     pub fn polyline(&self, tol: f64) -> Vec<Pt> {
-        let Some(a) = self.arc else { return vec![self.from, self.to] };
+        let Some(a) = self.arc else {
+            return vec![self.from, self.to];
+        };
         let rad = a.center.dist(self.from);
         let sweep = self.sweep_angle();
         let tol = tol.max(1e-6);
         // sagitta s = rad (1 - cos(θ/2)) <= tol
-        let max_step = if rad <= tol { std::f64::consts::PI } else { 2.0 * (1.0 - tol / rad).acos() };
+        let max_step = if rad <= tol {
+            std::f64::consts::PI
+        } else {
+            2.0 * (1.0 - tol / rad).acos()
+        };
         let n = ((sweep.abs() / max_step).ceil() as usize).clamp(1, 100_000);
         let a0 = (self.from.r - a.center.r).atan2(self.from.z - a.center.z);
         let mut pts = Vec::with_capacity(n + 1);
         pts.push(self.from);
         for i in 1..n {
             let t = a0 + sweep * i as f64 / n as f64;
-            pts.push(Pt::new(a.center.z + rad * t.cos(), a.center.r + rad * t.sin()));
+            pts.push(Pt::new(
+                a.center.z + rad * t.cos(),
+                a.center.r + rad * t.sin(),
+            ));
         }
         pts.push(self.to);
         pts

@@ -11,7 +11,10 @@ fn run(src: &str) -> Toolpath {
 }
 
 fn ends(tp: &Toolpath) -> Vec<(f64, f64)> {
-    tp.segments.iter().map(|s| ((s.to.z * 1e6).round() / 1e6, (2e6 * s.to.r).round() / 1e6)).collect()
+    tp.segments
+        .iter()
+        .map(|s| ((s.to.z * 1e6).round() / 1e6, (2e6 * s.to.r).round() / 1e6))
+        .collect()
 }
 
 /// One readable line per segment, for snapshots.
@@ -21,7 +24,12 @@ fn listing(tp: &Toolpath) -> String {
         let kind = match (seg.motion, seg.arc) {
             (Motion::Rapid, _) => "G00".to_string(),
             (Motion::Feed, None) => "G01".to_string(),
-            (Motion::Feed, Some(a)) => format!("{} c(Z{:.3} X{:.3})", if a.ccw { "G03" } else { "G02" }, a.center.z, 2.0 * a.center.r),
+            (Motion::Feed, Some(a)) => format!(
+                "{} c(Z{:.3} X{:.3})",
+                if a.ccw { "G03" } else { "G02" },
+                a.center.z,
+                2.0 * a.center.r
+            ),
             (Motion::Thread, _) => format!("G32 lead {}", seg.lead),
         };
         s += &format!(
@@ -42,14 +50,21 @@ fn listing(tp: &Toolpath) -> String {
 
 #[test]
 fn seed_004_contour_expansion() {
-    let src = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/programs/seed004-contour.nc")).unwrap();
+    let src = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../assets/programs/seed004-contour.nc"
+    ))
+    .unwrap();
     insta::assert_snapshot!(listing(&run(&src)));
 }
 
 #[test]
 fn absolute_incremental_and_mixed() {
     let tp = run("M3 S500\nG0 X100 Z10\nG1 U-20 W-5 F100\nX50 W-10\nG0 U10\n");
-    assert_eq!(ends(&tp), vec![(10.0, 100.0), (5.0, 80.0), (-5.0, 50.0), (-5.0, 60.0)]);
+    assert_eq!(
+        ends(&tp),
+        vec![(10.0, 100.0), (5.0, 80.0), (-5.0, 50.0), (-5.0, 60.0)]
+    );
     assert!(tp.alarms.is_empty());
 }
 
@@ -57,7 +72,10 @@ fn absolute_incremental_and_mixed() {
 fn modal_motion_and_feed_carry_over() {
     let tp = run("M3 S500\nG1 X20 Z0 F150\nZ-10\nG0 X40\nZ5\n");
     let kinds: Vec<_> = tp.segments.iter().map(|s| s.motion).collect();
-    assert_eq!(kinds, vec![Motion::Feed, Motion::Feed, Motion::Rapid, Motion::Rapid]);
+    assert_eq!(
+        kinds,
+        vec![Motion::Feed, Motion::Feed, Motion::Rapid, Motion::Rapid]
+    );
     assert_eq!(tp.segments[1].feed, Feed::PerMinute(150.0));
 }
 
@@ -74,14 +92,32 @@ fn arc_with_ik_centre() {
 #[test]
 fn feed_modes_and_spindle() {
     let tp = run("G99 G96 S150 M3\nG50 S2000\nG0 X40 Z2\nG1 Z-10 F0.2\nG97 S800\nG1 Z-20\nG98 G1 Z-30 F100\n");
-    assert_eq!(tp.segments[1].feed, Feed::PerRev { feed: 0.2, spindle: Spindle::Css { vc: 150.0, max_rpm: 2000.0 } });
-    assert_eq!(tp.segments[2].feed, Feed::PerRev { feed: 0.2, spindle: Spindle::Rpm(800.0) });
+    assert_eq!(
+        tp.segments[1].feed,
+        Feed::PerRev {
+            feed: 0.2,
+            spindle: Spindle::Css {
+                vc: 150.0,
+                max_rpm: 2000.0
+            }
+        }
+    );
+    assert_eq!(
+        tp.segments[2].feed,
+        Feed::PerRev {
+            feed: 0.2,
+            spindle: Spindle::Rpm(800.0)
+        }
+    );
     assert_eq!(tp.segments[3].feed, Feed::PerMinute(100.0));
 }
 
 #[test]
 fn power_on_feed_mode_comes_from_the_profile() {
-    let m = Machine { feed_mode: expander::FeedMode::G99, ..Machine::default() };
+    let m = Machine {
+        feed_mode: expander::FeedMode::G99,
+        ..Machine::default()
+    };
     let tp = run_with("M3 S500\nG1 X20 Z0 F0.1\n", &m, &Options::default());
     assert!(matches!(tp.segments[0].feed, Feed::PerRev { .. }));
 }
@@ -118,7 +154,13 @@ fn work_offsets_from_the_profile() {
 
 #[test]
 fn per_axis_rapids_make_a_dog_leg() {
-    let m = Machine { rapid_path: RapidPath::PerAxis, rapid_x: 5000.0, rapid_z: 5000.0, home: Pt::new(100.0, 50.0), ..Machine::default() };
+    let m = Machine {
+        rapid_path: RapidPath::PerAxis,
+        rapid_x: 5000.0,
+        rapid_z: 5000.0,
+        home: Pt::new(100.0, 50.0),
+        ..Machine::default()
+    };
     let tp = run_with("G0 X40 Z0\n", &m, &Options::default());
     // from (Z100, r50) to (Z0, r20): both axes move 30 mm together, then Z alone.
     assert_eq!(tp.segments.len(), 2);
@@ -139,7 +181,10 @@ fn subprograms_repeat_and_return() {
     assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
     assert_eq!(tp.segments.len(), 1 + 3 + 2);
     assert_eq!(tp.segments.last().unwrap().to.z, -5.0);
-    assert_eq!(tp.segments[1].span.line, 7, "subprogram segments carry the subprogram's line");
+    assert_eq!(
+        tp.segments[1].span.line, 7,
+        "subprogram segments carry the subprogram's line"
+    );
 }
 
 #[test]
@@ -147,15 +192,33 @@ fn m99_p_returns_to_a_sequence_number() {
     let src = "O0001;\nM98 P2;\nG0 X10;\nN50 G0 X20 Z0;\nM30;\nO0002;\nG0 X30 Z0;\nM99 P50;\n";
     let tp = run(src);
     assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
-    assert_eq!(ends(&tp), vec![(0.0, 30.0), (0.0, 20.0)], "the X10 block is skipped");
+    assert_eq!(
+        ends(&tp),
+        vec![(0.0, 30.0), (0.0, 20.0)],
+        "the X10 block is skipped"
+    );
 }
 
 #[test]
 fn endless_loops_are_bounded() {
     let src = "O0001;\nN1 M98 P2;\nM30;\nO0002;\nG0 W1;\nG0 W-1;\nM99 P1;\n";
-    let tp = run_with(src, &Machine::default(), &Options { max_blocks: 10_000, ..Options::default() });
+    let tp = run_with(
+        src,
+        &Machine::default(),
+        &Options {
+            max_blocks: 10_000,
+            ..Options::default()
+        },
+    );
     assert_eq!(tp.alarms[0].code, "LS-LOOP");
-    let tp = run_with("O1;\nM98 P9999 L9999\nM30\nO9999\nG0 W1\nG0 W-1\nM99\n", &Machine::default(), &Options { max_segments: 1000, ..Options::default() });
+    let tp = run_with(
+        "O1;\nM98 P9999 L9999\nM30\nO9999\nG0 W1\nG0 W-1\nM99\n",
+        &Machine::default(),
+        &Options {
+            max_segments: 1000,
+            ..Options::default()
+        },
+    );
     assert_eq!(tp.alarms[0].code, "LS-TOO-LONG");
 }
 
@@ -163,7 +226,19 @@ fn endless_loops_are_bounded() {
 fn block_delete_is_optional() {
     let src = "G0 X40 Z0\n/G0 X20\n";
     assert_eq!(run(src).segments.len(), 2);
-    assert_eq!(run_with(src, &Machine::default(), &Options { block_delete: true, ..Options::default() }).segments.len(), 1);
+    assert_eq!(
+        run_with(
+            src,
+            &Machine::default(),
+            &Options {
+                block_delete: true,
+                ..Options::default()
+            }
+        )
+        .segments
+        .len(),
+        1
+    );
 }
 
 #[test]
@@ -176,7 +251,12 @@ fn tools_are_tracked() {
 #[test]
 fn cutting_with_the_spindle_stopped_is_a_warning() {
     let tp = run("G0 X40 Z2\nG1 Z-10 F100\nG1 Z-20\nM3 S500\nG1 Z-30\nM5\nG1 Z-40\n");
-    let w: Vec<_> = tp.warnings.iter().filter(|w| w.code == "LS-SPINDLE-STOPPED").map(|w| w.span.line).collect();
+    let w: Vec<_> = tp
+        .warnings
+        .iter()
+        .filter(|w| w.code == "LS-SPINDLE-STOPPED")
+        .map(|w| w.span.line)
+        .collect();
     assert_eq!(w, vec![2, 7]);
 }
 
@@ -200,5 +280,8 @@ fn a_run_stops_at_the_alarm() {
 #[test]
 fn g32_threads_carry_the_lead() {
     let tp = run("M3 S300\nG0 X20 Z5\nG32 Z-20 F1.5\n");
-    assert_eq!((tp.segments[1].motion, tp.segments[1].lead), (Motion::Thread, 1.5));
+    assert_eq!(
+        (tp.segments[1].motion, tp.segments[1].lead),
+        (Motion::Thread, 1.5)
+    );
 }

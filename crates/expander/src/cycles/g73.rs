@@ -1,0 +1,8 @@
+//! G73 — pattern repeating cycle (seed 003, GSK980TDb) (spec/cycles.md).
+
+use super::{Cycle, Output};
+
+/// Expand one block of the cycle.
+pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
+    Err(super::not_implemented(c))
+}

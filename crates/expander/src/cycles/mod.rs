@@ -1,0 +1,222 @@
+//! Canned cycles. Each cycle is a function from its block's words and the retained cycle
+//! state to plain moves; the interpreter stamps them with the block's span and the feed in
+//! force, so a cycle file reads like the manual's numbered motion steps.
+
+use crate::words::Words;
+use crate::{Arc, Diagnostic, Machine, Motion, Pt, Span};
+use gcode::{Subprogram, Word};
+
+mod contour;
+mod g70;
+mod g71_g72;
+mod g73;
+mod g74_g75;
+pub(crate) mod g75_1;
+mod g90;
+mod g94;
+
+/// One move of a cycle, from the previous move's end (or the cycle's start) to `to`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Move {
+    /// Rapid or feed (or thread).
+    pub(crate) motion: Motion,
+    /// End point, G54 frame (z, r).
+    pub(crate) to: Pt,
+    /// Arc data for G02/G03 moves (finishing shapes).
+    pub(crate) arc: Option<Arc>,
+    /// Feed override (G70 runs the shape with its own F); `None`: the F in force.
+    pub(crate) feed: Option<f64>,
+    /// Span override (a shape block's own line); `None`: the cycle block.
+    pub(crate) span: Option<Span>,
+}
+
+impl Move {
+    /// A rapid to `to`.
+    pub(crate) fn rapid(to: Pt) -> Self {
+        Self {
+            motion: Motion::Rapid,
+            to,
+            arc: None,
+            feed: None,
+            span: None,
+        }
+    }
+    /// A straight feed to `to`.
+    pub(crate) fn feed(to: Pt) -> Self {
+        Self {
+            motion: Motion::Feed,
+            to,
+            arc: None,
+            feed: None,
+            span: None,
+        }
+    }
+}
+
+/// Words of the cycles that stay in force from block to block (spec/language.md,
+/// "Modal state that must be tracked").
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct Retained {
+    /// G90/G92/G94: end point (G54 frame), R (taper) of the last cycle block.
+    pub(crate) turn: Option<TurnWords>,
+    /// G74/G75 R(e): peck retract, mm.
+    pub(crate) peck_retract: Option<f64>,
+    /// G75.1 geometry block, waiting for its process block.
+    pub(crate) g75_1: Option<g75_1::Geometry>,
+    /// G71 U(Δd) R(e).
+    pub(crate) g71: Option<(f64, f64)>,
+    /// G72 W(Δd) R(e).
+    pub(crate) g72: Option<(f64, f64)>,
+    /// G73 U(Δi) W(Δk) R(d), GSK data parameters NO.053–055.
+    pub(crate) g73: Option<(f64, f64, u32)>,
+}
+
+/// The retained words of G90/G92/G94.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct TurnWords {
+    /// Which cycle set them (tenths: 900, 920, 940).
+    pub(crate) code: i32,
+    /// Cut end point, G54 frame.
+    pub(crate) end: Pt,
+    /// Taper R, mm (radius for G90/G92, Z for G94).
+    pub(crate) r: f64,
+}
+
+/// Everything a cycle may read.
+pub(crate) struct Cycle<'a, 'b> {
+    /// The cycle code in tenths (900 = G90, 751 = G75.1).
+    pub(crate) code: i32,
+    /// The G word (for alarm positions); `None` when a modal cycle continues.
+    pub(crate) g: Option<&'b Word>,
+    /// The block's words; a cycle takes the ones it reads.
+    pub(crate) words: &'a mut Words<'b>,
+    /// Position when the block is read, G54 frame: the cycle's start point A.
+    pub(crate) start: Pt,
+    /// Origin of the work frame (absolute X/Z words are relative to it).
+    pub(crate) shift: Pt,
+    /// 1.0, or 25.4 under G20.
+    pub(crate) unit: f64,
+    /// The machine profile (P/Q units).
+    pub(crate) machine: &'a Machine,
+    /// Retained cycle words.
+    pub(crate) retained: &'a mut Retained,
+    /// The O program the block is in (finishing shapes are found here by N).
+    pub(crate) program: &'b Subprogram,
+    /// Index of the cycle block in `program.blocks`.
+    pub(crate) index: usize,
+}
+
+/// What a cycle made.
+#[derive(Debug, Default)]
+pub(crate) struct Output {
+    /// The moves, in order.
+    pub(crate) moves: Vec<Move>,
+    /// Continue at this block index instead of the next (G70–G73 skip their shape).
+    pub(crate) resume_at: Option<usize>,
+    /// Warnings; the run goes on.
+    pub(crate) warnings: Vec<Diagnostic>,
+}
+
+impl Cycle<'_, '_> {
+    /// Where alarms about the cycle as a whole point: its G word, or the block.
+    pub(crate) fn span(&self) -> Span {
+        self.g.map_or(self.words.span(), |g| g.span)
+    }
+
+    /// An alarm at the cycle's G word.
+    pub(crate) fn alarm(
+        &self,
+        code: &'static str,
+        message: impl Into<String>,
+        help: impl Into<String>,
+    ) -> Diagnostic {
+        Diagnostic::new(self.span(), code, message, help)
+    }
+
+    /// Absolute X (diameter) or incremental U as a radius in the G54 frame; `None` if absent.
+    pub(crate) fn x_target(&mut self) -> Result<Option<f64>, Diagnostic> {
+        self.axis('X', 'U', 2.0, self.start.r, self.shift.r)
+    }
+
+    /// Absolute Z or incremental W in the G54 frame; `None` if absent.
+    pub(crate) fn z_target(&mut self) -> Result<Option<f64>, Diagnostic> {
+        self.axis('Z', 'W', 1.0, self.start.z, self.shift.z)
+    }
+
+    fn axis(
+        &mut self,
+        abs: char,
+        inc: char,
+        div: f64,
+        from: f64,
+        shift: f64,
+    ) -> Result<Option<f64>, Diagnostic> {
+        let a = self.words.take(abs);
+        let i = self.words.take(inc);
+        match (a, i) {
+            (Some(a), Some(i)) => Err(Diagnostic::new(
+                i.span,
+                "LS-AXIS-TWICE",
+                format!("{abs} and {inc} both given (first at {})", a.span),
+                format!("give the end point either absolute ({abs}) or incremental ({inc})"),
+            )),
+            (Some(a), None) => Ok(Some(a.value * self.unit / div + shift)),
+            (None, Some(i)) => Ok(Some(from + i.value * self.unit / div)),
+            (None, None) => Ok(None),
+        }
+    }
+}
+
+/// Run the cycle `c.code`.
+pub(crate) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
+    match c.code {
+        900 => g90::run(c),
+        940 => g94::run(c),
+        740 | 750 => g74_g75::run(c),
+        751 => g75_1::run(c),
+        700 => g70::run(c),
+        710 | 720 => g71_g72::run(c),
+        730 => g73::run(c),
+        _ => Err(not_implemented(c)),
+    }
+}
+
+/// The alarm for a cycle latsim recognises but cannot run yet.
+pub(crate) fn not_implemented(c: &Cycle) -> Diagnostic {
+    c.alarm(
+        "LS-NOT-IMPLEMENTED",
+        format!("{} is not implemented yet in this version of latsim", name(c.code)),
+        "the cycle is recognised but cannot be simulated yet; remove it or wait for the release that adds it",
+    )
+}
+
+/// A cycle's name for messages.
+pub(crate) fn name(tenths: i32) -> &'static str {
+    match tenths {
+        700 => "G70 (finishing cycle)",
+        710 => "G71 (stock removal in turning)",
+        720 => "G72 (stock removal in facing)",
+        730 => "G73 (pattern repeating cycle)",
+        740 => "G74 (face grooving / peck drilling cycle)",
+        750 => "G75 (radial grooving cycle)",
+        751 => "G75.1 (radial trapezoid groove cycle)",
+        760 => "G76 (multiple threading cycle)",
+        900 => "G90 (axial turning cycle)",
+        920 => "G92 (threading cycle)",
+        940 => "G94 (face turning cycle)",
+        _ => "this cycle",
+    }
+}
+
+/// Whether a G code (tenths) is a canned cycle.
+pub(crate) fn is_cycle(tenths: i32) -> bool {
+    matches!(
+        tenths,
+        700 | 710 | 720 | 730 | 740 | 750 | 751 | 760 | 900 | 920 | 940
+    )
+}
+
+/// Whether a cycle is modal (group 01): later blocks with only coordinates repeat it.
+pub(crate) fn is_modal(tenths: i32) -> bool {
+    matches!(tenths, 900 | 920 | 940)
+}
