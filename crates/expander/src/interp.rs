@@ -680,6 +680,7 @@ impl<'m> Interp<'m> {
             to,
             arc,
             tool: self.tool,
+            hint: crate::ToolHint::Table,
             lead,
             feed,
             span,
@@ -817,6 +818,9 @@ impl<'m> Interp<'m> {
             let span = m.span.unwrap_or(b.span);
             if m.to.dist(self.pos) >= 1e-12 {
                 self.push_at(span, m.motion, m.to, m.arc, 0.0)?;
+                if let Some(last) = self.out.segments.last_mut() {
+                    last.hint = m.hint;
+                }
             }
         }
         self.feed = feed;

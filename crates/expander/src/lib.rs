@@ -19,4 +19,4 @@ mod words;
 pub use alarm::Diagnostic;
 pub use interp::{expand, Options, Toolpath};
 pub use machine::{FeedMode, Increment, Machine, PqUnits, ProfileError, RapidPath};
-pub use toolpath::{Arc, Feed, Motion, Pt, Segment, Span, Spindle};
+pub use toolpath::{Arc, Feed, Motion, Pt, Segment, Span, Spindle, ToolHint};

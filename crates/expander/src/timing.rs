@@ -73,6 +73,7 @@ mod tests {
             to,
             arc: None,
             tool: 1,
+            hint: crate::ToolHint::Table,
             lead: 0.0,
             feed,
             span: Span::default(),

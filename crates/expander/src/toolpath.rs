@@ -73,6 +73,25 @@ pub enum Spindle {
     },
 }
 
+/// Which outline cuts a segment, beyond the tool number.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum ToolHint {
+    /// The tool table's entry for the segment's tool (or the documented default insert).
+    #[default]
+    Table,
+    /// A grooving cycle (G74/G75): with no table entry the default is a 3 mm grooving blade
+    /// referenced at its left corner (spec/simulation.md, Tools).
+    Grooving,
+    /// G75.1 with I: a grooving blade of this width whatever the table says, its reference
+    /// corner on the start side, the blade extending toward +Z when `toward_plus_z`.
+    Blade {
+        /// Blade width, mm.
+        width: f64,
+        /// The blade spans from the reference corner toward +Z (else −Z).
+        toward_plus_z: bool,
+    },
+}
+
 /// One tool move: a straight line or an arc from `from` to `to`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Segment {
@@ -86,6 +105,8 @@ pub struct Segment {
     pub arc: Option<Arc>,
     /// Tool number `tt` of the `Tttoo` in force (0: no T word yet).
     pub tool: u32,
+    /// What cuts, where a cycle decides beyond the tool number.
+    pub hint: ToolHint,
     /// Thread lead (mm) for [`Motion::Thread`], else 0.
     pub lead: f64,
     /// Feed in force, for cycle time.

@@ -71,6 +71,7 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
                     to,
                     arc: Some(Arc { center, ccw }),
                     tool: 0,
+                    hint: expander::ToolHint::Table,
                     lead: 0.0,
                     feed: Feed::Rapid,
                     span: Span::default(),

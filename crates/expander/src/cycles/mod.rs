@@ -3,7 +3,7 @@
 //! force, so a cycle file reads like the manual's numbered motion steps.
 
 use crate::words::Words;
-use crate::{Arc, Diagnostic, Machine, Motion, Pt, Span};
+use crate::{Arc, Diagnostic, Machine, Motion, Pt, Span, ToolHint};
 use gcode::{Subprogram, Word};
 
 mod contour;
@@ -28,6 +28,8 @@ pub(crate) struct Move {
     pub(crate) feed: Option<f64>,
     /// Span override (a shape block's own line); `None`: the cycle block.
     pub(crate) span: Option<Span>,
+    /// What cuts this move beyond the tool number (grooving defaults, G75.1 I).
+    pub(crate) hint: ToolHint,
 }
 
 impl Move {
@@ -39,6 +41,7 @@ impl Move {
             arc: None,
             feed: None,
             span: None,
+            hint: ToolHint::Table,
         }
     }
     /// A straight feed to `to`.
@@ -49,6 +52,7 @@ impl Move {
             arc: None,
             feed: None,
             span: None,
+            hint: ToolHint::Table,
         }
     }
 }
