@@ -53,20 +53,46 @@ fn profiling_program(moves: usize) -> String {
 const TOOLS: &str = "[[tool]]\nt = 1\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\n\n[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"V\"\nnose_radius = 0.4\ntip = 3\n";
 
 fn main() {
-    let sizes: Vec<usize> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
-    let sizes = if sizes.is_empty() { vec![100_000, 1_000_000] } else { sizes };
+    let sizes: Vec<usize> = std::env::args()
+        .skip(1)
+        .filter_map(|a| a.parse().ok())
+        .collect();
+    let sizes = if sizes.is_empty() {
+        vec![100_000, 1_000_000]
+    } else {
+        sizes
+    };
     let tools = stock::ToolTable::from_toml(TOOLS).expect("tool table");
     let blank = stock::Blank::bar(125.0, 110.0, 0.0, None).expect("blank");
-    for (name, n, text) in sizes.iter().flat_map(|&n| [("grooving", n, grooving_program(n)), ("profiling", n, profiling_program(n))]) {
+    for (name, n, text) in sizes.iter().flat_map(|&n| {
+        [
+            ("grooving", n, grooving_program(n)),
+            ("profiling", n, profiling_program(n)),
+        ]
+    }) {
         let t0 = Instant::now();
         let program = gcode::parse(&text).expect("parses");
         let t1 = Instant::now();
-        let tp = expander::expand(&program, &expander::Machine::default(), &expander::Options::default());
+        let tp = expander::expand(
+            &program,
+            &expander::Machine::default(),
+            &expander::Options::default(),
+        );
         assert!(tp.alarms.is_empty(), "{:?}", tp.alarms.first());
         let t2 = Instant::now();
-        let sim = stock::simulate(&blank, &tools, &tp.segments, &stock::SimOptions::default(), &mut |_| {});
+        let sim = stock::simulate(
+            &blank,
+            &tools,
+            &tp.segments,
+            &stock::SimOptions::default(),
+            &mut |_| {},
+        );
         let t3 = Instant::now();
-        let vertices: usize = sim.final_shapes.iter().map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>()).sum();
+        let vertices: usize = sim
+            .final_shapes
+            .iter()
+            .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
+            .sum();
         println!(
             "{name:>9} {n:>8} moves requested, {:>8} segments: parse {:>6.3} s, expand {:>6.3} s, removal {:>6.3} s, total {:>6.3} s; {} crashes, final {} vertices, removed {:.1} mm²",
             tp.segments.len(),
