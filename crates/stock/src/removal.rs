@@ -165,7 +165,7 @@ impl Tile {
             let it = &sweeps.items[i as usize];
             // air in this tile: the stock only shrinks, so missing the stock of the last
             // flush means missing the stock of this moment
-            if !it.bbox.overlaps(&self.bbox) || !sweeps.polys_of(it).any(|p| touches(p, &self.stock)) {
+            if !it.bbox.overlaps(&self.bbox) || !sweeps.polys_of(it).any(|p| touches(p, &self.stock, &self.bbox)) {
                 continue;
             }
             if it.rapid && !self.covered_by_pending(sweeps, it) {
@@ -254,12 +254,25 @@ impl Node {
 
 /// Whether a convex polygon and shapes may share a point (touching counts): an edge of
 /// one crosses an edge of the other, or a vertex of one lies in the other.
-fn touches(poly: &[IPt], shapes: &IShapes) -> bool {
+fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
     let mut pb = IBox::EMPTY;
     for &p in poly {
         pb.add(p);
     }
     let n = poly.len();
+    if !pb.overlaps(shapes_box) {
+        return false;
+    }
+    // separating axis: an edge of the convex polygon with the whole box outside it
+    let corners = [
+        IPt::new(shapes_box.min[0], shapes_box.min[1]),
+        IPt::new(shapes_box.max[0], shapes_box.min[1]),
+        IPt::new(shapes_box.max[0], shapes_box.max[1]),
+        IPt::new(shapes_box.min[0], shapes_box.max[1]),
+    ];
+    if (0..n).any(|i| corners.iter().all(|&c| orient(poly[i], poly[(i + 1) % n], c) < 0)) {
+        return false;
+    }
     for s in shapes {
         for ring in s {
             let m = ring.len();
