@@ -54,7 +54,7 @@ pub(crate) enum IncrementArg {
 pub(crate) struct RunArgs {
     #[command(flatten)]
     pub(crate) program: ProgramArgs,
-    /// Bar blank DIAMETERxLENGTH in mm, right face at Z0 (e.g. 125x110).
+    /// Bar blank `DIAMETERxLENGTH` in mm, right face at Z0 (e.g. 125x110).
     #[arg(long, value_name = "DxL")]
     pub(crate) stock: Option<String>,
     /// Z of the blank's right face (default 0).

@@ -1,4 +1,4 @@
-//! Diagnostics rendered like rustc: file:line:column, the source line, a caret, a help line.
+//! Diagnostics rendered like rustc: `file:line:column`, the source line, a caret, a help line.
 
 use miette::{LabeledSpan, MietteDiagnostic, NamedSource, Severity};
 

@@ -1,4 +1,4 @@
-//! Bad input gets a clear message with file:line:column and a non-zero exit, never a panic.
+//! Bad input gets a clear message with `file:line:column` and a non-zero exit, never a panic.
 
 mod common;
 use common::*;

@@ -308,7 +308,7 @@ impl<'a> Reader<'a> {
 }
 
 fn whole(value: f64, has_point: bool, span: Span, letter: char) -> Result<u32, ParseError> {
-    if has_point || value < 0.0 || value > 99_999_999.0 {
+    if has_point || !(0.0..=99_999_999.0).contains(&value) {
         return Err(ParseError::new(
             span,
             format!("{letter} needs a whole number without a decimal point"),
