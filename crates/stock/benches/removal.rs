@@ -14,7 +14,17 @@ use std::time::Instant;
 use stock::{area, simulate, Blank, Insert, SimOptions, Tool, ToolTable};
 
 fn seg(motion: Motion, from: Pt, to: Pt) -> Segment {
-    Segment { motion, from, to, arc: None, tool: 1, hint: expander::ToolHint::Table, lead: 0.0, feed: Feed::Rapid, span: Span::default() }
+    Segment {
+        motion,
+        from,
+        to,
+        arc: None,
+        tool: 1,
+        hint: expander::ToolHint::Table,
+        lead: 0.0,
+        feed: Feed::Rapid,
+        span: Span::default(),
+    }
 }
 
 /// Appends a move from the current position.
@@ -32,13 +42,19 @@ impl Path {
 }
 
 fn grooves(n: usize, wobble: f64) -> Vec<Segment> {
-    let zs: Vec<f64> = (0..).map(|k| -108.0 + 2.5 * k as f64).take_while(|z| z + 3.0 <= 0.0).collect();
+    let zs: Vec<f64> = (0..)
+        .map(|k| -108.0 + 2.5 * k as f64)
+        .take_while(|z| z + 3.0 <= 0.0)
+        .collect();
     let per_groove = n / zs.len();
     let pecks = (per_groove.saturating_sub(3) / 2).max(1);
     let (top, bottom) = (64.0, 30.0);
     let step = (62.5 - bottom) / pecks as f64;
     let retract = (step / 2.0).min(0.5);
-    let mut p = Path { at: Pt::new(5.0, 70.0), segs: Vec::with_capacity(n + 100) };
+    let mut p = Path {
+        at: Pt::new(5.0, 70.0),
+        segs: Vec::with_capacity(n + 100),
+    };
     for &z in &zs {
         p.go(Motion::Rapid, z, top);
         p.go(Motion::Rapid, z, 63.0);
@@ -55,10 +71,17 @@ fn grooves(n: usize, wobble: f64) -> Vec<Segment> {
 fn roughing(n: usize, taper: bool) -> Vec<Segment> {
     let passes = n / 4;
     let doc = (62.5 - 30.0) / passes as f64;
-    let mut p = Path { at: Pt::new(5.0, 64.0), segs: Vec::with_capacity(n + 4) };
+    let mut p = Path {
+        at: Pt::new(5.0, 64.0),
+        segs: Vec::with_capacity(n + 4),
+    };
     for k in 1..=passes {
         let r = 62.5 - doc * k as f64;
-        let zend = if taper { (-100.0 + 2.0 * (62.5 - r)).min(-40.0) } else { -100.0 };
+        let zend = if taper {
+            (-100.0 + 2.0 * (62.5 - r)).min(-40.0)
+        } else {
+            -100.0
+        };
         p.go(Motion::Rapid, 5.0, r);
         p.go(Motion::Feed, zend, r);
         p.go(Motion::Feed, zend + 0.5, r + 0.5);
@@ -68,16 +91,32 @@ fn roughing(n: usize, taper: bool) -> Vec<Segment> {
 }
 
 fn main() {
-    let args: Vec<usize> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
-    let sizes = if args.is_empty() { vec![100_000, 1_000_000] } else { args };
+    let args: Vec<usize> = std::env::args()
+        .skip(1)
+        .filter_map(|a| a.parse().ok())
+        .collect();
+    let sizes = if args.is_empty() {
+        vec![100_000, 1_000_000]
+    } else {
+        args
+    };
     let only = std::env::var("PATTERN").ok();
     let blank = Blank::bar(125.0, 110.0, 0.0, None).expect("bar");
     let blade = ToolTable::from_tools(vec![(1, Tool::DEFAULT_BLADE)]);
     let v35 = ToolTable::from_tools(vec![(
         1,
-        Tool::Turning { insert: Insert::V, nose_radius: 0.4, tip: 3, entering_angle: 93.0, edge: 11.0 },
+        Tool::Turning {
+            insert: Insert::V,
+            nose_radius: 0.4,
+            tip: 3,
+            entering_angle: 93.0,
+            edge: 11.0,
+        },
     )]);
-    println!("{:<9} {:>9} {:>9} {:>12} {:>9} {:>8} {:>12}", "pattern", "moves", "time s", "moves/s", "vertices", "crashes", "removed mm²");
+    println!(
+        "{:<9} {:>9} {:>9} {:>12} {:>9} {:>8} {:>12}",
+        "pattern", "moves", "time s", "moves/s", "vertices", "crashes", "removed mm²"
+    );
     for &n in &sizes {
         let cases: Vec<(&str, Vec<Segment>, &ToolTable)> = vec![
             ("grooves", grooves(n, 0.0), &blade),
@@ -92,7 +131,11 @@ fn main() {
             let t = Instant::now();
             let sim = simulate(&blank, tools, &segs, &SimOptions::default(), &mut |_| {});
             let dt = t.elapsed().as_secs_f64();
-            let verts: usize = sim.final_shapes.iter().map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>()).sum();
+            let verts: usize = sim
+                .final_shapes
+                .iter()
+                .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
+                .sum();
             println!(
                 "{:<9} {:>9} {:>9.3} {:>12.0} {:>9} {:>8} {:>12.3}",
                 name,

@@ -68,9 +68,20 @@ pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
 }
 
 /// Turns a `toml` deserialisation error into a [`StockError::Toml`].
-pub(crate) fn from_toml(file: &'static str, text: &str, err: &toml::de::Error, help: &str) -> StockError {
+pub(crate) fn from_toml(
+    file: &'static str,
+    text: &str,
+    err: &toml::de::Error,
+    help: &str,
+) -> StockError {
     let (line, column) = err.span().map_or((1, 1), |s| line_col(text, s.start));
-    StockError::Toml { file, line, column, message: err.message().trim().to_string(), help: help.to_string() }
+    StockError::Toml {
+        file,
+        line,
+        column,
+        message: err.message().trim().to_string(),
+        help: help.to_string(),
+    }
 }
 
 #[cfg(test)]

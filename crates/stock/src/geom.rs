@@ -34,7 +34,11 @@ fn cross(o: P, a: P, b: P) -> f64 {
 /// Convex hull, counter-clockwise, without collinear points (Andrew's monotone chain).
 /// Non-finite points are ignored.
 pub(crate) fn convex_hull(points: &[P]) -> Vec<P> {
-    let mut pts: Vec<P> = points.iter().copied().filter(|p| p[0].is_finite() && p[1].is_finite()).collect();
+    let mut pts: Vec<P> = points
+        .iter()
+        .copied()
+        .filter(|p| p[0].is_finite() && p[1].is_finite())
+        .collect();
     pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
     pts.dedup();
     if pts.len() < 3 {
@@ -91,19 +95,34 @@ pub(crate) fn convex_parts(ring: &[P]) -> Vec<Vec<P>> {
         guard += 1;
         let n = idx.len();
         let ear = (0..n).find(|&i| {
-            let (a, b, c) = (ring[idx[(i + n - 1) % n]], ring[idx[i]], ring[idx[(i + 1) % n]]);
+            let (a, b, c) = (
+                ring[idx[(i + n - 1) % n]],
+                ring[idx[i]],
+                ring[idx[(i + 1) % n]],
+            );
             cross(a, b, c) > 0.0
                 && idx.iter().all(|&j| {
                     let p = ring[j];
-                    p == a || p == b || p == c || !(cross(a, b, p) >= 0.0 && cross(b, c, p) >= 0.0 && cross(c, a, p) >= 0.0)
+                    p == a
+                        || p == b
+                        || p == c
+                        || !(cross(a, b, p) >= 0.0
+                            && cross(b, c, p) >= 0.0
+                            && cross(c, a, p) >= 0.0)
                 })
         });
         let Some(i) = ear else { break };
-        parts.push(vec![ring[idx[(i + n - 1) % n]], ring[idx[i]], ring[idx[(i + 1) % n]]]);
+        parts.push(vec![
+            ring[idx[(i + n - 1) % n]],
+            ring[idx[i]],
+            ring[idx[(i + 1) % n]],
+        ]);
         idx.remove(i);
     }
     if idx.len() >= 3 {
-        parts.push(convex_hull(&idx.iter().map(|&i| ring[i]).collect::<Vec<_>>()));
+        parts.push(convex_hull(
+            &idx.iter().map(|&i| ring[i]).collect::<Vec<_>>(),
+        ));
     }
     parts
 }
@@ -123,9 +142,8 @@ pub(crate) fn sweep_convex(poly: &[P], d: P) -> Vec<P> {
         d[0] * (b[1] - a[1]) - d[1] * (b[0] - a[0]) > 0.0
     };
     let moved = |p: P| [p[0] + d[0], p[1] + d[1]];
-    for i in 0..n {
+    for (i, &p) in poly.iter().enumerate() {
         let (fin, fout) = (front((i + n - 1) % n), front(i));
-        let p = poly[i];
         match (fin, fout) {
             (false, false) => out.push(p),
             (true, true) => out.push(moved(p)),
@@ -151,14 +169,15 @@ pub(crate) struct Rect {
 
 impl Rect {
     /// The empty box (the identity of [`Rect::add`]).
-    pub(crate) const EMPTY: Self = Self { min: [f64::INFINITY; 2], max: [f64::NEG_INFINITY; 2] };
+    pub(crate) const EMPTY: Self = Self {
+        min: [f64::INFINITY; 2],
+        max: [f64::NEG_INFINITY; 2],
+    };
 
     /// Grows the box to include `p`.
     pub(crate) fn add(&mut self, p: P) {
-        for k in 0..2 {
-            self.min[k] = self.min[k].min(p[k]);
-            self.max[k] = self.max[k].max(p[k]);
-        }
+        self.min = [self.min[0].min(p[0]), self.min[1].min(p[1])];
+        self.max = [self.max[0].max(p[0]), self.max[1].max(p[1])];
     }
 
     /// Box of some points.
@@ -177,7 +196,10 @@ impl Rect {
 
     /// The box grown by `m` on every side.
     pub(crate) fn grown(&self, m: f64) -> Self {
-        Self { min: [self.min[0] - m, self.min[1] - m], max: [self.max[0] + m, self.max[1] + m] }
+        Self {
+            min: [self.min[0] - m, self.min[1] - m],
+            max: [self.max[0] + m, self.max[1] + m],
+        }
     }
 
     /// Width or height, whichever is larger.
@@ -190,12 +212,23 @@ impl Rect {
 pub(crate) fn clip_convex(poly: &[P], rect: &Rect) -> Vec<P> {
     let mut cur: Vec<P> = poly.to_vec();
     // (axis, bound, keep when coordinate >= bound)
-    let planes = [(0, rect.min[0], true), (0, rect.max[0], false), (1, rect.min[1], true), (1, rect.max[1], false)];
+    let planes = [
+        (0, rect.min[0], true),
+        (0, rect.max[0], false),
+        (1, rect.min[1], true),
+        (1, rect.max[1], false),
+    ];
     for (axis, bound, ge) in planes {
         if cur.is_empty() {
             break;
         }
-        let inside = |p: &P| if ge { p[axis] >= bound } else { p[axis] <= bound };
+        let inside = |p: &P| {
+            if ge {
+                p[axis] >= bound
+            } else {
+                p[axis] <= bound
+            }
+        };
         if cur.iter().all(inside) {
             continue;
         }
@@ -223,7 +256,11 @@ pub(crate) fn clip_convex(poly: &[P], rect: &Rect) -> Vec<P> {
 pub(crate) fn point_segment(p: P, a: P, b: P) -> (f64, P) {
     let d = [b[0] - a[0], b[1] - a[1]];
     let len2 = d[0] * d[0] + d[1] * d[1];
-    let t = if len2 > 0.0 { (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     let q = [a[0] + t * d[0], a[1] + t * d[1]];
     ((p[0] - q[0]).hypot(p[1] - q[1]), q)
 }
@@ -251,7 +288,14 @@ mod tests {
 
     #[test]
     fn hull_of_square_with_inner_point_is_ccw_square() {
-        let h = convex_hull(&[[0.0, 0.0], [1.0, 1.0], [0.5, 0.5], [1.0, 0.0], [0.0, 1.0], [0.5, 0.0]]);
+        let h = convex_hull(&[
+            [0.0, 0.0],
+            [1.0, 1.0],
+            [0.5, 0.5],
+            [1.0, 0.0],
+            [0.0, 1.0],
+            [0.5, 0.0],
+        ]);
         assert_eq!(h.len(), 4);
         assert!((signed_area2(&h) - 2.0).abs() < 1e-12);
     }
@@ -260,7 +304,13 @@ mod tests {
     fn sweep_of_unit_square_is_the_long_rectangle() {
         let sq = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
         let s = sweep_convex(&sq, [5.0, 2.0]);
-        let h = convex_hull(&[sq.to_vec(), sq.iter().map(|p| [p[0] + 5.0, p[1] + 2.0]).collect()].concat());
+        let h = convex_hull(
+            &[
+                sq.to_vec(),
+                sq.iter().map(|p| [p[0] + 5.0, p[1] + 2.0]).collect(),
+            ]
+            .concat(),
+        );
         assert!((signed_area2(&s) - signed_area2(&h)).abs() < 1e-12);
         let s = sweep_convex(&sq, [-3.0, 0.0]);
         assert!((signed_area2(&s) - 8.0).abs() < 1e-12);
@@ -269,13 +319,26 @@ mod tests {
     #[test]
     fn clip_keeps_the_inside_part() {
         let sq = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
-        let c = clip_convex(&sq, &Rect { min: [1.0, -1.0], max: [2.0, 2.0] });
+        let c = clip_convex(
+            &sq,
+            &Rect {
+                min: [1.0, -1.0],
+                max: [2.0, 2.0],
+            },
+        );
         assert!((signed_area2(&c) / 2.0 - 2.0).abs() < 1e-12);
     }
 
     #[test]
     fn l_shape_splits_into_convex_parts_of_the_same_area() {
-        let l = [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]];
+        let l = [
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ];
         let parts = convex_parts(&l);
         assert!(parts.len() > 1);
         let total: f64 = parts.iter().map(|p| signed_area2(p) / 2.0).sum();

@@ -8,7 +8,13 @@ use crate::Shape;
 pub fn area(shapes: &[Shape]) -> f64 {
     shapes
         .iter()
-        .map(|s| signed_area2(&s.outer).abs() / 2.0 - s.holes.iter().map(|h| signed_area2(h).abs() / 2.0).sum::<f64>())
+        .map(|s| {
+            signed_area2(&s.outer).abs() / 2.0
+                - s.holes
+                    .iter()
+                    .map(|h| signed_area2(h).abs() / 2.0)
+                    .sum::<f64>()
+        })
         .sum()
 }
 
@@ -16,7 +22,10 @@ pub fn area(shapes: &[Shape]) -> f64 {
 /// 2π ∫ r dA). Shapes are expected at r ≥ 0.
 pub fn revolved_volume(shapes: &[Shape]) -> f64 {
     let ring = |r: &Vec<P>| first_moment_r(r) * signed_area2(r).signum();
-    let m: f64 = shapes.iter().map(|s| ring(&s.outer) - s.holes.iter().map(ring).sum::<f64>()).sum();
+    let m: f64 = shapes
+        .iter()
+        .map(|s| ring(&s.outer) - s.holes.iter().map(ring).sum::<f64>())
+        .sum();
     std::f64::consts::TAU * m
 }
 
@@ -39,7 +48,11 @@ pub fn hausdorff(a: &[Shape], b: &[Shape]) -> f64 {
         (true, false) | (false, true) => return f64::INFINITY,
         _ => {}
     }
-    let len: f64 = ea.iter().chain(eb.iter()).map(|(p, q)| (q[0] - p[0]).hypot(q[1] - p[1])).sum();
+    let len: f64 = ea
+        .iter()
+        .chain(eb.iter())
+        .map(|(p, q)| (q[0] - p[0]).hypot(q[1] - p[1]))
+        .sum();
     let h = (len * 1e-6).max(1e-5);
     directed(&ea, &eb, h).max(directed(&eb, &ea, h))
 }
@@ -99,23 +112,44 @@ impl<'a> SegIndex<'a> {
         let mut cells = vec![Vec::new(); (nx * ny) as usize];
         for (k, (p, q)) in segs.iter().enumerate() {
             let c = |v: f64, o: f64, m: i64| (((v - o) / cell).floor() as i64).clamp(0, m - 1);
-            let (x0, x1) = (c(p[0].min(q[0]), rect.min[0], nx), c(p[0].max(q[0]), rect.min[0], nx));
-            let (y0, y1) = (c(p[1].min(q[1]), rect.min[1], ny), c(p[1].max(q[1]), rect.min[1], ny));
+            let (x0, x1) = (
+                c(p[0].min(q[0]), rect.min[0], nx),
+                c(p[0].max(q[0]), rect.min[0], nx),
+            );
+            let (y0, y1) = (
+                c(p[1].min(q[1]), rect.min[1], ny),
+                c(p[1].max(q[1]), rect.min[1], ny),
+            );
             for ix in x0..=x1 {
                 for iy in y0..=y1 {
                     cells[(ix * ny + iy) as usize].push(k as u32);
                 }
             }
         }
-        Self { segs, origin: rect.min, cell, nx, ny, cells }
+        Self {
+            segs,
+            origin: rect.min,
+            cell,
+            nx,
+            ny,
+            cells,
+        }
     }
 
     /// Distance from `p` to the nearest segment; may stop early with any value ≤ `enough`
     /// once the true distance is known to be at most `enough`.
     fn nearest(&self, p: P, enough: f64) -> f64 {
-        let cx = ((p[0] - self.origin[0]) / self.cell).floor().clamp(-1e12, 1e12) as i64;
-        let cy = ((p[1] - self.origin[1]) / self.cell).floor().clamp(-1e12, 1e12) as i64;
-        let outside = [cx - (self.nx - 1), -cx, cy - (self.ny - 1), -cy].into_iter().max().unwrap_or(0).max(0);
+        let cx = ((p[0] - self.origin[0]) / self.cell)
+            .floor()
+            .clamp(-1e12, 1e12) as i64;
+        let cy = ((p[1] - self.origin[1]) / self.cell)
+            .floor()
+            .clamp(-1e12, 1e12) as i64;
+        let outside = [cx - (self.nx - 1), -cx, cy - (self.ny - 1), -cy]
+            .into_iter()
+            .max()
+            .unwrap_or(0)
+            .max(0);
         let mut best = f64::INFINITY;
         let mut k = outside;
         let kmax = outside + self.nx + self.ny + 2;
@@ -159,7 +193,10 @@ mod tests {
     use super::*;
 
     fn square(z0: f64, r0: f64, s: f64) -> Shape {
-        Shape { outer: vec![[z0, r0], [z0 + s, r0], [z0 + s, r0 + s], [z0, r0 + s]], holes: vec![] }
+        Shape {
+            outer: vec![[z0, r0], [z0 + s, r0], [z0 + s, r0 + s], [z0, r0 + s]],
+            holes: vec![],
+        }
     }
 
     #[test]
@@ -171,7 +208,9 @@ mod tests {
         assert!((symmetric_difference_area(&a, &b) - 4.0).abs() < 1e-9);
         assert!(symmetric_difference_area(&a, &a) < 1e-12);
         let mut holed = square(0.0, 0.0, 4.0);
-        holed.holes.push(vec![[1.0, 1.0], [1.0, 2.0], [2.0, 2.0], [2.0, 1.0]]);
+        holed
+            .holes
+            .push(vec![[1.0, 1.0], [1.0, 2.0], [2.0, 2.0], [2.0, 1.0]]);
         assert!((area(&[holed]) - 15.0).abs() < 1e-12);
     }
 
@@ -191,8 +230,14 @@ mod tests {
         let big = [square(-1.0, -1.0, 4.0)];
         assert!((hausdorff(&a, &big) - 2f64.sqrt()).abs() < 1e-9);
         // the middle of a long edge counts, not only the vertices
-        let long = [Shape { outer: vec![[0.0, 0.0], [10.0, 0.0], [10.0, 1.0], [0.0, 1.0]], holes: vec![] }];
-        let dented = [Shape { outer: vec![[0.0, 0.0], [10.0, 0.0], [10.0, 1.0], [5.0, 0.7], [0.0, 1.0]], holes: vec![] }];
+        let long = [Shape {
+            outer: vec![[0.0, 0.0], [10.0, 0.0], [10.0, 1.0], [0.0, 1.0]],
+            holes: vec![],
+        }];
+        let dented = [Shape {
+            outer: vec![[0.0, 0.0], [10.0, 0.0], [10.0, 1.0], [5.0, 0.7], [0.0, 1.0]],
+            holes: vec![],
+        }];
         assert!((hausdorff(&long, &dented) - 0.3).abs() < 1e-5);
         assert_eq!(hausdorff(&[], &[]), 0.0);
         assert!(hausdorff(&a, &[]).is_infinite());

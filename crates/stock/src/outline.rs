@@ -20,7 +20,12 @@ pub struct Outline {
 impl Outline {
     /// An outline from one simple ring of any orientation, split into convex parts.
     pub fn from_ring(ring: &[[f64; 2]]) -> Self {
-        Self { parts: convex_parts(ring).into_iter().filter(|p| p.len() >= 3).collect() }
+        Self {
+            parts: convex_parts(ring)
+                .into_iter()
+                .filter(|p| p.len() >= 3)
+                .collect(),
+        }
     }
 
     /// Bounding box as (min, max), or `None` for an empty outline.
@@ -31,11 +36,21 @@ impl Outline {
 
     /// Largest distance of any outline point from the reference point.
     pub fn reach(&self) -> f64 {
-        self.parts.iter().flatten().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max)
+        self.parts
+            .iter()
+            .flatten()
+            .map(|p| p[0].hypot(p[1]))
+            .fold(0.0, f64::max)
     }
 
     fn map(&self, f: impl Fn(P) -> P) -> Self {
-        Self { parts: self.parts.iter().map(|part| convex_hull(&part.iter().map(|&p| f(p)).collect::<Vec<_>>())).collect() }
+        Self {
+            parts: self
+                .parts
+                .iter()
+                .map(|part| convex_hull(&part.iter().map(|&p| f(p)).collect::<Vec<_>>()))
+                .collect(),
+        }
     }
 }
 
@@ -45,16 +60,27 @@ fn arc_points(c: P, radius: f64, a0: f64, sweep: f64) -> Vec<P> {
     if radius <= 0.0 {
         return vec![c];
     }
-    let step = if radius <= NOSE_CHORD_TOL { std::f64::consts::PI } else { 2.0 * (1.0 - NOSE_CHORD_TOL / radius).acos() };
+    let step = if radius <= NOSE_CHORD_TOL {
+        std::f64::consts::PI
+    } else {
+        2.0 * (1.0 - NOSE_CHORD_TOL / radius).acos()
+    };
     let n = ((sweep.abs() / step).ceil() as usize).clamp(1, 100_000);
     let at = |a: f64| [c[0] + radius * a.cos(), c[1] + radius * a.sin()];
-    let mut pts: Vec<P> = (0..=n).map(|i| at(a0 + sweep * i as f64 / n as f64)).collect();
+    let mut pts: Vec<P> = (0..=n)
+        .map(|i| at(a0 + sweep * i as f64 / n as f64))
+        .collect();
     // the extreme points along ±Z and ±X are where the part is measured: include them exactly
-    let (lo, hi) = if sweep >= 0.0 { (a0, a0 + sweep) } else { (a0 + sweep, a0) };
+    let (lo, hi) = if sweep >= 0.0 {
+        (a0, a0 + sweep)
+    } else {
+        (a0 + sweep, a0)
+    };
     let quarter = std::f64::consts::FRAC_PI_2;
     let mut k = (lo / quarter).ceil();
     while k * quarter <= hi && pts.len() < 100_010 {
-        let q = [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]][(k as i64).rem_euclid(4) as usize];
+        let q =
+            [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]][(k as i64).rem_euclid(4) as usize];
         pts.push([c[0] + radius * q[0], c[1] + radius * q[1]]);
         k += 1.0;
     }
@@ -85,7 +111,14 @@ pub(crate) enum InsertBody {
 /// (nose centre + (−r, −r)). Tips 2, 4, 1 mirror tip 3 in r, z, both; tips 5–8 point the
 /// bisector along +Z, +X, −Z, −X (reference: nose centre + r along that axis); tips 0 and 9
 /// keep the tip-3 orientation with the reference at the nose centre.
-pub(crate) fn turning(body: InsertBody, included: f64, nose_radius: f64, tip: u8, entering: f64, edge: f64) -> Outline {
+pub(crate) fn turning(
+    body: InsertBody,
+    included: f64,
+    nose_radius: f64,
+    tip: u8,
+    entering: f64,
+    edge: f64,
+) -> Outline {
     let r = nose_radius.max(0.0);
     if body == InsertBody::Round {
         let c = match tip {
@@ -100,7 +133,9 @@ pub(crate) fn turning(body: InsertBody, included: f64, nose_radius: f64, tip: u8
             _ => [0.0, 0.0],
         };
         let pts = arc_points(c, r.max(1e-3), 0.0, std::f64::consts::TAU);
-        return Outline { parts: vec![convex_hull(&pts)] };
+        return Outline {
+            parts: vec![convex_hull(&pts)],
+        };
     }
     // (direction of the leading edge, of the trailing edge) from the cutting corner
     let axis_tip: Option<P> = match tip {
@@ -137,7 +172,13 @@ pub(crate) fn turning(body: InsertBody, included: f64, nose_radius: f64, tip: u8
         (None, 0 | 9) => c,
         (None, _) => [c[0] - r, c[1] - r],
     };
-    let tip3 = Outline { parts: vec![convex_hull(&pts.iter().map(|p| [p[0] - reference[0], p[1] - reference[1]]).collect::<Vec<_>>())] };
+    let tip3 = Outline {
+        parts: vec![convex_hull(
+            &pts.iter()
+                .map(|p| [p[0] - reference[0], p[1] - reference[1]])
+                .collect::<Vec<_>>(),
+        )],
+    };
     match tip {
         2 => tip3.map(|p| [p[0], -p[1]]),
         4 => tip3.map(|p| [-p[0], p[1]]),
@@ -149,18 +190,41 @@ pub(crate) fn turning(body: InsertBody, included: f64, nose_radius: f64, tip: u8
 /// A grooving blade: `width` along `width_axis` (a unit axis vector), body of length `reach`
 /// along `shank_axis`; the reference is the corner at the cutting edge where the width
 /// starts; the two cutting-edge corners are rounded with `corner_radius`.
-pub(crate) fn grooving(width: f64, width_axis: P, shank_axis: P, reach: f64, corner_radius: f64) -> Outline {
+pub(crate) fn grooving(
+    width: f64,
+    width_axis: P,
+    shank_axis: P,
+    reach: f64,
+    corner_radius: f64,
+) -> Outline {
     let rho = corner_radius.clamp(0.0, width / 2.0);
     // local (w, s) coordinates: w across the blade, s along the shank
-    let mut local = arc_points([rho, rho], rho, std::f64::consts::PI, std::f64::consts::FRAC_PI_2);
-    local.extend(arc_points([width - rho, rho], rho, 1.5 * std::f64::consts::PI, std::f64::consts::FRAC_PI_2));
+    let mut local = arc_points(
+        [rho, rho],
+        rho,
+        std::f64::consts::PI,
+        std::f64::consts::FRAC_PI_2,
+    );
+    local.extend(arc_points(
+        [width - rho, rho],
+        rho,
+        1.5 * std::f64::consts::PI,
+        std::f64::consts::FRAC_PI_2,
+    ));
     local.push([width, reach]);
     local.push([0.0, reach]);
     let pts: Vec<P> = local
         .iter()
-        .map(|&[w, s]| [w * width_axis[0] + s * shank_axis[0], w * width_axis[1] + s * shank_axis[1]])
+        .map(|&[w, s]| {
+            [
+                w * width_axis[0] + s * shank_axis[0],
+                w * width_axis[1] + s * shank_axis[1],
+            ]
+        })
         .collect();
-    Outline { parts: vec![convex_hull(&pts)] }
+    Outline {
+        parts: vec![convex_hull(&pts)],
+    }
 }
 
 /// A drill of `diameter` with `point_angle` (degrees), point at the reference on the axis,
@@ -169,7 +233,15 @@ pub(crate) fn drill(diameter: f64, point_angle: f64, reach: f64) -> Outline {
     let rad = diameter / 2.0;
     let h = rad / (point_angle / 2.0).to_radians().tan();
     let len = reach.max(h + 1e-6);
-    Outline { parts: vec![convex_hull(&[[0.0, 0.0], [h, rad], [len, rad], [len, -rad], [h, -rad]])] }
+    Outline {
+        parts: vec![convex_hull(&[
+            [0.0, 0.0],
+            [h, rad],
+            [len, rad],
+            [len, -rad],
+            [h, -rad],
+        ])],
+    }
 }
 
 /// Height of a threading insert's profile (flanks at the thread angle), mm.
@@ -184,8 +256,17 @@ pub(crate) fn threading(angle: f64, tip_flat: f64) -> Outline {
     let f = tip_flat / 2.0;
     let w = f + THREAD_PROFILE_HEIGHT * (angle / 2.0).to_radians().tan();
     let top = THREAD_PROFILE_HEIGHT + THREAD_BODY_HEIGHT;
-    let pts = [[-f, 0.0], [f, 0.0], [w, THREAD_PROFILE_HEIGHT], [w, top], [-w, top], [-w, THREAD_PROFILE_HEIGHT]];
-    Outline { parts: vec![convex_hull(&pts)] }
+    let pts = [
+        [-f, 0.0],
+        [f, 0.0],
+        [w, THREAD_PROFILE_HEIGHT],
+        [w, top],
+        [-w, top],
+        [-w, THREAD_PROFILE_HEIGHT],
+    ];
+    Outline {
+        parts: vec![convex_hull(&pts)],
+    }
 }
 
 #[cfg(test)]
@@ -198,7 +279,10 @@ mod tests {
             .map(|i| {
                 let (a, b) = (p[i], p[(i + 1) % p.len()]);
                 let d = [b[0] - a[0], b[1] - a[1]];
-                (d[1].atan2(d[0]).to_degrees().rem_euclid(360.0), d[0].hypot(d[1]))
+                (
+                    d[1].atan2(d[0]).to_degrees().rem_euclid(360.0),
+                    d[0].hypot(d[1]),
+                )
             })
             .collect()
     }
@@ -209,7 +293,11 @@ mod tests {
         let edges = edge_angles(&o);
         // CCW walk: the trailing edge runs away from the nose at 52°, the leading edge
         // comes back down toward the nose, i.e. along 87° + 180°
-        let long = |deg: f64| edges.iter().any(|&(a, l)| l > 5.0 && (a - deg).abs() < 1e-6);
+        let long = |deg: f64| {
+            edges
+                .iter()
+                .any(|&(a, l)| l > 5.0 && (a - deg).abs() < 1e-6)
+        };
         assert!(long(52.0), "{edges:?}");
         assert!(long(267.0), "{edges:?}");
         // the insert lies up and to the right of its imaginary tip, touching both tangents
@@ -232,7 +320,10 @@ mod tests {
         assert!(near.iter().all(|d| (d - r).abs() < 1e-9), "{near:?}");
         // consecutive nose points are close enough for a 0.001 mm chord error
         let step = 2.0 * (2.0 * r * NOSE_CHORD_TOL).sqrt();
-        let nose: Vec<&P> = o.parts[0].iter().filter(|p| ((p[0] - r).hypot(p[1] - r) - r).abs() < 1e-9).collect();
+        let nose: Vec<&P> = o.parts[0]
+            .iter()
+            .filter(|p| ((p[0] - r).hypot(p[1] - r) - r).abs() < 1e-9)
+            .collect();
         // walking the hull cyclically, the only long jump between nose points is across the body
         let n = nose.len();
         let gaps = (0..n).filter(|&i| {
@@ -266,15 +357,23 @@ mod tests {
         assert!(axis(7).0[0].abs() < 1e-9 && axis(7).1[0] > 5.0);
         assert!(axis(8).0[1].abs() < 1e-9 && axis(8).1[1] > 5.0);
         // tip 0/9: reference at the nose centre, so the tip-3 outline shifted by (r, r)
-        let t3 = turning(InsertBody::Rhombic, 55.0, 0.4, 3, 93.0, 11.0).bbox().unwrap();
+        let t3 = turning(InsertBody::Rhombic, 55.0, 0.4, 3, 93.0, 11.0)
+            .bbox()
+            .unwrap();
         for tip in [0, 9] {
-            let t = turning(InsertBody::Rhombic, 55.0, 0.4, tip, 93.0, 11.0).bbox().unwrap();
-            assert!((t.0[0] - (t3.0[0] - 0.4)).abs() < 1e-9 && (t.0[1] - (t3.0[1] - 0.4)).abs() < 1e-9);
+            let t = turning(InsertBody::Rhombic, 55.0, 0.4, tip, 93.0, 11.0)
+                .bbox()
+                .unwrap();
+            assert!(
+                (t.0[0] - (t3.0[0] - 0.4)).abs() < 1e-9 && (t.0[1] - (t3.0[1] - 0.4)).abs() < 1e-9
+            );
         }
         // tips 1, 2, 4 are exact mirrors of tip 3
         let t3 = turning(InsertBody::Rhombic, 55.0, 0.4, 3, 93.0, 11.0).parts[0].clone();
         let t1 = turning(InsertBody::Rhombic, 55.0, 0.4, 1, 93.0, 11.0).parts[0].clone();
-        assert!(t3.iter().all(|p| t1.iter().any(|q| (q[0] + p[0]).abs() < 1e-12 && (q[1] + p[1]).abs() < 1e-12)));
+        assert!(t3.iter().all(|p| t1
+            .iter()
+            .any(|q| (q[0] + p[0]).abs() < 1e-12 && (q[1] + p[1]).abs() < 1e-12)));
     }
 
     #[test]

@@ -32,8 +32,16 @@ pub(crate) struct Grid {
 impl Grid {
     /// A grid covering `rect` (finite, non-empty) with the conservative 29-bit budget.
     pub(crate) fn new(rect: Rect) -> Self {
-        let fr = FloatRect { min_x: rect.min[0], max_x: rect.max[0], min_y: rect.min[1], max_y: rect.max[1] };
-        Self { adapter: FloatPointAdapter::new_conservative(fr), rect }
+        let fr = FloatRect {
+            min_x: rect.min[0],
+            max_x: rect.max[0],
+            min_y: rect.min[1],
+            max_y: rect.max[1],
+        };
+        Self {
+            adapter: FloatPointAdapter::new_conservative(fr),
+            rect,
+        }
     }
 
     /// Size of one grid step in mm.
@@ -43,8 +51,15 @@ impl Grid {
 
     /// Snaps a point (clamped into the grid's rectangle first, so it can never overflow).
     pub(crate) fn to_int(&self, p: P) -> IPt {
-        let q = [p[0].clamp(self.rect.min[0], self.rect.max[0]), p[1].clamp(self.rect.min[1], self.rect.max[1])];
-        let q = if q[0].is_nan() || q[1].is_nan() { self.rect.min } else { q };
+        let q = [
+            p[0].clamp(self.rect.min[0], self.rect.max[0]),
+            p[1].clamp(self.rect.min[1], self.rect.max[1]),
+        ];
+        let q = if q[0].is_nan() || q[1].is_nan() {
+            self.rect.min
+        } else {
+            q
+        };
         self.adapter.float_to_int(&q)
     }
 
@@ -57,7 +72,12 @@ impl Grid {
     pub(crate) fn shapes_to_int(&self, shapes: &[Shape]) -> IShapes {
         shapes
             .iter()
-            .map(|s| std::iter::once(&s.outer).chain(s.holes.iter()).map(|r| r.iter().map(|&p| self.to_int(p)).collect()).collect())
+            .map(|s| {
+                std::iter::once(&s.outer)
+                    .chain(s.holes.iter())
+                    .map(|r| r.iter().map(|&p| self.to_int(p)).collect())
+                    .collect()
+            })
             .collect()
     }
 
@@ -67,9 +87,14 @@ impl Grid {
             .iter()
             .filter(|s| !s.is_empty())
             .map(|s| {
-                let mut rings = s.iter().map(|r| r.iter().map(|&p| self.to_float(p)).collect::<Vec<P>>());
+                let mut rings = s
+                    .iter()
+                    .map(|r| r.iter().map(|&p| self.to_float(p)).collect::<Vec<P>>());
                 let outer = rings.next().unwrap_or_default();
-                Shape { outer, holes: rings.collect() }
+                Shape {
+                    outer,
+                    holes: rings.collect(),
+                }
             })
             .collect()
     }
@@ -77,7 +102,14 @@ impl Grid {
     /// Area in mm² of shapes on the grid (exact integer shoelace, then scaled).
     pub(crate) fn area(&self, shapes: &IShapes) -> f64 {
         let s = self.step();
-        shapes.iter().flatten().map(|r| ring_area2(r) as f64).sum::<f64>() * 0.5 * s * s
+        shapes
+            .iter()
+            .flatten()
+            .map(|r| ring_area2(r) as f64)
+            .sum::<f64>()
+            * 0.5
+            * s
+            * s
     }
 }
 
@@ -100,10 +132,17 @@ pub(crate) struct Engine {
 impl Engine {
     /// A fresh engine.
     pub(crate) fn new() -> Self {
-        Self { ov: Overlay::new(256) }
+        Self {
+            ov: Overlay::new(256),
+        }
     }
 
-    fn run<'a>(&mut self, subj: &IShapes, clips: impl IntoIterator<Item = &'a [IPt]>, rule: OverlayRule) -> IShapes {
+    fn run<'a>(
+        &mut self,
+        subj: &IShapes,
+        clips: impl IntoIterator<Item = &'a [IPt]>,
+        rule: OverlayRule,
+    ) -> IShapes {
         self.ov.clear();
         self.ov.add_source(subj, ShapeType::Subject);
         for c in clips {
@@ -113,12 +152,20 @@ impl Engine {
     }
 
     /// `subj` minus the union of the `clips` rings (any orientation, overlapping allowed).
-    pub(crate) fn difference<'a>(&mut self, subj: &IShapes, clips: impl IntoIterator<Item = &'a [IPt]>) -> IShapes {
+    pub(crate) fn difference<'a>(
+        &mut self,
+        subj: &IShapes,
+        clips: impl IntoIterator<Item = &'a [IPt]>,
+    ) -> IShapes {
         self.run(subj, clips, OverlayRule::Difference)
     }
 
     /// `subj` intersected with the union of the `clips` rings.
-    pub(crate) fn intersection<'a>(&mut self, subj: &IShapes, clips: impl IntoIterator<Item = &'a [IPt]>) -> IShapes {
+    pub(crate) fn intersection<'a>(
+        &mut self,
+        subj: &IShapes,
+        clips: impl IntoIterator<Item = &'a [IPt]>,
+    ) -> IShapes {
         self.run(subj, clips, OverlayRule::Intersect)
     }
 
@@ -138,7 +185,12 @@ fn finite_shapes(shapes: &[Shape]) -> Vec<Vec<Vec<P>>> {
     shapes
         .iter()
         .filter(|s| ok(&s.outer))
-        .map(|s| std::iter::once(&s.outer).chain(s.holes.iter().filter(|h| ok(h))).cloned().collect())
+        .map(|s| {
+            std::iter::once(&s.outer)
+                .chain(s.holes.iter().filter(|h| ok(h)))
+                .cloned()
+                .collect()
+        })
         .collect()
 }
 
@@ -154,8 +206,11 @@ fn to_shapes(raw: Vec<Vec<Vec<P>>>) -> Vec<Shape> {
 
 /// Normalises rings of any orientation (non-zero fill) into valid shapes: outer CCW, holes CW.
 pub(crate) fn clean(rings: &[Vec<P>]) -> Vec<Shape> {
-    let rings: Vec<Vec<P>> =
-        rings.iter().filter(|r| r.len() >= 3 && r.iter().all(|p| p[0].is_finite() && p[1].is_finite())).cloned().collect();
+    let rings: Vec<Vec<P>> = rings
+        .iter()
+        .filter(|r| r.len() >= 3 && r.iter().all(|p| p[0].is_finite() && p[1].is_finite()))
+        .cloned()
+        .collect();
     if rings.is_empty() {
         return Vec::new();
     }

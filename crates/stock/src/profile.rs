@@ -32,18 +32,36 @@ const HELP: &str = "a profile is `start = [z, x]` and `path = [{ to = [z, x] }, 
 /// a negative R takes the arc longer than 180°, as in G-code). The path closes back to
 /// `start` by itself. x is a diameter and must not be negative.
 pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, StockError> {
-    let tol = if chord_tol.is_finite() && chord_tol > 0.0 { chord_tol } else { 0.001 };
+    let tol = if chord_tol.is_finite() && chord_tol > 0.0 {
+        chord_tol
+    } else {
+        0.001
+    };
     let raw: RawProfile = toml::from_str(text).map_err(|e| from_toml("profile", text, &e, HELP))?;
     let at = |span: std::ops::Range<usize>, message: String, help: &str| {
         let (line, column) = line_col(text, span.start);
-        StockError::Toml { file: "profile", line, column, message, help: help.to_string() }
+        StockError::Toml {
+            file: "profile",
+            line,
+            column,
+            message,
+            help: help.to_string(),
+        }
     };
     let check = |p: [f64; 2], span: std::ops::Range<usize>| -> Result<Pt, StockError> {
         if !(p[0].is_finite() && p[1].is_finite() && p[0].abs() < 1e9 && p[1].abs() < 1e9) {
-            return Err(at(span, format!("point [{}, {}] is not a finite coordinate", p[0], p[1]), HELP));
+            return Err(at(
+                span,
+                format!("point [{}, {}] is not a finite coordinate", p[0], p[1]),
+                HELP,
+            ));
         }
         if p[1] < 0.0 {
-            return Err(at(span, format!("x = {} is below the axis", p[1]), "x is a diameter: it cannot be negative"));
+            return Err(at(
+                span,
+                format!("x = {} is below the axis", p[1]),
+                "x is a diameter: it cannot be negative",
+            ));
         }
         Ok(Pt::new(p[0], p[1] / 2.0))
     };
@@ -60,10 +78,23 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
                 let ccw = match dir {
                     "ccw" | "CCW" => true,
                     "cw" | "CW" => false,
-                    other => return Err(at(span, format!("dir = \"{other}\" is neither \"cw\" nor \"ccw\""), HELP)),
+                    other => {
+                        return Err(at(
+                            span,
+                            format!("dir = \"{other}\" is neither \"cw\" nor \"ccw\""),
+                            HELP,
+                        ))
+                    }
                 };
                 let center = arc_center(cur, to, r, ccw).ok_or_else(|| {
-                    at(span.clone(), format!("no arc of radius {r} joins the two points (they are {:.4} mm apart)", cur.dist(to)), "the radius must be at least half the distance between the end points")
+                    at(
+                        span.clone(),
+                        format!(
+                            "no arc of radius {r} joins the two points (they are {:.4} mm apart)",
+                            cur.dist(to)
+                        ),
+                        "the radius must be at least half the distance between the end points",
+                    )
                 })?;
                 let seg = Segment {
                     motion: Motion::Feed,
@@ -78,14 +109,30 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
                 };
                 ring.extend(seg.polyline(tol).iter().skip(1).map(|p| [p.z, p.r]));
             }
-            (Some(_), None) => return Err(at(span, "an arc needs `dir` (\"cw\" or \"ccw\")".into(), HELP)),
-            (None, Some(_)) => return Err(at(span, "`dir` without `r`: an arc needs its radius".into(), HELP)),
+            (Some(_), None) => {
+                return Err(at(
+                    span,
+                    "an arc needs `dir` (\"cw\" or \"ccw\")".into(),
+                    HELP,
+                ))
+            }
+            (None, Some(_)) => {
+                return Err(at(
+                    span,
+                    "`dir` without `r`: an arc needs its radius".into(),
+                    HELP,
+                ))
+            }
         }
         cur = to;
     }
     let shapes = overlay::clean(&[ring]);
     if crate::area(&shapes) <= 0.0 {
-        return Err(at(raw.start.span(), "the profile encloses no area".into(), HELP));
+        return Err(at(
+            raw.start.span(),
+            "the profile encloses no area".into(),
+            HELP,
+        ));
     }
     Ok(shapes)
 }
@@ -108,7 +155,10 @@ pub(crate) fn arc_center(a: Pt, b: Pt, r: f64, ccw: bool) -> Option<Pt> {
     let left = (-dr / len, dz / len);
     // the short counter-clockwise arc has its centre on the left of a -> b
     let side = if ccw == (r > 0.0) { 1.0 } else { -1.0 };
-    Some(Pt::new(a.z + dz / 2.0 + side * h * left.0, a.r + dr / 2.0 + side * h * left.1))
+    Some(Pt::new(
+        a.z + dz / 2.0 + side * h * left.0,
+        a.r + dr / 2.0 + side * h * left.1,
+    ))
 }
 
 #[cfg(test)]
@@ -133,11 +183,18 @@ path = [
         let exact = 60.0 * 25.0 - (100.0 - std::f64::consts::PI * 100.0 / 4.0);
         let a = area(&s);
         // chords lie inside the arc: at most the sagitta (0.001) times the arc length short
-        assert!(a <= exact + 1e-9 && exact - a < 0.001 * 16.0, "area {a} vs {exact}");
+        assert!(
+            a <= exact + 1e-9 && exact - a < 0.001 * 16.0,
+            "area {a} vs {exact}"
+        );
         assert_eq!(s.len(), 1);
         // the dome bulges outward: (z, r) = (-10 + 10 cos45, 15 + 10 sin45) is on the boundary
         let p = [-10.0 + 10.0 * 0.5f64.sqrt(), 15.0 + 10.0 * 0.5f64.sqrt()];
-        let d = s[0].outer.iter().map(|q| (q[0] - p[0]).hypot(q[1] - p[1])).fold(f64::INFINITY, f64::min);
+        let d = s[0]
+            .outer
+            .iter()
+            .map(|q| (q[0] - p[0]).hypot(q[1] - p[1]))
+            .fold(f64::INFINITY, f64::min);
         assert!(d < 0.2, "{d}");
     }
 
@@ -157,14 +214,21 @@ path = [
             Err(StockError::Toml { line, column, .. }) => assert_eq!((line, column), (4, 3)),
             other => panic!("{other:?}"),
         }
-        match profile_from_toml("start = [0.0, 0.0]\npath = [ { to = [1.0, 2.0], bulge = 1 } ]\n", 0.001) {
+        match profile_from_toml(
+            "start = [0.0, 0.0]\npath = [ { to = [1.0, 2.0], bulge = 1 } ]\n",
+            0.001,
+        ) {
             Err(StockError::Toml { line, message, .. }) => {
                 assert_eq!(line, 2);
                 assert!(message.contains("bulge"), "{message}");
             }
             other => panic!("{other:?}"),
         }
-        assert!(profile_from_toml("start = [0.0, 0.0]\npath = [ { to = [1.0, nan] } ]", 0.001).is_err());
-        assert!(profile_from_toml("start = [0.0, 0.0]\npath = [ { to = [1.0, 0.0] } ]", 0.001).is_err());
+        assert!(
+            profile_from_toml("start = [0.0, 0.0]\npath = [ { to = [1.0, nan] } ]", 0.001).is_err()
+        );
+        assert!(
+            profile_from_toml("start = [0.0, 0.0]\npath = [ { to = [1.0, 0.0] } ]", 0.001).is_err()
+        );
     }
 }

@@ -95,7 +95,7 @@ struct Tile {
 /// complex, so that no boolean call sees more than about [`MAX_TILE_VERTICES`] of stock.
 enum Node {
     Leaf(Tile),
-    Split(Box<[Node; 2]>, [IBox; 2]),
+    Split(Box<[Self; 2]>, [IBox; 2]),
 }
 
 /// Part of a crash seen by one strip.
@@ -126,7 +126,9 @@ fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
         && (0..n).all(|i| {
             let (a, b) = (outer[i], outer[(i + 1) % n]);
             let (ex, ey) = (i64::from(b.x - a.x), i64::from(b.y - a.y));
-            inner.iter().all(|p| ex * i64::from(p.y - a.y) - ey * i64::from(p.x - a.x) >= 0)
+            inner
+                .iter()
+                .all(|p| ex * i64::from(p.y - a.y) - ey * i64::from(p.x - a.x) >= 0)
         })
 }
 
@@ -136,7 +138,10 @@ impl Tile {
             return;
         }
         let items = &sweeps.items;
-        let clips = self.pending.iter().flat_map(|&i| sweeps.polys_of(&items[i as usize]));
+        let clips = self
+            .pending
+            .iter()
+            .flat_map(|&i| sweeps.polys_of(&items[i as usize]));
         self.stock = engine.difference(&self.stock, clips);
         self.bbox = bbox_of(&self.stock);
         self.verts = self.stock.iter().flatten().map(Vec::len).sum();
@@ -146,18 +151,35 @@ impl Tile {
     /// True when the rapid's sweep lies inside one pending sweep polygon (already cut).
     fn covered_by_pending(&self, sweeps: &Sweeps, it: &Item) -> bool {
         sweeps.polys_of(it).all(|rp| {
-            self.pending.iter().rev().any(|&j| sweeps.polys_of(&sweeps.items[j as usize]).any(|pp| convex_contains(pp, rp)))
+            self.pending.iter().rev().any(|&j| {
+                sweeps
+                    .polys_of(&sweeps.items[j as usize])
+                    .any(|pp| convex_contains(pp, rp))
+            })
         })
     }
 
     fn new(rect: IBox, stock: IShapes) -> Self {
         let verts = stock.iter().flatten().map(Vec::len).sum();
-        Self { rect, bbox: bbox_of(&stock), stock, pending: Vec::new(), verts }
+        Self {
+            rect,
+            bbox: bbox_of(&stock),
+            stock,
+            pending: Vec::new(),
+            verts,
+        }
     }
 
     /// Processes `list` in order; returns the index of the first item not processed when
     /// the tile grew too complex and must split first.
-    fn process(&mut self, sweeps: &Sweeps, list: &[u32], ctx: &Ctx, engine: &mut Engine, frags: &mut Vec<Fragment>) -> Option<usize> {
+    fn process(
+        &mut self,
+        sweeps: &Sweeps,
+        list: &[u32],
+        ctx: &Ctx,
+        engine: &mut Engine,
+        frags: &mut Vec<Fragment>,
+    ) -> Option<usize> {
         for (k, &i) in list.iter().enumerate() {
             if self.verts > MAX_TILE_VERTICES && self.pending.is_empty() && self.splittable(ctx) {
                 return Some(k);
@@ -165,7 +187,11 @@ impl Tile {
             let it = &sweeps.items[i as usize];
             // air in this tile: the stock only shrinks, so missing the stock of the last
             // flush means missing the stock of this moment
-            if !it.bbox.overlaps(&self.bbox) || !sweeps.polys_of(it).any(|p| touches(p, &self.stock, &self.bbox)) {
+            if !it.bbox.overlaps(&self.bbox)
+                || !sweeps
+                    .polys_of(it)
+                    .any(|p| touches(p, &self.stock, &self.bbox))
+            {
                 continue;
             }
             if it.rapid && !self.covered_by_pending(sweeps, it) {
@@ -175,7 +201,13 @@ impl Tile {
                     let a = ctx.grid.area(&overlap);
                     if a > 0.0 {
                         let (dist, at) = nearest(ctx.grid, &overlap, it.start);
-                        frags.push(Fragment { seg: it.seg, eps: it.eps, area: a, dist, at });
+                        frags.push(Fragment {
+                            seg: it.seg,
+                            eps: it.eps,
+                            area: a,
+                            dist,
+                            at,
+                        });
                     }
                 }
             }
@@ -189,7 +221,8 @@ impl Tile {
     }
 
     fn splittable(&self, ctx: &Ctx) -> bool {
-        let size = i64::from(self.rect.max[0] - self.rect.min[0]).max(i64::from(self.rect.max[1] - self.rect.min[1]));
+        let size = i64::from(self.rect.max[0] - self.rect.min[0])
+            .max(i64::from(self.rect.max[1] - self.rect.min[1]));
         size > ctx.min_tile
     }
 
@@ -198,13 +231,36 @@ impl Tile {
         let r = self.rect;
         let halves = if r.max[0] - r.min[0] >= r.max[1] - r.min[1] {
             let mid = ((i64::from(r.min[0]) + i64::from(r.max[0])) / 2) as i32;
-            [IBox { min: r.min, max: [mid, r.max[1]] }, IBox { min: [mid, r.min[1]], max: r.max }]
+            [
+                IBox {
+                    min: r.min,
+                    max: [mid, r.max[1]],
+                },
+                IBox {
+                    min: [mid, r.min[1]],
+                    max: r.max,
+                },
+            ]
         } else {
             let mid = ((i64::from(r.min[1]) + i64::from(r.max[1])) / 2) as i32;
-            [IBox { min: r.min, max: [r.max[0], mid] }, IBox { min: [r.min[0], mid], max: r.max }]
+            [
+                IBox {
+                    min: r.min,
+                    max: [r.max[0], mid],
+                },
+                IBox {
+                    min: [r.min[0], mid],
+                    max: r.max,
+                },
+            ]
         };
         let child = |b: IBox, engine: &mut Engine| {
-            let ring = [IPt::new(b.min[0], b.min[1]), IPt::new(b.max[0], b.min[1]), IPt::new(b.max[0], b.max[1]), IPt::new(b.min[0], b.max[1])];
+            let ring = [
+                IPt::new(b.min[0], b.min[1]),
+                IPt::new(b.max[0], b.min[1]),
+                IPt::new(b.max[0], b.max[1]),
+                IPt::new(b.min[0], b.max[1]),
+            ];
             Node::Leaf(Self::new(b, engine.intersection(&self.stock, [&ring[..]])))
         };
         let a = child(halves[0], engine);
@@ -221,17 +277,30 @@ struct Ctx<'a> {
 }
 
 impl Node {
-    fn process(&mut self, sweeps: &Sweeps, list: &[u32], ctx: &Ctx, engine: &mut Engine, frags: &mut Vec<Fragment>) {
+    fn process(
+        &mut self,
+        sweeps: &Sweeps,
+        list: &[u32],
+        ctx: &Ctx,
+        engine: &mut Engine,
+        frags: &mut Vec<Fragment>,
+    ) {
         match self {
             Self::Leaf(tile) => {
-                let Some(rest) = tile.process(sweeps, list, ctx, engine, frags) else { return };
+                let Some(rest) = tile.process(sweeps, list, ctx, engine, frags) else {
+                    return;
+                };
                 let tile = std::mem::replace(tile, Tile::new(IBox::EMPTY, Vec::new()));
                 *self = tile.split(engine);
                 self.process(sweeps, &list[rest..], ctx, engine, frags);
             }
             Self::Split(children, rects) => {
                 for (child, rect) in children.iter_mut().zip(rects.iter()) {
-                    let sub: Vec<u32> = list.iter().copied().filter(|&i| sweeps.items[i as usize].bbox.overlaps(rect)).collect();
+                    let sub: Vec<u32> = list
+                        .iter()
+                        .copied()
+                        .filter(|&i| sweeps.items[i as usize].bbox.overlaps(rect))
+                        .collect();
                     if !sub.is_empty() {
                         child.process(sweeps, &sub, ctx, engine, frags);
                     }
@@ -270,7 +339,11 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
         IPt::new(shapes_box.max[0], shapes_box.max[1]),
         IPt::new(shapes_box.min[0], shapes_box.max[1]),
     ];
-    if (0..n).any(|i| corners.iter().all(|&c| orient(poly[i], poly[(i + 1) % n], c) < 0)) {
+    if (0..n).any(|i| {
+        corners
+            .iter()
+            .all(|&c| orient(poly[i], poly[(i + 1) % n], c) < 0)
+    }) {
         return false;
     }
     for s in shapes {
@@ -278,7 +351,10 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
             let m = ring.len();
             for k in 0..m {
                 let (a, b) = (ring[k], ring[(k + 1) % m]);
-                let eb = IBox { min: [a.x.min(b.x), a.y.min(b.y)], max: [a.x.max(b.x), a.y.max(b.y)] };
+                let eb = IBox {
+                    min: [a.x.min(b.x), a.y.min(b.y)],
+                    max: [a.x.max(b.x), a.y.max(b.y)],
+                };
                 if !eb.overlaps(&pb) {
                     continue;
                 }
@@ -301,18 +377,29 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
 }
 
 fn orient(a: IPt, b: IPt, c: IPt) -> i64 {
-    let v = i64::from(b.x - a.x) * i64::from(c.y - a.y) - i64::from(b.y - a.y) * i64::from(c.x - a.x);
+    let v =
+        i64::from(b.x - a.x) * i64::from(c.y - a.y) - i64::from(b.y - a.y) * i64::from(c.x - a.x);
     v.signum()
 }
 
 /// Closed segments [a, b] and [c, d] share a point.
 fn segments_meet(a: IPt, b: IPt, c: IPt, d: IPt) -> bool {
-    let (o1, o2, o3, o4) = (orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b));
+    let (o1, o2, o3, o4) = (
+        orient(a, b, c),
+        orient(a, b, d),
+        orient(c, d, a),
+        orient(c, d, b),
+    );
     if o1 * o2 < 0 && o3 * o4 < 0 {
         return true;
     }
-    let on = |p: IPt, q: IPt, r: IPt| r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y);
-    (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) || (o4 == 0 && on(c, d, b))
+    let on = |p: IPt, q: IPt, r: IPt| {
+        r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
+    };
+    (o1 == 0 && on(a, b, c))
+        || (o2 == 0 && on(a, b, d))
+        || (o3 == 0 && on(c, d, a))
+        || (o4 == 0 && on(c, d, b))
 }
 
 fn int_point_in_ring(p: IPt, ring: &[IPt]) -> bool {
@@ -336,7 +423,10 @@ fn int_point_in_ring(p: IPt, ring: &[IPt]) -> bool {
 fn nearest(grid: &Grid, shapes: &IShapes, p: P) -> (f64, P) {
     let mut best = (f64::INFINITY, p);
     for s in shapes {
-        let rings: Vec<Vec<P>> = s.iter().map(|r| r.iter().map(|&q| grid.to_float(q)).collect()).collect();
+        let rings: Vec<Vec<P>> = s
+            .iter()
+            .map(|r| r.iter().map(|&q| grid.to_float(q)).collect())
+            .collect();
         if let Some((outer, holes)) = rings.split_first() {
             if point_in_ring(p, outer) && !holes.iter().any(|h| point_in_ring(p, h)) {
                 return (0.0, p);
@@ -365,18 +455,40 @@ pub fn simulate(
     opts: &SimOptions,
     progress: &mut dyn FnMut(usize),
 ) -> Simulation {
-    let tol = if opts.chord_tol.is_finite() && opts.chord_tol > 0.0 { opts.chord_tol } else { 0.001 };
+    let tol = if opts.chord_tol.is_finite() && opts.chord_tol > 0.0 {
+        opts.chord_tol
+    } else {
+        0.001
+    };
     let mut warnings = Vec::new();
-    let shapes: Vec<Shape> =
-        blank.shapes.iter().filter(|s| s.outer.iter().flat_map(|p| p.iter()).all(|v| v.is_finite() && v.abs() < 1e9)).cloned().collect();
+    let shapes: Vec<Shape> = blank
+        .shapes
+        .iter()
+        .filter(|s| {
+            s.outer
+                .iter()
+                .flat_map(|p| p.iter())
+                .all(|v| v.is_finite() && v.abs() < 1e9)
+        })
+        .cloned()
+        .collect();
     let bb = Rect::of(shapes.iter().flat_map(|s| s.outer.iter()));
     if shapes.len() != blank.shapes.len() {
-        warnings.push((0, "blank shapes with non-finite coordinates were ignored".to_string()));
+        warnings.push((
+            0,
+            "blank shapes with non-finite coordinates were ignored".to_string(),
+        ));
     }
     if bb.is_empty() || area(&shapes) <= 0.0 {
         warnings.push((0, "the blank is empty: nothing to cut".to_string()));
         progress(segments.len());
-        return Simulation { final_shapes: Vec::new(), crashes: Vec::new(), removed_area: 0.0, removed_volume: 0.0, warnings };
+        return Simulation {
+            final_shapes: Vec::new(),
+            crashes: Vec::new(),
+            removed_area: 0.0,
+            removed_volume: 0.0,
+            warnings,
+        };
     }
 
     // Sweeps are clipped to the blank's box plus a margin: outside it there is no stock
@@ -389,19 +501,39 @@ pub fn simulate(
 
     let (x0, x1) = (grid.to_int(clip.min).x, grid.to_int(clip.max).x);
     let (y0, y1) = (grid.to_int(clip.min).y, grid.to_int(clip.max).y);
-    let n_strips = (((clip.max[0] - clip.min[0]) / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
-    let bounds: Vec<i32> =
-        (0..=n_strips).map(|k| (i64::from(x0) + (i64::from(x1) - i64::from(x0)) * k as i64 / n_strips as i64) as i32).collect();
+    let n_strips =
+        (((clip.max[0] - clip.min[0]) / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
+    let bounds: Vec<i32> = (0..=n_strips)
+        .map(|k| {
+            (i64::from(x0) + (i64::from(x1) - i64::from(x0)) * k as i64 / n_strips as i64) as i32
+        })
+        .collect();
     let strips: Vec<Mutex<Node>> = (0..n_strips)
         .map(|k| {
             let (a, b) = (bounds[k], bounds[k + 1]);
-            let rect = [IPt::new(a, y0), IPt::new(b, y0), IPt::new(b, y1), IPt::new(a, y1)];
+            let rect = [
+                IPt::new(a, y0),
+                IPt::new(b, y0),
+                IPt::new(b, y1),
+                IPt::new(a, y1),
+            ];
             let part = engine.intersection(&stock, [&rect[..]]);
-            Mutex::new(Node::Leaf(Tile::new(IBox { min: [a, y0], max: [b, y1] }, part)))
+            Mutex::new(Node::Leaf(Tile::new(
+                IBox {
+                    min: [a, y0],
+                    max: [b, y1],
+                },
+                part,
+            )))
         })
         .collect();
-    let ctx = Ctx { grid: &grid, min_tile: (MIN_TILE / grid.step()) as i64 };
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(n_strips);
+    let ctx = Ctx {
+        grid: &grid,
+        min_tile: (MIN_TILE / grid.step()) as i64,
+    };
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(n_strips);
     let mut builder = SweepBuilder::new(&grid, clip, tools, tol);
     let mut fragments: Vec<Fragment> = Vec::new();
     let mut done = 0;
@@ -417,8 +549,12 @@ pub fn simulate(
         let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n_strips];
         for (i, it) in sweeps.items.iter().enumerate() {
             // strips whose Z range the sweep's box touches
-            let lo = bounds.partition_point(|&b| b <= it.bbox.min[0]).saturating_sub(1);
-            let hi = bounds.partition_point(|&b| b < it.bbox.max[0]).min(n_strips);
+            let lo = bounds
+                .partition_point(|&b| b <= it.bbox.min[0])
+                .saturating_sub(1);
+            let hi = bounds
+                .partition_point(|&b| b < it.bbox.max[0])
+                .min(n_strips);
             for list in &mut lists[lo..hi.max(lo + 1).min(n_strips)] {
                 list.push(i as u32);
             }
@@ -445,7 +581,9 @@ pub fn simulate(
             work(&mut engine)
         } else {
             std::thread::scope(|s| {
-                let handles: Vec<_> = (1..threads).map(|_| s.spawn(|| work(&mut Engine::new()))).collect();
+                let handles: Vec<_> = (1..threads)
+                    .map(|_| s.spawn(|| work(&mut Engine::new())))
+                    .collect();
                 let mut all = work(&mut engine);
                 for h in handles {
                     // a worker that panicked lost its fragments; the strips stay consistent
@@ -463,7 +601,9 @@ pub fn simulate(
     }
     let mut parts: Vec<IShapes> = Vec::new();
     for m in strips {
-        m.into_inner().unwrap_or_else(|e| e.into_inner()).collect(&mut parts);
+        m.into_inner()
+            .unwrap_or_else(|e| e.into_inner())
+            .collect(&mut parts);
     }
     let final_int = engine.union(&parts);
     let final_shapes = grid.shapes_to_float(&final_int);
@@ -472,7 +612,13 @@ pub fn simulate(
     warnings.sort_by_key(|w| w.0);
     let removed_area = area(&shapes) - area(&final_shapes);
     let removed_volume = revolved_volume(&shapes) - revolved_volume(&final_shapes);
-    Simulation { final_shapes, crashes, removed_area, removed_volume, warnings }
+    Simulation {
+        final_shapes,
+        crashes,
+        removed_area,
+        removed_volume,
+        warnings,
+    }
 }
 
 /// Adds up the overlaps each strip saw for a rapid; the contact point is the one nearest
@@ -493,7 +639,11 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
             j += 1;
         }
         if total > frags[i].eps {
-            out.push(Crash { segment: seg, at: best.at, area: total });
+            out.push(Crash {
+                segment: seg,
+                at: best.at,
+                area: total,
+            });
         }
         i = j;
     }
@@ -521,7 +671,10 @@ mod tests {
     }
 
     fn rect(z0: f64, z1: f64, r0: f64, r1: f64) -> Shape {
-        Shape { outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]], holes: vec![] }
+        Shape {
+            outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]],
+            holes: vec![],
+        }
     }
 
     fn run(blank: &Blank, tools: &ToolTable, segs: &[Segment]) -> Simulation {
@@ -531,20 +684,38 @@ mod tests {
     fn v35() -> ToolTable {
         ToolTable::from_tools(vec![(
             1,
-            Tool::Turning { insert: Insert::V, nose_radius: 0.4, tip: 3, entering_angle: 93.0, edge: 11.0 },
+            Tool::Turning {
+                insert: Insert::V,
+                nose_radius: 0.4,
+                tip: 3,
+                entering_angle: 93.0,
+                edge: 11.0,
+            },
         )])
     }
 
     #[test]
     fn straight_turning_pass_removes_exactly_the_rectangle() {
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
-        let sim = run(&blank, &v35(), &[seg(Motion::Feed, [5.0, 20.0], [-115.0, 20.0])]);
+        let sim = run(
+            &blank,
+            &v35(),
+            &[seg(Motion::Feed, [5.0, 20.0], [-115.0, 20.0])],
+        );
         let expected = [rect(-110.0, 0.0, 0.0, 20.0)];
         let d = symmetric_difference_area(&sim.final_shapes, &expected);
         assert!(d < 1e-6 * 2200.0, "symmetric difference {d}");
-        assert!((sim.removed_area - 110.0 * 5.0).abs() < 1e-6, "{}", sim.removed_area);
+        assert!(
+            (sim.removed_area - 110.0 * 5.0).abs() < 1e-6,
+            "{}",
+            sim.removed_area
+        );
         let pi = std::f64::consts::PI;
-        assert!((sim.removed_volume - pi * (625.0 - 400.0) * 110.0).abs() < 1e-3, "{}", sim.removed_volume);
+        assert!(
+            (sim.removed_volume - pi * (625.0 - 400.0) * 110.0).abs() < 1e-3,
+            "{}",
+            sim.removed_volume
+        );
         assert!(sim.crashes.is_empty());
     }
 
@@ -552,18 +723,34 @@ mod tests {
     fn arc_with_a_sharp_tool_gives_the_arc() {
         let tools = ToolTable::from_tools(vec![(
             1,
-            Tool::Turning { insert: Insert::V, nose_radius: 0.0, tip: 3, entering_angle: 93.0, edge: 11.0 },
+            Tool::Turning {
+                insert: Insert::V,
+                nose_radius: 0.0,
+                tip: 3,
+                entering_angle: 93.0,
+                edge: 11.0,
+            },
         )]);
         let blank = Blank::bar(40.0, 50.0, 0.0, None).unwrap();
         let mut arc = seg(Motion::Feed, [0.0, 10.0], [-10.0, 20.0]);
-        arc.arc = Some(Arc { center: Pt::new(-10.0, 10.0), ccw: true });
-        let segs = [seg(Motion::Feed, [5.0, 10.0], [0.0, 10.0]), arc, seg(Motion::Feed, [-10.0, 20.0], [-12.0, 20.0])];
+        arc.arc = Some(Arc {
+            center: Pt::new(-10.0, 10.0),
+            ccw: true,
+        });
+        let segs = [
+            seg(Motion::Feed, [5.0, 10.0], [0.0, 10.0]),
+            arc,
+            seg(Motion::Feed, [-10.0, 20.0], [-12.0, 20.0]),
+        ];
         let sim = run(&blank, &tools, &segs);
         // the intended dome, chorded 100 times finer than the simulation
         let mut outer = vec![[-50.0, 0.0], [0.0, 0.0]];
         outer.extend(arc.polyline(1e-5).iter().map(|p| [p.z, p.r]));
         outer.push([-50.0, 20.0]);
-        let expected = [Shape { outer, holes: vec![] }];
+        let expected = [Shape {
+            outer,
+            holes: vec![],
+        }];
         let h = hausdorff(&sim.final_shapes, &expected);
         assert!(h < 0.002, "hausdorff {h}");
         // and it is a real cut, not the blank
@@ -582,20 +769,36 @@ mod tests {
             seg(Motion::Rapid, [-20.0, 20.0], [-20.0, 40.0]),
         ];
         let sim = run(&blank, &v35(), &segs);
-        assert_eq!(sim.crashes.iter().map(|c| c.segment).collect::<Vec<_>>(), vec![1, 3], "{:?}", sim.crashes);
+        assert_eq!(
+            sim.crashes.iter().map(|c| c.segment).collect::<Vec<_>>(),
+            vec![1, 3],
+            "{:?}",
+            sim.crashes
+        );
         let c = &sim.crashes[0];
         assert_eq!(c.segment, 1);
         // it ploughed through r 20..25 over z -20..0 (less the sliver under the 87° edge)
         assert!(c.area > 99.0 && c.area <= 100.0, "{}", c.area);
         let total: f64 = sim.crashes.iter().map(|c| c.area).sum();
-        assert!((total - sim.removed_area).abs() < 1e-6, "{total} vs {}", sim.removed_area);
-        assert!((c.at[0] - 0.0).abs() < 1e-6 && (c.at[1] - 20.0).abs() < 1e-6, "{:?}", c.at);
+        assert!(
+            (total - sim.removed_area).abs() < 1e-6,
+            "{total} vs {}",
+            sim.removed_area
+        );
+        assert!(
+            (c.at[0] - 0.0).abs() < 1e-6 && (c.at[1] - 20.0).abs() < 1e-6,
+            "{:?}",
+            c.at
+        );
     }
 
     #[test]
     fn rapid_in_air_is_not_a_crash() {
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
-        let segs = [seg(Motion::Rapid, [10.0, 30.0], [-20.0, 30.0]), seg(Motion::Rapid, [-20.0, 30.0], [-20.0, 25.0])];
+        let segs = [
+            seg(Motion::Rapid, [10.0, 30.0], [-20.0, 30.0]),
+            seg(Motion::Rapid, [-20.0, 30.0], [-20.0, 25.0]),
+        ];
         let sim = run(&blank, &v35(), &segs);
         assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
         assert!(sim.removed_area.abs() < 1e-9);
@@ -605,7 +808,11 @@ mod tests {
     fn rapid_through_material_cut_earlier_in_the_batch_is_not_a_crash() {
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
         let back = seg(Motion::Rapid, [-20.0, 22.0], [10.0, 22.0]);
-        let segs = [seg(Motion::Feed, [10.0, 20.0], [-20.0, 20.0]), seg(Motion::Feed, [-20.0, 20.0], [-20.0, 22.0]), back];
+        let segs = [
+            seg(Motion::Feed, [10.0, 20.0], [-20.0, 20.0]),
+            seg(Motion::Feed, [-20.0, 20.0], [-20.0, 22.0]),
+            back,
+        ];
         let sim = run(&blank, &v35(), &segs);
         assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
         // the same rapid without the feeds before it ploughs through stock
@@ -613,15 +820,26 @@ mod tests {
         assert_eq!(sim.crashes.len(), 1);
         assert_eq!(sim.crashes[0].segment, 0);
         // and a crash many batches later still carries its own index
-        let mut many: Vec<Segment> = (0..100).map(|_| seg(Motion::Rapid, [10.0, 40.0], [10.0, 45.0])).collect();
+        let mut many: Vec<Segment> = (0..100)
+            .map(|_| seg(Motion::Rapid, [10.0, 40.0], [10.0, 45.0]))
+            .collect();
         many.push(back);
         let sim = run(&blank, &v35(), &many);
-        assert_eq!(sim.crashes.iter().map(|c| c.segment).collect::<Vec<_>>(), vec![100]);
+        assert_eq!(
+            sim.crashes.iter().map(|c| c.segment).collect::<Vec<_>>(),
+            vec![100]
+        );
     }
 
     #[test]
     fn thread_pass_stamps_one_tooth_per_lead() {
-        let tools = ToolTable::from_tools(vec![(1, Tool::Threading { angle: 60.0, tip_flat: 0.0 })]);
+        let tools = ToolTable::from_tools(vec![(
+            1,
+            Tool::Threading {
+                angle: 60.0,
+                tip_flat: 0.0,
+            },
+        )]);
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
         let mut t = seg(Motion::Thread, [5.0, 24.0], [-30.0, 24.0]);
         t.lead = 2.0;
@@ -631,32 +849,56 @@ mod tests {
         let overlap = (tooth - 0.5) * (tooth - 0.5) / tooth; // the last two teeth are 1 mm apart
         let expected = 16.0 * tooth - overlap;
         // grid rounding (~0.1 nm) along 37 mm of tooth flanks
-        assert!((sim.removed_area - expected).abs() < 1e-5, "{} vs {expected}", sim.removed_area);
+        assert!(
+            (sim.removed_area - expected).abs() < 1e-5,
+            "{} vs {expected}",
+            sim.removed_area
+        );
     }
 
     #[test]
     fn bad_input_is_skipped_with_a_warning_never_a_panic() {
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
         let mut arc = seg(Motion::Feed, [1e300, 0.0], [0.0, 1e300]);
-        arc.arc = Some(Arc { center: Pt::new(f64::NAN, 0.0), ccw: false });
+        arc.arc = Some(Arc {
+            center: Pt::new(f64::NAN, 0.0),
+            ccw: false,
+        });
         let mut thread = seg(Motion::Thread, [0.0, 24.0], [-1e6, 24.0]);
         thread.lead = 1e-9;
         let segs = [
             seg(Motion::Feed, [f64::NAN, 1.0], [0.0, 0.0]),
-            seg(Motion::Rapid, [f64::INFINITY, 1.0], [0.0, f64::NEG_INFINITY]),
+            seg(
+                Motion::Rapid,
+                [f64::INFINITY, 1.0],
+                [0.0, f64::NEG_INFINITY],
+            ),
             arc,
             seg(Motion::Feed, [1e11, 20.0], [-1e11, 20.0]),
             seg(Motion::Feed, [3.0, 3.0], [3.0, 3.0]),
             thread,
         ];
         let mut calls = Vec::new();
-        let sim = simulate(&blank, &ToolTable::empty(), &segs, &SimOptions { chord_tol: -1.0 }, &mut |n| calls.push(n));
+        let sim = simulate(
+            &blank,
+            &ToolTable::empty(),
+            &segs,
+            &SimOptions { chord_tol: -1.0 },
+            &mut |n| calls.push(n),
+        );
         assert!(sim.warnings.iter().any(|(i, _)| *i == 0));
         assert!(sim.warnings.iter().any(|(i, _)| *i == 1));
         assert!(sim.warnings.iter().any(|(i, _)| *i == 2));
-        assert!(sim.warnings.iter().any(|(i, w)| *i == 5 && w.contains("swept continuously")));
+        assert!(sim
+            .warnings
+            .iter()
+            .any(|(i, w)| *i == 5 && w.contains("swept continuously")));
         // the huge pass still turned the whole bar down to r 20
-        assert!((area(&sim.final_shapes) - 110.0 * 20.0).abs() < 1e-6, "{}", area(&sim.final_shapes));
+        assert!(
+            (area(&sim.final_shapes) - 110.0 * 20.0).abs() < 1e-6,
+            "{}",
+            area(&sim.final_shapes)
+        );
         assert_eq!(calls.last(), Some(&segs.len()));
     }
 }

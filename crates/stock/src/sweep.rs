@@ -28,7 +28,10 @@ pub(crate) struct IBox {
 
 impl IBox {
     /// Contains nothing.
-    pub(crate) const EMPTY: Self = Self { min: [i32::MAX; 2], max: [i32::MIN; 2] };
+    pub(crate) const EMPTY: Self = Self {
+        min: [i32::MAX; 2],
+        max: [i32::MIN; 2],
+    };
 
     /// Grows the box to contain `p`.
     pub(crate) fn add(&mut self, p: IPt) {
@@ -38,7 +41,10 @@ impl IBox {
 
     /// True when the boxes share at least a point.
     pub(crate) fn overlaps(&self, o: &Self) -> bool {
-        self.min[0] <= o.max[0] && o.min[0] <= self.max[0] && self.min[1] <= o.max[1] && o.min[1] <= self.max[1]
+        self.min[0] <= o.max[0]
+            && o.min[0] <= self.max[0]
+            && self.min[1] <= o.max[1]
+            && o.min[1] <= self.max[1]
     }
 }
 
@@ -71,7 +77,9 @@ pub(crate) struct Sweeps {
 impl Sweeps {
     /// The polygons of one item.
     pub(crate) fn polys_of(&self, it: &Item) -> impl Iterator<Item = &[IPt]> + Clone {
-        self.polys[it.polys.start as usize..it.polys.end as usize].iter().map(|r| &self.pts[r.start as usize..r.end as usize])
+        self.polys[it.polys.start as usize..it.polys.end as usize]
+            .iter()
+            .map(|r| &self.pts[r.start as usize..r.end as usize])
     }
 }
 
@@ -94,7 +102,8 @@ impl Run {
         let u = [d[0] / len, d[1] / len];
         let off = |x: P| u[0] * (x[1] - self.a[1]) - u[1] * (x[0] - self.a[0]);
         let along = |x: P| u[0] * (x[0] - self.a[0]) + u[1] * (x[1] - self.a[1]);
-        (off(p).abs() <= COLLINEAR_TOL && off(q).abs() <= COLLINEAR_TOL).then(|| (along(p), along(q), len))
+        (off(p).abs() <= COLLINEAR_TOL && off(q).abs() <= COLLINEAR_TOL)
+            .then(|| (along(p), along(q), len))
     }
 
     /// Extends the run by the feed p -> q when it is collinear and overlaps.
@@ -108,7 +117,9 @@ impl Run {
             }
             return false;
         }
-        let Some((tp, tq, len)) = self.params(p, q) else { return false };
+        let Some((tp, tq, len)) = self.params(p, q) else {
+            return false;
+        };
         let (lo, hi) = (tp.min(tq), tp.max(tq));
         if lo > len + COLLINEAR_TOL || hi < -COLLINEAR_TOL {
             return false;
@@ -124,7 +135,9 @@ impl Run {
     /// True when the move p -> q lies within the run (its sweep is inside the run's sweep).
     fn contains(&self, p: P, q: P) -> bool {
         match self.params(p, q) {
-            Some((tp, tq, len)) => tp.min(tq) >= -COLLINEAR_TOL && tp.max(tq) <= len + COLLINEAR_TOL,
+            Some((tp, tq, len)) => {
+                tp.min(tq) >= -COLLINEAR_TOL && tp.max(tq) <= len + COLLINEAR_TOL
+            }
             None => {
                 let near = |x: P| (x[0] - self.a[0]).hypot(x[1] - self.a[1]) <= COLLINEAR_TOL;
                 near(self.b) && near(p) && near(q)
@@ -180,10 +193,20 @@ impl<'a> SweepBuilder<'a> {
     /// Adds segment number `idx`.
     pub(crate) fn push(&mut self, idx: usize, seg: &Segment) {
         let finite = |v: f64| v.is_finite() && v.abs() < 1e12;
-        let arc_ok = seg.arc.is_none_or(|a| finite(a.center.z) && finite(a.center.r));
-        if !(finite(seg.from.z) && finite(seg.from.r) && finite(seg.to.z) && finite(seg.to.r) && arc_ok) {
+        let arc_ok = seg
+            .arc
+            .is_none_or(|a| finite(a.center.z) && finite(a.center.r));
+        if !(finite(seg.from.z)
+            && finite(seg.from.r)
+            && finite(seg.to.z)
+            && finite(seg.to.r)
+            && arc_ok)
+        {
             self.flush_run();
-            self.warnings.push((idx, "a move with a non-finite or absurdly large coordinate was skipped".into()));
+            self.warnings.push((
+                idx,
+                "a move with a non-finite or absurdly large coordinate was skipped".into(),
+            ));
             return;
         }
         let (p, q) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
@@ -204,7 +227,12 @@ impl<'a> SweepBuilder<'a> {
             self.flush_run();
             if seg.motion == Motion::Feed {
                 self.outline(seg.tool, idx);
-                self.run = Some(Run { tool: seg.tool, a: p, b: q, last: idx });
+                self.run = Some(Run {
+                    tool: seg.tool,
+                    a: p,
+                    b: q,
+                    last: idx,
+                });
                 return;
             }
         } else {
@@ -218,7 +246,11 @@ impl<'a> SweepBuilder<'a> {
                 return;
             }
         }
-        let path: Vec<P> = seg.polyline(self.tol).iter().map(|pt| [pt.z, pt.r]).collect();
+        let path: Vec<P> = seg
+            .polyline(self.tol)
+            .iter()
+            .map(|pt| [pt.z, pt.r])
+            .collect();
         self.emit_path(idx, rapid, &outline, &path);
     }
 
@@ -227,23 +259,36 @@ impl<'a> SweepBuilder<'a> {
     fn thread_stamps(&mut self, idx: usize, seg: &Segment) -> Option<Vec<P>> {
         let (p, q) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
         if seg.arc.is_some() {
-            self.warnings.push((idx, "circular thread move: swept continuously".into()));
+            self.warnings
+                .push((idx, "circular thread move: swept continuously".into()));
             return None;
         }
         // the lead is measured along the dominant axis (Z for straight and taper threads)
         let len = (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
         if !(seg.lead.is_finite() && seg.lead > 0.0) {
-            self.warnings.push((idx, format!("thread move with lead {}: swept continuously", seg.lead)));
+            self.warnings.push((
+                idx,
+                format!("thread move with lead {}: swept continuously", seg.lead),
+            ));
             return None;
         }
         let n = (len / seg.lead).floor();
         if n > MAX_THREAD_STAMPS as f64 {
-            self.warnings.push((idx, format!("thread move of {n} leads (more than {MAX_THREAD_STAMPS}): swept continuously")));
+            self.warnings.push((
+                idx,
+                format!(
+                    "thread move of {n} leads (more than {MAX_THREAD_STAMPS}): swept continuously"
+                ),
+            ));
             return None;
         }
         let mut pts: Vec<P> = (0..=n as usize)
             .map(|k| {
-                let t = if len > 0.0 { k as f64 * seg.lead / len } else { 0.0 };
+                let t = if len > 0.0 {
+                    k as f64 * seg.lead / len
+                } else {
+                    0.0
+                };
                 [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]
             })
             .collect();
@@ -266,7 +311,8 @@ impl<'a> SweepBuilder<'a> {
             let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
             for part in &outline.parts {
                 self.scratch.clear();
-                self.scratch.extend(part.iter().map(|v| [v[0] + w[0][0], v[1] + w[0][1]]));
+                self.scratch
+                    .extend(part.iter().map(|v| [v[0] + w[0][0], v[1] + w[0][1]]));
                 let poly = sweep_convex(&self.scratch, d);
                 self.add_poly(&poly);
             }
@@ -336,7 +382,14 @@ impl<'a> SweepBuilder<'a> {
         perimeter *= self.grid.step();
         // rounding to the grid can open slivers of at most a grid step along any edge
         let eps = crate::CRASH_MIN_AREA.max(2.0 * self.grid.step() * perimeter);
-        self.out.items.push(Item { seg: idx, rapid, polys: first..last, bbox, start, eps });
+        self.out.items.push(Item {
+            seg: idx,
+            rapid,
+            polys: first..last,
+            bbox,
+            start,
+            eps,
+        });
     }
 
     /// Takes the sweeps built so far (the current run, if any, stays open).

@@ -172,7 +172,13 @@ pub enum Tool {
 impl Tool {
     /// The documented default when the table has no entry: a 55° insert (D), nose r 0.4,
     /// tip 3, on a 93° holder, 11 mm edge.
-    pub const DEFAULT: Self = Self::Turning { insert: Insert::D, nose_radius: 0.4, tip: 3, entering_angle: 93.0, edge: 11.0 };
+    pub const DEFAULT: Self = Self::Turning {
+        insert: Insert::D,
+        nose_radius: 0.4,
+        tip: 3,
+        entering_angle: 93.0,
+        edge: 11.0,
+    };
 
     /// The default G74/G75 blade: 3 mm wide, referenced at its left corner, OD, 20 mm reach.
     pub const DEFAULT_BLADE: Self = Self::Grooving {
@@ -186,13 +192,38 @@ impl Tool {
     /// The outline relative to the reference point (see [`Outline`]).
     pub fn outline(&self) -> Outline {
         match *self {
-            Self::Turning { insert, nose_radius, tip, entering_angle, edge } => {
-                outline::turning(insert.body(), insert.included_angle(), nose_radius, tip, entering_angle, edge)
-            }
-            Self::Grooving { width, width_dir, shank_dir, reach, corner_radius } => {
-                outline::grooving(width, width_dir.unit(), shank_dir.unit(), reach, corner_radius)
-            }
-            Self::Drill { diameter, point_angle, reach } => outline::drill(diameter, point_angle, reach),
+            Self::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                edge,
+            } => outline::turning(
+                insert.body(),
+                insert.included_angle(),
+                nose_radius,
+                tip,
+                entering_angle,
+                edge,
+            ),
+            Self::Grooving {
+                width,
+                width_dir,
+                shank_dir,
+                reach,
+                corner_radius,
+            } => outline::grooving(
+                width,
+                width_dir.unit(),
+                shank_dir.unit(),
+                reach,
+                corner_radius,
+            ),
+            Self::Drill {
+                diameter,
+                point_angle,
+                reach,
+            } => outline::drill(diameter, point_angle, reach),
             Self::Threading { angle, tip_flat } => outline::threading(angle, tip_flat),
         }
     }
@@ -201,27 +232,60 @@ impl Tool {
     pub fn describe(&self) -> String {
         use crate::blank::fmt_num as n;
         match *self {
-            Self::Turning { insert: Insert::R, nose_radius, tip, .. } => {
+            Self::Turning {
+                insert: Insert::R,
+                nose_radius,
+                tip,
+                ..
+            } => {
                 format!("turning R round, r{}, tip {tip}", n(nose_radius))
             }
-            Self::Turning { insert, nose_radius, tip, entering_angle, .. } => format!(
+            Self::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                ..
+            } => format!(
                 "turning {} {}°, r{}, tip {tip}, κr {}°",
                 insert.letter(),
                 n(insert.included_angle()),
                 n(nose_radius),
                 n(entering_angle)
             ),
-            Self::Grooving { width, width_dir, shank_dir, reach, corner_radius } => format!(
+            Self::Grooving {
+                width,
+                width_dir,
+                shank_dir,
+                reach,
+                corner_radius,
+            } => format!(
                 "grooving {} mm, width {}, shank {}, reach {}{}",
                 n(width),
                 width_dir.text(),
                 shank_dir.text(),
                 n(reach),
-                if corner_radius > 0.0 { format!(", corners r{}", n(corner_radius)) } else { String::new() }
+                if corner_radius > 0.0 {
+                    format!(", corners r{}", n(corner_radius))
+                } else {
+                    String::new()
+                }
             ),
-            Self::Drill { diameter, point_angle, .. } => format!("drill Ø{}, {}° point", n(diameter), n(point_angle)),
+            Self::Drill {
+                diameter,
+                point_angle,
+                ..
+            } => format!("drill Ø{}, {}° point", n(diameter), n(point_angle)),
             Self::Threading { angle, tip_flat } => {
-                format!("threading {}°{}", n(angle), if tip_flat > 0.0 { format!(", flat {}", n(tip_flat)) } else { String::new() })
+                format!(
+                    "threading {}°{}",
+                    n(angle),
+                    if tip_flat > 0.0 {
+                        format!(", flat {}", n(tip_flat))
+                    } else {
+                        String::new()
+                    }
+                )
             }
         }
     }
@@ -276,14 +340,20 @@ impl ToolTable {
 
     /// Parses the `[[tool]]` TOML format of the simulation spec.
     pub fn from_toml(text: &str) -> Result<Self, StockError> {
-        let raw: RawTable = toml::from_str(text).map_err(|e| from_toml("tool table", text, &e, HELP))?;
+        let raw: RawTable =
+            toml::from_str(text).map_err(|e| from_toml("tool table", text, &e, HELP))?;
         let mut tools: Vec<(u32, Tool)> = Vec::new();
         for entry in &raw.tool {
             let (line, _) = line_col(text, entry.span().start);
             let raw = entry.get_ref();
             let tool = parse_tool(raw, line)?;
             if tools.iter().any(|(t, _)| *t == raw.t) {
-                return Err(StockError::Tool { t: raw.t, field: "t", message: "appears twice in the table".into(), line });
+                return Err(StockError::Tool {
+                    t: raw.t,
+                    field: "t",
+                    message: "appears twice in the table".into(),
+                    line,
+                });
             }
             tools.push((raw.t, tool));
         }
@@ -295,7 +365,10 @@ impl ToolTable {
         if t == 0 {
             return self.tools.first().map(|(_, tool)| tool);
         }
-        self.tools.iter().find(|(n, _)| *n == t).map(|(_, tool)| tool)
+        self.tools
+            .iter()
+            .find(|(n, _)| *n == t)
+            .map(|(_, tool)| tool)
     }
 
     /// The T numbers in the table, in file order.
@@ -314,7 +387,10 @@ impl ToolTable {
                 } else {
                     format!("T{t:02} has no entry in the tool table: using the default")
                 };
-                (Tool::DEFAULT.outline(), Some(format!("{why} ({})", Tool::DEFAULT.describe())))
+                (
+                    Tool::DEFAULT.outline(),
+                    Some(format!("{why} ({})", Tool::DEFAULT.describe())),
+                )
             }
         }
     }
@@ -330,9 +406,19 @@ impl ToolTable {
 
 fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
     let t = raw.t;
-    let err = |field: &'static str, message: String| StockError::Tool { t, field, message, line };
+    let err = |field: &'static str, message: String| StockError::Tool {
+        t,
+        field,
+        message,
+        line,
+    };
     // a positive (or non-negative) finite length or angle, with its default
-    let num = |field: &'static str, v: Option<f64>, default: Option<f64>, min: f64, max: f64, zero_ok: bool| {
+    let num = |field: &'static str,
+               v: Option<f64>,
+               default: Option<f64>,
+               min: f64,
+               max: f64,
+               zero_ok: bool| {
         let v = match (v, default) {
             (Some(v), _) => v,
             (None, Some(d)) => return Ok(d),
@@ -342,8 +428,15 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
         if ok {
             Ok(v)
         } else {
-            let bound = if zero_ok { format!("at least {min}") } else { format!("greater than {min}") };
-            Err(err(field, format!("= {v} must be {bound} and at most {max}")))
+            let bound = if zero_ok {
+                format!("at least {min}")
+            } else {
+                format!("greater than {min}")
+            };
+            Err(err(
+                field,
+                format!("= {v} must be {bound} and at most {max}"),
+            ))
         }
     };
     let fields: [(&'static str, bool); 14] = [
@@ -368,7 +461,10 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
         "drill" => &["diameter", "point_angle", "reach"],
         "threading" => &["angle", "tip_flat"],
         other => {
-            return Err(err("kind", format!("= \"{other}\" is not one of turning, grooving, drill, threading")));
+            return Err(err(
+                "kind",
+                format!("= \"{other}\" is not one of turning, grooving, drill, threading"),
+            ));
         }
     };
     if let Some((field, _)) = fields.iter().find(|(f, set)| *set && !allowed.contains(f)) {
@@ -378,46 +474,114 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
         "turning" => {
             let insert = match &raw.insert {
                 None => Insert::D,
-                Some(s) => Insert::from_letter(s)
-                    .ok_or_else(|| err("insert", format!("= \"{s}\" is not an ISO shape letter (C, D, T, V, W, S, R)")))?,
+                Some(s) => Insert::from_letter(s).ok_or_else(|| {
+                    err(
+                        "insert",
+                        format!("= \"{s}\" is not an ISO shape letter (C, D, T, V, W, S, R)"),
+                    )
+                })?,
             };
             let tip = match raw.tip {
                 None => 3,
                 Some(v @ 0..=9) => v as u8,
-                Some(v) => return Err(err("tip", format!("= {v} is not an imaginary tip number (0-9)"))),
+                Some(v) => {
+                    return Err(err(
+                        "tip",
+                        format!("= {v} is not an imaginary tip number (0-9)"),
+                    ))
+                }
             };
-            let nose_radius = num("nose_radius", raw.nose_radius, Some(0.4), 0.0, 100.0, insert != Insert::R)?;
-            let entering_angle = num("entering_angle", raw.entering_angle, Some(93.0), 0.0, 180.0, false)?;
+            let nose_radius = num(
+                "nose_radius",
+                raw.nose_radius,
+                Some(0.4),
+                0.0,
+                100.0,
+                insert != Insert::R,
+            )?;
+            let entering_angle = num(
+                "entering_angle",
+                raw.entering_angle,
+                Some(93.0),
+                0.0,
+                180.0,
+                false,
+            )?;
             let edge = num("edge", raw.edge, Some(11.0), 0.0, 1000.0, false)?;
             if insert != Insert::R && entering_angle + insert.included_angle() >= 180.0 {
                 return Err(err("entering_angle", format!("= {entering_angle}: with a {}° insert the trailing edge would point into the part", insert.included_angle())));
             }
-            Tool::Turning { insert, nose_radius, tip, entering_angle, edge }
+            Tool::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                edge,
+            }
         }
         "grooving" => {
             let dir = |field: &'static str, v: &Option<String>, d: AxisDir| match v {
                 None => Ok(d),
-                Some(s) => AxisDir::parse(s).ok_or_else(|| err(field, format!("= \"{s}\" is not one of \"+z\", \"-z\", \"+x\", \"-x\""))),
+                Some(s) => AxisDir::parse(s).ok_or_else(|| {
+                    err(
+                        field,
+                        format!("= \"{s}\" is not one of \"+z\", \"-z\", \"+x\", \"-x\""),
+                    )
+                }),
             };
             let width = num("width", raw.width, Some(3.0), 0.0, 1000.0, false)?;
             let width_dir = dir("width_dir", &raw.width_dir, AxisDir::PlusZ)?;
-            let default_shank = if width_dir.is_z() { AxisDir::PlusX } else { AxisDir::PlusZ };
+            let default_shank = if width_dir.is_z() {
+                AxisDir::PlusX
+            } else {
+                AxisDir::PlusZ
+            };
             let shank_dir = dir("shank_dir", &raw.shank_dir, default_shank)?;
             if width_dir.is_z() == shank_dir.is_z() {
-                return Err(err("shank_dir", format!("= \"{}\" must be across the width direction \"{}\"", shank_dir.text(), width_dir.text())));
+                return Err(err(
+                    "shank_dir",
+                    format!(
+                        "= \"{}\" must be across the width direction \"{}\"",
+                        shank_dir.text(),
+                        width_dir.text()
+                    ),
+                ));
             }
             let reach = num("reach", raw.reach, Some(20.0), 0.0, 10000.0, false)?;
-            let corner_radius = num("corner_radius", raw.corner_radius, Some(0.0), 0.0, width / 2.0, true)?;
-            Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius }
+            let corner_radius = num(
+                "corner_radius",
+                raw.corner_radius,
+                Some(0.0),
+                0.0,
+                width / 2.0,
+                true,
+            )?;
+            Tool::Grooving {
+                width,
+                width_dir,
+                shank_dir,
+                reach,
+                corner_radius,
+            }
         }
         "drill" => Tool::Drill {
             diameter: num("diameter", raw.diameter, None, 0.0, 10000.0, false)?,
-            point_angle: num("point_angle", raw.point_angle, Some(118.0), 0.0, 180.0, false)?,
+            point_angle: num(
+                "point_angle",
+                raw.point_angle,
+                Some(118.0),
+                0.0,
+                180.0,
+                false,
+            )?,
             reach: num("reach", raw.reach, Some(60.0), 0.0, 10000.0, false)?,
         },
         _ => {
             let angle = num("angle", raw.angle, Some(60.0), 0.0, 170.0, false)?;
-            Tool::Threading { angle, tip_flat: num("tip_flat", raw.tip_flat, Some(0.0), 0.0, 100.0, true)? }
+            Tool::Threading {
+                angle,
+                tip_flat: num("tip_flat", raw.tip_flat, Some(0.0), 0.0, 100.0, true)?,
+            }
         }
     })
 }
@@ -497,13 +661,18 @@ tip_flat = 0.0
             ("kind = \"turning\"\ninsert = \"Q\"", "insert"),
             ("kind = \"drill\"", "diameter"),
             ("kind = \"drill\"\ndiameter = 10.0\nwidth = 3.0", "width"),
-            ("kind = \"grooving\"\nwidth_dir = \"+z\"\nshank_dir = \"-z\"", "shank_dir"),
+            (
+                "kind = \"grooving\"\nwidth_dir = \"+z\"\nshank_dir = \"-z\"",
+                "shank_dir",
+            ),
             ("kind = \"laser\"", "kind"),
         ];
         for (body, field) in cases {
             let text = format!("[[tool]]\nt = 5\n{body}\n");
             match ToolTable::from_toml(&text) {
-                Err(StockError::Tool { t, field: f, line, .. }) => {
+                Err(StockError::Tool {
+                    t, field: f, line, ..
+                }) => {
                     assert_eq!((t, f, line), (5, field, 1), "{body}");
                 }
                 other => panic!("{body}: {other:?}"),
