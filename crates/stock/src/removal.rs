@@ -857,6 +857,33 @@ mod tests {
     }
 
     #[test]
+    fn grooving_hints_choose_the_blade() {
+        let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
+        let mut plunge = seg(Motion::Feed, [-10.0, 30.0], [-10.0, 20.0]);
+        plunge.hint = expander::ToolHint::Grooving;
+        let sim = run(&blank, &ToolTable::empty(), &[plunge]);
+        // the default 3 mm blade, left corner referenced: a 3 x 5 groove at z -10..-7
+        assert!(
+            (sim.removed_area - 15.0).abs() < 1e-6,
+            "{}",
+            sim.removed_area
+        );
+        assert!(sim.warnings.iter().any(|(_, w)| w.contains("3 mm")));
+        plunge.hint = expander::ToolHint::Blade {
+            width: 4.0,
+            toward_plus_z: false,
+        };
+        let sim = run(&blank, &ToolTable::empty(), &[plunge]);
+        let expected = [
+            rect(-110.0, -14.0, 0.0, 25.0),
+            rect(-14.0, -10.0, 0.0, 20.0),
+            rect(-10.0, 0.0, 0.0, 25.0),
+        ];
+        let expected = crate::boolean(&expected, &[], crate::BoolOp::Union);
+        assert!(symmetric_difference_area(&sim.final_shapes, &expected) < 1e-6);
+    }
+
+    #[test]
     fn bad_input_is_skipped_with_a_warning_never_a_panic() {
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
         let mut arc = seg(Motion::Feed, [1e300, 0.0], [0.0, 1e300]);

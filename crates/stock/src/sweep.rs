@@ -9,8 +9,8 @@
 use crate::geom::{clip_convex, sweep_convex, Rect, P};
 use crate::outline::Outline;
 use crate::overlay::{Grid, IPt};
-use crate::ToolTable;
-use expander::{Motion, Segment};
+use crate::{AxisDir, Tool, ToolTable};
+use expander::{Motion, Segment, ToolHint};
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -86,6 +86,7 @@ impl Sweeps {
 /// A run of merged collinear feeds: the segment a -> b on one line.
 struct Run {
     tool: u32,
+    hint: ToolHint,
     a: P,
     b: P,
     last: usize,
@@ -152,7 +153,7 @@ pub(crate) struct SweepBuilder<'a> {
     clip: Rect,
     tools: &'a ToolTable,
     tol: f64,
-    outlines: HashMap<u32, Outline>,
+    outlines: HashMap<(u32, u8, u64), Outline>,
     run: Option<Run>,
     scratch: Vec<P>,
     /// (first segment index, message) for skipped moves and defaulted tools.
@@ -177,16 +178,49 @@ impl<'a> SweepBuilder<'a> {
         }
     }
 
-    /// The outline of tool `t`, warning once per tool number when it is defaulted.
-    fn outline(&mut self, t: u32, idx: usize) -> Outline {
-        if let Some(o) = self.outlines.get(&t) {
+    /// The outline of tool `t` under `hint`, warning once per tool (and hint) when defaulted.
+    fn outline(&mut self, t: u32, hint: ToolHint, idx: usize) -> Outline {
+        let key = match hint {
+            ToolHint::Table => (t, 0, 0),
+            ToolHint::Grooving => (t, 1, 0),
+            ToolHint::Blade {
+                width,
+                toward_plus_z,
+            } => (t, 2 + u8::from(toward_plus_z), width.to_bits()),
+        };
+        if let Some(o) = self.outlines.get(&key) {
             return o.clone();
         }
-        let (o, warning) = self.tools.outline(t);
+        let (o, warning) = match hint {
+            ToolHint::Table => self.tools.outline(t),
+            ToolHint::Grooving => match self.tools.get(t) {
+                Some(tool) => (tool.outline(), None),
+                None => (
+                    Tool::DEFAULT_BLADE.outline(),
+                    Some(format!("T{t:02} has no entry in the tool table: the grooving cycle uses the default ({})", Tool::DEFAULT_BLADE.describe())),
+                ),
+            },
+            ToolHint::Blade { width, toward_plus_z } => {
+                // G75.1 I: the blade width is the program's; the rest from a grooving entry
+                let (shank_dir, reach, corner_radius) = match self.tools.get(t) {
+                    Some(&Tool::Grooving { shank_dir, reach, corner_radius, .. }) => (shank_dir, reach, corner_radius),
+                    _ => (AxisDir::PlusX, 20.0, 0.0),
+                };
+                if width.is_finite() && width > 0.0 && width < 1e4 {
+                    let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
+                    let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { AxisDir::PlusX };
+                    let tool = Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) };
+                    (tool.outline(), None)
+                } else {
+                    let (o, _) = self.tools.outline(t);
+                    (o, Some(format!("blade width {width} is not a positive length: T{t:02}'s outline is used")))
+                }
+            }
+        };
         if let Some(w) = warning {
             self.warnings.push((idx, w));
         }
-        self.outlines.insert(t, o.clone());
+        self.outlines.insert(key, o.clone());
         o
     }
 
@@ -212,7 +246,7 @@ impl<'a> SweepBuilder<'a> {
         let (p, q) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
         if seg.arc.is_none() && seg.motion != Motion::Thread {
             if let Some(run) = &mut self.run {
-                if run.tool == seg.tool {
+                if run.tool == seg.tool && run.hint == seg.hint {
                     match seg.motion {
                         Motion::Feed if run.try_extend(p, q) => {
                             run.last = idx;
@@ -226,9 +260,10 @@ impl<'a> SweepBuilder<'a> {
             }
             self.flush_run();
             if seg.motion == Motion::Feed {
-                self.outline(seg.tool, idx);
+                self.outline(seg.tool, seg.hint, idx);
                 self.run = Some(Run {
                     tool: seg.tool,
+                    hint: seg.hint,
                     a: p,
                     b: q,
                     last: idx,
@@ -238,7 +273,7 @@ impl<'a> SweepBuilder<'a> {
         } else {
             self.flush_run();
         }
-        let outline = self.outline(seg.tool, idx);
+        let outline = self.outline(seg.tool, seg.hint, idx);
         let rapid = seg.motion == Motion::Rapid;
         if seg.motion == Motion::Thread {
             if let Some(stamps) = self.thread_stamps(idx, seg) {
@@ -299,7 +334,7 @@ impl<'a> SweepBuilder<'a> {
     /// Ends the current merged run, emitting its sweep.
     pub(crate) fn flush_run(&mut self) {
         if let Some(run) = self.run.take() {
-            let outline = self.outline(run.tool, run.last);
+            let outline = self.outline(run.tool, run.hint, run.last);
             self.emit_path(run.last, false, &outline, &[run.a, run.b]);
         }
     }
