@@ -1,0 +1,318 @@
+//! The grooving cycles G74, G75 and G75.1: expanded moves (snapshots a reviewer can read),
+//! exact landing points, and one test per alarm rule.
+
+use expander::{expand, Increment, Machine, Motion, Options, Toolpath};
+
+fn run_with(src: &str, machine: &Machine) -> Toolpath {
+    expand(&gcode::parse(src).unwrap(), machine, &Options::default())
+}
+
+fn run(src: &str) -> Toolpath {
+    run_with(src, &Machine::default())
+}
+
+fn is_c() -> Machine {
+    Machine {
+        increment: Increment::IsC,
+        ..Machine::default()
+    }
+}
+
+fn asset(name: &str) -> String {
+    std::fs::read_to_string(format!(
+        "{}/../../assets/programs/{name}",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap()
+}
+
+/// One readable line per segment, for snapshots (as in `tests/interp.rs`).
+fn listing(tp: &Toolpath) -> String {
+    let mut s = String::new();
+    for seg in &tp.segments {
+        let kind = match (seg.motion, seg.arc) {
+            (Motion::Rapid, _) => "G00".to_string(),
+            (Motion::Feed, None) => "G01".to_string(),
+            (Motion::Feed, Some(a)) => format!(
+                "{} c(Z{:.3} X{:.3})",
+                if a.ccw { "G03" } else { "G02" },
+                a.center.z,
+                2.0 * a.center.r
+            ),
+            (Motion::Thread, _) => format!("G32 lead {}", seg.lead),
+        };
+        s += &format!(
+            "line {:>2}: {kind} Z{:.3} X{:.3} -> Z{:.3} X{:.3} T{:02} {:?}\n",
+            seg.span.line,
+            seg.from.z,
+            2.0 * seg.from.r,
+            seg.to.z,
+            2.0 * seg.to.r,
+            seg.tool,
+            seg.hint
+        );
+    }
+    for a in tp.alarms.iter().chain(&tp.warnings) {
+        s += &format!("{a}\n");
+    }
+    s
+}
+
+/// The alarm of a program that must stop: (line, code).
+fn alarm_of(tp: &Toolpath) -> (u32, &'static str) {
+    let a = tp.alarms.first().expect("an alarm");
+    (a.span.line, a.code)
+}
+
+// ---------------------------------------------------------------- G75
+
+#[test]
+fn g75_o0209_expansion() {
+    insta::assert_snapshot!(listing(&run(&asset("O0209.nc"))));
+}
+
+#[test]
+fn g74_o0210_expansion() {
+    insta::assert_snapshot!(listing(&run(&asset("O0210.nc"))));
+}
+
+/// The last plunge lands exactly on Z, the last peck exactly on X, the pecks are
+/// Δi, back e, Δi + e: the O0209 block from its start X42 Z−28.
+#[test]
+fn g75_pecks_and_last_plunge_land_on_the_end_point() {
+    let tp = run("G0 X42 Z-28\nG75 R0.3\nG75 X32 Z-31 P1500 Q2000 F0.1\n");
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let ends: Vec<(f64, f64)> = tp.segments[1..]
+        .iter()
+        .map(|s| ((s.to.z * 1e9).round() / 1e9, (2e9 * s.to.r).round() / 1e9))
+        .collect();
+    // first plunge: 1.5 deep pecks with 0.3 back, the last one stopping at X32
+    assert_eq!(
+        &ends[..8],
+        &[
+            (-28.0, 39.0),
+            (-28.0, 39.6),
+            (-28.0, 36.0),
+            (-28.0, 36.6),
+            (-28.0, 33.0),
+            (-28.0, 33.6),
+            (-28.0, 32.0),
+            (-28.0, 42.0)
+        ]
+    );
+    let plunges: Vec<f64> = ends.iter().filter(|e| e.1 == 32.0).map(|e| e.0).collect();
+    assert_eq!(plunges, [-28.0, -30.0, -31.0]);
+    assert_eq!(*ends.last().unwrap(), (-28.0, 42.0));
+    assert!(tp.segments[1..]
+        .iter()
+        .all(|s| s.hint == expander::ToolHint::Grooving));
+}
+
+/// IS-C: P and Q are 0.0001 mm.
+#[test]
+fn g75_is_c_increments() {
+    let tp = run_with("G0 X42 Z-28\nG75 X32 P15000 F0.1\n", &is_c());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let xs: Vec<f64> = tp.segments[1..].iter().map(|s| 2.0 * s.to.r).collect();
+    assert_eq!(xs, [39.0, 36.0, 33.0, 32.0, 42.0]);
+}
+
+/// Z omitted (or W0): one plunge, Q not needed; U incremental.
+#[test]
+fn g75_single_plunge_forms() {
+    for src in [
+        "G0 X42 Z-28\nG75 R0.5\nG75 X32 P2000 F0.1\n",
+        "G0 X42 Z-28\nG75 R0.5\nG75 U-10 W0 P2000 F0.1\n",
+    ] {
+        let tp = run(src);
+        assert!(tp.alarms.is_empty(), "{src}: {:?}", tp.alarms);
+        assert!(tp.segments[1..].iter().all(|s| s.to.z == -28.0), "{src}");
+        let xs: Vec<f64> = tp.segments[1..].iter().map(|s| 2.0 * s.to.r).collect();
+        assert_eq!(xs, [38.0, 39.0, 34.0, 35.0, 32.0, 42.0], "{src}");
+    }
+}
+
+/// Δd: at the bottom of every plunge after the first, a feed back toward the cut side.
+#[test]
+fn g75_escape_at_the_bottom() {
+    let tp = run("G0 X42 Z-28\nG75 X32 Z-31 P5000 Q2000 R0.5 F0.1\n");
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let ends: Vec<(f64, f64)> = tp.segments[1..]
+        .iter()
+        .map(|s| ((s.to.z * 1e9).round() / 1e9, (2e9 * s.to.r).round() / 1e9))
+        .collect();
+    assert_eq!(
+        ends,
+        [
+            (-28.0, 32.0),
+            (-28.0, 42.0),
+            (-30.0, 42.0),
+            (-30.0, 32.0),
+            (-29.5, 32.0),
+            (-29.5, 42.0),
+            (-31.0, 42.0),
+            (-31.0, 32.0),
+            (-30.5, 32.0),
+            (-30.5, 42.0),
+            (-28.0, 42.0)
+        ]
+    );
+}
+
+/// G74 peck drilling on the axis (O0210's `G74 Z-28.0 Q5 000`): the last peck at Z−28.
+#[test]
+fn g74_peck_drilling_lands_on_z() {
+    let tp = run("G0 X0 Z3\nG74 R0.3\nG74 Z-28.0 Q5 000 F0.1\n");
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let zs: Vec<f64> = tp.segments[1..]
+        .iter()
+        .map(|s| (s.to.z * 1e9).round() / 1e9)
+        .collect();
+    assert_eq!(
+        zs,
+        [
+            -2.0, -1.7, -7.0, -6.7, -12.0, -11.7, -17.0, -16.7, -22.0, -21.7, -27.0, -26.7, -28.0,
+            3.0
+        ]
+    );
+    assert!(tp.segments.iter().all(|s| s.to.r == 0.0));
+}
+
+// ---------------------------------------------------------------- alarms of seed 002 §6
+
+/// Every rule of seed 002 §6 (and the cycle's own format rules) stops at the cycle block.
+#[test]
+fn g74_g75_alarm_rules() {
+    for (src, line, code, words) in [
+        // ① X given, Δi missing / 0
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 Q2000 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "P is missing",
+        ),
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 P0 Q2000 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "P is missing",
+        ),
+        // ① Z travels, Δk missing / 0
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 P1500 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "shift Q is missing",
+        ),
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 P1500 Q0 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "shift Q is missing",
+        ),
+        // ② Δk larger than |W| or negative
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 P1500 Q4000 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "larger than the Z travel",
+        ),
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 P1500 Q-2000 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "Q is negative",
+        ),
+        // ③ Δi larger than |U/2| or negative
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 P6000 Q2000 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "larger than the X travel",
+        ),
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 P-1500 Q2000 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "P is negative",
+        ),
+        // ④ e larger than the peck
+        (
+            "G0 X42 Z-28\nG75 R2\nG75 X32 Z-31 P1500 Q2000 F0.1\n",
+            3,
+            "LS-G75-E",
+            "larger than the peck",
+        ),
+        (
+            "G0 X0 Z3\nG74 R6\nG74 Z-28 Q5000 F0.1\n",
+            3,
+            "LS-G75-E",
+            "larger than the peck Q",
+        ),
+        // G74 with the roles swapped: Δk missing for the Z pecks, Δi for the X shift
+        (
+            "G0 X0 Z3\nG74 Z-28 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "Q is missing",
+        ),
+        (
+            "G0 X20 Z1\nG74 X24 Z-5 Q2000 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "shift P is missing",
+        ),
+        (
+            "G0 X20 Z1\nG74 X24 Z-5 P3000 Q2000 F0.1\n",
+            2,
+            "LS-G75-STEP",
+            "larger than the X travel",
+        ),
+        // format: nothing to cut, negative e, negative Δd, a bare G75, a decimal point in P
+        (
+            "G0 X42 Z-28\nG75 Z-31 P1500 Q2000 F0.1\n",
+            2,
+            "LS-G75-NO-DEPTH",
+            "no X travel",
+        ),
+        ("G0 X42 Z-28\nG75 R-0.3\n", 2, "LS-G75-E", "negative"),
+        (
+            "G0 X42 Z-28\nG75 X32 Z-31 P1500 Q2000 R-1 F0.1\n",
+            2,
+            "LS-G75-ESCAPE",
+            "negative",
+        ),
+        ("G0 X42 Z-28\nG75\n", 2, "LS-G75-FORMAT", "without R(e)"),
+        (
+            "G0 X42 Z-28\nG75 X32 P1.5 F0.1\n",
+            2,
+            "LS-INCREMENT",
+            "no decimal point",
+        ),
+        // a word the format does not define
+        (
+            "G0 X42 Z-28\nG75 X32 P1500 K3 F0.1\n",
+            2,
+            "LS-WORD-UNUSED",
+            "address K",
+        ),
+    ] {
+        let tp = run(src);
+        assert_eq!(alarm_of(&tp), (line, code), "{src}: {:?}", tp.alarms);
+        let a = &tp.alarms[0];
+        assert!(a.message.contains(words), "{src}: {}", a.message);
+        assert!(!a.help.is_empty(), "{src}");
+    }
+}
+
+/// P1 Q1 over a 100 mm groove would be billions of moves: a clear alarm, at once.
+#[test]
+fn g75_huge_step_count_is_an_alarm_not_a_hang() {
+    let t = std::time::Instant::now();
+    let tp = run("G0 X202 Z0\nG75 R0\nG75 X2 Z-100 P1 Q1 F0.1\n");
+    assert_eq!(alarm_of(&tp), (3, "LS-CYCLE-TOO-LONG"));
+    assert!(tp.alarms[0].message.contains("moves"));
+    assert!(t.elapsed().as_secs() < 5);
+    let tp = run("G0 X0 Z3\nG74 X200 Z-100 P1 Q1 F0.1\n");
+    assert_eq!(alarm_of(&tp), (2, "LS-CYCLE-TOO-LONG"));
+}
