@@ -17,6 +17,7 @@ pub mod toolpath;
 mod words;
 
 pub use alarm::Diagnostic;
+pub use cycles::contour::{FinishingShape, ShapeElement};
 pub use interp::{expand, Options, Toolpath};
 pub use machine::{FeedMode, Increment, Machine, PqUnits, ProfileError, RapidPath};
 pub use toolpath::{Arc, Feed, Motion, Pt, Segment, Span, Spindle, ToolHint};

@@ -1,1 +1,427 @@
-//! The finishing shape ns..nf shared by G70, G71, G72 and G73.
+//! The finishing shape ns..nf shared by G70, G71, G72 and G73 (spec/cycles.md, seed 003).
+//!
+//! The shape is found by its sequence numbers in the O program of the cycle block, before
+//! or after it. It is read here without running it: the blocks may hold only G00–G03,
+//! G04, G96–G99 and G40–G42, no M98/M99 (GSK980TDb, seed 003); the ns block must be G00 or
+//! G01. The shape starts at the cycle's start point A and is returned as a list of line and
+//! arc [`ShapeElement`]s in the G54 frame, each with the span of the block that wrote it
+//! and the F in force inside the shape (which only G70 uses).
+//!
+//! Choices where the manuals are silent:
+//! - An N number written twice in the O program is an alarm when a cycle refers to it
+//!   (GSK: "ns~nf 不允許有相同程式段號"), even if the other copy is far away.
+//! - nf before ns, or a shape that contains the cycle block itself, is an alarm.
+//! - M codes other than M98/M99 inside the shape are ignored by the cycles (GSK forbids
+//!   only the subprogram calls); G04 inside the shape is ignored (no dwell time is added).
+//! - S, T, G96–G99 inside the shape: roughing ignores them (seed 003); G70 cannot switch
+//!   them yet (the cycle output carries only the feed), so G70 warns that they were not
+//!   applied. G41/G42 are read and ignored with a warning: compensation is not
+//!   implemented yet.
+
+use super::Cycle;
+use crate::arc::{self, ArcError};
+use crate::{Arc, Diagnostic, Pt, Span};
+use gcode::{Block, Word};
+
+/// One element of a finishing shape: a line or an arc from `from` to `to` (G54 frame).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShapeElement {
+    /// Start point.
+    pub from: Pt,
+    /// End point.
+    pub to: Pt,
+    /// Arc data for G02/G03 elements.
+    pub arc: Option<Arc>,
+    /// Written as G00 (a rapid) — only the ns block or a later G00 block.
+    pub rapid: bool,
+    /// The F word in force inside the shape at this element (`None`: none written yet).
+    pub feed: Option<f64>,
+    /// The block that wrote it.
+    pub span: Span,
+}
+
+impl ShapeElement {
+    /// This element moved by `d` (a translated arc keeps its radius and direction).
+    pub fn shifted(&self, d: Pt) -> Self {
+        let m = |p: Pt| Pt::new(p.z + d.z, p.r + d.r);
+        Self {
+            from: m(self.from),
+            to: m(self.to),
+            arc: self.arc.map(|a| Arc {
+                center: m(a.center),
+                ccw: a.ccw,
+            }),
+            ..*self
+        }
+    }
+}
+
+/// A finishing shape ns..nf: the intended contour of the part a G70–G73 cycle works to.
+///
+/// Exposed for the gouge analysis: the part lies on the side of the shape away from the
+/// start point (spec/simulation.md, "The intended shape").
+#[derive(Debug, Clone, PartialEq)]
+pub struct FinishingShape {
+    /// The cycle that read it, in tenths (700, 710, 720, 730).
+    pub cycle: i32,
+    /// The cycle's start point A = the start of the ns block, G54 frame.
+    pub start: Pt,
+    /// The elements from A through B (end of ns) to C (end of nf); never empty.
+    pub elements: Vec<ShapeElement>,
+    /// The cycle block.
+    pub span: Span,
+    /// Span of the ns block's axis words (where "ns moves in X only" alarms point).
+    pub ns_span: Span,
+    /// The ns block gave X/U (resp. Z/W): G71/G72 type I or II.
+    pub ns_moves: (bool, bool),
+    /// Index of the ns and nf blocks in the O program.
+    pub(crate) ns_index: usize,
+    /// Index of the nf block.
+    pub(crate) nf_index: usize,
+    /// Warnings about words G70 cannot apply yet (S, T, G96–G99) and G41/G42.
+    pub(crate) notes: Vec<Diagnostic>,
+}
+
+impl FinishingShape {
+    /// Where the program continues after the cycle: after nf when the shape follows the
+    /// cycle block (GSK seed 003 and FANUC: the shape is not run again as ordinary motion),
+    /// else the next block (a shape written before the cycle was already run in its place).
+    pub(crate) fn resume_at(&self, cycle_index: usize) -> Option<usize> {
+        (self.ns_index > cycle_index).then_some(self.nf_index + 1)
+    }
+
+    /// Point B, the end of the ns block.
+    pub fn b(&self) -> Pt {
+        self.elements[0].to
+    }
+
+    /// Point C, the end of the nf block.
+    pub fn c(&self) -> Pt {
+        self.elements[self.elements.len() - 1].to
+    }
+}
+
+/// The P(ns) and Q(nf) words of a cycle block as sequence numbers (PS061 when missing).
+pub(crate) fn ns_nf(c: &mut Cycle) -> Result<(u32, u32, Span, Span), Diagnostic> {
+    let p = c.words.take('P');
+    let q = c.words.take('Q');
+    let (Some(p), Some(q)) = (p, q) else {
+        return Err(c.alarm(
+            "PS061",
+            format!("{} needs P(ns) and Q(nf)", super::name(c.code)),
+            "give the first and last sequence numbers of the finishing shape, e.g. P14 Q19",
+        ));
+    };
+    for w in [p, q] {
+        if w.has_point || w.value < 1.0 || w.value > 99_999.0 || w.value.fract() != 0.0 {
+            return Err(Diagnostic::new(
+                w.span,
+                "PS061",
+                format!("{}{} is not a sequence number", w.letter, w.value),
+                "P and Q name N numbers 1 … 99999, written without a decimal point",
+            ));
+        }
+    }
+    Ok((p.value as u32, q.value as u32, p.span, q.span))
+}
+
+/// The index of the one block numbered `n` (PS063 when absent, an alarm when written twice).
+fn find(c: &Cycle, n: u32, at: Span) -> Result<usize, Diagnostic> {
+    let mut hits = c
+        .program
+        .blocks
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| b.seq == Some(n));
+    let Some((i, _)) = hits.next() else {
+        return Err(Diagnostic::new(
+            at,
+            "PS063",
+            format!("sequence number N{n} is not in this program"),
+            "the finishing shape must be in the same O program as the cycle; check P and Q",
+        ));
+    };
+    if let Some((_, second)) = hits.next() {
+        return Err(Diagnostic::new(
+            second.seq_span.unwrap_or(second.span),
+            "LS-SHAPE-N-TWICE",
+            format!("N{n} is written twice in this program, so the finishing shape is ambiguous (first at {})", c.program.blocks[i].span),
+            "give every block of a finishing shape a sequence number of its own",
+        ));
+    }
+    Ok(i)
+}
+
+/// Find and read the finishing shape P(ns)..Q(nf) of the cycle block.
+pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
+    let (ns, nf, p_span, q_span) = ns_nf(c)?;
+    let i0 = find(c, ns, p_span)?;
+    let i1 = find(c, nf, q_span)?;
+    if i1 < i0 {
+        return Err(Diagnostic::new(
+            q_span,
+            "LS-SHAPE-ORDER",
+            format!("N{nf} (Q) stands before N{ns} (P)"),
+            "P is the first block of the shape and Q the last; swap them",
+        ));
+    }
+    if (i0..=i1).contains(&c.index) {
+        return Err(c.alarm(
+            "LS-SHAPE-ORDER",
+            format!("the finishing shape N{ns}..N{nf} contains the cycle block itself"),
+            "write the shape entirely before or after the cycle block",
+        ));
+    }
+    let blocks = &c.program.blocks[i0..=i1];
+    let mut r = Reader {
+        pos: c.start,
+        shift: c.shift,
+        unit: c.unit,
+        mode: 0,
+        feed: None,
+        elements: vec![],
+        notes: vec![],
+        ns_moves: (false, false),
+        ns_span: blocks[0].span,
+    };
+    for (k, b) in blocks.iter().enumerate() {
+        r.block(b, k == 0)?;
+    }
+    if r.elements.is_empty() {
+        return Err(Diagnostic::new(
+            blocks[0].span,
+            "LS-SHAPE-EMPTY",
+            format!("the finishing shape N{ns}..N{nf} does not move"),
+            "the shape needs at least one move with X/U or Z/W",
+        ));
+    }
+    Ok(FinishingShape {
+        cycle: c.code,
+        start: c.start,
+        elements: r.elements,
+        span: c.span(),
+        ns_span: r.ns_span,
+        ns_moves: r.ns_moves,
+        ns_index: i0,
+        nf_index: i1,
+        notes: r.notes,
+    })
+}
+
+/// Reads the shape's blocks with their own modal motion, starting at A.
+struct Reader {
+    pos: Pt,
+    shift: Pt,
+    unit: f64,
+    /// Motion code in tenths: 0, 10, 20, 30.
+    mode: i32,
+    feed: Option<f64>,
+    elements: Vec<ShapeElement>,
+    notes: Vec<Diagnostic>,
+    ns_moves: (bool, bool),
+    ns_span: Span,
+}
+
+/// The G70 warning for a word of the shape it cannot apply yet.
+fn unapplied(w: &Word) -> Diagnostic {
+    let what = if w.letter == 'G' {
+        format!("G{}", w.value)
+    } else {
+        format!("{}{}", w.letter, w.value)
+    };
+    Diagnostic::new(
+        w.span,
+        "LS-SHAPE-UNAPPLIED",
+        format!(
+            "{what} inside the finishing shape is not applied by G70 in this version (only F is)"
+        ),
+        "give S, T and G96–G99 before the G70 block to have them in force",
+    )
+}
+
+/// The alarm for a code not allowed inside a finishing shape.
+fn forbidden(w: &Word, what: String) -> Diagnostic {
+    Diagnostic::new(
+        w.span,
+        "LS-SHAPE-CODE",
+        format!("{what} is not allowed inside a finishing shape"),
+        "between ns and nf only G00–G03, G04, G96–G99 and G40–G42 may stand, and no M98/M99",
+    )
+}
+
+impl Reader {
+    fn block(&mut self, b: &Block, first: bool) -> Result<(), Diagnostic> {
+        let mut motion: Option<(i32, &Word)> = None;
+        let mut dwell = false;
+        for w in b.words.iter() {
+            match w.letter {
+                'G' => {
+                    let t = w.code_tenths().unwrap_or(-1);
+                    match t {
+                        0 | 10 | 20 | 30 => motion = Some((t, w)),
+                        40 => dwell = true,
+                        400 => {}
+                        960 | 970 | 980 | 990 => self.notes.push(unapplied(w)),
+                        410 | 420 => self.notes.push(Diagnostic::new(
+                            w.span,
+                            "LS-SHAPE-TNRC",
+                            format!("G{} inside the finishing shape is ignored: tool nose radius compensation is not implemented yet", t / 10),
+                            "the shape is run by the tool's reference point; remove G41/G42 to silence this",
+                        )),
+                        _ => return Err(forbidden(w, format!("G{}", w.value))),
+                    }
+                }
+                'M' if w.value == 98.0 || w.value == 99.0 => {
+                    return Err(forbidden(w, format!("M{}", w.value)))
+                }
+                _ => {}
+            }
+        }
+        if first {
+            match motion {
+                Some((0 | 10, _)) => {}
+                Some((_, w)) => {
+                    return Err(Diagnostic::new(
+                        w.span,
+                        "PS065",
+                        "the first block of the finishing shape (ns) must be G00 or G01",
+                        "start the shape with a straight G00 or G01 move from the start point",
+                    ))
+                }
+                None => {
+                    return Err(Diagnostic::new(
+                        b.seq_span.unwrap_or(b.span),
+                        "PS065",
+                        "the first block of the finishing shape (ns) must be G00 or G01",
+                        "write G00 or G01 in the ns block",
+                    ))
+                }
+            }
+        }
+        if let Some((t, _)) = motion {
+            self.mode = t;
+        }
+        let mut to = self.pos;
+        let (mut x_given, mut z_given) = (false, false);
+        let (mut r_word, mut i_word, mut k_word) = (None, None, None);
+        for w in b.words.iter() {
+            let v = w.value * self.unit;
+            match w.letter {
+                'G' | 'M' => {}
+                'S' | 'T' => self.notes.push(unapplied(w)),
+                'F' => self.feed = Some(w.value),
+                'P' if dwell => {}
+                'X' | 'U' if dwell => {}
+                'X' => (to.r, x_given) = (v / 2.0 + self.shift.r, true),
+                'U' => (to.r, x_given) = (self.pos.r + v / 2.0, true),
+                'Z' => (to.z, z_given) = (v + self.shift.z, true),
+                'W' => (to.z, z_given) = (self.pos.z + v, true),
+                'R' if self.mode >= 20 => r_word = Some(w),
+                'I' if self.mode >= 20 => i_word = Some(w),
+                'K' if self.mode >= 20 => k_word = Some(w),
+                _ => {
+                    return Err(Diagnostic::new(
+                        w.span,
+                        "LS-WORD-UNUSED",
+                        format!(
+                            "address {} has no meaning in this block of the finishing shape",
+                            w.letter
+                        ),
+                        "remove the word, or use the code that takes it (e.g. R with G02/G03)",
+                    ))
+                }
+            }
+        }
+        if first {
+            self.ns_moves = (x_given, z_given);
+            self.ns_span = b.span;
+        }
+        if !x_given && !z_given {
+            if let Some(w) = r_word.or(i_word).or(k_word) {
+                return Err(Diagnostic::new(
+                    w.span,
+                    "LS-ARC",
+                    "arc data without an end point",
+                    "give the arc's end point with X/U and Z/W",
+                ));
+            }
+            return Ok(());
+        }
+        let from = self.pos;
+        let arc = if self.mode >= 20 {
+            let ccw = self.mode == 30;
+            let centre = match (r_word, i_word, k_word) {
+                (Some(r), None, None) => {
+                    arc::centre_from_radius(from, to, r.value * self.unit, ccw)
+                        .map_err(|e| arc_alarm(r.span, e))?
+                }
+                (None, None, None) => {
+                    return Err(Diagnostic::new(
+                        b.span,
+                        "LS-ARC",
+                        "G02/G03 without R or I/K",
+                        "give the radius R, or the centre offset I (radius) and K",
+                    ))
+                }
+                (Some(r), _, _) => {
+                    return Err(Diagnostic::new(
+                        r.span,
+                        "LS-ARC",
+                        "arc given both R and I/K",
+                        "give either R or I/K, not both",
+                    ))
+                }
+                (None, i, k) => {
+                    let c = Pt::new(
+                        from.z + k.map_or(0.0, |k| k.value * self.unit),
+                        from.r + i.map_or(0.0, |i| i.value * self.unit),
+                    );
+                    let span = i.or(k).map_or(b.span, |w| w.span);
+                    arc::check_centre(from, to, c).map_err(|e| arc_alarm(span, e))?;
+                    c
+                }
+            };
+            Some(Arc {
+                center: centre,
+                ccw,
+            })
+        } else {
+            None
+        };
+        if to.dist(from) > 1e-12 {
+            self.elements.push(ShapeElement {
+                from,
+                to,
+                arc,
+                rapid: self.mode == 0,
+                feed: self.feed,
+                span: b.span,
+            });
+        }
+        self.pos = to;
+        Ok(())
+    }
+}
+
+/// The interpreter's arc alarms, at a word of the shape.
+fn arc_alarm(span: Span, e: ArcError) -> Diagnostic {
+    let (message, help) = match e {
+        ArcError::RadiusTooSmall { r, half_chord } => (
+            format!("arc radius R{r} is too small to reach the end point (at least {half_chord:.3} needed)"),
+            "R must be at least half the distance between start and end",
+        ),
+        ArcError::FullCircleWithR => (
+            "arc with R whose end point equals its start".to_string(),
+            "a full circle needs I/K, not R",
+        ),
+        ArcError::NonPositiveRadius => (
+            "arc radius must be positive".to_string(),
+            "give a positive R, or split the arc",
+        ),
+        ArcError::EndNotOnCircle { r_start, r_end } => (
+            format!("arc end point is not on the circle: radius {r_start:.4} at the start, {r_end:.4} at the end"),
+            "correct I/K (I is a radius value) or the end point",
+        ),
+    };
+    Diagnostic::new(span, "PS020", message, help)
+}

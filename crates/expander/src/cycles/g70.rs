@@ -1,8 +1,40 @@
 //! G70 — finishing cycle (spec/cycles.md).
+//!
+//! `G70 P(ns) Q(nf);` runs the finishing shape with its own F (an F inside ns..nf holds
+//! from its block on; before the first one, the F in force at G70), then rapids back to
+//! the start point. Moves carry the span of their shape block.
+//!
+//! Choices: S, T and G96–G99 inside the shape are not applied yet (a warning says so);
+//! G41/G42 are ignored with a warning until compensation lands. The program continues
+//! after nf when the shape follows the G70 block, else after the G70 block (FANUC).
 
-use super::{Cycle, Output};
+use super::contour;
+use super::{Cycle, Move, Output};
+use crate::Diagnostic;
 
-/// Expand one block of the cycle.
-pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
-    Err(super::not_implemented(c))
+/// Expand one G70 block.
+pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
+    let mut shape = contour::read(c)?;
+    let mut moves = Vec::with_capacity(shape.elements.len() + 1);
+    // ① the shape A → B → C as written, each element with its own motion and F
+    for e in &shape.elements {
+        let mut m = if e.rapid {
+            Move::rapid(e.to)
+        } else {
+            Move::feed(e.to)
+        };
+        m.arc = e.arc;
+        m.feed = e.feed;
+        m.span = Some(e.span);
+        moves.push(m);
+    }
+    // ② rapid back to the start point A
+    moves.push(Move::rapid(shape.start));
+    let out = Output {
+        moves,
+        resume_at: shape.resume_at(c.index),
+        warnings: std::mem::take(&mut shape.notes),
+    };
+    c.retained.shapes.push(shape);
+    Ok(out)
 }
