@@ -56,3 +56,119 @@ fn o0006_g70_finishes_the_shape() {
     );
     assert!(h <= 0.01, "Hausdorff {h}, symmetric difference {sym}");
 }
+
+/// Run `program` (from assets/programs) on a Φ60 × 80 bar with its face at Z0, with or
+/// without its G70 line.
+fn on_bar(program: &str, with_g70: bool) -> (expander::Toolpath, stock::Simulation) {
+    let tools = stock::ToolTable::from_toml(&read(&asset("tools/v35-sharp.toml"))).unwrap();
+    let blank = stock::Blank::bar(60.0, 80.0, 0.0, None).unwrap();
+    let text: String = read(&asset(&format!("programs/{program}")))
+        .lines()
+        .filter(|l| with_g70 || !l.starts_with("G70"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert_eq!(text.contains("G70"), with_g70);
+    simulate(&text, &blank, &tools)
+}
+
+/// Compare the part with the expected ring (z, r), printing the measures.
+fn assert_part(sim: &stock::Simulation, tp: &expander::Toolpath, ring: Vec<[f64; 2]>) {
+    let want = [shape(ring)];
+    let sym = stock::symmetric_difference_area(&sim.final_shapes, &want);
+    let h = stock::hausdorff(&sim.final_shapes, &want);
+    eprintln!(
+        "{} segments, {} crashes, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
+        tp.segments.len(),
+        sim.crashes.len()
+    );
+    assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
+    assert!(h <= 0.01, "Hausdorff {h}, symmetric difference {sym}");
+}
+
+/// The G71 type I part (z, r), moved by (dz, dr): chamfer, concave R5, convex R10, then
+/// the bar Φ60 behind Z-50.
+fn type1_part(dz: f64, dr: f64) -> Vec<[f64; 2]> {
+    // the chamfer (Z0 r8)-(Z-2 r10) moved, cut by the bar face Z0
+    let mut ring = vec![[0.0, 0.0], [0.0, 8.0 + dr + dz], [-2.0 + dz, 10.0 + dr]];
+    ring.push([-15.0 + dz, 10.0 + dr]);
+    let (a, b) = ([-15.0 + dz, 10.0 + dr], [-20.0 + dz, 15.0 + dr]);
+    arc_points(a, b, arc_centre(a, b, 5.0, false), false, &mut ring);
+    let (a, b) = ([-30.0 + dz, 15.0 + dr], [-38.0 + dz, 23.0 + dr]);
+    ring.push(a);
+    arc_points(a, b, arc_centre(a, b, 10.0, true), true, &mut ring);
+    ring.extend([
+        [-50.0 + dz, 23.0 + dr],
+        [-50.0 + dz, 30.0],
+        [-80.0, 30.0],
+        [-80.0, 0.0],
+    ]);
+    ring
+}
+
+/// G71 type I: before G70 the part is the shape moved by the allowance (Δu/2 = 0.2,
+/// Δw = 0.1); after G70 it is the shape.
+#[test]
+fn g71_type_1_roughs_to_the_allowance_and_g70_finishes() {
+    let (tp, sim) = on_bar("G71-type1.nc", false);
+    assert_part(&sim, &tp, type1_part(0.1, 0.2));
+    let (tp, sim) = on_bar("G71-type1.nc", true);
+    assert_part(&sim, &tp, type1_part(0.0, 0.0));
+}
+
+/// The G71 type II part (z, r) moved by (dz, dr): Φ30, a pocket to Φ20, up to Φ40.
+fn type2_part(dz: f64, dr: f64) -> Vec<[f64; 2]> {
+    vec![
+        [0.0, 0.0],
+        [0.0, 15.0 + dr],
+        [-10.0 + dz, 15.0 + dr],
+        [-20.0 + dz, 10.0 + dr],
+        [-30.0 + dz, 10.0 + dr],
+        [-40.0 + dz, 20.0 + dr],
+        [-50.0 + dz, 20.0 + dr],
+        [-50.0 + dz, 30.0],
+        [-80.0, 30.0],
+        [-80.0, 0.0],
+    ]
+}
+
+/// G71 type II with a pocket: the layers reach into the pocket without a rapid through
+/// stock (no crash), the allowance is left, and G70 finishes the shape.
+#[test]
+fn g71_type_2_cuts_the_pocket() {
+    let (tp, sim) = on_bar("G71-type2.nc", false);
+    assert_part(&sim, &tp, type2_part(0.1, 0.2));
+    let (tp, sim) = on_bar("G71-type2.nc", true);
+    assert_part(&sim, &tp, type2_part(0.0, 0.0));
+}
+
+/// The G72 part (z, r) moved by (dz, dr): face Z-12 down to Φ40, 45° cone to Φ30 at Z-7,
+/// Φ30 to Z-2, chamfer to Φ26 at Z0.
+fn g72_part(dz: f64, dr: f64) -> Vec<[f64; 2]> {
+    vec![
+        [0.0, 0.0],
+        [0.0, 13.0 + dr + dz],
+        [-2.0 + dz, 15.0 + dr],
+        [-7.0 + dz, 15.0 + dr],
+        [-12.0 + dz, 20.0 + dr],
+        [-12.0 + dz, 30.0],
+        [-80.0, 30.0],
+        [-80.0, 0.0],
+    ]
+}
+
+/// G72 facing: layers of 2 mm along −Z cut along −X; allowance Δu/2 = 0.2, Δw = 0.2.
+#[test]
+fn g72_faces_to_the_allowance_and_g70_finishes() {
+    let (tp, sim) = on_bar("G72-facing.nc", false);
+    let layers = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Feed && s.from.z == s.to.z && s.span.line == 5)
+        .count();
+    // from A at Z2 to B' at Z-11.8 (13.8 deep): layers at Z0, -2, -4, -6, -8, -10; the last
+    // 1.8 mm is the final pass along the moved shape
+    assert_eq!(layers, 6);
+    assert_part(&sim, &tp, g72_part(0.2, 0.2));
+    let (tp, sim) = on_bar("G72-facing.nc", true);
+    assert_part(&sim, &tp, g72_part(0.0, 0.0));
+}

@@ -1,8 +1,513 @@
-//! G71 / G72 — stock removal in turning / facing (spec/cycles.md).
+//! G71 / G72 — stock removal in turning / facing, type I and II (spec/cycles.md).
+//!
+//! ```text
+//! G71 U(Δd) R(e);                      G72 W(Δd) R(e);          depth and retract: retained
+//! G71 P(ns) Q(nf) U(Δu) W(Δw) F S T;   G72 P(ns) Q(nf) U(Δu) W(Δw) F S T;
+//! ```
+//! Both cycles are one algorithm in a frame (u, v) with the start point A at the origin:
+//! u runs along the cuts (Z for G71, X for G72) in the direction the shape travels from B
+//! to C, v runs into the material (X for G71, Z for G72) in the direction of the ns move
+//! A → B. The shape is moved by the allowances (Δu/2 in X as a radius, Δw in Z) — a
+//! translation, as FANUC does — and the material between the start level v = 0 and the
+//! moved shape is cut in layers.
+//!
+//! Motion (FANUC 0i-TF / GSK980TDi, with the choices the manuals leave implicit):
+//! 1. Layer i lies at depth v = i·Δd; the layers stop above the deepest point of the moved
+//!    shape, and the last one is the last full Δd: the remainder (< Δd) is taken by step 4.
+//! 2. A layer that starts at the A column is reached by the ns block's motion (G00 rapid,
+//!    G01 feed) along v; it is cut along u up to the moved shape, then the tool retracts
+//!    e at 45° (up e and back e, at cutting feed) and returns along u by rapid.
+//! 3. Type II (pockets): a layer meets the shape more than once. Each stretch is cut in
+//!    order of u. Between stretches the tool either follows the shape over a bump that
+//!    lies within the current layer (a feed), or retracts e at 45°, rapids up to the
+//!    deepest layer already cut over the whole way (less e), across, down to where the
+//!    shape crosses the previous layer, and follows the shape down into the pocket
+//!    (a feed), so no rapid crosses uncut material.
+//! 4. Back to A, then one pass along the moved shape: A → B' as the ns block (G00/G01),
+//!    B' → C' fed with the shape's arcs; then a rapid back to A.
+//!
+//! Type I (the ns block moves along v only) requires the moved shape to be monotonic in
+//! both axes: u never decreasing, v never increasing after B' (PS064). Type II (the ns block
+//! moves in both axes) requires u never decreasing only. Arcs are flattened (sagitta
+//! 0.1 µm) for the layer ends and the pocket walks; the final pass keeps them exact. The
+//! layer moves carry the cycle block's span; the final pass carries the shape's lines.
 
-use super::{Cycle, Output};
+use super::contour::{self, FinishingShape};
+use super::{Cycle, Move, Output};
+use crate::{Diagnostic, Pt, Span};
 
-/// Expand one block of the cycle.
-pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
-    Err(super::not_implemented(c))
+/// Most layers one cycle may cut (a microscopic Δd is an error, not a hang).
+const MAX_LAYERS: f64 = 200_000.0;
+/// Flattening tolerance for arcs (sagitta), mm.
+const SAGITTA: f64 = 1e-4;
+/// Geometric tolerance, mm.
+const EPS: f64 = 1e-9;
+
+/// Expand one G71 or G72 block.
+pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
+    let g72 = c.code == 720;
+    if !c.words.has('P') && !c.words.has('Q') {
+        return depth_block(c, g72);
+    }
+    let shape = contour::read(c)?;
+    let du = c.words.mm('U', c.unit).unwrap_or(0.0) / 2.0; // Δu/2: radius
+    let dw = c.words.mm('W', c.unit).unwrap_or(0.0);
+    let retained = if g72 { c.retained.g72 } else { c.retained.g71 };
+    let Some((dd, e)) = retained else {
+        return Err(c.alarm(
+            "PS062",
+            format!("no depth of cut for {}", super::name(c.code)),
+            if g72 {
+                "write G72 W(Δd) R(e) before the G72 P Q block"
+            } else {
+                "write G71 U(Δd) R(e) before the G71 P Q block"
+            },
+        ));
+    };
+    let frame = Frame::new(c, &shape, g72)?;
+    let poly = Poly::new(&shape, &frame, Pt::new(dw, du))?;
+    let levels = poly.v_max / dd;
+    if levels > MAX_LAYERS {
+        return Err(c.alarm(
+            "LS-TOO-MANY-LAYERS",
+            format!("depth of cut {dd} mm makes {levels:.0} layers"),
+            "give a larger depth of cut Δd",
+        ));
+    }
+    let mut r = Rough {
+        poly: &poly,
+        dd,
+        e,
+        ns_rapid: shape.elements[0].rapid,
+        cur: (0.0, 0.0),
+        out: vec![],
+    };
+    r.layers();
+    let mut moves: Vec<Move> = r
+        .out
+        .iter()
+        .map(|&(rapid, p, span)| {
+            let mut m = if rapid {
+                Move::rapid(frame.to_pt(p))
+            } else {
+                Move::feed(frame.to_pt(p))
+            };
+            m.span = span;
+            m
+        })
+        .collect();
+    // 4. the final pass along the moved shape, then back to A
+    let off = Pt::new(dw, du);
+    for (i, el) in shape.elements.iter().enumerate() {
+        let el = el.shifted(off);
+        let mut m = if i == 0 && el.rapid {
+            Move::rapid(el.to)
+        } else {
+            Move::feed(el.to)
+        };
+        m.arc = el.arc;
+        m.span = Some(el.span);
+        moves.push(m);
+    }
+    moves.push(Move::rapid(shape.start));
+    let out = Output {
+        moves,
+        resume_at: shape.resume_at(c.index),
+        warnings: vec![],
+    };
+    c.retained.shapes.push(shape);
+    Ok(out)
+}
+
+/// The first block: store Δd and e (each keeps its retained value when omitted).
+fn depth_block(c: &mut Cycle, g72: bool) -> Result<Output, Diagnostic> {
+    let (letter, prev) = if g72 {
+        ('W', c.retained.g72)
+    } else {
+        ('U', c.retained.g71)
+    };
+    let d_word = c.words.take(letter);
+    let e_word = c.words.take('R');
+    let dd = d_word.map_or(prev.map(|p| p.0), |w| Some(w.value * c.unit));
+    let e = e_word.map_or(prev.map_or(0.0, |p| p.1), |w| w.value * c.unit);
+    let Some(dd) = dd else {
+        return Err(c.alarm(
+            "PS062",
+            format!("{} without a depth of cut", super::name(c.code)),
+            format!("write the depth of cut per layer as {letter}(Δd)"),
+        ));
+    };
+    if dd <= 0.0 {
+        return Err(Diagnostic::new(
+            d_word.map_or(c.span(), |w| w.span),
+            "PS062",
+            format!("depth of cut {letter}{dd} must be positive"),
+            "give the depth of cut per layer as a positive value",
+        ));
+    }
+    if e < 0.0 {
+        return Err(Diagnostic::new(
+            e_word.map_or(c.span(), |w| w.span),
+            "PS062",
+            format!("retract R{e} must not be negative"),
+            "give the 45° retract e as a positive value (or 0)",
+        ));
+    }
+    if g72 {
+        c.retained.g72 = Some((dd, e));
+    } else {
+        c.retained.g71 = Some((dd, e));
+    }
+    Ok(Output::default())
+}
+
+/// The (u, v) frame of one cycle: A at the origin, u along the cuts, v into the material.
+struct Frame {
+    a: Pt,
+    swap: bool,
+    su: f64,
+    sv: f64,
+    /// Type II: the ns block moves in both axes.
+    type2: bool,
+}
+
+impl Frame {
+    fn new(c: &Cycle, shape: &FinishingShape, g72: bool) -> Result<Self, Diagnostic> {
+        let (a, b, end) = (shape.start, shape.b(), shape.c());
+        let (x, z) = shape.ns_moves;
+        let (infeed, along) = if g72 { (z, x) } else { (x, z) };
+        let (ax, other) = if g72 { ("Z", "X") } else { ("X", "Z") };
+        if !infeed {
+            return Err(Diagnostic::new(
+                shape.ns_span,
+                "LS-SHAPE-NS",
+                format!(
+                    "the ns block of {} must move in {ax} (type I: {ax} only; type II: {ax} and {other})",
+                    super::name(c.code)
+                ),
+                format!("start the shape with a G00/G01 move in {ax} from the start point"),
+            ));
+        }
+        let (sv, su) = if g72 {
+            ((b.z - a.z).signum(), (end.r - b.r).signum())
+        } else {
+            ((b.r - a.r).signum(), (end.z - b.z).signum())
+        };
+        if (if g72 { b.z - a.z } else { b.r - a.r }).abs() < EPS {
+            return Err(Diagnostic::new(
+                shape.ns_span,
+                "LS-SHAPE-NS",
+                format!("the ns block does not move in {ax}: the cut depth direction is unknown"),
+                format!("the ns block moves from the start point toward the shape in {ax}"),
+            ));
+        }
+        if (if g72 { end.r - b.r } else { end.z - b.z }).abs() < EPS {
+            return Err(c.alarm(
+                "PS064",
+                format!("the finishing shape does not travel in {other} from B to C"),
+                format!(
+                    "{} cuts along {other}: the shape must run along {other}",
+                    super::name(c.code)
+                ),
+            ));
+        }
+        Ok(Self {
+            a,
+            swap: g72,
+            su,
+            sv,
+            type2: along,
+        })
+    }
+
+    fn to_uv(&self, p: Pt) -> (f64, f64) {
+        let (dz, dr) = (p.z - self.a.z, p.r - self.a.r);
+        if self.swap {
+            (self.su * dr, self.sv * dz)
+        } else {
+            (self.su * dz, self.sv * dr)
+        }
+    }
+
+    fn to_pt(&self, (u, v): (f64, f64)) -> Pt {
+        let (a, b) = (self.su * u, self.sv * v);
+        if self.swap {
+            Pt::new(self.a.z + b, self.a.r + a)
+        } else {
+            Pt::new(self.a.z + a, self.a.r + b)
+        }
+    }
+}
+
+/// The moved shape as a polyline in (u, v), arcs flattened.
+struct Poly {
+    pts: Vec<(f64, f64)>,
+    /// The span of the shape block each segment `pts[j] → pts[j+1]` comes from.
+    spans: Vec<Span>,
+    /// The layer at the A column is free before the first crossing (type I).
+    free_start: bool,
+    v_max: f64,
+}
+
+impl Poly {
+    fn new(shape: &FinishingShape, f: &Frame, off: Pt) -> Result<Self, Diagnostic> {
+        let els: Vec<_> = shape.elements.iter().map(|e| e.shifted(off)).collect();
+        let mut pts = vec![];
+        let mut spans = vec![];
+        if f.type2 {
+            pts.push(f.to_uv(shape.start)); // type II: A → B' is part of the shape
+        }
+        pts.push(f.to_uv(els[0].to));
+        if f.type2 {
+            spans.push(els[0].span);
+        }
+        for e in &els[1..] {
+            match e.arc {
+                None => {
+                    pts.push(f.to_uv(e.to));
+                    spans.push(e.span);
+                }
+                Some(arc) => {
+                    let rad = arc.center.dist(e.from);
+                    let a0 = (e.from.r - arc.center.r).atan2(e.from.z - arc.center.z);
+                    let a1 = (e.to.r - arc.center.r).atan2(e.to.z - arc.center.z);
+                    let tau = std::f64::consts::TAU;
+                    let mut sweep = a1 - a0;
+                    if arc.ccw && sweep <= 0.0 {
+                        sweep += tau;
+                    }
+                    if !arc.ccw && sweep >= 0.0 {
+                        sweep -= tau;
+                    }
+                    let step = 2.0 * (1.0 - SAGITTA / rad.max(SAGITTA * 2.0)).acos();
+                    let n = ((sweep.abs() / step).ceil() as usize).clamp(1, 100_000);
+                    for k in 1..=n {
+                        let t = a0 + sweep * k as f64 / n as f64;
+                        let p = if k == n {
+                            e.to
+                        } else {
+                            Pt::new(arc.center.z + rad * t.cos(), arc.center.r + rad * t.sin())
+                        };
+                        pts.push(f.to_uv(p));
+                        spans.push(e.span);
+                    }
+                }
+            }
+        }
+        // monotonic checks (PS064)
+        for (j, w) in pts.windows(2).enumerate() {
+            let (p, q) = (w[0], w[1]);
+            if q.0 < p.0 - 1e-6 {
+                return Err(not_monotonic(spans[j], f.swap, true));
+            }
+            if !f.type2 && q.1 > p.1 + 1e-6 {
+                return Err(not_monotonic(spans[j], f.swap, false));
+            }
+        }
+        let v_max = pts.iter().map(|p| p.1).fold(f64::MIN, f64::max);
+        Ok(Self {
+            pts,
+            spans,
+            free_start: !f.type2,
+            v_max,
+        })
+    }
+
+    /// The stretches of u where the layer at depth `c` is clear of the moved shape.
+    fn stretches(&self, c: f64) -> Vec<(Option<Cross>, Option<Cross>)> {
+        let free = |p: (f64, f64)| p.1 >= c - EPS;
+        let mut out = vec![];
+        let mut open: Option<Option<Cross>> = self.free_start.then_some(None);
+        if !self.free_start && free(self.pts[0]) {
+            open = Some(Some(Cross {
+                seg: 0,
+                p: self.pts[0],
+            }));
+        }
+        for (j, w) in self.pts.windows(2).enumerate() {
+            let (p, q) = (w[0], w[1]);
+            if free(p) == free(q) {
+                continue;
+            }
+            let t = ((c - p.1) / (q.1 - p.1)).clamp(0.0, 1.0);
+            let x = Cross {
+                seg: j,
+                p: (p.0 + t * (q.0 - p.0), c),
+            };
+            match open.take() {
+                Some(s) => out.push((s, Some(x))),
+                None => open = Some(Some(x)),
+            }
+        }
+        if let Some(s) = open {
+            out.push((s, None));
+        }
+        // a stretch from the A column that ends before it (type I with Δw behind A)
+        out.retain(|(s, e)| {
+            let u0 = s.map_or(0.0, |s| s.p.0);
+            e.map_or(true, |e| e.p.0 > u0 + EPS)
+        });
+        out
+    }
+
+    /// The shallowest point of the shape over u in [lo, hi] (∞ where the shape is not).
+    fn v_min(&self, lo: f64, hi: f64) -> f64 {
+        let mut m = f64::INFINITY;
+        for w in self.pts.windows(2) {
+            let (p, q) = (w[0], w[1]);
+            if q.0 < lo || p.0 > hi {
+                continue;
+            }
+            let at = |u: f64| {
+                if (q.0 - p.0).abs() < EPS {
+                    p.1.min(q.1)
+                } else {
+                    p.1 + (q.1 - p.1) * ((u - p.0) / (q.0 - p.0)).clamp(0.0, 1.0)
+                }
+            };
+            m = m.min(at(lo.max(p.0))).min(at(hi.min(q.0)));
+        }
+        m
+    }
+
+    /// Walking back along the shape from `x`, the first point at depth `level` or above.
+    fn back_to(&self, x: Cross, level: f64) -> Cross {
+        let mut j = x.seg;
+        loop {
+            let p = self.pts[j];
+            if p.1 <= level + EPS {
+                let q = if j == x.seg { x.p } else { self.pts[j + 1] };
+                let t = if (q.1 - p.1).abs() < EPS {
+                    0.0
+                } else {
+                    ((level - p.1) / (q.1 - p.1)).clamp(0.0, 1.0)
+                };
+                return Cross {
+                    seg: j,
+                    p: (p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1)),
+                };
+            }
+            if j == 0 {
+                return Cross { seg: 0, p };
+            }
+            j -= 1;
+        }
+    }
+}
+
+/// A point on the moved shape: on segment `seg`, at `p`.
+#[derive(Debug, Clone, Copy)]
+struct Cross {
+    seg: usize,
+    p: (f64, f64),
+}
+
+/// The layer cutting state.
+struct Rough<'a> {
+    poly: &'a Poly,
+    dd: f64,
+    e: f64,
+    ns_rapid: bool,
+    cur: (f64, f64),
+    /// (rapid, end point in (u, v), span override)
+    out: Vec<(bool, (f64, f64), Option<Span>)>,
+}
+
+impl Rough<'_> {
+    fn go(&mut self, rapid: bool, p: (f64, f64), span: Option<Span>) {
+        if (p.0 - self.cur.0).abs() > EPS || (p.1 - self.cur.1).abs() > EPS {
+            self.out.push((rapid, p, span));
+            self.cur = p;
+        }
+    }
+
+    /// Steps 1–3 and the return to A.
+    fn layers(&mut self) {
+        let n = ((self.poly.v_max - EPS) / self.dd).ceil() as usize;
+        for i in 1..n {
+            let c = i as f64 * self.dd;
+            let prev = c - self.dd;
+            let stretches = self.poly.stretches(c);
+            for (k, &(start, end)) in stretches.iter().enumerate() {
+                match start {
+                    // 2. from the A column, by the ns block's motion
+                    None => {
+                        self.travel(0.0, i);
+                        self.go(self.ns_rapid, (0.0, c), None);
+                    }
+                    Some(s) => {
+                        let over = k > 0
+                            && stretches[k - 1].1.is_some_and(|pe| {
+                                self.poly.v_min(pe.p.0, s.p.0) >= prev - EPS && self.cur == pe.p
+                            });
+                        if over {
+                            // 3. over a bump within this layer: follow the shape
+                            let pe = stretches[k - 1].1.expect("checked");
+                            self.follow(pe, s);
+                        } else {
+                            // 3. into a pocket: across above the cut layers, down the wall
+                            let w = self.poly.back_to(s, prev);
+                            self.travel(w.p.0, i);
+                            self.go(true, w.p, None);
+                            self.follow(w, s);
+                        }
+                    }
+                }
+                let u_end = end.map_or(self.poly.pts[self.poly.pts.len() - 1].0, |x| x.p.0);
+                self.go(false, (u_end, c), None);
+                let bump_next = stretches.get(k + 1).is_some_and(|(ns, _)| {
+                    ns.is_some_and(|ns| self.poly.v_min(u_end, ns.p.0) >= prev - EPS)
+                });
+                if !bump_next {
+                    // 2. retract e at 45°
+                    self.go(false, ((u_end - self.e).max(0.0), c - self.e), None);
+                }
+            }
+        }
+        self.travel(0.0, n.saturating_sub(1));
+        self.go(true, (0.0, 0.0), None);
+    }
+
+    /// Rapid up to the deepest cut layer that spans the way to `u` (less e), then across.
+    fn travel(&mut self, u: f64, cut: usize) {
+        let (lo, hi) = (u.min(self.cur.0), u.max(self.cur.0));
+        let gm = self.poly.v_min(lo, hi);
+        let j = (((gm + EPS) / self.dd).floor().max(0.0) as usize).min(cut);
+        let level = if j == 0 {
+            0.0
+        } else {
+            (j as f64 * self.dd - self.e).max(0.0)
+        };
+        let level = level.min(self.cur.1);
+        self.go(true, (self.cur.0, level), None);
+        self.go(true, (u, level), None);
+    }
+
+    /// Feed along the shape from `a` to `b` (both on it, `a` first).
+    fn follow(&mut self, a: Cross, b: Cross) {
+        for j in a.seg..b.seg {
+            let span = Some(self.poly.spans[j]);
+            self.go(false, self.poly.pts[j + 1], span);
+        }
+        let span = Some(self.poly.spans[b.seg]);
+        self.go(false, b.p, span);
+    }
+}
+
+/// PS064 at the shape block that breaks monotony.
+fn not_monotonic(span: Span, g72: bool, along: bool) -> Diagnostic {
+    let axis = match (g72, along) {
+        (false, true) | (true, false) => "Z",
+        _ => "X",
+    };
+    Diagnostic::new(
+        span,
+        "PS064",
+        format!("the finishing shape is not monotonic in {axis} here"),
+        if along {
+            "the cut axis must only advance along the shape; split the part into two cycles"
+        } else {
+            "type I needs a shape that only climbs back toward the start; use type II (X and Z in the ns block) for pockets"
+        },
+    )
 }

@@ -1,0 +1,16 @@
+O0711 (G71 type I on a bar 60 x 80, face Z0: chamfer, concave R5, convex R10; latsim contour-cycle acceptance)
+G99 M03 S800 T0101
+G00 X62 Z2
+G71 U1.5 R0.5
+G71 P10 Q20 U0.4 W0.1 F0.25
+N10 G00 X16
+G01 Z0 F0.1
+X20 Z-2
+Z-15
+G02 X30 Z-20 R5
+G01 Z-30
+G03 X46 Z-38 R10
+G01 Z-50
+N20 X62
+G70 P10 Q20
+M30
