@@ -115,3 +115,185 @@ fn o0210_face_groove_and_drilled_hole() {
         "Hausdorff {h}, symmetric difference {sym}"
     );
 }
+
+/// Parse, expand with `machine` and simulate (the common helper uses the default machine).
+fn simulate_on(
+    program: &str,
+    machine: &expander::Machine,
+    blank: &stock::Blank,
+    tools: &stock::ToolTable,
+) -> (expander::Toolpath, stock::Simulation) {
+    let p = gcode::parse(program).expect("program parses");
+    let tp = expander::expand(&p, machine, &expander::Options::default());
+    assert!(tp.alarms.is_empty(), "alarms: {:?}", tp.alarms);
+    let sim = stock::simulate(
+        blank,
+        tools,
+        &tp.segments,
+        &stock::SimOptions::default(),
+        &mut |_| {},
+    );
+    (tp, sim)
+}
+
+fn is_c() -> expander::Machine {
+    expander::Machine {
+        increment: expander::Increment::IsC,
+        ..expander::Machine::default()
+    }
+}
+
+/// Φ50 bar from Z40 to Z−20 minus the O0008 groove P1 (Z30, Φ50), P2 (Z20, Φ30),
+/// P3 (Z10, Φ30), P4 (Z−7.32, Φ50).
+fn o0008_part() -> [stock::Shape; 1] {
+    let p4 = 10.0 - 10.0 / 30f64.to_radians().tan();
+    [shape(vec![
+        [-20.0, 0.0],
+        [40.0, 0.0],
+        [40.0, 25.0],
+        [30.0, 25.0],
+        [20.0, 15.0],
+        [10.0, 15.0],
+        [p4, 25.0],
+        [-20.0, 25.0],
+    ])]
+}
+
+/// O0008 (seed 000, IS-C) with a 4 mm blade (I4): the trapezoid P1..P4 exactly — the blade
+/// stays inside both flanks, the groove has its drawn size.
+#[test]
+fn o0008_cuts_the_seed_trapezoid() {
+    let blank = stock::Blank::bar(50.0, 60.0, 40.0, None).unwrap();
+    let (tp, sim) = simulate_on(
+        &read(&asset("programs/O0008-I4.nc")),
+        &is_c(),
+        &blank,
+        &tools("seed000-groove4.toml"),
+    );
+    assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
+    let (sym, h) = compare(&sim.final_shapes, &o0008_part());
+    eprintln!(
+        "O0008: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
+        tp.segments.len()
+    );
+    assert!(
+        h <= 0.01 && sym <= 1e-3,
+        "Hausdorff {h}, symmetric difference {sym}"
+    );
+}
+
+/// J2: the finishing pass alone traces the same trapezoid (no plunges: few moves).
+#[test]
+fn g75_1_finish_only_traces_the_trapezoid() {
+    let blank = stock::Blank::bar(50.0, 60.0, 40.0, None).unwrap();
+    let (tp, sim) = simulate_on(
+        &read(&asset("programs/G75_1-finish-only.nc")),
+        &is_c(),
+        &blank,
+        &tools("seed000-groove4.toml"),
+    );
+    assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
+    let cycle: Vec<_> = tp.segments.iter().filter(|s| s.span.line == 6).collect();
+    assert!(cycle.len() <= 10, "{} moves", cycle.len());
+    let (sym, h) = compare(&sim.final_shapes, &o0008_part());
+    eprintln!("J2: symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm");
+    assert!(
+        h <= 0.01 && sym <= 1e-3,
+        "Hausdorff {h}, symmetric difference {sym}"
+    );
+}
+
+/// All four corners (round, chamfer, chamfer, round), three layers (V6), rough + finish (J1):
+/// the rounds are real arcs in the finishing pass, the part is the drawn section.
+#[test]
+fn g75_1_corners_layers_and_finish() {
+    let blank = stock::Blank::bar(60.0, 40.0, 10.0, None).unwrap();
+    let (tp, sim) = simulate(
+        &read(&asset("programs/G75_1-corners.nc")),
+        &blank,
+        &tools("seed000-groove4.toml"),
+    );
+    assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
+    let arcs: Vec<_> = tp.segments.iter().filter(|s| s.arc.is_some()).collect();
+    assert_eq!(arcs.len(), 2, "the two rounds are arcs");
+    // three layers: plunge bottoms at X54, X48 and the floor X44
+    let bottoms: std::collections::BTreeSet<i64> = tp
+        .segments
+        .iter()
+        .filter(|s| s.span.line == 8 && s.motion == expander::Motion::Feed && s.from.z == s.to.z)
+        .map(|s| (2000.0 * s.to.r).round() as i64)
+        .collect();
+    for x in [54_000, 48_000, 44_000] {
+        assert!(
+            bottoms.contains(&x),
+            "no plunge bottom at X{}",
+            x as f64 / 1000.0
+        );
+    }
+    // hand-computed: P1 (0, 30), P2 (0, 22), P3 (−12, 22), P4 (−12 − 8/tan 60°, 30)
+    let t60 = 60f64.to_radians().tan();
+    let p4z = -12.0 - 8.0 / t60;
+    let (s60, c60) = (60f64.to_radians().sin(), 60f64.to_radians().cos());
+    let te = 2.0 / t60; // tangent length of the R2 round in the 120° floor corner
+    let mut ring = vec![[-30.0, 0.0], [10.0, 0.0], [10.0, 30.0], [1.0, 30.0]];
+    arc_points([1.0, 30.0], [0.0, 29.0], [1.0, 29.0], true, &mut ring);
+    ring.extend([[0.0, 23.0], [-1.0, 22.0], [-12.0 + te, 22.0]]);
+    let e_end = [-12.0 - te * c60, 22.0 + te * s60];
+    arc_points(
+        [-12.0 + te, 22.0],
+        e_end,
+        [-12.0 + te, 24.0],
+        false,
+        &mut ring,
+    );
+    ring.extend([
+        [p4z + 1.5 * c60, 30.0 - 1.5 * s60],
+        [p4z - 1.5, 30.0],
+        [-30.0, 30.0],
+    ]);
+    let want = [shape(ring)];
+    let (sym, h) = compare(&sim.final_shapes, &want);
+    eprintln!(
+        "corners: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
+        tp.segments.len()
+    );
+    // the two rounds are chorded within 0.001 mm by the removal: a few thousandths of mm²
+    assert!(
+        h <= 0.01 && sym <= 5e-3,
+        "Hausdorff {h}, symmetric difference {sym}"
+    );
+}
+
+/// L10 on a conical blank (profile TOML): the mouth follows the cone, the far mouth corner
+/// P4 lies on it at Z−8, the floor Φ30 from Z0 to Z−8.
+#[test]
+fn g75_1_sloped_mouth_on_a_cone() {
+    let blank =
+        stock::Blank::from_profile_toml(&read(&asset("blanks/cone-10deg.toml")), 0.001).unwrap();
+    let (tp, sim) = simulate(
+        &read(&asset("programs/G75_1-cone.nc")),
+        &blank,
+        &tools("seed002-groove3.toml"),
+    );
+    assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
+    let t10 = 10f64.to_radians().tan();
+    let want = [shape(vec![
+        [-30.0, 0.0],
+        [10.0, 0.0],
+        [10.0, 20.0 - 10.0 * t10],
+        [0.0, 20.0],
+        [0.0, 15.0],
+        [-8.0, 15.0],
+        [-8.0, 20.0 + 8.0 * t10],
+        [-30.0, 20.0 + 30.0 * t10],
+    ])];
+    let (sym, h) = compare(&sim.final_shapes, &want);
+    eprintln!(
+        "cone: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
+        tp.segments.len()
+    );
+    assert!(
+        h <= 0.01 && sym <= 1e-3,
+        "Hausdorff {h}, symmetric difference {sym}"
+    );
+}

@@ -39,7 +39,6 @@ fn seed_003_annotation_is_read_as_a_note() {
 #[test]
 fn cycles_are_reported_as_not_implemented_at_their_word() {
     for (file, line, column, code) in [
-        ("O0008.nc", 3, 1, "G75.1"),
         ("tnrc-seed004.nc", 6, 1, "G42"),
     ] {
         let p = gcode::parse(&read(&asset(&format!("programs/{file}")))).unwrap();

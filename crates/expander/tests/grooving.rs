@@ -316,3 +316,200 @@ fn g75_huge_step_count_is_an_alarm_not_a_hang() {
     let tp = run("G0 X0 Z3\nG74 X200 Z-100 P1 Q1 F0.1\n");
     assert_eq!(alarm_of(&tp), (2, "LS-CYCLE-TOO-LONG"));
 }
+
+// ---------------------------------------------------------------- G75.1
+
+/// O0008 (seed 000, IS-C) as printed: the geometry block waits, the process block runs.
+#[test]
+fn g75_1_o0008_expansion() {
+    insta::assert_snapshot!(listing(&run_with(&asset("O0008.nc"), &is_c())));
+}
+
+/// O0008 with a feed and the 4 mm blade given as I4: plunges from Z20 (where the blade fits
+/// at the floor inside the 45° flank) by 5 mm steps, the last with the far corner on
+/// the 30° flank at the floor (reference at Z10 + 4 = Z14), then the roughing contour.
+#[test]
+fn g75_1_o0008_i4_expansion() {
+    insta::assert_snapshot!(listing(&run_with(&asset("O0008-I4.nc"), &is_c())));
+}
+
+/// Every G75.1 alarm the spec lists, at the process block (or the geometry block's own
+/// word errors there), with a message and a help line.
+#[test]
+fn g75_1_alarm_rules() {
+    let geo = "G99 G0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\n";
+    for (src, line, code, words) in [
+        // H, D, P or Q missing or 0 (a block without H is a process block: H missing makes
+        // the first block a process block without its geometry)
+        (
+            "G0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 D-10\n",
+            2,
+            "LS-G75.1-BLOCKS",
+            "without its geometry",
+        ),
+        (
+            "G0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H0 D-10\n",
+            2,
+            "LS-G75.1-WORD",
+            "H is missing or 0",
+        ),
+        (
+            "G0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20\n",
+            2,
+            "LS-G75.1-WORD",
+            "D is missing or 0",
+        ),
+        (
+            "G0 X60 Z30\nG75.1 X50 Z30 Q50000 H-20 D-10\n",
+            2,
+            "LS-G75.1-WORD",
+            "P is missing or 0",
+        ),
+        (
+            "G0 X60 Z30\nG75.1 X50 Z30 P30000 Q0 H-20 D-10\n",
+            2,
+            "LS-G75.1-WORD",
+            "Q is missing or 0",
+        ),
+        // angles out of range
+        (
+            "G0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A0\n",
+            2,
+            "LS-G75.1-ANGLE",
+            "A0",
+        ),
+        (
+            "G0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 B95\n",
+            2,
+            "LS-G75.1-ANGLE",
+            "B95",
+        ),
+        (
+            "G0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 L90\n",
+            2,
+            "LS-G75.1-ANGLE",
+            "L90",
+        ),
+        // e ≥ Δi/2
+        (
+            &format!("{geo}G75.1 R1.5 F0.1\n"),
+            3,
+            "LS-G75.1-E",
+            "not smaller than the peck",
+        ),
+        // Δv ≤ 0
+        (
+            &format!("{geo}G75.1 R0.5 V0 F0.1\n"),
+            3,
+            "LS-G75.1-WORD",
+            "layer depth",
+        ),
+        // a chamfer larger than an edge it cuts
+        (
+            &format!("{geo}G75.1 R0.5 D8 E8 F0.1\n"),
+            3,
+            "LS-G75.1-SHAPE",
+            "floor",
+        ),
+        // the far flank never meets the mouth (flanks and mouth do not close)
+        (
+            "G99 G0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 B30 L40\nG75.1 R0.5 F0.1\n",
+            3,
+            "LS-G75.1-SHAPE",
+            "never meets",
+        ),
+        // tool wider than the floor
+        (
+            &format!("{geo}G75.1 R0.5 I12 F0.1\n"),
+            3,
+            "LS-G75.1-WIDTH",
+            "wider than the roughing floor",
+        ),
+        (
+            &format!("{geo}G75.1 R0.5 I6 W2.5 F0.1\n"),
+            3,
+            "LS-G75.1-WIDTH",
+            "wider than the roughing floor",
+        ),
+        // the second block missing: another geometry block, or a block in between
+        (
+            &format!("{geo}{geo}"),
+            4,
+            "LS-G75.1-BLOCKS",
+            "has no process block",
+        ),
+        (
+            &format!("{geo}G0 X60\nG75.1 R0.5 F0.1\n"),
+            4,
+            "LS-G75.1-BLOCKS",
+            "not followed",
+        ),
+        // process words out of range
+        (
+            &format!("{geo}G75.1 R0.5 J3 F0.1\n"),
+            3,
+            "LS-G75.1-WORD",
+            "J3",
+        ),
+        (
+            &format!("{geo}G75.1 R0.5 A1 P0120 F0.1\n"),
+            3,
+            "LS-G75.1-WORD",
+            "0 or 1",
+        ),
+        (
+            &format!("{geo}G75.1 R0.5 A1 P2000 F0.1\n"),
+            3,
+            "LS-G75.1-WORD",
+            "corner digits",
+        ),
+        (
+            &format!("{geo}G75.1 R0.5 U-1 F0.1\n"),
+            3,
+            "LS-G75.1-WORD",
+            "negative",
+        ),
+        (
+            &format!("{geo}G75.1 R0.5 K1 F0.1\n"),
+            3,
+            "LS-WORD-UNUSED",
+            "address K",
+        ),
+    ] {
+        let tp = run_with(src, &is_c());
+        assert_eq!(alarm_of(&tp), (line, code), "{src}: {:?}", tp.alarms);
+        let a = &tp.alarms[0];
+        assert!(a.message.contains(words), "{src}: {}", a.message);
+    }
+}
+
+/// P1 Q1 over a 100 mm deep groove: a clear alarm, at once.
+#[test]
+fn g75_1_huge_step_count_is_an_alarm() {
+    let tp = run("G99 G0 X260 Z0\nG75.1 X250 Z0 P1 Q1 H-200 D-100\nG75.1 F0.1\n");
+    assert_eq!(alarm_of(&tp), (3, "LS-CYCLE-TOO-LONG"));
+}
+
+/// The current position is the default start point; H and D signs choose the directions
+/// (here an ID groove: H positive, toward +X; D positive, toward +Z).
+#[test]
+fn g75_1_default_start_and_signs() {
+    let tp = run("G99 G0 X20 Z-10\nG75.1 P2000 Q2000 H6 D8\nG75.1 I3 J1 F0.1\n");
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let cyc: Vec<_> = tp.segments.iter().filter(|s| s.span.line == 3).collect();
+    let zmax = cyc.iter().map(|s| s.to.z).fold(f64::MIN, f64::max);
+    let rmax = cyc.iter().map(|s| s.to.r).fold(f64::MIN, f64::max);
+    let zmin = cyc.iter().map(|s| s.to.z).fold(f64::MAX, f64::min);
+    // floor X26 (r 13); the reference corner reaches Z−10 + 8 − 3 = Z−5 on the far side
+    assert!((rmax - 13.0).abs() < 1e-9, "{rmax}");
+    assert!(
+        (zmax - -5.0).abs() < 1e-9 && (zmin - -10.0).abs() < 1e-9,
+        "{zmin} {zmax}"
+    );
+    assert_eq!(cyc.last().unwrap().to, expander::Pt::new(-10.0, 10.0));
+    assert!(cyc.iter().all(|s| s.hint
+        == expander::ToolHint::Blade {
+            width: 3.0,
+            toward_plus_z: true
+        }));
+}
