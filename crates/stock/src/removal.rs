@@ -132,17 +132,95 @@ fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
         })
 }
 
+/// Polygons trimmed to a box (see [`trim_to_box`]), stored flat.
+#[derive(Default)]
+struct Trimmed {
+    pts: Vec<IPt>,
+    rings: Vec<std::ops::Range<usize>>,
+}
+
+impl Trimmed {
+    fn clear(&mut self) {
+        self.pts.clear();
+        self.rings.clear();
+    }
+
+    /// Appends `poly` trimmed to `b` (nothing when its overlap with `b` has no area).
+    fn push(&mut self, poly: &[IPt], b: &IBox) {
+        let start = self.pts.len();
+        trim_to_box(poly, b, &mut self.pts);
+        if self.pts.len() > start {
+            self.rings.push(start..self.pts.len());
+        }
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &[IPt]> + Clone {
+        self.rings.iter().map(|r| &self.pts[r.clone()])
+    }
+}
+
+/// Appends to `out` a polygon `t` with `t ∩ b == poly ∩ b` (as closed point sets, so any
+/// boolean with shapes inside `b` gives the same result), made of a subset of `poly`'s
+/// vertices. A vertex `k` (neighbours `a`, `c`) is dropped when `k` lies strictly right of
+/// the chord `a → c` and all of `b` lies on or left of it: the winding number changes only
+/// inside the open triangle `a k c`, which is then disjoint from `b`. Exact integer
+/// orientation tests, valid for any ring (a grid-snapped hull may be slightly non-convex).
+/// Nothing is appended when fewer than three vertices are left (no area inside `b`).
+fn trim_to_box(poly: &[IPt], b: &IBox, out: &mut Vec<IPt>) {
+    let corners = [
+        IPt::new(b.min[0], b.min[1]),
+        IPt::new(b.max[0], b.min[1]),
+        IPt::new(b.max[0], b.max[1]),
+        IPt::new(b.min[0], b.max[1]),
+    ];
+    let removable = |a: IPt, k: IPt, c: IPt| {
+        orient(a, c, k) < 0 && corners.iter().all(|&q| orient(a, c, q) >= 0)
+    };
+    let start = out.len();
+    for &v in poly {
+        out.push(v);
+        while out.len() - start >= 3 {
+            let l = out.len();
+            if removable(out[l - 3], out[l - 2], out[l - 1]) {
+                out.remove(l - 2);
+            } else {
+                break;
+            }
+        }
+    }
+    // the wrap-around: the first and last vertices against each other
+    loop {
+        let n = out.len() - start;
+        if n < 3 {
+            break;
+        }
+        let (first, last) = (start, out.len() - 1);
+        if removable(out[last], out[first], out[first + 1]) {
+            out.remove(first);
+        } else if removable(out[last - 1], out[last], out[first]) {
+            out.pop();
+        } else {
+            break;
+        }
+    }
+    if out.len() - start < 3 {
+        out.truncate(start);
+    }
+}
+
 impl Tile {
-    fn flush(&mut self, sweeps: &Sweeps, engine: &mut Engine) {
+    fn flush(&mut self, sweeps: &Sweeps, engine: &mut Engine, trim: &mut Trimmed) {
         if self.pending.is_empty() {
             return;
         }
         let items = &sweeps.items;
-        let clips = self
-            .pending
-            .iter()
-            .flat_map(|&i| sweeps.polys_of(&items[i as usize]));
-        self.stock = engine.difference(&self.stock, clips);
+        trim.clear();
+        for &i in &self.pending {
+            for p in sweeps.polys_of(&items[i as usize]) {
+                trim.push(p, &self.bbox);
+            }
+        }
+        self.stock = engine.difference(&self.stock, trim.iter());
         self.bbox = bbox_of(&self.stock);
         self.verts = self.stock.iter().flatten().map(Vec::len).sum();
         self.pending.clear();
@@ -180,6 +258,7 @@ impl Tile {
         engine: &mut Engine,
         frags: &mut Vec<Fragment>,
     ) -> Option<usize> {
+        let mut trim = Trimmed::default();
         for (k, &i) in list.iter().enumerate() {
             if self.verts > MAX_TILE_VERTICES && self.pending.is_empty() && self.splittable(ctx) {
                 return Some(k);
@@ -187,17 +266,24 @@ impl Tile {
             let it = &sweeps.items[i as usize];
             // air in this tile: the stock only shrinks, so missing the stock of the last
             // flush means missing the stock of this moment
-            if !it.bbox.overlaps(&self.bbox)
-                || !sweeps
-                    .polys_of(it)
-                    .any(|p| touches(p, &self.stock, &self.bbox))
-            {
+            if !it.bbox.overlaps(&self.bbox) {
+                continue;
+            }
+            trim.clear();
+            for p in sweeps.polys_of(it) {
+                trim.push(p, &self.bbox);
+            }
+            if !trim.iter().any(|p| touches(p, &self.stock, &self.bbox)) {
                 continue;
             }
             if it.rapid && !self.covered_by_pending(sweeps, it) {
-                self.flush(sweeps, engine);
+                self.flush(sweeps, engine, &mut trim);
                 if it.bbox.overlaps(&self.bbox) {
-                    let overlap = engine.intersection(&self.stock, sweeps.polys_of(it));
+                    trim.clear();
+                    for p in sweeps.polys_of(it) {
+                        trim.push(p, &self.bbox);
+                    }
+                    let overlap = engine.intersection(&self.stock, trim.iter());
                     let a = ctx.grid.area(&overlap);
                     if a > 0.0 {
                         let (dist, at) = nearest(ctx.grid, &overlap, it.start);
@@ -213,10 +299,10 @@ impl Tile {
             }
             self.pending.push(i);
             if self.pending.len() >= BATCH {
-                self.flush(sweeps, engine);
+                self.flush(sweeps, engine, &mut trim);
             }
         }
-        self.flush(sweeps, engine);
+        self.flush(sweeps, engine, &mut trim);
         None
     }
 
