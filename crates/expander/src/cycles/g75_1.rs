@@ -94,16 +94,16 @@ fn uv(u: f64, v: f64) -> Uv {
 }
 
 impl Uv {
-    fn add(self, o: Uv, k: f64) -> Uv {
+    fn add(self, o: Self, k: f64) -> Self {
         uv(self.u + k * o.u, self.v + k * o.v)
     }
-    fn sub(self, o: Uv) -> Uv {
+    fn sub(self, o: Self) -> Self {
         uv(self.u - o.u, self.v - o.v)
     }
     fn len(self) -> f64 {
         self.u.hypot(self.v)
     }
-    fn unit(self) -> Uv {
+    fn unit(self) -> Self {
         let l = self.len();
         uv(self.u / l, self.v / l)
     }
@@ -233,7 +233,7 @@ impl Trapezoid {
         (self.d.signum(), self.h.signum())
     }
 
-    fn to_pt(&self, q: Uv) -> Pt {
+    fn to_pt(self, q: Uv) -> Pt {
         let (sz, sx) = self.signs();
         Pt::new(self.start.z + sz * q.u, self.start.r + sx * q.v)
     }
@@ -640,7 +640,7 @@ fn process_block(c: &mut Cycle, g: &Geometry) -> Result<Output, Diagnostic> {
                     "chamfer widths and round radii are unsigned",
                 );
             }
-            Some(v) if v == 0.0 => {}
+            Some(0.0) => {}
             Some(v) => {
                 shape.corners[k] = if digits[k] == 1 {
                     Corner::Round(v)
