@@ -16,7 +16,7 @@ pub(crate) enum Command {
     /// Simulate a program on a blank and write the SVG, PNG and JSON report.
     Run(RunArgs),
     /// Read and expand a program and report its alarms (no material removal).
-    Check(ProgramArgs),
+    Check(CheckArgs),
     /// Print the expanded toolpath, one row per segment.
     Expand(ExpandArgs),
 }
@@ -38,6 +38,15 @@ pub(crate) struct ProgramArgs {
     /// No progress bar and no warnings on the terminal.
     #[arg(long, short)]
     pub(crate) quiet: bool,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct CheckArgs {
+    #[command(flatten)]
+    pub(crate) program: ProgramArgs,
+    /// Tool table (TOML): nose radii and tips for G41/G42.
+    #[arg(long, value_name = "F")]
+    pub(crate) tools: Option<PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -106,6 +115,9 @@ pub(crate) enum Format {
 pub(crate) struct ExpandArgs {
     #[command(flatten)]
     pub(crate) program: ProgramArgs,
+    /// Tool table (TOML): nose radii and tips for G41/G42.
+    #[arg(long, value_name = "F")]
+    pub(crate) tools: Option<PathBuf>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Csv)]
     pub(crate) format: Format,

@@ -49,7 +49,10 @@ fn row(s: &Segment) -> Row {
 
 /// Print every segment; alarms go to stderr and make the exit status 1.
 pub(crate) fn expand(args: &ExpandArgs) -> u8 {
-    let Ok(loaded) = input::load_program(&args.program) else {
+    let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
+        return EXIT_UNUSABLE;
+    };
+    let Ok(loaded) = input::load_program(&args.program, &tools) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);

@@ -3,7 +3,9 @@
 
 use crate::cli::{IncrementArg, ProgramArgs, RunArgs};
 use crate::diag::{self, Source};
+use expander::tnrc::Nose;
 use expander::{Increment, Machine, Options, Toolpath};
+use std::collections::BTreeMap;
 use std::path::Path;
 
 /// Largest program file read (a million-move program is ~20 MB).
@@ -81,8 +83,30 @@ fn load_machine(args: &ProgramArgs) -> Result<Machine, ()> {
     Ok(machine)
 }
 
+/// The nose (radius, tip) of every turning insert in the table, by offset number (the
+/// table's `t`, as `T0101` pairs tool 01 with offset 01); other kinds are `None`, for which
+/// G41/G42 is ignored with a warning.
+pub(crate) fn noses(tools: &stock::ToolTable) -> BTreeMap<u32, Option<Nose>> {
+    tools
+        .numbers()
+        .into_iter()
+        .map(|t| {
+            let nose = match tools.get(t) {
+                Some(stock::Tool::Turning {
+                    nose_radius, tip, ..
+                }) => Some(Nose {
+                    radius: *nose_radius,
+                    tip: *tip,
+                }),
+                _ => None,
+            };
+            (t, nose)
+        })
+        .collect()
+}
+
 /// Read, parse and expand the program. Parse errors and an empty program are `Err`.
-pub(crate) fn load_program(args: &ProgramArgs) -> Result<Loaded, ()> {
+pub(crate) fn load_program(args: &ProgramArgs, tools: &stock::ToolTable) -> Result<Loaded, ()> {
     let machine = load_machine(args)?;
     let text = read_text(&args.program, "program")?;
     let source = Source {
@@ -113,6 +137,7 @@ pub(crate) fn load_program(args: &ProgramArgs) -> Result<Loaded, ()> {
     }
     let opts = Options {
         block_delete: args.block_delete,
+        noses: noses(tools),
         ..Options::default()
     };
     let toolpath = expander::expand(&program, &machine, &opts);
@@ -160,8 +185,8 @@ pub(crate) fn print_diagnostics(loaded: &Loaded, quiet: bool) {
 }
 
 /// The tool table from `--tools`, or an empty one (every tool gets the documented default).
-pub(crate) fn load_tools(args: &RunArgs) -> Result<stock::ToolTable, ()> {
-    let Some(path) = &args.tools else {
+pub(crate) fn load_tools(path: Option<&Path>) -> Result<stock::ToolTable, ()> {
+    let Some(path) = path else {
         return Ok(stock::ToolTable::empty());
     };
     let text = read_text(path, "tool table")?;

@@ -1,6 +1,6 @@
 //! `latsim run` and `latsim check`.
 
-use crate::cli::{ProgramArgs, RunArgs};
+use crate::cli::{CheckArgs, RunArgs};
 use crate::diag;
 use crate::input::{self, Loaded};
 use crate::write::write_atomic;
@@ -9,11 +9,14 @@ use std::io::IsTerminal;
 use std::path::PathBuf;
 
 /// `latsim check`: read and expand, print alarms; no removal.
-pub(crate) fn check(args: &ProgramArgs) -> u8 {
-    let Ok(loaded) = input::load_program(args) else {
+pub(crate) fn check(args: &CheckArgs) -> u8 {
+    let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    input::print_diagnostics(&loaded, args.quiet);
+    let Ok(loaded) = input::load_program(&args.program, &tools) else {
+        return EXIT_UNUSABLE;
+    };
+    input::print_diagnostics(&loaded, args.program.quiet);
     let tp = &loaded.toolpath;
     println!(
         "{}: {} blocks, {} segments, {} alarm(s), {} warning(s)",
@@ -60,10 +63,10 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     let Ok(blank) = input::load_blank(args) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(tools) = input::load_tools(args) else {
+    let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program) else {
+    let Ok(loaded) = input::load_program(&args.program, &tools) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);

@@ -120,3 +120,22 @@ pub fn shape(mut ring: Vec<[f64; 2]>) -> stock::Shape {
         holes: vec![],
     }
 }
+
+/// The programmed profile of seed 004 on a Φ36 × 40 bar, computed by hand in (z, r):
+/// Φ10 at Z0, the R10 dome to Φ30 at Z−10, Φ30 to Z−17.639, the concave R10 to
+/// Φ32.111 at Z−22.111, the 45° line to Φ33.803 at Z−23.803, the convex R14 to Φ35.914 at
+/// Z−28.275, Φ35.914 to Z−35, then the bar (Φ36) to Z−40.
+pub fn seed004_profile() -> stock::Shape {
+    let p = |z: f64, x: f64| [z, x / 2.0];
+    let mut ring = vec![p(-40.0, 0.0), p(0.0, 0.0), p(0.0, 10.0)];
+    // G03 X30 Z-10 R10: centre (Z-10, r5), a quarter circle.
+    arc_points(p(0.0, 10.0), p(-10.0, 30.0), [-10.0, 5.0], true, &mut ring);
+    ring.push(p(-17.639, 30.0));
+    let (a, b) = (p(-17.639, 30.0), p(-22.111, 32.111));
+    arc_points(a, b, arc_centre(a, b, 10.0, false), false, &mut ring);
+    ring.push(p(-23.803, 33.803));
+    let (a, b) = (p(-23.803, 33.803), p(-28.275, 35.914));
+    arc_points(a, b, arc_centre(a, b, 14.0, true), true, &mut ring);
+    ring.extend([p(-35.0, 35.914), p(-35.0, 36.0), p(-40.0, 36.0)]);
+    shape(ring)
+}

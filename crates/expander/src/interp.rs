@@ -6,12 +6,14 @@
 
 use crate::arc::{self, ArcError};
 use crate::cycles::{self, Cycle, Retained};
+use crate::tnrc::{self, Nose, Side};
 use crate::words::Words;
 use crate::{Arc, Diagnostic, Feed, Machine, Motion, Pt, RapidPath, Segment, Span, Spindle};
 use gcode::{Block, Program, Subprogram, Word};
+use std::collections::BTreeMap;
 
 /// Interpreter settings from the command line.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// Skip blocks that start with `/`.
     pub block_delete: bool,
@@ -19,6 +21,11 @@ pub struct Options {
     pub max_segments: usize,
     /// Stop with an alarm after executing this many blocks (endless loops).
     pub max_blocks: usize,
+    /// Nose radius and tip per tool offset number (`oo` of `Tttoo`) for G41/G42;
+    /// `None` marks a grooving blade, for which compensation is ignored with a warning.
+    pub noses: BTreeMap<u32, Option<Nose>>,
+    /// The nose of an offset with no entry (the documented default insert: r 0.4, tip 3).
+    pub default_nose: Nose,
 }
 
 impl Default for Options {
@@ -27,6 +34,11 @@ impl Default for Options {
             block_delete: false,
             max_segments: 5_000_000,
             max_blocks: 20_000_000,
+            noses: BTreeMap::new(),
+            default_nose: Nose {
+                radius: 0.4,
+                tip: 3,
+            },
         }
     }
 }
@@ -61,7 +73,9 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
     }
     if let Some(main) = program.main() {
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
-        match it.run(program, 0, 0, 0) {
+        let result = it.run(program, 0, 0, 0);
+        it.flush_compensation();
+        match result {
             Ok(Exit::End) => {}
             Ok(Exit::Return(_)) => unreachable!("M99 in the main program is an alarm"),
             Err(alarm) => it.out.alarms.push(alarm),
@@ -121,6 +135,14 @@ struct Interp<'m> {
     feed: f64,
     tool: u32,
     retained: Retained,
+    /// G41/G42 mode in force (group 07); `None` is G40.
+    comp: Option<Side>,
+    /// Tool offset number `oo` in force.
+    offset: u32,
+    /// The compensation section being collected (start-up first), with its side and nose.
+    section: Option<(Side, Nose, Vec<Segment>)>,
+    /// Offsets already warned about (blade, no entry).
+    comp_warned: Vec<u32>,
 }
 
 fn alarm(
@@ -160,6 +182,10 @@ impl<'m> Interp<'m> {
             feed: 0.0,
             tool: 0,
             retained: Retained::default(),
+            comp: None,
+            offset: 0,
+            section: None,
+            comp_warned: vec![],
         }
     }
 
@@ -300,6 +326,7 @@ impl<'m> Interp<'m> {
         // -- G codes: classify, check groups.
         let mut motion: Option<(MotionMode, &Word)> = None;
         let mut one_shot: Option<(i32, &Word)> = None;
+        let mut comp_word: Option<(i32, &Word)> = None;
         for (i, w) in b.words.iter().enumerate() {
             if w.letter != 'G' {
                 continue;
@@ -313,14 +340,6 @@ impl<'m> Interp<'m> {
                     "G codes are G00 … G99 (and G75.1)",
                 ));
             };
-            if t == 410 || t == 420 {
-                return Err(alarm(
-                    w.span,
-                    "LS-NOT-IMPLEMENTED",
-                    format!("{} (tool nose radius compensation) is not implemented yet in this version of latsim", g_name(w)),
-                    "compensation is recognised but cannot be simulated yet; remove G41/G42 or wait for the release that adds it",
-                ));
-            }
             let mut set_motion = |m: MotionMode| {
                 if let Some((_, first)) = motion {
                     return Err(alarm(
@@ -357,7 +376,17 @@ impl<'m> Interp<'m> {
                 }
                 200 => self.inch = true,
                 210 => self.inch = false,
-                400 => {} // compensation off: the power-on state, nothing to undo yet
+                400 | 410 | 420 => {
+                    if let Some((_, first)) = comp_word {
+                        return Err(alarm(
+                            w.span,
+                            "PS010",
+                            format!("{} and {} in one block", g_name(first), g_name(w)),
+                            "keep one of G40/G41/G42 per block",
+                        ));
+                    }
+                    comp_word = Some((t, w));
+                }
                 540 | 550 | 560 | 570 | 580 | 590 => {
                     self.shift = self.machine.work_offsets[((t - 540) / 10) as usize];
                 }
@@ -425,6 +454,9 @@ impl<'m> Interp<'m> {
             }
             let v = t.value as u32;
             let (tool, offset) = (v / 100, v % 100);
+            // A T word suspends compensation; offset 00 cancels it (spec/tnrc.md).
+            self.flush_compensation();
+            self.offset = offset;
             if tool == 0 && offset != 0 {
                 self.warn(
                     t.span,
@@ -472,6 +504,33 @@ impl<'m> Interp<'m> {
                 }
             }
         }
+        // -- tool nose radius compensation mode (spec/tnrc.md).
+        if let Some((t, _)) = comp_word {
+            let side = match t {
+                410 => Some(Side::Left),
+                420 => Some(Side::Right),
+                _ => None,
+            };
+            if side.is_some() && self.comp.is_some() && side != self.comp {
+                // G41 in G42 mode (or the reverse) cancels and re-establishes.
+                self.flush_compensation();
+            }
+            self.comp = side;
+        }
+        let modal_cycle = motion.map_or(matches!(self.motion, MotionMode::Cycle(_)), |(m, _)| {
+            matches!(m, MotionMode::Cycle(_))
+        });
+        let suspends = matches!(one_shot, Some((280 | 500, _)))
+            || one_shot.is_some_and(|(t, _)| cycles::is_cycle(t))
+            || b.words.iter().any(|w| {
+                w.letter == 'G'
+                    && matches!(w.code_tenths(), Some(540 | 550 | 560 | 570 | 580 | 590))
+            })
+            || (modal_cycle && ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)));
+        if suspends {
+            // Suspended by G28, G50, G54–G59 and the cycles; resumed at the next move.
+            self.flush_compensation();
+        }
         // -- the block's action.
         let mut flow = Flow::Next;
         match one_shot {
@@ -489,7 +548,12 @@ impl<'m> Interp<'m> {
                         flow = self.cycle(t, g, sub, index, &mut used)?;
                     }
                 } else {
+                    self.start_compensation(b)?;
                     self.motion_block(b, &mut used)?;
+                    if self.section.is_some() && (self.comp.is_none() || self.offset == 0) {
+                        // This block was the cancel block.
+                        self.flush_compensation();
+                    }
                 }
             }
         }
@@ -662,7 +726,8 @@ impl<'m> Interp<'m> {
         arc: Option<Arc>,
         lead: f64,
     ) -> Result<(), Diagnostic> {
-        if self.out.segments.len() >= self.opts.max_segments {
+        let buffered = self.section.as_ref().map_or(0, |s| s.2.len());
+        if self.out.segments.len() + buffered >= self.opts.max_segments {
             return Err(alarm(
                 span,
                 "LS-TOO-LONG",
@@ -674,7 +739,7 @@ impl<'m> Interp<'m> {
             ));
         }
         let feed = self.feed_for(span, motion)?;
-        self.out.segments.push(Segment {
+        let seg = Segment {
             motion,
             from: self.pos,
             to,
@@ -684,7 +749,11 @@ impl<'m> Interp<'m> {
             lead,
             feed,
             span,
-        });
+        };
+        match &mut self.section {
+            Some((_, _, buf)) => buf.push(seg),
+            None => self.out.segments.push(seg),
+        }
         self.pos = to;
         Ok(())
     }
@@ -782,6 +851,62 @@ impl<'m> Interp<'m> {
                 )
             }
         }
+    }
+
+    /// Begin a compensation section if G41/G42 is in force, an offset is active, no section
+    /// is open and this block moves: this block is the start-up block.
+    fn start_compensation(&mut self, b: &Block) -> Result<(), Diagnostic> {
+        let Some(side) = self.comp else { return Ok(()) };
+        if self.section.is_some()
+            || self.offset == 0
+            || !['X', 'Z', 'U', 'W'].iter().any(|&l| b.has(l))
+        {
+            return Ok(());
+        }
+        if matches!(self.motion, MotionMode::Cw | MotionMode::Ccw) {
+            return Err(alarm(
+                b.span,
+                "PS034",
+                "tool nose radius compensation cannot start on an arc",
+                "start G41/G42 in a G00 or G01 block with a move",
+            ));
+        }
+        let offset = self.offset;
+        let nose = match self.opts.noses.get(&offset) {
+            Some(Some(n)) => *n,
+            Some(None) => {
+                if !self.comp_warned.contains(&offset) {
+                    self.comp_warned.push(offset);
+                    self.warn(b.span, "LS-TNRC-BLADE", format!("G41/G42 ignored: offset {offset:02} is a grooving blade"), "compensation applies to pointed inserts; program the blade's corner directly");
+                }
+                return Ok(());
+            }
+            None => {
+                let n = self.opts.default_nose;
+                if !self.comp_warned.contains(&offset) {
+                    self.comp_warned.push(offset);
+                    self.warn(
+                        b.span,
+                        "LS-TNRC-DEFAULT",
+                        format!("offset {offset:02} has no tool table entry: compensating with the default nose r{} tip {}", n.radius, n.tip),
+                        "give the tool in the tool table (--tools) with its nose_radius and tip",
+                    );
+                }
+                n
+            }
+        };
+        self.section = Some((side, nose, vec![]));
+        Ok(())
+    }
+
+    /// Compensate and emit the collected section; its last move is the cancel move.
+    fn flush_compensation(&mut self) {
+        let Some((side, nose, section)) = self.section.take() else {
+            return;
+        };
+        let c = tnrc::compensate(&section, side, nose);
+        self.out.segments.extend(c.segments);
+        self.out.alarms.extend(c.alarms);
     }
 
     /// Run a canned cycle and emit its moves with this block's span.

@@ -13,6 +13,7 @@ mod cycles;
 mod interp;
 mod machine;
 pub mod timing;
+pub mod tnrc;
 pub mod toolpath;
 mod words;
 

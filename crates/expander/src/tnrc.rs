@@ -1,0 +1,508 @@
+//! Tool nose radius compensation G41/G42 (spec/tnrc.md, seed 004).
+//!
+//! The program moves the imaginary tip along the contour. Under G41/G42 the nose centre
+//! moves along the contour offset by the nose radius r to the left/right of travel, and the
+//! segments we emit move the imaginary tip = nose centre + the tip vector of the imaginary
+//! tip number. One scheme, applied consistently (FANUC type A):
+//! - start-up: the start-up block (G00/G01) ends at its programmed end plus r times the
+//!   normal of the *next* block at its start;
+//! - cancel: the cancel block starts at the previous block's end plus r times that block's
+//!   normal there, and ends at its programmed (uncompensated) end point;
+//! - inside corners: the intersection of the two offset elements;
+//! - outside corners: an arc of radius r about the programmed corner (the nose rolls round
+//!   the corner and stays on the contour);
+//! - an offset element that would run backwards after trimming (radius too large for an
+//!   inside corner or a short element), or a concave arc smaller than the nose, is
+//!   interference: an alarm at that block, and the path is still emitted as computed so
+//!   the report shows the overcut it would cause.
+
+use crate::{Arc, Diagnostic, Pt, Segment};
+
+/// Which side of the contour the tool keeps, looking along the direction of travel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// G41.
+    Left,
+    /// G42.
+    Right,
+}
+
+/// The nose of a tool offset: radius and imaginary tip number (FANUC numbering).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Nose {
+    /// Nose radius, mm.
+    pub radius: f64,
+    /// Imaginary tip number 0–9.
+    pub tip: u8,
+}
+
+impl Nose {
+    /// The vector from the nose centre to the imaginary tip, (z, r) (spec/tnrc.md table).
+    pub fn tip_vector(&self) -> Pt {
+        let r = self.radius;
+        match self.tip {
+            1 => Pt::new(r, r),
+            2 => Pt::new(-r, r),
+            3 => Pt::new(-r, -r),
+            4 => Pt::new(r, -r),
+            5 => Pt::new(r, 0.0),
+            6 => Pt::new(0.0, r),
+            7 => Pt::new(-r, 0.0),
+            8 => Pt::new(0.0, -r),
+            _ => Pt::new(0.0, 0.0),
+        }
+    }
+}
+
+fn add(a: Pt, b: Pt) -> Pt {
+    Pt::new(a.z + b.z, a.r + b.r)
+}
+fn sub(a: Pt, b: Pt) -> Pt {
+    Pt::new(a.z - b.z, a.r - b.r)
+}
+fn scale(a: Pt, k: f64) -> Pt {
+    Pt::new(a.z * k, a.r * k)
+}
+fn dot(a: Pt, b: Pt) -> f64 {
+    a.z * b.z + a.r * b.r
+}
+fn cross(a: Pt, b: Pt) -> f64 {
+    a.z * b.r - a.r * b.z
+}
+fn unit(a: Pt) -> Pt {
+    let l = a.z.hypot(a.r);
+    if l == 0.0 {
+        a
+    } else {
+        scale(a, 1.0 / l)
+    }
+}
+
+/// Unit tangent of a segment at its start (`at_end` false) or end.
+fn tangent(s: &Segment, at_end: bool) -> Pt {
+    match s.arc {
+        None => unit(sub(s.to, s.from)),
+        Some(a) => {
+            let p = if at_end { s.to } else { s.from };
+            let radial = unit(sub(p, a.center));
+            // counter-clockwise: tangent is the radial vector turned +90°
+            if a.ccw {
+                Pt::new(-radial.r, radial.z)
+            } else {
+                Pt::new(radial.r, -radial.z)
+            }
+        }
+    }
+}
+
+/// Unit normal toward the tool's side of a travel direction.
+fn normal(side: Side, t: Pt) -> Pt {
+    match side {
+        Side::Left => Pt::new(-t.r, t.z),
+        Side::Right => Pt::new(t.r, -t.z),
+    }
+}
+
+/// An offset element: the programmed element moved r to the tool's side.
+#[derive(Debug, Clone, Copy)]
+enum Offset {
+    Line { p: Pt, d: Pt },
+    Circle { c: Pt, radius: f64, ccw: bool },
+}
+
+fn offset_of(s: &Segment, side: Side, r: f64) -> Offset {
+    match s.arc {
+        None => {
+            let d = tangent(s, false);
+            Offset::Line {
+                p: add(s.from, scale(normal(side, d), r)),
+                d,
+            }
+        }
+        Some(a) => {
+            let rad = a.center.dist(s.from);
+            // The left of a counter-clockwise arc is toward its centre.
+            let inward = (side == Side::Left) == a.ccw;
+            Offset::Circle {
+                c: a.center,
+                radius: if inward { rad - r } else { rad + r },
+                ccw: a.ccw,
+            }
+        }
+    }
+}
+
+/// Intersections of two offset elements.
+fn intersect(a: Offset, b: Offset) -> Vec<Pt> {
+    match (a, b) {
+        (Offset::Line { p, d }, Offset::Line { p: q, d: e }) => {
+            let den = cross(d, e);
+            if den.abs() < 1e-12 {
+                return vec![];
+            }
+            let t = cross(sub(q, p), e) / den;
+            vec![add(p, scale(d, t))]
+        }
+        (Offset::Line { p, d }, Offset::Circle { c, radius, .. })
+        | (Offset::Circle { c, radius, .. }, Offset::Line { p, d }) => {
+            let f = sub(p, c);
+            let bq = dot(f, d);
+            let cq = dot(f, f) - radius * radius;
+            let disc = bq * bq - cq;
+            if disc < 0.0 {
+                return vec![];
+            }
+            let s = disc.sqrt();
+            vec![add(p, scale(d, -bq - s)), add(p, scale(d, -bq + s))]
+        }
+        (
+            Offset::Circle {
+                c: c1, radius: r1, ..
+            },
+            Offset::Circle {
+                c: c2, radius: r2, ..
+            },
+        ) => {
+            let dv = sub(c2, c1);
+            let dd = dv.z.hypot(dv.r);
+            if dd < 1e-12 || dd > r1 + r2 || dd < (r1 - r2).abs() {
+                return vec![];
+            }
+            let a = (r1 * r1 - r2 * r2 + dd * dd) / (2.0 * dd);
+            let h = (r1 * r1 - a * a).max(0.0).sqrt();
+            let m = add(c1, scale(dv, a / dd));
+            let n = Pt::new(-dv.r / dd, dv.z / dd);
+            vec![add(m, scale(n, h)), add(m, scale(n, -h))]
+        }
+    }
+}
+
+/// Position of `p` along an offset element, in the element's direction of travel from `from`
+/// (a length for lines, an angle for arcs), used to detect elements that run backwards.
+fn progress(o: Offset, from: Pt, p: Pt) -> f64 {
+    match o {
+        Offset::Line { d, .. } => dot(sub(p, from), d),
+        Offset::Circle { c, ccw, .. } => {
+            let a0 = (from.r - c.r).atan2(from.z - c.z);
+            let a1 = (p.r - c.r).atan2(p.z - c.z);
+            let mut t = a1 - a0;
+            if !ccw {
+                t = -t;
+            }
+            let tau = std::f64::consts::TAU;
+            t.rem_euclid(tau)
+        }
+    }
+}
+
+/// The result of compensating one section.
+pub(crate) struct Compensated {
+    /// Segments moving the imaginary tip.
+    pub(crate) segments: Vec<Segment>,
+    /// Interference alarms (the path is still emitted).
+    pub(crate) alarms: Vec<Diagnostic>,
+}
+
+/// Compensate one section: `section[0]` is the start-up move, and the last move is the
+/// cancel move when `cancelled` (else the section simply ends compensated at the last
+/// move's perpendicular point, which is what "the last motion before G40 is the cancel
+/// block" means for a section with no following motion: the last move ends uncompensated).
+pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compensated {
+    let mut out = Compensated {
+        segments: vec![],
+        alarms: vec![],
+    };
+    let r = nose.radius;
+    // A section with only one move does not compensate (seed 004).
+    if section.len() < 2 || r <= 0.0 {
+        out.segments.extend_from_slice(section);
+        return out;
+    }
+    let tip = nose.tip_vector();
+    let first = &section[0];
+    let last = section.len() - 1;
+    // Elements 1..last are compensated; 0 is the start-up, `last` the cancel.
+    let body = &section[1..last];
+    let with_tip = |p: Pt| add(p, tip);
+
+    if body.is_empty() {
+        // Start-up straight into cancel: the nose touches nothing in between.
+        out.segments.extend_from_slice(section);
+        return out;
+    }
+
+    let offsets: Vec<Offset> = body.iter().map(|s| offset_of(s, side, r)).collect();
+    // Perpendicular points at each element's ends.
+    let perp_start = |i: usize| {
+        add(
+            body[i].from,
+            scale(normal(side, tangent(&body[i], false)), r),
+        )
+    };
+    let perp_end = |i: usize| add(body[i].to, scale(normal(side, tangent(&body[i], true)), r));
+
+    // Start-up: ends perpendicular to the next block's start (type A).
+    let mut cur = perp_start(0);
+    out.segments.push(Segment {
+        to: with_tip(cur),
+        arc: None,
+        ..*first
+    });
+
+    for i in 0..body.len() {
+        let s = &body[i];
+        let o = offsets[i];
+        if let Offset::Circle { radius, .. } = o {
+            if radius <= 1e-9 {
+                out.alarms.push(interference(
+                    s,
+                    "the concave arc is smaller than the nose radius",
+                ));
+            }
+        }
+        // Where this element ends: the joint with the next one, or perpendicular at the end.
+        let mut corner_arc: Option<(Pt, Pt)> = None; // (end of this element, start of the next)
+        let end = if i + 1 < body.len() {
+            let t1 = tangent(s, true);
+            let t2 = tangent(&body[i + 1], false);
+            let turn = cross(t1, t2);
+            let smooth = turn.abs() < 1e-9 && dot(t1, t2) > 0.0;
+            let outside = !smooth
+                && (dot(t1, t2) < 0.0 && turn.abs() < 1e-9 || (side == Side::Left) == (turn < 0.0));
+            if smooth {
+                perp_start(i + 1)
+            } else if outside {
+                corner_arc = Some((perp_end(i), perp_start(i + 1)));
+                perp_end(i)
+            } else {
+                let near = perp_end(i);
+                match intersect(o, offsets[i + 1])
+                    .into_iter()
+                    .min_by(|a, b| a.dist(near).total_cmp(&b.dist(near)))
+                {
+                    Some(p) => p,
+                    None => {
+                        out.alarms.push(interference(
+                            s,
+                            "the offset paths of this block and the next do not meet",
+                        ));
+                        near
+                    }
+                }
+            }
+        } else {
+            perp_end(i)
+        };
+        // The element must still run forward from `cur` to `end`.
+        let nominal_end = perp_end(i);
+        let nominal_start = perp_start(i);
+        let forward = match o {
+            Offset::Line { .. } => progress(o, cur, end) > -1e-9,
+            Offset::Circle { .. } => {
+                let full = progress(o, nominal_start, nominal_end);
+                let a = progress(o, nominal_start, cur);
+                let b = progress(o, nominal_start, end);
+                let tau = std::f64::consts::TAU;
+                let norm = |x: f64| if x > tau - 1e-9 { 0.0 } else { x };
+                let (a, b) = (norm(a), norm(b));
+                b + 1e-9 >= a && b <= full.max(1e-12) + 1e-9 || full < 1e-12
+            }
+        };
+        if !forward {
+            out.alarms.push(interference(s, "the nose radius is too large for this element: the offset path would run backwards"));
+        }
+        let arc = match (s.arc, o) {
+            (Some(a), Offset::Circle { c, .. }) => Some(Arc {
+                center: add(c, tip),
+                ccw: a.ccw,
+            }),
+            _ => None,
+        };
+        if cur.dist(end) > 1e-12 {
+            out.segments.push(Segment {
+                from: with_tip(cur),
+                to: with_tip(end),
+                arc,
+                ..*s
+            });
+        }
+        cur = end;
+        if let Some((a, b)) = corner_arc {
+            // Roll round the outside corner about the programmed corner point.
+            if a.dist(b) > 1e-12 {
+                let corner = s.to;
+                let ccw = side == Side::Right;
+                out.segments.push(Segment {
+                    from: with_tip(a),
+                    to: with_tip(b),
+                    arc: Some(Arc {
+                        center: add(corner, tip),
+                        ccw,
+                    }),
+                    ..*s
+                });
+            }
+            cur = b;
+        }
+    }
+    // Cancel: from the perpendicular point to the programmed end.
+    let cancel = &section[last];
+    out.segments.push(Segment {
+        from: with_tip(cur),
+        arc: None,
+        ..*cancel
+    });
+    out
+}
+
+fn interference(s: &Segment, what: &str) -> Diagnostic {
+    Diagnostic::new(
+        s.span,
+        "PS041",
+        format!("tool nose radius interference: {what}"),
+        "use a tool with a smaller nose radius, or a larger inside radius / longer element in the contour",
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Feed, Motion, Span, ToolHint};
+
+    fn line(from: Pt, to: Pt) -> Segment {
+        Segment {
+            motion: Motion::Feed,
+            from,
+            to,
+            arc: None,
+            tool: 1,
+            hint: ToolHint::Table,
+            lead: 0.0,
+            feed: Feed::PerMinute(100.0),
+            span: Span::default(),
+        }
+    }
+
+    #[test]
+    fn tip_vectors_follow_the_fanuc_table() {
+        let n = |tip| Nose { radius: 1.0, tip }.tip_vector();
+        assert_eq!(n(1), Pt::new(1.0, 1.0));
+        assert_eq!(n(2), Pt::new(-1.0, 1.0));
+        assert_eq!(n(3), Pt::new(-1.0, -1.0));
+        assert_eq!(n(4), Pt::new(1.0, -1.0));
+        assert_eq!(n(5), Pt::new(1.0, 0.0));
+        assert_eq!(n(6), Pt::new(0.0, 1.0));
+        assert_eq!(n(7), Pt::new(-1.0, 0.0));
+        assert_eq!(n(8), Pt::new(0.0, -1.0));
+        assert_eq!(n(0), Pt::new(0.0, 0.0));
+        assert_eq!(n(9), Pt::new(0.0, 0.0));
+    }
+
+    #[test]
+    fn od_turning_with_g42_puts_the_nose_above_the_contour() {
+        // Start-up down to Z0 at r=5, turn along r=5 to Z-10, cancel up.
+        let s = [
+            line(Pt::new(5.0, 10.0), Pt::new(0.0, 10.0)),
+            line(Pt::new(0.0, 10.0), Pt::new(-10.0, 10.0)),
+            line(Pt::new(-10.0, 10.0), Pt::new(-10.0, 20.0)),
+        ];
+        let c = compensate(
+            &s,
+            Side::Right,
+            Nose {
+                radius: 1.0,
+                tip: 0,
+            },
+        );
+        assert!(c.alarms.is_empty());
+        // moving −Z, the right side is +r: nose centre at r = 11, start-up ends at (0, 11)
+        assert_eq!(c.segments[0].to, Pt::new(0.0, 11.0));
+        assert_eq!(c.segments[1].to, Pt::new(-10.0, 11.0));
+        assert_eq!(c.segments[2].from, Pt::new(-10.0, 11.0));
+        // with tip 3 the imaginary tip is the nose centre − (1, 1): it runs on the contour
+        let c = compensate(
+            &s,
+            Side::Right,
+            Nose {
+                radius: 1.0,
+                tip: 3,
+            },
+        );
+        assert_eq!(c.segments[1].from, Pt::new(-1.0, 10.0));
+        assert_eq!(c.segments[1].to, Pt::new(-11.0, 10.0));
+    }
+
+    #[test]
+    fn inside_corner_uses_the_intersection() {
+        // Along r=10 toward −Z, then up a shoulder: an inside corner for G42 (tool above).
+        let s = [
+            line(Pt::new(5.0, 10.0), Pt::new(0.0, 10.0)),
+            line(Pt::new(0.0, 10.0), Pt::new(-10.0, 10.0)),
+            line(Pt::new(-10.0, 10.0), Pt::new(-10.0, 20.0)),
+            line(Pt::new(-10.0, 20.0), Pt::new(-20.0, 20.0)),
+        ];
+        let c = compensate(
+            &s,
+            Side::Right,
+            Nose {
+                radius: 1.0,
+                tip: 0,
+            },
+        );
+        assert!(c.alarms.is_empty());
+        // moving up +r at z=-10, the right side is +z: offset line z = -9; meets r = 11 at (-9, 11)
+        assert_eq!(c.segments[1].to, Pt::new(-9.0, 11.0));
+        assert_eq!(c.segments[2].from, Pt::new(-9.0, 11.0));
+    }
+
+    #[test]
+    fn outside_corner_rolls_round_the_corner() {
+        // Face down then turn: r=20 → r=10 at z=0 (moving −r), then along −Z: a left turn… for G42
+        let s = [
+            line(Pt::new(5.0, 25.0), Pt::new(0.0, 25.0)),
+            line(Pt::new(0.0, 25.0), Pt::new(0.0, 10.0)),
+            line(Pt::new(0.0, 10.0), Pt::new(-10.0, 10.0)),
+            line(Pt::new(-10.0, 10.0), Pt::new(-10.0, 30.0)),
+        ];
+        // moving −r then −z: G41 (left of −r travel is +z … ) keeps the nose outside the corner
+        let c = compensate(
+            &s,
+            Side::Left,
+            Nose {
+                radius: 1.0,
+                tip: 0,
+            },
+        );
+        assert!(c.alarms.is_empty(), "{:?}", c.alarms);
+        let arc = c
+            .segments
+            .iter()
+            .find(|s| s.arc.is_some())
+            .expect("a corner arc");
+        assert_eq!(arc.arc.unwrap().center, Pt::new(0.0, 10.0));
+        assert!((arc.from.dist(Pt::new(0.0, 10.0)) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn short_element_is_interference() {
+        // A 0.5 mm step between two inside corners with a 1 mm nose.
+        let s = [
+            line(Pt::new(5.0, 10.0), Pt::new(0.0, 10.0)),
+            line(Pt::new(0.0, 10.0), Pt::new(-10.0, 10.0)),
+            line(Pt::new(-10.0, 10.0), Pt::new(-10.0, 10.5)),
+            line(Pt::new(-10.0, 10.5), Pt::new(-10.5, 10.5)),
+            line(Pt::new(-10.5, 10.5), Pt::new(-10.5, 20.0)),
+            line(Pt::new(-10.5, 20.0), Pt::new(-20.0, 20.0)),
+        ];
+        let c = compensate(
+            &s,
+            Side::Right,
+            Nose {
+                radius: 1.0,
+                tip: 0,
+            },
+        );
+        assert!(!c.alarms.is_empty());
+        assert_eq!(c.alarms[0].code, "PS041");
+    }
+}
