@@ -52,7 +52,7 @@ pub(crate) fn expand(args: &ExpandArgs) -> u8 {
     let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program, &tools) else {
+    let Ok(loaded) = input::load_program(&args.program, &tools, None) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);

@@ -105,8 +105,24 @@ pub(crate) fn noses(tools: &stock::ToolTable) -> BTreeMap<u32, Option<Nose>> {
         .collect()
 }
 
+/// The width of every grooving blade in the table, by tool number (G75.1 without I).
+pub(crate) fn blades(tools: &stock::ToolTable) -> BTreeMap<u32, f64> {
+    tools
+        .numbers()
+        .into_iter()
+        .filter_map(|t| match tools.get(t) {
+            Some(stock::Tool::Grooving { width, .. }) => Some((t, *width)),
+            _ => None,
+        })
+        .collect()
+}
+
 /// Read, parse and expand the program. Parse errors and an empty program are `Err`.
-pub(crate) fn load_program(args: &ProgramArgs, tools: &stock::ToolTable) -> Result<Loaded, ()> {
+pub(crate) fn load_program(
+    args: &ProgramArgs,
+    tools: &stock::ToolTable,
+    start_tool: Option<u32>,
+) -> Result<Loaded, ()> {
     let machine = load_machine(args)?;
     let text = read_text(&args.program, "program")?;
     let source = Source {
@@ -138,6 +154,8 @@ pub(crate) fn load_program(args: &ProgramArgs, tools: &stock::ToolTable) -> Resu
     let opts = Options {
         block_delete: args.block_delete,
         noses: noses(tools),
+        blades: blades(tools),
+        start_tool: start_tool.or_else(|| tools.numbers().first().copied()),
         ..Options::default()
     };
     let toolpath = expander::expand(&program, &machine, &opts);

@@ -2,7 +2,7 @@
 
 use crate::cli::{CheckArgs, RunArgs};
 use crate::diag;
-use crate::input::{self, Loaded};
+use crate::input;
 use crate::write::write_atomic;
 use crate::{EXIT_CLEAN, EXIT_FINDINGS, EXIT_UNUSABLE};
 use std::io::IsTerminal;
@@ -13,7 +13,7 @@ pub(crate) fn check(args: &CheckArgs) -> u8 {
     let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program, &tools) else {
+    let Ok(loaded) = input::load_program(&args.program, &tools, None) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);
@@ -66,13 +66,13 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program, &tools) else {
+    let Ok(loaded) = input::load_program(&args.program, &tools, args.tool) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);
     let quiet = args.program.quiet;
 
-    let segments = with_start_tool(&loaded, args.tool);
+    let segments = &loaded.toolpath.segments;
     let bar = progress_bar(segments.len() as u64, quiet);
     let mut tick = |done: usize| {
         if let Some(b) = &bar {
@@ -153,17 +153,6 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     } else {
         EXIT_FINDINGS
     }
-}
-
-/// Segments with "no T word yet" given the `--tool N` tool.
-fn with_start_tool(loaded: &Loaded, tool: Option<u32>) -> Vec<expander::Segment> {
-    let mut segs = loaded.toolpath.segments.clone();
-    if let Some(t) = tool {
-        for s in segs.iter_mut().filter(|s| s.tool == 0) {
-            s.tool = t;
-        }
-    }
-    segs
 }
 
 fn progress_bar(len: u64, quiet: bool) -> Option<indicatif::ProgressBar> {

@@ -297,3 +297,49 @@ fn g75_1_sloped_mouth_on_a_cone() {
         "Hausdorff {h}, symmetric difference {sym}"
     );
 }
+
+/// O0008 exactly as printed (no I, no F): the blade width comes from the tool table's
+/// T01 (a 4 mm blade, the first entry, as the program has no T word) and the feed from a
+/// GSK machine profile; through the CLI.
+#[test]
+fn o0008_as_printed_with_the_table_blade_and_a_gsk_profile() {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("o.json");
+    let out = latsim(&[
+        "run",
+        asset("programs/O0008.nc").to_str().unwrap(),
+        "--stock",
+        "50x60",
+        "--stock-z",
+        "40",
+        "--tools",
+        asset("tools/seed000-groove4.toml").to_str().unwrap(),
+        "--machine",
+        asset("machines/gsk980tdi-isc.toml").to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let v: serde_json::Value = serde_json::from_str(&read(&json)).unwrap();
+    let shapes: Vec<stock::Shape> = v["final"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| stock::Shape {
+            outer: s["outer"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| [p[0].as_f64().unwrap(), p[1].as_f64().unwrap() / 2.0])
+                .collect(),
+            holes: vec![],
+        })
+        .collect();
+    let (sym, h) = compare(&shapes, &o0008_part());
+    eprintln!("O0008 as printed: symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm");
+    assert!(
+        h <= 0.01 && sym <= 1e-3,
+        "Hausdorff {h}, symmetric difference {sym}"
+    );
+}

@@ -26,6 +26,11 @@ pub struct Options {
     pub noses: BTreeMap<u32, Option<Nose>>,
     /// The nose of an offset with no entry (the documented default insert: r 0.4, tip 3).
     pub default_nose: Nose,
+    /// Blade width per tool number for the tool table's grooving blades (G75.1 without I).
+    pub blades: BTreeMap<u32, f64>,
+    /// The tool that cuts before the program's first T word (`--tool N`, else the tool
+    /// table's first entry); `None` leaves it 0, "no tool yet".
+    pub start_tool: Option<u32>,
 }
 
 impl Default for Options {
@@ -39,6 +44,8 @@ impl Default for Options {
                 radius: 0.4,
                 tip: 3,
             },
+            blades: BTreeMap::new(),
+            start_tool: None,
         }
     }
 }
@@ -60,6 +67,8 @@ pub struct Toolpath {
     pub title: String,
     /// Blocks executed.
     pub blocks: usize,
+    /// Shapes the program defines for itself (G75.1 grooves, G70–G73 finishing shapes).
+    pub intended: Vec<crate::Intended>,
 }
 
 /// FANUC's subprogram nesting limit.
@@ -73,8 +82,18 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
     }
     if let Some(main) = program.main() {
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
-        let result = it.run(program, 0, 0, 0);
+        let mut result = it.run(program, 0, 0, 0);
         it.flush_compensation();
+        if result.is_ok() && it.retained.g75_1.is_some() {
+            let span = program
+                .programs
+                .iter()
+                .flat_map(|p| p.blocks.last())
+                .last()
+                .map(|b| b.span)
+                .unwrap_or_default();
+            result = Err(g75_1_unfinished(span));
+        }
         match result {
             Ok(Exit::End) => {}
             Ok(Exit::Return(_)) => unreachable!("M99 in the main program is an alarm"),
@@ -145,6 +164,16 @@ struct Interp<'m> {
     comp_warned: Vec<u32>,
 }
 
+/// A G75.1 geometry block not followed by its process block.
+fn g75_1_unfinished(span: Span) -> Diagnostic {
+    alarm(
+        span,
+        "LS-G75.1-BLOCKS",
+        "the G75.1 geometry block is not followed by its process block",
+        "write the process block (G75.1 R… ) right after the geometry block (G75.1 X Z P Q H D …)",
+    )
+}
+
 fn alarm(
     span: Span,
     code: &'static str,
@@ -179,8 +208,8 @@ impl<'m> Interp<'m> {
             s_clamp: 0.0,
             spindle_on: false,
             spindle_warned: false,
-            feed: 0.0,
-            tool: 0,
+            feed: machine.power_on_feed,
+            tool: opts.start_tool.unwrap_or(0),
             retained: Retained::default(),
             comp: None,
             offset: 0,
@@ -323,6 +352,13 @@ impl<'m> Interp<'m> {
     fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
         let b = &sub.blocks[index];
         let mut used = Words::new(b);
+        let is_g75_1 = b
+            .words
+            .iter()
+            .any(|w| w.letter == 'G' && w.code_tenths() == Some(751));
+        if self.retained.g75_1.is_some() && !is_g75_1 {
+            return Err(g75_1_unfinished(b.span));
+        }
         // -- G codes: classify, check groups.
         let mut motion: Option<(MotionMode, &Word)> = None;
         let mut one_shot: Option<(i32, &Word)> = None;
@@ -931,10 +967,20 @@ impl<'m> Interp<'m> {
                 retained: &mut self.retained,
                 program: sub,
                 index,
+                tool_width: self.opts.blades.get(&self.tool).copied(),
             };
             cycles::run(&mut c)?
         };
         self.out.warnings.extend(out.warnings);
+        self.out.intended.extend(
+            out.intended
+                .into_iter()
+                .map(|(kind, points)| crate::Intended {
+                    kind,
+                    points,
+                    span: b.span,
+                }),
+        );
         let feed = self.feed;
         for m in out.moves {
             if let Some(f) = m.feed {

@@ -19,6 +19,9 @@ mod words;
 
 pub use alarm::Diagnostic;
 pub use cycles::contour::{FinishingShape, ShapeElement};
+pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
 pub use machine::{FeedMode, Increment, Machine, PqUnits, ProfileError, RapidPath};
-pub use toolpath::{Arc, Feed, Motion, Pt, Segment, Span, Spindle, ToolHint};
+pub use toolpath::{
+    Arc, Feed, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,
+};

@@ -9,6 +9,7 @@
 //! rapid_path = "straight"   # "straight" | "per-axis" (each axis at its own rate: a dog-leg)
 //! home = [150.0, 250.0]     # reference point [z, x] in G54 coordinates (x = diameter)
 //! max_rpm = 4000.0          # spindle limit used for G96 when no G50 S clamp is given
+//! power_on_feed = 0.0       # F in force before the program gives one (0: none, PS011)
 //! [work_offsets]            # G55..G59 origins relative to G54, [z, x]
 //! g55 = [-50.0, 0.0]
 //! ```
@@ -95,6 +96,9 @@ pub struct Machine {
     pub max_rpm: f64,
     /// Origins of G54..G59 relative to G54, (z, r).
     pub work_offsets: [Pt; 6],
+    /// F in force at power-on (0: none, so a cutting move before any F is alarm PS011,
+    /// as on FANUC; a GSK keeps its last F, which a profile can give here).
+    pub power_on_feed: f64,
 }
 
 impl Default for Machine {
@@ -109,6 +113,7 @@ impl Default for Machine {
             home: Pt::new(150.0, 125.0),
             max_rpm: 4000.0,
             work_offsets: [Pt::default(); 6],
+            power_on_feed: 0.0,
         }
     }
 }
@@ -124,6 +129,7 @@ struct File {
     rapid_path: Option<RapidPath>,
     home: Option<[f64; 2]>,
     max_rpm: Option<f64>,
+    power_on_feed: Option<f64>,
     work_offsets: Option<Offsets>,
 }
 
@@ -198,6 +204,14 @@ impl Machine {
                 Err(bad(format!("{name} must be finite [z, x]")))
             }
         };
+        if let Some(f) = file.power_on_feed {
+            if !(f.is_finite() && f >= 0.0) {
+                return Err(bad(format!(
+                    "power_on_feed must be zero or positive, got {f}"
+                )));
+            }
+            m.power_on_feed = f;
+        }
         if let Some(h) = file.home {
             m.home = pt("home", h)?;
         }

@@ -73,6 +73,27 @@ pub enum Spindle {
     },
 }
 
+/// What a shape the program defines for itself means (spec/simulation.md, intended shape).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum IntendedKind {
+    /// A G75.1 trapezoid groove: a closed ring of material that must be removed.
+    Groove,
+    /// A G70–G73 finishing shape ns..nf: an open path from the cycle's start point A; the
+    /// part lies on the side away from A, within the shape's Z span.
+    FinishingContour,
+}
+
+/// A shape the program itself defines, with the block that defined it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Intended {
+    /// What the points mean.
+    pub kind: IntendedKind,
+    /// The points, (z, r), G54 frame.
+    pub points: Vec<Pt>,
+    /// The cycle block.
+    pub span: Span,
+}
+
 /// Which outline cuts a segment, beyond the tool number.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum ToolHint {

@@ -434,13 +434,19 @@ fn g75_1_alarm_rules() {
         // the second block missing: another geometry block, or a block in between
         (
             &format!("{geo}{geo}"),
-            4,
+            3,
+            "LS-G75.1-BLOCKS",
+            "not followed by its process block",
+        ),
+        (
+            &format!("{geo}G75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\n"),
+            3,
             "LS-G75.1-BLOCKS",
             "has no process block",
         ),
         (
             &format!("{geo}G0 X60\nG75.1 R0.5 F0.1\n"),
-            4,
+            3,
             "LS-G75.1-BLOCKS",
             "not followed",
         ),

@@ -285,3 +285,70 @@ fn g32_threads_carry_the_lead() {
         (Motion::Thread, 1.5)
     );
 }
+
+#[test]
+fn g75_1_geometry_block_must_be_followed_by_its_process_block() {
+    let m = Machine {
+        increment: expander::Increment::IsC,
+        power_on_feed: 100.0,
+        ..Machine::default()
+    };
+    let tp = run_with(
+        "M3 S500\nG0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\nG0 X70\n",
+        &m,
+        &Options::default(),
+    );
+    assert_eq!(
+        (tp.alarms[0].code, tp.alarms[0].span.line),
+        ("LS-G75.1-BLOCKS", 4)
+    );
+    let tp = run_with(
+        "M3 S500\nG0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\n",
+        &m,
+        &Options::default(),
+    );
+    assert_eq!(tp.alarms[0].code, "LS-G75.1-BLOCKS");
+}
+
+#[test]
+fn g75_1_hands_over_its_groove_as_intended_shape() {
+    let m = Machine {
+        increment: expander::Increment::IsC,
+        power_on_feed: 100.0,
+        ..Machine::default()
+    };
+    let tp = run_with(
+        "M3 S500\nG0 X60 Z30\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\nG75.1 R0.5 I4\nM30\n",
+        &m,
+        &Options::default(),
+    );
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert_eq!(tp.intended.len(), 1);
+    let g = &tp.intended[0];
+    assert_eq!((g.kind, g.span.line), (expander::IntendedKind::Groove, 4));
+    // trapezoid P1 (30,25) P2 (20,15) P3 (10,15) P4 (−7.32,25): area = (37.32 + 10) / 2 · 10
+    let ring = &g.points;
+    let area: f64 = (0..ring.len())
+        .map(|i| {
+            let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+            a.z * b.r - b.z * a.r
+        })
+        .sum::<f64>()
+        .abs()
+        / 2.0;
+    let p4 = 10.0 - 10.0 / 30f64.to_radians().tan();
+    assert!(
+        (area - (30.0 - p4 + 10.0) / 2.0 * 10.0).abs() < 1e-6,
+        "area {area}"
+    );
+}
+
+#[test]
+fn the_start_tool_applies_before_the_first_t_word() {
+    let opts = Options {
+        start_tool: Some(4),
+        ..Options::default()
+    };
+    let tp = run_with("G0 X40 Z2\nT0101\nG0 X50\n", &Machine::default(), &opts);
+    assert_eq!((tp.segments[0].tool, tp.segments[1].tool), (4, 1));
+}

@@ -34,6 +34,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         moves,
         resume_at: shape.resume_at(c.index),
         warnings: std::mem::take(&mut shape.notes),
+        ..Output::default()
     };
     c.retained.shapes.push(shape);
     Ok(out)

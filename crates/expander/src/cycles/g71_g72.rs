@@ -114,6 +114,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         moves,
         resume_at: shape.resume_at(c.index),
         warnings: vec![],
+        ..Output::default()
     };
     c.retained.shapes.push(shape);
     Ok(out)

@@ -27,7 +27,7 @@
 //! - U and W are unsigned (a negative value is an alarm); I negative means positive (seed).
 
 use super::{Cycle, Move, Output};
-use crate::{Arc, Diagnostic, Motion, Pt, ToolHint};
+use crate::{Arc, Diagnostic, IntendedKind, Motion, Pt, ToolHint};
 
 /// The most moves one G75.1 may expand to; more is an alarm.
 const MAX_MOVES: usize = super::g74_g75::MAX_MOVES;
@@ -48,7 +48,6 @@ pub(crate) struct Geometry {
 }
 
 /// How one corner of the groove is broken.
-#[allow(unreachable_pub)] // re-exported from lib.rs with `groove_shape` (see issue 3)
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum Corner {
     /// A sharp corner.
@@ -59,8 +58,6 @@ pub enum Corner {
     /// A round of this radius (mm) tangent to both edges.
     Round(f64),
 }
-
-#[allow(unreachable_pub)] // re-exported from lib.rs with `groove_shape` (see issue 3)
 /// The G75.1 groove as drawn: mouth corner P1, depth, floor width, flank angles, mouth
 /// slope and the four corners (mouth start, mouth far, floor start, floor far).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -361,7 +358,6 @@ impl Trapezoid {
 
     /// The groove as a closed ring in (z, r): the finishing contour with its chamfers and
     /// rounds (arcs chorded within `chord_tol` mm), closed along the mouth line.
-    #[allow(dead_code, unreachable_pub)] // used through `groove_shape`
     pub fn ring(&self, chord_tol: f64) -> Result<Vec<Pt>, String> {
         let k = self.contour()?;
         let mut ring = vec![k.first];
@@ -372,7 +368,6 @@ impl Trapezoid {
 
 /// The G75.1 groove's intended shape as a closed ring in (z, r) (arcs chorded within
 /// `chord_tol` mm), or why the words do not make a groove.
-#[allow(dead_code, unreachable_pub)] // to be re-exported from lib.rs (see issue 3)
 pub fn groove_shape(t: &Trapezoid, chord_tol: f64) -> Result<Vec<Pt>, String> {
     t.ring(chord_tol)
 }
@@ -540,7 +535,7 @@ fn process_block(c: &mut Cycle, g: &Geometry) -> Result<Output, Diagnostic> {
     let dv = c.words.mm('V', c.unit);
     let du = c.words.mm('U', c.unit).unwrap_or(0.0);
     let dw = c.words.mm('W', c.unit).unwrap_or(0.0);
-    let w = c.words.mm('I', c.unit).map(f64::abs);
+    let w = c.words.mm('I', c.unit).map(f64::abs).or(c.tool_width);
     let j = c.words.take('J');
     let r = ['A', 'B', 'D', 'E'].map(|l| c.words.mm(l, c.unit));
     let kinds = c.words.take('P');
@@ -818,6 +813,12 @@ fn process_block(c: &mut Cycle, g: &Geometry) -> Result<Output, Diagnostic> {
     moves.push(back);
     Ok(Output {
         moves,
+        intended: vec![(
+            IntendedKind::Groove,
+            shape
+                .ring(0.001)
+                .map_err(|m| c.alarm("LS-G75.1-SHAPE", m, "check the chamfers and angles"))?,
+        )],
         ..Output::default()
     })
 }

@@ -3,7 +3,7 @@
 //! force, so a cycle file reads like the manual's numbered motion steps.
 
 use crate::words::Words;
-use crate::{Arc, Diagnostic, Machine, Motion, Pt, Span, ToolHint};
+use crate::{Arc, Diagnostic, IntendedKind, Machine, Motion, Pt, Span, ToolHint};
 use gcode::{Subprogram, Word};
 
 pub(crate) mod contour;
@@ -111,6 +111,9 @@ pub(crate) struct Cycle<'a, 'b> {
     pub(crate) program: &'b Subprogram,
     /// Index of the cycle block in `program.blocks`.
     pub(crate) index: usize,
+    /// Width of the active tool when the tool table says it is a grooving blade (G75.1
+    /// without I uses it).
+    pub(crate) tool_width: Option<f64>,
 }
 
 /// What a cycle made.
@@ -122,6 +125,8 @@ pub(crate) struct Output {
     pub(crate) resume_at: Option<usize>,
     /// Warnings; the run goes on.
     pub(crate) warnings: Vec<Diagnostic>,
+    /// Shapes the cycle defines (G75.1 groove, G70–G73 finishing shape), for the analysis.
+    pub(crate) intended: Vec<(IntendedKind, Vec<Pt>)>,
 }
 
 impl Cycle<'_, '_> {
