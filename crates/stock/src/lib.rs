@@ -12,6 +12,7 @@
 //! ```
 
 mod blank;
+mod deviation;
 mod error;
 mod geom;
 mod measure;
@@ -23,6 +24,7 @@ mod sweep;
 mod tools;
 
 pub use blank::Blank;
+pub use deviation::{deviation, Deviation, Finding, Intent};
 pub use error::StockError;
 pub use measure::{area, hausdorff, revolved_volume, symmetric_difference_area};
 pub use outline::Outline;

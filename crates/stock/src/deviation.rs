@@ -1,0 +1,247 @@
+//! The final part against the intended one: gouges (part material that is gone) and
+//! leftovers (material that should be gone), each with its area, depth, position and the
+//! moves whose sweeps made it (spec/simulation.md, "The intended shape").
+
+use crate::geom::{convex_hull, point_in_ring, point_segment, sweep_convex, P};
+use crate::overlay::BoolOp;
+use crate::{area, boolean, AxisDir, Outline, Shape, Tool, ToolTable};
+use expander::{Segment, ToolHint};
+
+/// What the part should be, and where that statement holds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Intent {
+    /// The intended part material.
+    pub part: Vec<Shape>,
+    /// Where the comparison applies (a G75.1 groove's box, a finishing shape's Z span);
+    /// outside it the program may do what it likes.
+    pub zone: Vec<Shape>,
+}
+
+/// One connected region where the part differs from the intent.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finding {
+    /// The region.
+    pub shape: Shape,
+    /// Its area, mm².
+    pub area: f64,
+    /// Largest distance of the region from the intended boundary, mm.
+    pub depth: f64,
+    /// The deepest point, (z, r).
+    pub at: [f64; 2],
+    /// Indices of the segments whose sweeps overlap the region (gouges only), in order.
+    pub segments: Vec<usize>,
+}
+
+/// Gouges and leftovers beyond the tolerance.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Deviation {
+    /// Overcuts: part material removed.
+    pub gouges: Vec<Finding>,
+    /// Undercuts: material left that should be gone.
+    pub leftovers: Vec<Finding>,
+}
+
+impl Deviation {
+    /// Total overcut area, mm².
+    pub fn overcut_area(&self) -> f64 {
+        self.gouges.iter().map(|f| f.area).sum()
+    }
+    /// Total undercut area, mm².
+    pub fn undercut_area(&self) -> f64 {
+        self.leftovers.iter().map(|f| f.area).sum()
+    }
+    /// Deepest gouge, mm (0 when none).
+    pub fn max_overcut(&self) -> f64 {
+        self.gouges.iter().map(|f| f.depth).fold(0.0, f64::max)
+    }
+    /// Thickest leftover, mm (0 when none).
+    pub fn max_undercut(&self) -> f64 {
+        self.leftovers.iter().map(|f| f.depth).fold(0.0, f64::max)
+    }
+}
+
+/// Compare `final_shapes` (the simulated part, cut from `blank`) with the intents. Regions
+/// whose depth does not exceed `tol` are dropped (chord and grid noise); the rest are
+/// findings. Gouges get the segments whose tool sweep overlaps them.
+pub fn deviation(
+    blank: &[Shape],
+    final_shapes: &[Shape],
+    intents: &[Intent],
+    tol: f64,
+    segments: &[Segment],
+    tools: &ToolTable,
+    chord_tol: f64,
+) -> Deviation {
+    let mut out = Deviation::default();
+    for intent in intents {
+        let blank_zone = boolean(blank, &intent.zone, BoolOp::Intersection);
+        let should_stay = boolean(&blank_zone, &intent.part, BoolOp::Intersection);
+        let final_zone = boolean(final_shapes, &intent.zone, BoolOp::Intersection);
+        let gone = boolean(&should_stay, final_shapes, BoolOp::Difference);
+        let left = boolean(&final_zone, &intent.part, BoolOp::Difference);
+        out.gouges.extend(findings(gone, &intent.part, tol));
+        out.leftovers.extend(findings(left, &intent.part, tol));
+    }
+    for g in &mut out.gouges {
+        g.segments = sweeping(&g.shape, segments, tools, chord_tol);
+    }
+    out
+}
+
+/// The components of `region` deeper than `tol` from the boundary of `part`.
+fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
+    region
+        .into_iter()
+        .filter_map(|shape| {
+            let a = area(std::slice::from_ref(&shape));
+            let (depth, at) = deepest(&shape, part);
+            (depth > tol && a > 0.0).then_some(Finding { shape, area: a, depth, at, segments: vec![] })
+        })
+        .collect()
+}
+
+/// The point of `shape` farthest from the boundary of `part`, sampled at the vertices, the
+/// edge midpoints and the centroid of each ring (enough for the thin regions gouges and
+/// leftovers are; a thick region is reported at least as deep as its samples).
+fn deepest(shape: &Shape, part: &[Shape]) -> (f64, [f64; 2]) {
+    let mut best = (0.0, shape.outer.first().copied().unwrap_or([0.0, 0.0]));
+    for ring in std::iter::once(&shape.outer).chain(&shape.holes) {
+        let n = ring.len();
+        let mut samples: Vec<P> = Vec::with_capacity(2 * n + 1);
+        for i in 0..n {
+            let (a, b) = (ring[i], ring[(i + 1) % n]);
+            samples.push(a);
+            samples.push([(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0]);
+        }
+        if n > 0 {
+            let c = ring.iter().fold([0.0, 0.0], |s, p| [s[0] + p[0] / n as f64, s[1] + p[1] / n as f64]);
+            if point_in_ring(c, ring) {
+                samples.push(c);
+            }
+        }
+        for p in samples {
+            let d = boundary_distance(p, part);
+            if d > best.0 {
+                best = (d, p);
+            }
+        }
+    }
+    best
+}
+
+/// Distance from `p` to the nearest edge of any ring of `shapes`.
+pub(crate) fn boundary_distance(p: P, shapes: &[Shape]) -> f64 {
+    let mut best = f64::INFINITY;
+    for s in shapes {
+        for ring in std::iter::once(&s.outer).chain(&s.holes) {
+            let n = ring.len();
+            for i in 0..n {
+                best = best.min(point_segment(p, ring[i], ring[(i + 1) % n]).0);
+            }
+        }
+    }
+    best
+}
+
+/// Indices of the segments whose tool sweep overlaps `region` by more than a sliver.
+fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: f64) -> Vec<usize> {
+    let bb = bbox(&region.outer);
+    let mut out = vec![];
+    let mut cache: Vec<((u32, u8, u64), Outline)> = vec![];
+    for (i, seg) in segments.iter().enumerate() {
+        let outline = outline_cached(&mut cache, tools, seg);
+        let Some((lo, hi)) = outline.bbox() else { continue };
+        let (sz0, sz1) = (seg.from.z.min(seg.to.z), seg.from.z.max(seg.to.z));
+        let (sr0, sr1) = (seg.from.r.min(seg.to.r), seg.from.r.max(seg.to.r));
+        // arcs may bulge beyond their end points by up to their radius
+        let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
+        if sz1 + hi[0] + bulge < bb.0[0] || sz0 + lo[0] - bulge > bb.1[0] || sr1 + hi[1] + bulge < bb.0[1] || sr0 + lo[1] - bulge > bb.1[1] {
+            continue;
+        }
+        let pts = seg.polyline(chord_tol);
+        let mut sweep: Vec<Shape> = vec![];
+        for w in pts.windows(2) {
+            let d = [w[1].z - w[0].z, w[1].r - w[0].r];
+            for part in &outline.parts {
+                let at: Vec<P> = part.iter().map(|p| [p[0] + w[0].z, p[1] + w[0].r]).collect();
+                let ring = if d[0] == 0.0 && d[1] == 0.0 { convex_hull(&at) } else { sweep_convex(&at, d) };
+                sweep.push(Shape { outer: ring, holes: vec![] });
+            }
+        }
+        let overlap = area(&boolean(&sweep, std::slice::from_ref(region), BoolOp::Intersection));
+        if overlap > 1e-9 {
+            out.push(i);
+        }
+    }
+    out
+}
+
+fn bbox(ring: &[P]) -> (P, P) {
+    ring.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), p| {
+        ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
+    })
+}
+
+/// The outline that cuts `seg`, as the removal resolves it (tool number and hint).
+fn outline_cached(cache: &mut Vec<((u32, u8, u64), Outline)>, tools: &ToolTable, seg: &Segment) -> Outline {
+    let key = match seg.hint {
+        ToolHint::Table => (seg.tool, 0, 0),
+        ToolHint::Grooving => (seg.tool, 1, 0),
+        ToolHint::Blade { width, toward_plus_z } => (seg.tool, 2 + u8::from(toward_plus_z), width.to_bits()),
+    };
+    if let Some((_, o)) = cache.iter().find(|(k, _)| *k == key) {
+        return o.clone();
+    }
+    let o = match seg.hint {
+        ToolHint::Table => tools.outline(seg.tool).0,
+        ToolHint::Grooving => tools.get(seg.tool).map_or_else(|| Tool::DEFAULT_BLADE.outline(), Tool::outline),
+        ToolHint::Blade { width, toward_plus_z } => {
+            let (shank_dir, reach, corner_radius) = match tools.get(seg.tool) {
+                Some(&Tool::Grooving { shank_dir, reach, corner_radius, .. }) => (shank_dir, reach, corner_radius),
+                _ => (AxisDir::PlusX, 20.0, 0.0),
+            };
+            let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
+            let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { AxisDir::PlusX };
+            Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) }.outline()
+        }
+    };
+    cache.push((key, o.clone()));
+    o
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(z0: f64, z1: f64, r0: f64, r1: f64) -> Shape {
+        Shape { outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]], holes: vec![] }
+    }
+
+    #[test]
+    fn gouge_and_leftover_with_depth() {
+        let blank = [rect(-50.0, 0.0, 0.0, 20.0)];
+        // intended: Φ30 (r 15) from Z0 to Z-20; the part: r 14.5 (0.5 deep gouge) from Z0 to
+        // Z-10 and r 16 (1 mm leftover) from Z-10 to Z-20
+        let part = [rect(-50.0, -20.0, 0.0, 20.0), rect(-20.0, 0.0, 0.0, 15.0)];
+        let part = boolean(&part, &[], BoolOp::Union);
+        let final_shapes = boolean(&[rect(-50.0, -20.0, 0.0, 20.0), rect(-10.0, 0.0, 0.0, 14.5), rect(-20.0, -10.0, 0.0, 16.0)], &[], BoolOp::Union);
+        let intent = Intent { part: part.clone(), zone: vec![rect(-30.0, 10.0, 0.0, 30.0)] };
+        let d = deviation(&blank, &final_shapes, &[intent], 0.01, &[], &ToolTable::empty(), 0.001);
+        assert_eq!(d.gouges.len(), 1);
+        assert_eq!(d.leftovers.len(), 1);
+        assert!((d.gouges[0].area - 5.0).abs() < 1e-6 && (d.gouges[0].depth - 0.5).abs() < 1e-6, "{:?}", d.gouges[0]);
+        assert!((d.leftovers[0].area - 10.0).abs() < 1e-6 && (d.leftovers[0].depth - 1.0).abs() < 1e-6);
+        assert!((d.max_overcut() - 0.5).abs() < 1e-6 && (d.undercut_area() - 10.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn within_tolerance_and_outside_the_zone_is_not_a_finding() {
+        let blank = [rect(-50.0, 0.0, 0.0, 20.0)];
+        let part = vec![rect(-50.0, 0.0, 0.0, 15.0)];
+        // 0.005 too deep everywhere, and a deep cut outside the zone
+        let final_shapes = boolean(&[rect(-40.0, 0.0, 0.0, 14.995), rect(-50.0, -40.0, 0.0, 5.0)], &[], BoolOp::Union);
+        let intent = Intent { part, zone: vec![rect(-40.0, 0.0, 0.0, 30.0)] };
+        let d = deviation(&blank, &final_shapes, &[intent], 0.01, &[], &ToolTable::empty(), 0.001);
+        assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
+    }
+}
