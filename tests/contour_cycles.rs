@@ -172,3 +172,29 @@ fn g72_faces_to_the_allowance_and_g70_finishes() {
     let (tp, sim) = on_bar("G72-facing.nc", true);
     assert_part(&sim, &tp, g72_part(0.0, 0.0));
 }
+
+/// A finishing shape of 3000 blocks (X = 10 + 40·t², Z = −60·t) roughed by G71 in 1 mm
+/// layers and finished by G70: the part equals the shape (the run takes well under a
+/// second in release; see PERFORMANCE.md).
+#[test]
+fn g71_with_a_3000_block_shape() {
+    let n = 3000;
+    let mut prog = String::from("O0713\nG99 M03 S800 T0101\nG00 X62 Z2\nG71 U1 R0.5\n");
+    prog += "G71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X10\nG01 Z0 F0.1\n";
+    let mut ring = vec![[0.0, 0.0], [0.0, 5.0]];
+    for k in 1..=n {
+        let t = k as f64 / n as f64;
+        let (z, x) = (-60.0 * t, 10.0 + 40.0 * t * t);
+        prog += &format!("X{x:.4} Z{z:.4}\n");
+        ring.push([z, x / 2.0]);
+    }
+    prog += "N20 X62\nG70 P10 Q20\nM30\n";
+    ring.extend([[-60.0, 30.0], [-80.0, 30.0], [-80.0, 0.0]]);
+    let tools = stock::ToolTable::from_toml(&read(&asset("tools/v35-sharp.toml"))).unwrap();
+    let blank = stock::Blank::bar(60.0, 80.0, 0.0, None).unwrap();
+    let t0 = std::time::Instant::now();
+    let (tp, sim) = simulate(&prog, &blank, &tools);
+    eprintln!("{:?}", t0.elapsed());
+    assert!(tp.segments.len() > 2 * n, "{}", tp.segments.len());
+    assert_part(&sim, &tp, ring);
+}
