@@ -2,7 +2,7 @@
 //!
 //! The shape is found by its sequence numbers in the O program of the cycle block, before
 //! or after it. It is read here without running it: the blocks may hold only G00–G03,
-//! G04, G96–G99 and G40–G42, no M98/M99 (GSK980TDb, seed 003); the ns block must be G00 or
+//! G04, G96–G99 and G40–G42, no M98/M99 (`GSK980TDb`, seed 003); the ns block must be G00 or
 //! G01. The shape starts at the cycle's start point A and is returned as a list of line and
 //! arc [`ShapeElement`]s in the G54 frame, each with the span of the block that wrote it
 //! and the F in force inside the shape (which only G70 uses).

@@ -11,7 +11,7 @@
 //! translation, as FANUC does — and the material between the start level v = 0 and the
 //! moved shape is cut in layers.
 //!
-//! Motion (FANUC 0i-TF / GSK980TDi, with the choices the manuals leave implicit):
+//! Motion (FANUC 0i-TF / `GSK980TDi`, with the choices the manuals leave implicit):
 //! 1. Layer i lies at depth v = i·Δd; the layers stop above the deepest point of the moved
 //!    shape, and the last one is the last full Δd: the remainder (< Δd) is taken by step 4.
 //! 2. A layer that starts at the A column is reached by the ns block's motion (G00 rapid,
@@ -346,7 +346,7 @@ impl Poly {
         // a stretch from the A column that ends before it (type I with Δw behind A)
         out.retain(|(s, e)| {
             let u0 = s.map_or(0.0, |s| s.p.0);
-            e.map_or(true, |e| e.p.0 > u0 + EPS)
+            e.is_none_or(|e| e.p.0 > u0 + EPS)
         });
         out
     }

@@ -1,4 +1,4 @@
-//! G73 — pattern repeating cycle (seed 003, GSK980TDb; spec/cycles.md).
+//! G73 — pattern repeating cycle (seed 003, `GSK980TDb`; spec/cycles.md).
 //!
 //! ```text
 //! G73 U(Δi) W(Δk) R(d) F S T;     relief and count: retained (GSK NO.053–055)
