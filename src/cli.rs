@@ -83,6 +83,10 @@ pub(crate) struct RunArgs {
     /// Tool table (TOML, [[tool]] entries).
     #[arg(long, value_name = "F")]
     pub(crate) tools: Option<PathBuf>,
+    /// The intended part (profile TOML, as --stock-file); default: the shapes the program
+    /// defines (G70–G73 finishing shapes, G75.1 grooves).
+    #[arg(long, value_name = "F")]
+    pub(crate) target: Option<PathBuf>,
     /// Tool to use before the program's first T word (default: the table's first entry).
     #[arg(long, value_name = "N")]
     pub(crate) tool: Option<u32>,

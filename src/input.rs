@@ -105,13 +105,18 @@ pub(crate) fn noses(tools: &stock::ToolTable) -> BTreeMap<u32, Option<Nose>> {
         .collect()
 }
 
-/// The width of every grooving blade in the table, by tool number (G75.1 without I).
-pub(crate) fn blades(tools: &stock::ToolTable) -> BTreeMap<u32, f64> {
+/// Every radial grooving blade in the table by tool number: width, and whether it extends
+/// toward +Z from its reference corner (G75.1 without I).
+pub(crate) fn blades(tools: &stock::ToolTable) -> BTreeMap<u32, (f64, bool)> {
     tools
         .numbers()
         .into_iter()
         .filter_map(|t| match tools.get(t) {
-            Some(stock::Tool::Grooving { width, .. }) => Some((t, *width)),
+            Some(stock::Tool::Grooving {
+                width, width_dir, ..
+            }) if matches!(width_dir, stock::AxisDir::PlusZ | stock::AxisDir::MinusZ) => {
+                Some((t, (*width, *width_dir == stock::AxisDir::PlusZ)))
+            }
             _ => None,
         })
         .collect()
@@ -227,7 +232,7 @@ pub(crate) fn load_blank(args: &RunArgs) -> Result<stock::Blank, ()> {
     stock::Blank::bar(d, l, args.stock_z, args.bore).map_err(fail)
 }
 
-fn print_stock_error(path: &Path, text: &str, e: &stock::StockError) {
+pub(crate) fn print_stock_error(path: &Path, text: &str, e: &stock::StockError) {
     let src = Source {
         name: path.display().to_string(),
         text: text.to_string(),

@@ -3,6 +3,7 @@
 //! The CLI only wires the stages (`gcode` → `expander` → `stock` → `render`) and owns
 //! files, flags, progress and exit codes.
 
+mod analysis;
 mod cli;
 mod diag;
 mod expand_cmd;

@@ -77,9 +77,11 @@ pub(crate) fn build(
             message: message.clone(),
         });
     }
-    let mut tool_numbers: Vec<u32> = tp.tools.clone();
-    if tp.segments.iter().any(|s| s.tool == 0) {
-        tool_numbers.insert(0, 0);
+    let mut tool_numbers: Vec<u32> = vec![];
+    for s in &tp.segments {
+        if !tool_numbers.contains(&s.tool) {
+            tool_numbers.push(s.tool);
+        }
     }
     Report {
         program: program_name.to_string(),
@@ -106,4 +108,73 @@ pub(crate) fn build(
         tolerance_mm: tol,
         ..Report::default()
     }
+}
+
+/// Whether a point list is meant as a closed ring (its signed area is not negligible
+/// against its extent): G75.1 grooves and targets are, finishing paths are not.
+fn is_ring(pts: &[[f64; 2]]) -> bool {
+    let n = pts.len();
+    if n < 3 {
+        return false;
+    }
+    let a: f64 = (0..n)
+        .map(|i| pts[i][0] * pts[(i + 1) % n][1] - pts[(i + 1) % n][0] * pts[i][1])
+        .sum();
+    let ext = pts
+        .iter()
+        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+    a.abs() / 2.0 > 1e-6 * ext * ext
+}
+
+/// The deviation findings: gouges (with the first line whose sweep made them), leftovers,
+/// the intended shapes drawn dashed, and the summary.
+pub(crate) fn add_deviation(
+    report: &mut Report,
+    loaded: &Loaded,
+    blank: &stock::Blank,
+    intents: &[stock::Intent],
+    deviation: Option<&stock::Deviation>,
+) {
+    let _ = blank;
+    // Closed rings as they are; an open path is drawn out and back.
+    report.intended = intents
+        .iter()
+        .flat_map(|i| i.outline.iter())
+        .map(|line| {
+            let closed = line.len() > 2 && line.first() == line.last() || is_ring(line);
+            let mut outer = line.clone();
+            if !closed {
+                outer.extend(line.iter().rev().skip(1).take(line.len().saturating_sub(2)));
+            }
+            Shape {
+                outer,
+                holes: vec![],
+            }
+        })
+        .collect();
+    let Some(d) = deviation else { return };
+    let segs = &loaded.toolpath.segments;
+    report.gouges = d
+        .gouges
+        .iter()
+        .map(|g| render::Gouge {
+            line: g
+                .segments
+                .first()
+                .and_then(|&i| segs.get(i))
+                .map_or(0, |s| s.span.line),
+            z: g.at[0],
+            r: g.at[1],
+            area_mm2: g.area,
+            depth_mm: g.depth,
+        })
+        .collect();
+    report.gouge_shapes = d.gouges.iter().map(|g| shape(&g.shape)).collect();
+    report.leftovers = d.leftovers.iter().map(|g| shape(&g.shape)).collect();
+    report.deviation = Some(render::Deviation {
+        overcut_area_mm2: d.overcut_area(),
+        undercut_area_mm2: d.undercut_area(),
+        max_overcut_mm: d.max_overcut(),
+        max_undercut_mm: d.max_undercut(),
+    });
 }

@@ -82,7 +82,7 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     let sim = stock::simulate(
         &blank,
         &tools,
-        &segments,
+        segments,
         &stock::SimOptions::default(),
         &mut tick,
     );
@@ -98,12 +98,28 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         || "program".to_string(),
         |s| s.to_string_lossy().into_owned(),
     );
-    let report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
+    let Ok(intents) = crate::analysis::intents(args, &loaded) else {
+        return EXIT_UNUSABLE;
+    };
+    let deviation = (!intents.is_empty()).then(|| {
+        stock::deviation(
+            &blank.shapes,
+            &sim.final_shapes,
+            &intents,
+            args.tol,
+            segments,
+            &tools,
+            0.001,
+        )
+    });
+    let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
+    crate::report::add_deviation(&mut report, &loaded, &blank, &intents, deviation.as_ref());
 
     let mut inputs = vec![args.program.program.clone()];
     inputs.extend(args.tools.clone());
     inputs.extend(args.stock_file.clone());
     inputs.extend(args.program.machine.clone());
+    inputs.extend(args.target.clone());
     for (path, kind) in outputs(args, &stem) {
         let bytes = match kind {
             "svg" => render::svg(&report).into_bytes(),
@@ -134,6 +150,17 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
             c.z,
             2.0 * c.r,
             c.area_mm2
+        );
+    }
+    for g in &report.gouges {
+        eprintln!(
+            "{}:{}: gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
+            loaded.source.name,
+            g.line,
+            g.depth_mm,
+            g.area_mm2,
+            g.z,
+            2.0 * g.r
         );
     }
     let verdict = report.verdict();

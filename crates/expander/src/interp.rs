@@ -26,8 +26,9 @@ pub struct Options {
     pub noses: BTreeMap<u32, Option<Nose>>,
     /// The nose of an offset with no entry (the documented default insert: r 0.4, tip 3).
     pub default_nose: Nose,
-    /// Blade width per tool number for the tool table's grooving blades (G75.1 without I).
-    pub blades: BTreeMap<u32, f64>,
+    /// The tool table's radial grooving blades by tool number: width, and whether the
+    /// blade extends toward +Z from its reference corner (G75.1 without I).
+    pub blades: BTreeMap<u32, (f64, bool)>,
     /// The tool that cuts before the program's first T word (`--tool N`, else the tool
     /// table's first entry); `None` leaves it 0, "no tool yet".
     pub start_tool: Option<u32>,
@@ -967,7 +968,7 @@ impl<'m> Interp<'m> {
                 retained: &mut self.retained,
                 program: sub,
                 index,
-                tool_width: self.opts.blades.get(&self.tool).copied(),
+                tool_blade: self.opts.blades.get(&self.tool).copied(),
             };
             cycles::run(&mut c)?
         };

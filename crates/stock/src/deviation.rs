@@ -15,6 +15,92 @@ pub struct Intent {
     /// Where the comparison applies (a G75.1 groove's box, a finishing shape's Z span);
     /// outside it the program may do what it likes.
     pub zone: Vec<Shape>,
+    /// The intended boundary as drawn in the report: closed rings, or open paths.
+    pub outline: Vec<Vec<[f64; 2]>>,
+}
+
+/// Half the size of the world a zone or a closing edge may reach, mm.
+const FAR: f64 = 1e5;
+
+fn rect(z0: f64, z1: f64, r0: f64, r1: f64) -> Shape {
+    Shape {
+        outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]],
+        holes: vec![],
+    }
+}
+
+impl Intent {
+    /// `--target`: the whole intended part, compared everywhere.
+    pub fn target(part: Vec<Shape>) -> Self {
+        let outline = part
+            .iter()
+            .flat_map(|s| std::iter::once(s.outer.clone()).chain(s.holes.iter().cloned()))
+            .collect();
+        Self {
+            part,
+            zone: vec![rect(-FAR, FAR, -FAR, FAR)],
+            outline,
+        }
+    }
+
+    /// A G75.1 groove (a closed ring of material that must go): compared within the
+    /// groove's bounding box grown along Z by the groove's depth on both sides (a groove cut
+    /// a blade width off, or a flank gouged, shows there), where everything but the groove
+    /// must stay. Material above the mouth is not the groove's business.
+    pub fn groove(ring: &[[f64; 2]]) -> Self {
+        let (lo, hi) = bbox(ring);
+        let grow = (hi[1] - lo[1]).max(1.0);
+        let zone = vec![rect(lo[0] - grow, hi[0] + grow, lo[1] - grow, hi[1])];
+        let groove = boolean(
+            &[Shape {
+                outer: ring.to_vec(),
+                holes: vec![],
+            }],
+            &[],
+            BoolOp::Union,
+        );
+        Self {
+            part: boolean(&zone, &groove, BoolOp::Difference),
+            zone,
+            outline: vec![ring.to_vec()],
+        }
+    }
+
+    /// A G70–G73 finishing shape: `path[0]` is the start point A, `path[1..]` the shape
+    /// B..C. The part lies on the side away from A (spec): below the shape when A is above
+    /// it (OD), above it when A is below (ID), left of it when A is to its right (facing).
+    /// The comparison is limited to the shape's Z span (its X span for facing).
+    pub fn finishing(path: &[[f64; 2]]) -> Option<Self> {
+        let (a, shape) = path.split_first()?;
+        let (first, last) = (*shape.first()?, *shape.last()?);
+        let (lo, hi) = bbox(shape);
+        let mut ring = shape.to_vec();
+        let zone = if a[1] >= hi[1] - 1e-9 {
+            ring.extend([[last[0], -FAR], [first[0], -FAR]]);
+            rect(lo[0], hi[0], -FAR, FAR)
+        } else if a[1] <= lo[1] + 1e-9 {
+            ring.extend([[last[0], FAR], [first[0], FAR]]);
+            rect(lo[0], hi[0], -FAR, FAR)
+        } else if a[0] >= hi[0] - 1e-9 {
+            ring.extend([[-FAR, last[1]], [-FAR, first[1]]]);
+            rect(-FAR, FAR, lo[1], hi[1])
+        } else {
+            return None;
+        };
+        let part = boolean(
+            &[Shape {
+                outer: ring,
+                holes: vec![],
+            }],
+            &[],
+            BoolOp::Union,
+        );
+        Some(Self {
+            part,
+            zone: vec![zone],
+            outline: vec![shape.to_vec()],
+        })
+    }
 }
 
 /// One connected region where the part differs from the intent.
@@ -95,7 +181,13 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
         .filter_map(|shape| {
             let a = area(std::slice::from_ref(&shape));
             let (depth, at) = deepest(&shape, part);
-            (depth > tol && a > 0.0).then_some(Finding { shape, area: a, depth, at, segments: vec![] })
+            (depth > tol && a > 0.0).then_some(Finding {
+                shape,
+                area: a,
+                depth,
+                at,
+                segments: vec![],
+            })
         })
         .collect()
 }
@@ -114,7 +206,9 @@ fn deepest(shape: &Shape, part: &[Shape]) -> (f64, [f64; 2]) {
             samples.push([(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0]);
         }
         if n > 0 {
-            let c = ring.iter().fold([0.0, 0.0], |s, p| [s[0] + p[0] / n as f64, s[1] + p[1] / n as f64]);
+            let c = ring.iter().fold([0.0, 0.0], |s, p| {
+                [s[0] + p[0] / n as f64, s[1] + p[1] / n as f64]
+            });
             if point_in_ring(c, ring) {
                 samples.push(c);
             }
@@ -150,12 +244,18 @@ fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: 
     let mut cache: Vec<((u32, u8, u64), Outline)> = vec![];
     for (i, seg) in segments.iter().enumerate() {
         let outline = outline_cached(&mut cache, tools, seg);
-        let Some((lo, hi)) = outline.bbox() else { continue };
+        let Some((lo, hi)) = outline.bbox() else {
+            continue;
+        };
         let (sz0, sz1) = (seg.from.z.min(seg.to.z), seg.from.z.max(seg.to.z));
         let (sr0, sr1) = (seg.from.r.min(seg.to.r), seg.from.r.max(seg.to.r));
         // arcs may bulge beyond their end points by up to their radius
         let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
-        if sz1 + hi[0] + bulge < bb.0[0] || sz0 + lo[0] - bulge > bb.1[0] || sr1 + hi[1] + bulge < bb.0[1] || sr0 + lo[1] - bulge > bb.1[1] {
+        if sz1 + hi[0] + bulge < bb.0[0]
+            || sz0 + lo[0] - bulge > bb.1[0]
+            || sr1 + hi[1] + bulge < bb.0[1]
+            || sr0 + lo[1] - bulge > bb.1[1]
+        {
             continue;
         }
         let pts = seg.polyline(chord_tol);
@@ -163,12 +263,26 @@ fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: 
         for w in pts.windows(2) {
             let d = [w[1].z - w[0].z, w[1].r - w[0].r];
             for part in &outline.parts {
-                let at: Vec<P> = part.iter().map(|p| [p[0] + w[0].z, p[1] + w[0].r]).collect();
-                let ring = if d[0] == 0.0 && d[1] == 0.0 { convex_hull(&at) } else { sweep_convex(&at, d) };
-                sweep.push(Shape { outer: ring, holes: vec![] });
+                let at: Vec<P> = part
+                    .iter()
+                    .map(|p| [p[0] + w[0].z, p[1] + w[0].r])
+                    .collect();
+                let ring = if d[0] == 0.0 && d[1] == 0.0 {
+                    convex_hull(&at)
+                } else {
+                    sweep_convex(&at, d)
+                };
+                sweep.push(Shape {
+                    outer: ring,
+                    holes: vec![],
+                });
             }
         }
-        let overlap = area(&boolean(&sweep, std::slice::from_ref(region), BoolOp::Intersection));
+        let overlap = area(&boolean(
+            &sweep,
+            std::slice::from_ref(region),
+            BoolOp::Intersection,
+        ));
         if overlap > 1e-9 {
             out.push(i);
         }
@@ -177,32 +291,70 @@ fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: 
 }
 
 fn bbox(ring: &[P]) -> (P, P) {
-    ring.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), p| {
-        ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
-    })
+    ring.iter().fold(
+        ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+        |(lo, hi), p| {
+            (
+                [lo[0].min(p[0]), lo[1].min(p[1])],
+                [hi[0].max(p[0]), hi[1].max(p[1])],
+            )
+        },
+    )
 }
 
 /// The outline that cuts `seg`, as the removal resolves it (tool number and hint).
-fn outline_cached(cache: &mut Vec<((u32, u8, u64), Outline)>, tools: &ToolTable, seg: &Segment) -> Outline {
+fn outline_cached(
+    cache: &mut Vec<((u32, u8, u64), Outline)>,
+    tools: &ToolTable,
+    seg: &Segment,
+) -> Outline {
     let key = match seg.hint {
         ToolHint::Table => (seg.tool, 0, 0),
         ToolHint::Grooving => (seg.tool, 1, 0),
-        ToolHint::Blade { width, toward_plus_z } => (seg.tool, 2 + u8::from(toward_plus_z), width.to_bits()),
+        ToolHint::Blade {
+            width,
+            toward_plus_z,
+        } => (seg.tool, 2 + u8::from(toward_plus_z), width.to_bits()),
     };
     if let Some((_, o)) = cache.iter().find(|(k, _)| *k == key) {
         return o.clone();
     }
     let o = match seg.hint {
         ToolHint::Table => tools.outline(seg.tool).0,
-        ToolHint::Grooving => tools.get(seg.tool).map_or_else(|| Tool::DEFAULT_BLADE.outline(), Tool::outline),
-        ToolHint::Blade { width, toward_plus_z } => {
+        ToolHint::Grooving => tools
+            .get(seg.tool)
+            .map_or_else(|| Tool::DEFAULT_BLADE.outline(), Tool::outline),
+        ToolHint::Blade {
+            width,
+            toward_plus_z,
+        } => {
             let (shank_dir, reach, corner_radius) = match tools.get(seg.tool) {
-                Some(&Tool::Grooving { shank_dir, reach, corner_radius, .. }) => (shank_dir, reach, corner_radius),
+                Some(&Tool::Grooving {
+                    shank_dir,
+                    reach,
+                    corner_radius,
+                    ..
+                }) => (shank_dir, reach, corner_radius),
                 _ => (AxisDir::PlusX, 20.0, 0.0),
             };
-            let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
-            let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { AxisDir::PlusX };
-            Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) }.outline()
+            let width_dir = if toward_plus_z {
+                AxisDir::PlusZ
+            } else {
+                AxisDir::MinusZ
+            };
+            let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) {
+                shank_dir
+            } else {
+                AxisDir::PlusX
+            };
+            Tool::Grooving {
+                width,
+                width_dir,
+                shank_dir,
+                reach,
+                corner_radius: corner_radius.min(width / 2.0),
+            }
+            .outline()
         }
     };
     cache.push((key, o.clone()));
@@ -213,10 +365,6 @@ fn outline_cached(cache: &mut Vec<((u32, u8, u64), Outline)>, tools: &ToolTable,
 mod tests {
     use super::*;
 
-    fn rect(z0: f64, z1: f64, r0: f64, r1: f64) -> Shape {
-        Shape { outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]], holes: vec![] }
-    }
-
     #[test]
     fn gouge_and_leftover_with_depth() {
         let blank = [rect(-50.0, 0.0, 0.0, 20.0)];
@@ -224,14 +372,75 @@ mod tests {
         // Z-10 and r 16 (1 mm leftover) from Z-10 to Z-20
         let part = [rect(-50.0, -20.0, 0.0, 20.0), rect(-20.0, 0.0, 0.0, 15.0)];
         let part = boolean(&part, &[], BoolOp::Union);
-        let final_shapes = boolean(&[rect(-50.0, -20.0, 0.0, 20.0), rect(-10.0, 0.0, 0.0, 14.5), rect(-20.0, -10.0, 0.0, 16.0)], &[], BoolOp::Union);
-        let intent = Intent { part: part.clone(), zone: vec![rect(-30.0, 10.0, 0.0, 30.0)] };
-        let d = deviation(&blank, &final_shapes, &[intent], 0.01, &[], &ToolTable::empty(), 0.001);
+        let final_shapes = boolean(
+            &[
+                rect(-50.0, -20.0, 0.0, 20.0),
+                rect(-10.0, 0.0, 0.0, 14.5),
+                rect(-20.0, -10.0, 0.0, 16.0),
+            ],
+            &[],
+            BoolOp::Union,
+        );
+        let intent = Intent {
+            part: part.clone(),
+            zone: vec![rect(-30.0, 10.0, 0.0, 30.0)],
+            outline: vec![],
+        };
+        let d = deviation(
+            &blank,
+            &final_shapes,
+            &[intent],
+            0.01,
+            &[],
+            &ToolTable::empty(),
+            0.001,
+        );
         assert_eq!(d.gouges.len(), 1);
         assert_eq!(d.leftovers.len(), 1);
-        assert!((d.gouges[0].area - 5.0).abs() < 1e-6 && (d.gouges[0].depth - 0.5).abs() < 1e-6, "{:?}", d.gouges[0]);
-        assert!((d.leftovers[0].area - 10.0).abs() < 1e-6 && (d.leftovers[0].depth - 1.0).abs() < 1e-6);
+        assert!(
+            (d.gouges[0].area - 5.0).abs() < 1e-6 && (d.gouges[0].depth - 0.5).abs() < 1e-6,
+            "{:?}",
+            d.gouges[0]
+        );
+        assert!(
+            (d.leftovers[0].area - 10.0).abs() < 1e-6 && (d.leftovers[0].depth - 1.0).abs() < 1e-6
+        );
         assert!((d.max_overcut() - 0.5).abs() < 1e-6 && (d.undercut_area() - 10.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn groove_intent_wants_the_ring_gone_and_the_rest_kept() {
+        let ring = [[-10.0, 20.0], [-10.0, 15.0], [-6.0, 15.0], [-6.0, 20.0]];
+        let i = Intent::groove(&ring);
+        // the zone grows 5 mm along Z both sides and 5 mm down: 14 × 10 box minus the 4 × 5 groove
+        assert!(
+            (area(&i.part) - (14.0 * 10.0 - 20.0)).abs() < 1e-9,
+            "{}",
+            area(&i.part)
+        );
+        let ring = [[-10.0, 20.0], [-8.0, 15.0], [-6.0, 15.0], [-4.0, 20.0]];
+        let i = Intent::groove(&ring);
+        assert!(
+            (area(&i.part) - (16.0 * 10.0 - 20.0)).abs() < 1e-9,
+            "{}",
+            area(&i.part)
+        );
+    }
+
+    #[test]
+    fn finishing_shape_sides() {
+        // OD: A above; the part is below the shape within its Z span
+        let od =
+            Intent::finishing(&[[5.0, 30.0], [0.0, 10.0], [-10.0, 10.0], [-10.0, 20.0]]).unwrap();
+        let blank = [rect(-50.0, 0.0, 0.0, 25.0)];
+        let kept = boolean(&blank, &od.part, BoolOp::Intersection);
+        let kept = boolean(&kept, &od.zone, BoolOp::Intersection);
+        assert!((area(&kept) - 100.0).abs() < 1e-6, "{}", area(&kept));
+        // ID: A below
+        let id = Intent::finishing(&[[5.0, 5.0], [0.0, 12.0], [-10.0, 12.0]]).unwrap();
+        let kept = boolean(&blank, &id.part, BoolOp::Intersection);
+        let kept = boolean(&kept, &id.zone, BoolOp::Intersection);
+        assert!((area(&kept) - 130.0).abs() < 1e-6, "{}", area(&kept));
     }
 
     #[test]
@@ -239,9 +448,25 @@ mod tests {
         let blank = [rect(-50.0, 0.0, 0.0, 20.0)];
         let part = vec![rect(-50.0, 0.0, 0.0, 15.0)];
         // 0.005 too deep everywhere, and a deep cut outside the zone
-        let final_shapes = boolean(&[rect(-40.0, 0.0, 0.0, 14.995), rect(-50.0, -40.0, 0.0, 5.0)], &[], BoolOp::Union);
-        let intent = Intent { part, zone: vec![rect(-40.0, 0.0, 0.0, 30.0)] };
-        let d = deviation(&blank, &final_shapes, &[intent], 0.01, &[], &ToolTable::empty(), 0.001);
+        let final_shapes = boolean(
+            &[rect(-40.0, 0.0, 0.0, 14.995), rect(-50.0, -40.0, 0.0, 5.0)],
+            &[],
+            BoolOp::Union,
+        );
+        let intent = Intent {
+            part,
+            zone: vec![rect(-40.0, 0.0, 0.0, 30.0)],
+            outline: vec![],
+        };
+        let d = deviation(
+            &blank,
+            &final_shapes,
+            &[intent],
+            0.01,
+            &[],
+            &ToolTable::empty(),
+            0.001,
+        );
         assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
     }
 }

@@ -535,7 +535,8 @@ fn process_block(c: &mut Cycle, g: &Geometry) -> Result<Output, Diagnostic> {
     let dv = c.words.mm('V', c.unit);
     let du = c.words.mm('U', c.unit).unwrap_or(0.0);
     let dw = c.words.mm('W', c.unit).unwrap_or(0.0);
-    let w = c.words.mm('I', c.unit).map(f64::abs).or(c.tool_width);
+    let i_word = c.words.mm('I', c.unit).map(f64::abs);
+    let w = i_word.or(c.tool_blade.map(|b| b.0));
     let j = c.words.take('J');
     let r = ['A', 'B', 'D', 'E'].map(|l| c.words.mm(l, c.unit));
     let kinds = c.words.take('P');
@@ -725,10 +726,27 @@ fn process_block(c: &mut Cycle, g: &Geometry) -> Result<Output, Diagnostic> {
             "check P, Q and V: P and Q are in least input increments",
         );
     }
-    let hint = w.map_or(ToolHint::Table, |width| ToolHint::Blade {
+    // I makes the blade; without I the table's tool cuts as the table defines it, so a
+    // blade referenced at the far corner lands w away (spec: the report warns).
+    let hint = i_word.map_or(ToolHint::Table, |width| ToolHint::Blade {
         width,
         toward_plus_z: shape.d > 0.0,
     });
+    let mut warnings = vec![];
+    if let (None, Some((bw, plus_z))) = (i_word, c.tool_blade) {
+        if plus_z != (shape.d > 0.0) {
+            warnings.push(Diagnostic::new(
+                c.span(),
+                "LS-G75.1-CORNER",
+                format!(
+                    "the tool table's blade extends toward {} from its reference corner, but this groove runs toward {}: the groove lands {bw} mm away",
+                    if plus_z { "+Z" } else { "-Z" },
+                    if plus_z { "-Z" } else { "+Z" }
+                ),
+                "reference the blade at its corner on the groove's start side (width_dir toward the groove), or give I",
+            ));
+        }
+    }
     let mut path = Path {
         shape: &shape,
         moves: Vec::new(),
@@ -813,6 +831,7 @@ fn process_block(c: &mut Cycle, g: &Geometry) -> Result<Output, Diagnostic> {
     moves.push(back);
     Ok(Output {
         moves,
+        warnings,
         intended: vec![(
             IntendedKind::Groove,
             shape

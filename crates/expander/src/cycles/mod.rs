@@ -111,9 +111,9 @@ pub(crate) struct Cycle<'a, 'b> {
     pub(crate) program: &'b Subprogram,
     /// Index of the cycle block in `program.blocks`.
     pub(crate) index: usize,
-    /// Width of the active tool when the tool table says it is a grooving blade (G75.1
-    /// without I uses it).
-    pub(crate) tool_width: Option<f64>,
+    /// The active tool when the tool table says it is a radial grooving blade: its width
+    /// and whether it extends toward +Z from its reference corner (G75.1 without I).
+    pub(crate) tool_blade: Option<(f64, bool)>,
 }
 
 /// What a cycle made.

@@ -1,0 +1,152 @@
+//! The gouge regression suite: programs in assets/ with their expected verdicts.
+
+mod common;
+use common::*;
+
+fn run_json(args: &[&str]) -> (Out, serde_json::Value) {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("r.json");
+    let mut all: Vec<&str> = args.to_vec();
+    all.extend(["--json", json.to_str().unwrap(), "--quiet"]);
+    let out = latsim(&all);
+    let v = std::fs::read_to_string(&json)
+        .map(|t| serde_json::from_str(&t).unwrap())
+        .unwrap_or(serde_json::Value::Null);
+    (out, v)
+}
+
+fn a(p: &str) -> String {
+    asset(p).to_str().unwrap().to_string()
+}
+
+/// O0008 with the blade referenced at the wrong corner: the groove lands a blade width
+/// (4 mm) toward +Z — a gouge along the 45° flank and a leftover along the 30° flank, each
+/// 4 mm × 10 mm = 40 mm², 4·sin 45° and 4·sin 30° deep.
+#[test]
+fn g75_1_wrong_reference_corner_is_a_gouge_and_a_leftover() {
+    let dir = tempfile::tempdir().unwrap();
+    let wrong = dir.path().join("wrong.toml");
+    std::fs::write(
+        &wrong,
+        read(&asset("tools/seed000-groove4.toml"))
+            .replace("width_dir = \"-z\"", "width_dir = \"+z\""),
+    )
+    .unwrap();
+    let (out, v) = run_json(&[
+        "run",
+        &a("programs/O0008.nc"),
+        "--stock",
+        "50x60",
+        "--stock-z",
+        "40",
+        "--tools",
+        wrong.to_str().unwrap(),
+        "--machine",
+        &a("machines/gsk980tdi-isc.toml"),
+    ]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert_eq!(v["verdict"], "gouge");
+    let d = &v["deviation"];
+    let f = |k: &str| d[k].as_f64().unwrap();
+    assert!((f("overcut_area_mm2") - 40.0).abs() < 0.01, "{d}");
+    assert!((f("undercut_area_mm2") - 40.0).abs() < 0.01, "{d}");
+    assert!(
+        (f("max_overcut_mm") - 4.0 * 45f64.to_radians().sin()).abs() < 0.01,
+        "{d}"
+    );
+    assert!(
+        (f("max_undercut_mm") - 4.0 * 30f64.to_radians().sin()).abs() < 0.01,
+        "{d}"
+    );
+    assert_eq!(v["gouges"][0]["line"], 4);
+    assert!(v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w["code"] == "LS-G75.1-CORNER"));
+}
+
+#[test]
+fn g75_1_right_reference_corner_is_clean() {
+    let (out, v) = run_json(&[
+        "run",
+        &a("programs/O0008.nc"),
+        "--stock",
+        "50x60",
+        "--stock-z",
+        "40",
+        "--tools",
+        &a("tools/seed000-groove4.toml"),
+        "--machine",
+        &a("machines/gsk980tdi-isc.toml"),
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert_eq!(v["verdict"], "clean");
+    assert_eq!(v["deviation"]["overcut_area_mm2"], 0.0);
+    assert_eq!(v["deviation"]["undercut_area_mm2"], 0.0);
+}
+
+/// A 55° insert (trailing edge at 32°) descending a 45° cone: its flank gouges the cone,
+/// 11 mm of edge × sin(45° − 32°) = 2.474 mm deep, made by the descending move (line 7).
+#[test]
+fn steep_descent_with_a_55_degree_insert_gouges_at_its_line() {
+    let (out, v) = run_json(&[
+        "run",
+        &a("programs/gouge-55deg-slope.nc"),
+        "--stock",
+        "40x30",
+        "--tools",
+        &a("tools/d55-sharp.toml"),
+        "--target",
+        &a("targets/cone45-valley.toml"),
+    ]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert_eq!(v["verdict"], "gouge");
+    let g = &v["gouges"].as_array().unwrap()[0];
+    assert_eq!(g["line"], 7, "{g}");
+    let depth = g["depth_mm"].as_f64().unwrap();
+    let hand = 11.0 * 13f64.to_radians().sin();
+    eprintln!("55° insert on a 45° cone: gouge {depth:.4} mm deep, hand computation {hand:.4} mm");
+    assert!(
+        (depth - hand).abs() <= 0.1 * hand,
+        "depth {depth}, hand {hand}"
+    );
+}
+
+/// The same cone with a 35° insert (trailing edge at 52°): no gouge.
+#[test]
+fn the_same_descent_with_a_35_degree_insert_is_clean() {
+    let (out, v) = run_json(&[
+        "run",
+        &a("programs/gouge-55deg-slope.nc"),
+        "--stock",
+        "40x30",
+        "--tools",
+        &a("tools/v35-sharp.toml"),
+        "--target",
+        &a("targets/cone45-valley.toml"),
+    ]);
+    assert_eq!(v["gouges"].as_array().unwrap().len(), 0, "{}", out.stderr);
+    assert_ne!(v["verdict"], "gouge");
+}
+
+/// A parting blade's rapid into the stock: a crash at its line.
+#[test]
+fn parting_blade_rapid_into_stock_is_a_crash_at_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let prog = dir.path().join("part.nc");
+    std::fs::write(&prog, "O0300;\nG99 M03 S500 T0202;\nG00 X45. Z-20.;\nG00 X30.;\nG01 X0. F0.05;\nG00 X45.;\nM30;\n").unwrap();
+    let (out, v) = run_json(&[
+        "run",
+        prog.to_str().unwrap(),
+        "--stock",
+        "40x50",
+        "--tools",
+        &a("tools/seed002-groove3.toml"),
+        "--tool",
+        "2",
+    ]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert_eq!(v["verdict"], "crash");
+    assert_eq!(v["crashes"][0]["line"], 4, "{}", v["crashes"]);
+}
