@@ -110,22 +110,6 @@ pub(crate) fn build(
     }
 }
 
-/// Whether a point list is meant as a closed ring (its signed area is not negligible
-/// against its extent): G75.1 grooves and targets are, finishing paths are not.
-fn is_ring(pts: &[[f64; 2]]) -> bool {
-    let n = pts.len();
-    if n < 3 {
-        return false;
-    }
-    let a: f64 = (0..n)
-        .map(|i| pts[i][0] * pts[(i + 1) % n][1] - pts[(i + 1) % n][0] * pts[i][1])
-        .sum();
-    let ext = pts
-        .iter()
-        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
-    a.abs() / 2.0 > 1e-6 * ext * ext
-}
-
 /// The deviation findings: gouges (with the first line whose sweep made them), leftovers,
 /// the intended shapes drawn dashed, and the summary.
 pub(crate) fn add_deviation(
@@ -140,8 +124,7 @@ pub(crate) fn add_deviation(
     report.intended = intents
         .iter()
         .flat_map(|i| i.outline.iter())
-        .map(|line| {
-            let closed = line.len() > 2 && line.first() == line.last() || is_ring(line);
+        .map(|(line, closed)| {
             let mut outer = line.clone();
             if !closed {
                 outer.extend(line.iter().rev().skip(1).take(line.len().saturating_sub(2)));

@@ -150,3 +150,38 @@ fn parting_blade_rapid_into_stock_is_a_crash_at_its_line() {
     assert_eq!(v["verdict"], "crash");
     assert_eq!(v["crashes"][0]["line"], 4, "{}", v["crashes"]);
 }
+
+/// The finishing shape of G73/G70 is the intent: after G73 alone the leftover is the
+/// allowance (Δu/2 = 0.25 in X, Δw = 0.3 in Z: at most √(0.25² + 0.3²) = 0.39 mm at a
+/// corner), after G70 the part is clean.
+#[test]
+fn o0006_finishing_shape_is_the_intent() {
+    let (out, v) = run_json(&[
+        "run",
+        &a("programs/O0006-rough.nc"),
+        "--stock-file",
+        &a("blanks/o0006-casting.toml"),
+        "--tools",
+        &a("tools/v35-sharp.toml"),
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let d = &v["deviation"];
+    let under = d["max_undercut_mm"].as_f64().unwrap();
+    assert!(under > 0.25 && under <= (0.25f64.hypot(0.3)) + 0.01, "{d}");
+    assert_eq!(d["overcut_area_mm2"], 0.0);
+    let (out, v) = run_json(&[
+        "run",
+        &a("programs/O0006.nc"),
+        "--stock-file",
+        &a("blanks/o0006-casting.toml"),
+        "--tools",
+        &a("tools/v35-sharp.toml"),
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert_eq!(
+        v["deviation"]["undercut_area_mm2"], 0.0,
+        "{}",
+        v["deviation"]
+    );
+    assert_eq!(v["deviation"]["overcut_area_mm2"], 0.0);
+}

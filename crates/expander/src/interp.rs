@@ -973,15 +973,21 @@ impl<'m> Interp<'m> {
             cycles::run(&mut c)?
         };
         self.out.warnings.extend(out.warnings);
-        self.out.intended.extend(
-            out.intended
-                .into_iter()
-                .map(|(kind, points)| crate::Intended {
+        for (kind, points) in out.intended {
+            // G73 then G70 on one shape hand it over twice: keep it once.
+            if !self
+                .out
+                .intended
+                .iter()
+                .any(|i| i.kind == kind && i.points == points)
+            {
+                self.out.intended.push(crate::Intended {
                     kind,
                     points,
                     span: b.span,
-                }),
-        );
+                });
+            }
+        }
         let feed = self.feed;
         for m in out.moves {
             if let Some(f) = m.feed {

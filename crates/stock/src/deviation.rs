@@ -15,8 +15,8 @@ pub struct Intent {
     /// Where the comparison applies (a G75.1 groove's box, a finishing shape's Z span);
     /// outside it the program may do what it likes.
     pub zone: Vec<Shape>,
-    /// The intended boundary as drawn in the report: closed rings, or open paths.
-    pub outline: Vec<Vec<[f64; 2]>>,
+    /// The intended boundary as drawn in the report: (points, closed ring or open path).
+    pub outline: Vec<(Vec<[f64; 2]>, bool)>,
 }
 
 /// Half the size of the world a zone or a closing edge may reach, mm.
@@ -35,6 +35,7 @@ impl Intent {
         let outline = part
             .iter()
             .flat_map(|s| std::iter::once(s.outer.clone()).chain(s.holes.iter().cloned()))
+            .map(|ring| (ring, true))
             .collect();
         Self {
             part,
@@ -62,7 +63,7 @@ impl Intent {
         Self {
             part: boolean(&zone, &groove, BoolOp::Difference),
             zone,
-            outline: vec![ring.to_vec()],
+            outline: vec![(ring.to_vec(), true)],
         }
     }
 
@@ -98,7 +99,7 @@ impl Intent {
         Some(Self {
             part,
             zone: vec![zone],
-            outline: vec![shape.to_vec()],
+            outline: vec![(shape.to_vec(), false)],
         })
     }
 }

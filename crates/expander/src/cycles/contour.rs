@@ -90,6 +90,26 @@ impl FinishingShape {
         (self.ns_index > cycle_index).then_some(self.nf_index + 1)
     }
 
+    /// The intended contour for the analysis: A, then B … C with arcs chorded at `tol`.
+    pub fn intended_path(&self, tol: f64) -> Vec<Pt> {
+        let mut pts = vec![self.start];
+        for e in &self.elements {
+            let seg = crate::Segment {
+                motion: crate::Motion::Feed,
+                from: e.from,
+                to: e.to,
+                arc: e.arc,
+                tool: 0,
+                hint: crate::ToolHint::Table,
+                lead: 0.0,
+                feed: crate::Feed::Rapid,
+                span: e.span,
+            };
+            pts.extend(seg.polyline(tol).into_iter().skip(1));
+        }
+        pts
+    }
+
     /// Point B, the end of the ns block.
     pub fn b(&self) -> Pt {
         self.elements[0].to

@@ -30,12 +30,15 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     }
     // ② rapid back to the start point A
     moves.push(Move::rapid(shape.start));
-    let out = Output {
+    let mut out = Output {
         moves,
         resume_at: shape.resume_at(c.index),
         warnings: std::mem::take(&mut shape.notes),
         ..Output::default()
     };
-    c.retained.shapes.push(shape);
+    out.intended.push((
+        crate::IntendedKind::FinishingContour,
+        shape.intended_path(0.001),
+    ));
     Ok(out)
 }

@@ -110,13 +110,16 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         moves.push(m);
     }
     moves.push(Move::rapid(shape.start));
-    let out = Output {
+    let mut out = Output {
         moves,
         resume_at: shape.resume_at(c.index),
         warnings: vec![],
         ..Output::default()
     };
-    c.retained.shapes.push(shape);
+    out.intended.push((
+        crate::IntendedKind::FinishingContour,
+        shape.intended_path(0.001),
+    ));
     Ok(out)
 }
 

@@ -40,7 +40,10 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     };
     out.moves = passes(&shape, (di, dk, d), (du, dw));
     out.resume_at = shape.resume_at(c.index);
-    c.retained.shapes.push(shape);
+    out.intended.push((
+        crate::IntendedKind::FinishingContour,
+        shape.intended_path(0.001),
+    ));
     Ok(out)
 }
 

@@ -73,9 +73,6 @@ pub(crate) struct Retained {
     pub(crate) g72: Option<(f64, f64)>,
     /// G73 U(Δi) W(Δk) R(d), GSK data parameters NO.053–055.
     pub(crate) g73: Option<(f64, f64, u32)>,
-    /// The finishing shapes the G70–G73 cycles read, in order: the intended contours for
-    /// the gouge analysis (to be moved into the `Toolpath` by the interpreter).
-    pub(crate) shapes: Vec<contour::FinishingShape>,
 }
 
 /// The retained words of G90/G92/G94.
