@@ -82,13 +82,19 @@ fn point_in(ring: &[[f64; 2]], p: [f64; 2]) -> bool {
 /// inside corner at Z−35, where the nose leaves a fillet of radius 1.
 #[test]
 fn seed_004_with_g42_cuts_the_programmed_contour() {
+    check_seed_004_compensated("programs/tnrc-seed004-rough.nc");
+}
+
+/// The same contour as a G70 finishing shape with G42 in its ns block: G70 compensates.
+#[test]
+fn g70_runs_its_shape_compensated() {
+    check_seed_004_compensated("programs/tnrc-g70-seed004.nc");
+}
+
+fn check_seed_004_compensated(program: &str) {
     let tools = stock::ToolTable::from_toml(&read(&asset("tools/seed004-v35-r1.toml"))).unwrap();
     let blank = stock::Blank::bar(36.0, 40.0, 0.0, None).unwrap();
-    let (tp, sim) = run(
-        &read(&asset("programs/tnrc-seed004-rough.nc")),
-        &blank,
-        &tools,
-    );
+    let (tp, sim) = run(&read(&asset(program)), &blank, &tools);
     assert!(
         tp.alarms.is_empty() && sim.crashes.is_empty(),
         "{:?} {:?}",

@@ -752,7 +752,7 @@ impl<'m> Interp<'m> {
         arc: Option<Arc>,
         lead: f64,
     ) -> Result<(), Diagnostic> {
-        self.push_at(b.span, motion, to, arc, lead)
+        self.push_at(b.span, motion, to, arc, lead, crate::ToolHint::Table)
     }
 
     fn push_at(
@@ -762,6 +762,7 @@ impl<'m> Interp<'m> {
         to: Pt,
         arc: Option<Arc>,
         lead: f64,
+        hint: crate::ToolHint,
     ) -> Result<(), Diagnostic> {
         let buffered = self.section.as_ref().map_or(0, |s| s.2.len());
         if self.out.segments.len() + buffered >= self.opts.max_segments {
@@ -782,7 +783,7 @@ impl<'m> Interp<'m> {
             to,
             arc,
             tool: self.tool,
-            hint: crate::ToolHint::Table,
+            hint,
             lead,
             feed,
             span,
@@ -908,22 +909,34 @@ impl<'m> Interp<'m> {
                 "start G41/G42 in a G00 or G01 block with a move",
             ));
         }
+        if let Some(nose) = self.nose_for_offset(b.span) {
+            self.section = Some((side, nose, vec![]));
+        }
+        Ok(())
+    }
+
+    /// The nose of the offset in force: from the tool table, or the default with a warning;
+    /// `None` for offset 00 or a grooving blade (compensation ignored, with a warning).
+    fn nose_for_offset(&mut self, span: Span) -> Option<Nose> {
         let offset = self.offset;
-        let nose = match self.opts.noses.get(&offset) {
+        if offset == 0 {
+            return None;
+        }
+        Some(match self.opts.noses.get(&offset) {
             Some(Some(n)) => *n,
             Some(None) => {
                 if !self.comp_warned.contains(&offset) {
                     self.comp_warned.push(offset);
-                    self.warn(b.span, "LS-TNRC-BLADE", format!("G41/G42 ignored: offset {offset:02} is a grooving blade"), "compensation applies to pointed inserts; program the blade's corner directly");
+                    self.warn(span, "LS-TNRC-BLADE", format!("G41/G42 ignored: offset {offset:02} is a grooving blade"), "compensation applies to pointed inserts; program the blade's corner directly");
                 }
-                return Ok(());
+                return None;
             }
             None => {
                 let n = self.opts.default_nose;
                 if !self.comp_warned.contains(&offset) {
                     self.comp_warned.push(offset);
                     self.warn(
-                        b.span,
+                        span,
                         "LS-TNRC-DEFAULT",
                         format!("offset {offset:02} has no tool table entry: compensating with the default nose r{} tip {}", n.radius, n.tip),
                         "give the tool in the tool table (--tools) with its nose_radius and tip",
@@ -931,9 +944,7 @@ impl<'m> Interp<'m> {
                 }
                 n
             }
-        };
-        self.section = Some((side, nose, vec![]));
-        Ok(())
+        })
     }
 
     /// Compensate and emit the collected section; its last move is the cancel move.
@@ -988,6 +999,13 @@ impl<'m> Interp<'m> {
                 });
             }
         }
+        // G70 runs its pass as one compensation section (start-up A → B, cancel back to A).
+        let side = out.comp.and_then(|shape_side| shape_side.or(self.comp));
+        if let Some(side) = side {
+            if let Some(nose) = self.nose_for_offset(b.span) {
+                self.section = Some((side, nose, vec![]));
+            }
+        }
         let feed = self.feed;
         for m in out.moves {
             if let Some(f) = m.feed {
@@ -995,13 +1013,11 @@ impl<'m> Interp<'m> {
             }
             let span = m.span.unwrap_or(b.span);
             if m.to.dist(self.pos) >= 1e-12 {
-                self.push_at(span, m.motion, m.to, m.arc, 0.0)?;
-                if let Some(last) = self.out.segments.last_mut() {
-                    last.hint = m.hint;
-                }
+                self.push_at(span, m.motion, m.to, m.arc, 0.0, m.hint)?;
             }
         }
         self.feed = feed;
+        self.flush_compensation();
         Ok(out.resume_at.map_or(Flow::Next, Flow::Jump))
     }
 

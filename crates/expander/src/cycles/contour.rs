@@ -15,11 +15,12 @@
 //!   only the subprogram calls); G04 inside the shape is ignored (no dwell time is added).
 //! - S, T, G96–G99 inside the shape: roughing ignores them (seed 003); G70 cannot switch
 //!   them yet (the cycle output carries only the feed), so G70 warns that they were not
-//!   applied. G41/G42 are read and ignored with a warning: compensation is not
+//!   applied. G41/G42 are read: G70 runs the shape compensated on that side; roughing
 //!   implemented yet.
 
 use super::Cycle;
 use crate::arc::{self, ArcError};
+use crate::tnrc::Side;
 use crate::{Arc, Diagnostic, Pt, Span};
 use gcode::{Block, Word};
 
@@ -76,6 +77,9 @@ pub struct FinishingShape {
     pub ns_moves: (bool, bool),
     /// Index of the ns and nf blocks in the O program.
     pub(crate) ns_index: usize,
+    /// G41/G42 written inside the shape: G70 runs it compensated on that side (roughing
+    /// ignores it, spec/tnrc.md).
+    pub comp: Option<Side>,
     /// Index of the nf block.
     pub(crate) nf_index: usize,
     /// Warnings about words G70 cannot apply yet (S, T, G96–G99) and G41/G42.
@@ -203,6 +207,7 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
         notes: vec![],
         ns_moves: (false, false),
         ns_span: blocks[0].span,
+        comp: None,
     };
     for (k, b) in blocks.iter().enumerate() {
         r.block(b, k == 0)?;
@@ -225,6 +230,7 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
         ns_index: i0,
         nf_index: i1,
         notes: r.notes,
+        comp: r.comp,
     })
 }
 
@@ -240,6 +246,7 @@ struct Reader {
     notes: Vec<Diagnostic>,
     ns_moves: (bool, bool),
     ns_span: Span,
+    comp: Option<Side>,
 }
 
 /// The G70 warning for a word of the shape it cannot apply yet.
@@ -282,12 +289,11 @@ impl Reader {
                         40 => dwell = true,
                         400 => {}
                         960 | 970 | 980 | 990 => self.notes.push(unapplied(w)),
-                        410 | 420 => self.notes.push(Diagnostic::new(
-                            w.span,
-                            "LS-SHAPE-TNRC",
-                            format!("G{} inside the finishing shape is ignored: tool nose radius compensation is not implemented yet", t / 10),
-                            "the shape is run by the tool's reference point; remove G41/G42 to silence this",
-                        )),
+                        410 | 420 => {
+                            self.comp =
+                                self.comp
+                                    .or(Some(if t == 410 { Side::Left } else { Side::Right }))
+                        }
                         _ => return Err(forbidden(w, format!("G{}", w.value))),
                     }
                 }

@@ -5,7 +5,8 @@
 //! the start point. Moves carry the span of their shape block.
 //!
 //! Choices: S, T and G96–G99 inside the shape are not applied yet (a warning says so);
-//! G41/G42 are ignored with a warning until compensation lands. The program continues
+//! G41/G42 in the shape (or in force at G70) compensate the pass: the move A → B is the
+//! start-up, the rapid back to A the cancel (spec/tnrc.md). The program continues
 //! after nf when the shape follows the G70 block, else after the G70 block (FANUC).
 
 use super::contour;
@@ -34,6 +35,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         moves,
         resume_at: shape.resume_at(c.index),
         warnings: std::mem::take(&mut shape.notes),
+        comp: Some(shape.comp),
         ..Output::default()
     };
     out.intended.push((

@@ -124,6 +124,9 @@ pub(crate) struct Output {
     pub(crate) warnings: Vec<Diagnostic>,
     /// Shapes the cycle defines (G75.1 groove, G70–G73 finishing shape), for the analysis.
     pub(crate) intended: Vec<(IntendedKind, Vec<Pt>)>,
+    /// G70: run the moves as one compensation section, on the shape's side (`Some(None)`:
+    /// the side in force at G70, if any); `None`: never compensated (the other cycles).
+    pub(crate) comp: Option<Option<crate::tnrc::Side>>,
 }
 
 impl Cycle<'_, '_> {
