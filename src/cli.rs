@@ -24,8 +24,10 @@ pub(crate) enum Command {
 /// Options that shape how a program is read and interpreted.
 #[derive(Debug, Args, Clone)]
 pub(crate) struct ProgramArgs {
-    /// The program file (FANUC / GSK lathe G-code).
-    pub(crate) program: PathBuf,
+    /// The program file(s) (FANUC / GSK lathe G-code). `run` also takes several files or
+    /// folders and simulates them in parallel, one verdict line each.
+    #[arg(required = true, num_args = 1..)]
+    pub(crate) programs: Vec<PathBuf>,
     /// Machine profile (TOML): increment system, P/Q units, rapid rates, home position.
     #[arg(long, value_name = "F")]
     pub(crate) machine: Option<PathBuf>,

@@ -52,7 +52,11 @@ pub(crate) fn expand(args: &ExpandArgs) -> u8 {
     let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program, &tools, None) else {
+    let [path] = args.program.programs.as_slice() else {
+        crate::diag::print_plain("expand takes one program", "run expand once per program");
+        return EXIT_UNUSABLE;
+    };
+    let Ok(loaded) = input::load_program(&args.program, path, &tools, None) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);

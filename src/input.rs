@@ -125,13 +125,14 @@ pub(crate) fn blades(tools: &stock::ToolTable) -> BTreeMap<u32, (f64, bool)> {
 /// Read, parse and expand the program. Parse errors and an empty program are `Err`.
 pub(crate) fn load_program(
     args: &ProgramArgs,
+    path: &Path,
     tools: &stock::ToolTable,
     start_tool: Option<u32>,
 ) -> Result<Loaded, ()> {
     let machine = load_machine(args)?;
-    let text = read_text(&args.program, "program")?;
+    let text = read_text(path, "program")?;
     let source = Source {
-        name: args.program.display().to_string(),
+        name: path.display().to_string(),
         text,
     };
     let program = gcode::parse(&source.text).map_err(|e| {

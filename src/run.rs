@@ -6,14 +6,23 @@ use crate::input;
 use crate::write::write_atomic;
 use crate::{EXIT_CLEAN, EXIT_FINDINGS, EXIT_UNUSABLE};
 use std::io::IsTerminal;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// `latsim check`: read and expand, print alarms; no removal.
 pub(crate) fn check(args: &CheckArgs) -> u8 {
     let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program, &tools, None) else {
+    args.program
+        .programs
+        .iter()
+        .map(|path| check_one(args, path, &tools))
+        .max()
+        .unwrap_or(EXIT_UNUSABLE)
+}
+
+fn check_one(args: &CheckArgs, path: &Path, tools: &stock::ToolTable) -> u8 {
+    let Ok(loaded) = input::load_program(&args.program, path, tools, None) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);
@@ -50,8 +59,76 @@ fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
         .collect()
 }
 
-/// `latsim run`: the whole pipeline; writes the reports and returns the exit status.
+/// Program files to run: the files given, and the program files inside the folders given
+/// (by extension: nc cnc tap ngc iso txt gcode), sorted.
+fn program_files(paths: &[PathBuf]) -> Vec<PathBuf> {
+    const EXT: [&str; 7] = ["nc", "cnc", "tap", "ngc", "iso", "txt", "gcode"];
+    let mut out = vec![];
+    for p in paths {
+        if p.is_dir() {
+            let mut found: Vec<PathBuf> = std::fs::read_dir(p)
+                .into_iter()
+                .flatten()
+                .flatten()
+                .map(|e| e.path())
+                .filter(|f| {
+                    f.is_file()
+                        && f.extension()
+                            .and_then(|e| e.to_str())
+                            .is_some_and(|e| EXT.contains(&e.to_ascii_lowercase().as_str()))
+                })
+                .collect();
+            found.sort();
+            out.extend(found);
+        } else {
+            out.push(p.clone());
+        }
+    }
+    out
+}
+
+/// `latsim run`: one program in detail, or several in parallel with one verdict line
+/// each (for CI). The exit status is the worst of them: 2 if any could not be simulated.
 pub(crate) fn run(args: &RunArgs) -> u8 {
+    let files = program_files(&args.program.programs);
+    if files.is_empty() {
+        diag::print_plain(
+            "no program files found",
+            "give program files, or folders holding .nc files",
+        );
+        return EXIT_UNUSABLE;
+    }
+    if files.len() == 1 {
+        return run_one(args, &files[0], false);
+    }
+    if args.svg.is_some() || args.png.is_some() || args.json.is_some() {
+        diag::print_plain(
+            "--svg, --png and --json name one file: they take one program",
+            "with several programs use --out DIR: each gets <prog>.svg, .png and .json there",
+        );
+        return EXIT_UNUSABLE;
+    }
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let worst = std::sync::atomic::AtomicU8::new(EXIT_CLEAN);
+    let workers = std::thread::available_parallelism()
+        .map_or(2, |n| n.get())
+        .min(files.len());
+    std::thread::scope(|scope| {
+        for _ in 0..workers {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some(path) = files.get(i) else { break };
+                let code = run_one(args, path, true);
+                worst.fetch_max(code, std::sync::atomic::Ordering::Relaxed);
+            });
+        }
+    });
+    worst.into_inner()
+}
+
+/// Simulate one program and write its reports. In a batch, the terminal gets only the
+/// verdict line (diagnostics are in the reports).
+fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
     if !(args.tol.is_finite() && args.tol > 0.0) {
         diag::print_plain(
             &format!("--tol {} is not a positive length", args.tol),
@@ -66,11 +143,17 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program, &tools, args.tool) else {
+    let Ok(loaded) = input::load_program(&args.program, path, &tools, args.tool) else {
+        if batch {
+            println!(
+                "{}: UNUSABLE — not simulated (see the message above)",
+                path.display()
+            );
+        }
         return EXIT_UNUSABLE;
     };
-    input::print_diagnostics(&loaded, args.program.quiet);
-    let quiet = args.program.quiet;
+    let quiet = args.program.quiet || batch;
+    input::print_diagnostics(&loaded, quiet);
 
     let segments = &loaded.toolpath.segments;
     let bar = progress_bar(segments.len() as u64, quiet);
@@ -90,11 +173,11 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         b.finish_and_clear();
     }
 
-    let name = args.program.program.file_name().map_or_else(
+    let name = path.file_name().map_or_else(
         || loaded.source.name.clone(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let stem = args.program.program.file_stem().map_or_else(
+    let stem = path.file_stem().map_or_else(
         || "program".to_string(),
         |s| s.to_string_lossy().into_owned(),
     );
@@ -115,7 +198,7 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
     crate::report::add_deviation(&mut report, &loaded, &blank, &intents, deviation.as_ref());
 
-    let mut inputs = vec![args.program.program.clone()];
+    let mut inputs = vec![path.to_path_buf()];
     inputs.extend(args.tools.clone());
     inputs.extend(args.stock_file.clone());
     inputs.extend(args.program.machine.clone());
@@ -141,7 +224,7 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         }
     }
 
-    for c in &report.crashes {
+    for c in report.crashes.iter().filter(|_| !batch) {
         eprintln!(
             "{}:{}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm² of stock",
             loaded.source.name,
@@ -152,7 +235,7 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
             c.area_mm2
         );
     }
-    for g in &report.gouges {
+    for g in report.gouges.iter().filter(|_| !batch) {
         eprintln!(
             "{}:{}: gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
             loaded.source.name,
@@ -165,15 +248,16 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     }
     let verdict = report.verdict();
     println!(
-        "{}: {:?} — {} segments, removed {:.1} mm² / {:.0} mm³, cycle time {:.1} s, {} alarm(s), {} crash(es)",
+        "{}: {} — {} segments, removed {:.1} mm² / {:.0} mm³, cycle time {:.1} s, {} alarm(s), {} crash(es), {} gouge(s)",
         name,
-        verdict,
+        render::verdict_word(verdict).to_uppercase(),
         report.segments,
         report.removed_area_mm2,
         report.removed_volume_mm3,
         report.cycle_time_s,
         report.alarms.len(),
-        report.crashes.len()
+        report.crashes.len(),
+        report.gouges.len()
     );
     if verdict == render::Verdict::Clean {
         EXIT_CLEAN

@@ -127,3 +127,59 @@ fn machine_profile_errors_point_at_the_line() {
     assert_eq!(out.code, 2);
     assert!(out.stderr.contains("machine.toml:2:1"), "{}", out.stderr);
 }
+
+/// Several programs (a folder and a file) run in parallel: one verdict line each, reports
+/// for each in --out, and the worst exit status.
+#[test]
+fn run_on_a_folder_prints_one_verdict_line_per_program() {
+    let src = tempfile::tempdir().unwrap();
+    for f in ["O0002.nc", "seed004-contour.nc"] {
+        std::fs::copy(asset(&format!("programs/{f}")), src.path().join(f)).unwrap();
+    }
+    std::fs::write(src.path().join("notes.md"), "not a program").unwrap();
+    let (_d, crash) = temp_program(
+        "crash.nc",
+        b"G99 M3 S500 T0101\nG0 X50 Z5\nG0 X20 Z-10\nM30\n",
+    );
+    let out_dir = tempfile::tempdir().unwrap();
+    let out = latsim(&[
+        "run",
+        src.path().to_str().unwrap(),
+        crash.to_str().unwrap(),
+        "--stock",
+        "125x110",
+        "--tools",
+        asset("tools/v35-sharp.toml").to_str().unwrap(),
+        "--out",
+        out_dir.path().to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 1, "{}\n{}", out.stdout, out.stderr);
+    let lines: Vec<&str> = out.stdout.lines().collect();
+    assert_eq!(lines.len(), 3, "{}", out.stdout);
+    assert!(
+        lines.iter().any(|l| l.starts_with("O0002.nc: CLEAN")),
+        "{}",
+        out.stdout
+    );
+    assert!(
+        lines.iter().any(|l| l.starts_with("crash.nc: CRASH")),
+        "{}",
+        out.stdout
+    );
+    for stem in ["O0002", "seed004-contour", "crash"] {
+        assert!(
+            out_dir.path().join(format!("{stem}.json")).exists(),
+            "{stem}"
+        );
+    }
+    // a single --json names one file: refused with several programs
+    let out = latsim(&[
+        "run",
+        src.path().to_str().unwrap(),
+        "--stock",
+        "125x110",
+        "--json",
+        "x.json",
+    ]);
+    assert_eq!(out.code, 2);
+}
