@@ -16,7 +16,7 @@ const DIAG_ROW: f64 = 18.0;
 const MAX_TOOLS: usize = 4;
 
 /// The verdict line and its colour.
-fn verdict_text(report: &Report) -> (String, &'static str) {
+pub(crate) fn verdict_text(report: &Report) -> (String, &'static str) {
     let mut parts = Vec::new();
     if !report.alarms.is_empty() {
         parts.push(plural(report.alarms.len(), "alarm", "alarms"));

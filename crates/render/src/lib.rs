@@ -1,4 +1,4 @@
-//! Report -> SVG, PNG and JSON.
+//! Report -> SVG, PNG, JSON and a self-contained HTML page.
 //!
 //! The picture is a 1600 × 1000 px SVG (user units = px), rasterised 1:1 into a
 //! 1600 × 1000 PNG. Coordinates inside the SVG are mm under a view transform, so path
@@ -11,6 +11,7 @@
 //! non-finite numbers are written as `null`.
 mod block;
 mod detail;
+mod html;
 mod json;
 mod layout;
 mod marks;
@@ -51,6 +52,15 @@ pub fn svg(report: &Report) -> String {
 /// 1600 × 1000 px. Deterministic: the same report gives the same bytes.
 pub fn png(report: &Report) -> Result<Vec<u8>, RenderError> {
     png::rasterise(&svg::svg(report))
+}
+
+/// The report as one self-contained HTML page (no network, no external files; works
+/// from `file://`): the report picture as inline SVG, the summary and findings tables,
+/// and a move slider that replays the toolpath over the stock (using
+/// [`Report::snapshots`] when present). Deterministic; bounded in size for any toolpath
+/// (the embedded path is thinned to about 200 000 points, and the page says so).
+pub fn html(report: &Report) -> String {
+    html::html(report)
 }
 
 /// The machine-readable report as pretty JSON (see the crate docs for the fields).

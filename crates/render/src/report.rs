@@ -143,6 +143,19 @@ pub struct Report {
     pub cycle_time_s: f64,
     /// Deviation tolerance, mm.
     pub tolerance_mm: f64,
+    /// The stock at a few points of the run, in move order, for the HTML report's move
+    /// slider; empty when not recorded (the CLI fills a few dozen for small programs).
+    pub snapshots: Vec<Snapshot>,
+}
+
+/// The stock as it was part-way through the run.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Snapshot {
+    /// How many moves (entries of [`Report::toolpath`]) had run: 0 is the blank, and
+    /// `toolpath.len()` the final part.
+    pub after_move: usize,
+    /// The stock's half section after those moves.
+    pub shapes: Vec<Shape>,
 }
 
 /// The one-word outcome shown in the title block and the JSON.

@@ -84,6 +84,7 @@ pub(crate) fn groove_bar() -> Report {
         rapid_segments: 5,
         cycle_time_s: 102.0,
         tolerance_mm: 0.01,
+        snapshots: vec![],
     }
 }
 

@@ -1,0 +1,363 @@
+//! The HTML page: self-contained, has the slider, the tables and the embedded toolpath,
+//! escapes what it shows, stays bounded for huge toolpaths, never panics.
+mod common;
+
+use render::{Diagnostic, PathKind, PathLine, Report, Shape, Snapshot};
+
+/// The embedded data block, parsed.
+fn data(page: &str) -> serde_json::Value {
+    let open = r#"<script type="application/json" id="ls-data">"#;
+    let start = page.find(open).expect("data block") + open.len();
+    let len = page[start..].find("</script>").expect("data block end");
+    serde_json::from_str(&page[start..start + len]).expect("data block is JSON")
+}
+
+/// Every `http(s)://` is an XML namespace, and nothing is fetched from elsewhere.
+fn assert_self_contained(page: &str) {
+    for scheme in ["http://", "https://"] {
+        for (i, _) in page.match_indices(scheme) {
+            let rest = &page[i + scheme.len()..];
+            assert!(
+                rest.starts_with("www.w3.org/"),
+                "external reference: {}",
+                &page[i..(i + 80).min(page.len())]
+            );
+        }
+    }
+    let lower = page.to_ascii_lowercase();
+    for bad in [
+        "<link", " src=", "@import", "<iframe", "<object", "<embed", "<img", "//cdn",
+    ] {
+        assert!(!lower.contains(bad), "found {bad}");
+    }
+    // Only local fragment references.
+    for (i, _) in lower.match_indices("url(") {
+        assert!(
+            lower[i + 4..].starts_with('#'),
+            "url() to a file: {}",
+            &page[i..(i + 40).min(page.len())]
+        );
+    }
+    for (i, _) in lower.match_indices("href=\"") {
+        assert!(
+            lower[i + 6..].starts_with('#'),
+            "href to a file: {}",
+            &page[i..(i + 40).min(page.len())]
+        );
+    }
+}
+
+#[test]
+fn page_is_self_contained_with_slider_and_picture() {
+    let page = render::html(&common::groove_bar());
+    assert!(page.starts_with("<!DOCTYPE html>"));
+    assert!(page.trim_end().ends_with("</html>"));
+    assert_self_contained(&page);
+    // The report picture, inline.
+    assert!(page.contains(r#"<svg xmlns="http://www.w3.org/2000/svg""#));
+    assert!(page.contains(r#"id="title-block""#));
+    // The slider, its canvas and label.
+    assert!(page.contains(r#"<input type="range" id="ls-slider" min="0" max="11""#));
+    assert!(page.contains(r#"<canvas id="ls-canvas""#));
+    assert!(page.contains(r#"id="ls-label""#));
+    // Exactly two scripts: the data and the player (inline).
+    assert_eq!(page.matches("<script").count(), 2);
+    assert!(page.contains("<script>\n"));
+    assert!(page.contains("keydown"));
+    assert!(page.contains("move="));
+    assert!(!page.contains("NaN"));
+}
+
+#[test]
+fn tables_list_verdict_summary_and_findings() {
+    let page = render::html(&common::groove_bar());
+    for needle in [
+        "CRASH — 1 crash, 1 gouge (0.2 mm deep)",
+        "<th scope=\"row\">program</th><td>O0042.nc</td>",
+        "bar Ø40 × 60, face at Z0",
+        "T01 turning D 55°, r0.4, tip 3<br>T02 grooving 5 mm",
+        "11 (rapid 5, feed 6)",
+        "163.0 mm² section / 19 123 mm³",
+        "1 min 42 s",
+        "<th scope=\"row\">tolerance</th><td>0.01 mm</td>",
+        "<th scope=\"row\">overcut</th><td>1.00 mm², max 0.2 mm</td>",
+        "Crashes (rapids into stock) <span class=\"count\">(1)</span>",
+        "Gouges (part material removed) <span class=\"count\">(1)</span>",
+        "Warnings <span class=\"count\">(1)</span>",
+        "Alarms <span class=\"count\">(0)</span>",
+    ] {
+        assert!(page.contains(needle), "missing {needle}");
+    }
+    // The gouge row: line 11, Z −22.5, X Ø28 (r 14), 1 mm², 0.2 mm deep.
+    assert!(
+        page.contains(
+            "<tr data-line=\"11\"><td class=\"n\">11</td><td class=\"n\">-22.5</td><td class=\"n\">28</td><td class=\"n\">1.00</td><td class=\"n\">0.2</td></tr>"
+        ),
+        "gouge row"
+    );
+    // The crash row: line 14 col 1, Z −46.667, X Ø36, 21.5 mm².
+    assert!(
+        page.contains(
+            "<tr data-line=\"14\"><td class=\"n\">14</td><td class=\"n\">1</td><td class=\"n\">-46.667</td><td class=\"n\">36</td><td class=\"n\">21.5</td>"
+        ),
+        "crash row"
+    );
+    assert!(page.contains("<code>W-TOOL-DEFAULT</code>"));
+}
+
+#[test]
+fn text_is_escaped() {
+    let mut r = common::groove_bar();
+    r.program = "<script>alert(1)</script>.nc".into();
+    r.stock.description = "bar & <b>bold</b>".into();
+    r.warnings.push(Diagnostic {
+        line: 3,
+        column: 2,
+        code: "W-<x>".into(),
+        message: "</script><script>alert(2)</script>".into(),
+    });
+    let page = render::html(&r);
+    // Only our own two script elements.
+    assert_eq!(page.matches("<script").count(), 2);
+    assert_eq!(page.matches("</script>").count(), 2);
+    assert!(page.contains("&lt;script&gt;alert(1)&lt;/script&gt;.nc"));
+    assert!(page.contains("bar &amp; &lt;b&gt;bold&lt;/b&gt;"));
+    assert!(page.contains("<code>W-&lt;x&gt;</code>"));
+    assert!(!page.contains("<b>bold"));
+    data(&page);
+}
+
+#[test]
+fn embedded_toolpath_parses_back() {
+    let r = common::groove_bar();
+    let page = render::html(&r);
+    let d = data(&page);
+    assert_eq!(d["moves"], 11);
+    assert_eq!(d["stride"], 1);
+    let path = d["path"].as_array().unwrap();
+    assert_eq!(path.len(), r.toolpath.len());
+    for (i, (m, l)) in path.iter().zip(&r.toolpath).enumerate() {
+        let m = m.as_array().unwrap();
+        assert_eq!(m[0], i + 1, "move number");
+        let kind = match l.kind {
+            PathKind::Rapid => 0,
+            PathKind::Feed => 1,
+            PathKind::Thread => 2,
+        };
+        assert_eq!(m[1], kind);
+        assert_eq!(m[2], l.line);
+        // Program coordinates: z, x = diameter.
+        let coords: Vec<f64> = m[3..].iter().map(|v| v.as_f64().unwrap()).collect();
+        let want: Vec<f64> = l.points.iter().flat_map(|p| [p[0], 2.0 * p[1]]).collect();
+        assert_eq!(coords, want);
+    }
+    assert_eq!(d["crashes"][0][0], 14);
+    assert_eq!(d["blank"].as_array().unwrap().len(), 1);
+    assert_eq!(d["snapshots"].as_array().unwrap().len(), 0);
+    assert!(page.contains("No stock snapshots"));
+}
+
+#[test]
+fn coordinates_are_rounded_to_4_decimals() {
+    let mut r = common::groove_bar();
+    r.toolpath = vec![PathLine {
+        kind: PathKind::Feed,
+        line: 7,
+        points: vec![[1.234_567_89, 2.000_011], [-0.000_01, 3.0]],
+    }];
+    let d = data(&render::html(&r));
+    let m = d["path"][0].as_array().unwrap();
+    assert_eq!(m[3].as_f64(), Some(1.2346));
+    assert_eq!(m[4].as_f64(), Some(4.0));
+    assert_eq!(m[5].as_f64(), Some(0.0));
+    assert_eq!(m[6].as_f64(), Some(6.0));
+}
+
+#[test]
+fn snapshots_are_embedded_in_move_order() {
+    let mut r = common::groove_bar();
+    let sq = |z0: f64, r1: f64| Shape {
+        outer: vec![[z0, 0.0], [0.0, 0.0], [0.0, r1], [z0, r1]],
+        holes: vec![],
+    };
+    r.snapshots = vec![
+        Snapshot {
+            after_move: 6,
+            shapes: vec![sq(-60.0, 18.0)],
+        },
+        Snapshot {
+            after_move: 0,
+            shapes: vec![sq(-60.0, 20.0)],
+        },
+    ];
+    let page = render::html(&r);
+    let d = data(&page);
+    let s = d["snapshots"].as_array().unwrap();
+    assert_eq!(s.len(), 2);
+    assert_eq!(s[0]["after"], 0);
+    assert_eq!(s[1]["after"], 6);
+    // x is the diameter.
+    let ring: Vec<f64> = s[1]["rings"][0]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert_eq!(ring, [-60.0, 0.0, 0.0, 0.0, 0.0, 36.0, -60.0, 36.0]);
+    assert!(!page.contains("No stock snapshots"));
+    assert!(page.contains("stock at this move"));
+}
+
+#[test]
+fn million_segments_stay_bounded() {
+    let r = common::many_segments(1_000_000);
+    let t = std::time::Instant::now();
+    let page = render::html(&r);
+    println!(
+        "html of 10^6 segments: {} bytes in {:?}",
+        page.len(),
+        t.elapsed()
+    );
+    assert!(page.len() < 30_000_000, "{} bytes", page.len());
+    assert_self_contained(&page);
+    assert!(page.contains("Toolpath thinned for this page"));
+    assert!(page.contains(r#"max="1000000""#));
+    let d = data(&page);
+    assert_eq!(d["moves"], 1_000_000);
+    let stride = d["stride"].as_u64().unwrap() as usize;
+    assert!(stride > 1);
+    let path = d["path"].as_array().unwrap();
+    let points: usize = path
+        .iter()
+        .map(|m| (m.as_array().unwrap().len() - 3) / 2)
+        .sum();
+    assert!(points <= 200_000, "{points} points");
+    // Every stride-th move and the last, in order.
+    assert_eq!(path[0][0], 1);
+    assert_eq!(path[1][0], 1 + stride);
+    assert_eq!(path[path.len() - 1][0], 1_000_000);
+}
+
+#[test]
+fn hundred_thousand_segments_size() {
+    let r = common::many_segments(100_000);
+    let page = render::html(&r);
+    println!("html of 10^5 segments: {} bytes", page.len());
+    assert!(page.len() < 10_000_000, "{} bytes", page.len());
+    let d = data(&page);
+    assert_eq!(d["stride"], 1);
+    assert_eq!(d["path"].as_array().unwrap().len(), 100_000);
+}
+
+#[test]
+fn output_is_deterministic() {
+    let mut r = common::groove_bar();
+    r.snapshots = vec![Snapshot {
+        after_move: 3,
+        shapes: r.final_part.clone(),
+    }];
+    assert_eq!(render::html(&r), render::html(&r));
+}
+
+#[test]
+fn degenerate_reports_do_not_panic() {
+    let nan = f64::NAN;
+    let mut reports = vec![Report::default()];
+    let mut r = common::groove_bar();
+    r.toolpath.clear();
+    r.stock.shapes.clear();
+    r.final_part.clear();
+    reports.push(r);
+    let mut r = common::groove_bar();
+    r.final_part.push(Shape {
+        outer: vec![[nan, nan], [1.0, nan]],
+        holes: vec![vec![]],
+    });
+    r.toolpath.push(PathLine {
+        kind: PathKind::Thread,
+        line: 1,
+        points: vec![[nan, 1.0], [f64::INFINITY, 2.0]],
+    });
+    r.toolpath.push(PathLine {
+        kind: PathKind::Feed,
+        line: 2,
+        points: vec![],
+    });
+    r.crashes[0].z = nan;
+    r.gouges[0].depth_mm = nan;
+    r.cycle_time_s = nan;
+    r.removed_area_mm2 = f64::INFINITY;
+    r.tolerance_mm = nan;
+    r.snapshots.push(Snapshot {
+        after_move: usize::MAX,
+        shapes: vec![Shape {
+            outer: vec![[nan, 0.0]; 5],
+            holes: vec![],
+        }],
+    });
+    reports.push(r);
+    let mut r = Report::default();
+    r.toolpath.push(PathLine {
+        kind: PathKind::Rapid,
+        line: 1,
+        points: vec![[1e300, -1e300], [0.0, 0.0]],
+    });
+    r.final_part.push(Shape {
+        outer: vec![[5.0, 5.0]],
+        holes: vec![],
+    });
+    reports.push(r);
+    for r in &reports {
+        let page = render::html(r);
+        assert!(!page.contains("NaN"), "NaN in page");
+        assert_self_contained(&page);
+        let d = data(&page);
+        assert_eq!(
+            d["path"].as_array().unwrap().len(),
+            r.toolpath.len(),
+            "one entry per move"
+        );
+    }
+}
+
+#[test]
+#[ignore = "writes pages for a human: cargo test -p render --test html -- --ignored"]
+fn write_pages() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/out");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut r = common::groove_bar();
+    // A few snapshots: the blank, after the turning pass, after the groove.
+    let blank = r.stock.shapes.clone();
+    let turned = Shape {
+        outer: vec![
+            [-60.0, 0.0],
+            [0.0, 0.0],
+            [0.0, 17.0],
+            [-1.0, 18.0],
+            [-40.0, 18.0],
+            [-40.0, 20.0],
+            [-60.0, 20.0],
+        ],
+        holes: vec![],
+    };
+    r.snapshots = vec![
+        Snapshot {
+            after_move: 0,
+            shapes: blank,
+        },
+        Snapshot {
+            after_move: 5,
+            shapes: vec![turned],
+        },
+        Snapshot {
+            after_move: 9,
+            shapes: r.final_part.clone(),
+        },
+    ];
+    std::fs::write(dir.join("groove_bar.html"), render::html(&r)).unwrap();
+    std::fs::write(
+        dir.join("many.html"),
+        render::html(&common::many_segments(1_000_000)),
+    )
+    .unwrap();
+}
