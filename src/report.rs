@@ -95,7 +95,16 @@ pub(crate) fn build(
         crashes,
         alarms: tp.alarms.iter().map(diagnostic).collect(),
         warnings,
-        tools: tool_numbers.iter().map(|&t| tool_line(tools, t)).collect(),
+        tools: {
+            let times = expander::timing::per_tool(&tp.segments, &loaded.machine);
+            tool_numbers
+                .iter()
+                .map(|&t| {
+                    let secs = times.iter().find(|(n, _)| *n == t).map_or(0.0, |(_, s)| *s);
+                    format!("{} — {secs:.1} s", tool_line(tools, t))
+                })
+                .collect()
+        },
         removed_area_mm2: sim.removed_area,
         removed_volume_mm3: sim.removed_volume,
         segments: tp.segments.len(),

@@ -61,6 +61,19 @@ pub fn cycle_time(segments: &[Segment], dwell_s: f64, machine: &Machine) -> f64 
         + dwell_s
 }
 
+/// Cutting and rapid time per tool number, in order of first use (dwells not included).
+pub fn per_tool(segments: &[Segment], machine: &Machine) -> Vec<(u32, f64)> {
+    let mut out: Vec<(u32, f64)> = vec![];
+    for s in segments {
+        let t = segment_time(s, machine);
+        match out.iter_mut().find(|(tool, _)| *tool == s.tool) {
+            Some((_, sum)) => *sum += t,
+            None => out.push((s.tool, t)),
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
