@@ -185,3 +185,33 @@ fn o0006_finishing_shape_is_the_intent() {
     );
     assert_eq!(v["deviation"]["overcut_area_mm2"], 0.0);
 }
+
+/// A nose radius 1 on a concave R0.5 fillet under G42: interference alarm PS041 at the
+/// fillet's line, and the report shows the overcut that ignoring it causes.
+#[test]
+fn tnrc_interference_is_an_alarm_and_its_overcut_is_shown() {
+    let (out, v) = run_json(&[
+        "run",
+        &a("programs/tnrc-interference.nc"),
+        "--stock",
+        "40x30",
+        "--tools",
+        &a("tools/seed004-v35-r1.toml"),
+        "--target",
+        &a("targets/tnrc-interference.toml"),
+    ]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert_eq!(v["verdict"], "alarm");
+    assert_eq!(
+        (
+            v["alarms"][0]["code"].as_str(),
+            v["alarms"][0]["line"].as_u64()
+        ),
+        (Some("PS041"), Some(8))
+    );
+    let g = v["gouges"].as_array().unwrap();
+    assert!(
+        !g.is_empty() && g[0]["depth_mm"].as_f64().unwrap() > 0.1,
+        "{g:?}"
+    );
+}
