@@ -8,7 +8,8 @@
 //!   union of the batch (no sweep-by-sweep subtraction from an ever-growing polygon, no
 //!   single giant call with k² tool-tool intersections);
 //! - sweeps whose box misses a strip's stock box (air cuts) never reach a boolean call,
-//!   and collinear overlapping feeds (pecks) were already merged into one sweep.
+//!   and collinear overlapping feeds (pecks) were already merged into one sweep, as were
+//!   chains of nearly collinear short feeds (within [`SimOptions::merge_tol`]).
 //!
 //! Crashes: a rapid whose box meets a strip's stock box flushes that strip's batch (so
 //! the stock is exactly the stock after every earlier move) and intersects its sweep with
@@ -49,11 +50,21 @@ const EPOCH: usize = 32_768;
 pub struct SimOptions {
     /// Chord tolerance for arcs, mm (default 0.001).
     pub chord_tol: f64,
+    /// Chains of short feed moves (same tool, no rapid in between, never turning back) are
+    /// swept as one straight move while every programmed point lies within this distance
+    /// of it, mm (default 0.0005; capped at `chord_tol`; 0 or not finite: only exactly
+    /// collinear feeds merge). The final part then differs from the unmerged result by at
+    /// most this much wherever it was cut (see the `sweep` module). Arcs take part with
+    /// their chord when it lies within `chord_tol − merge_tol` of them.
+    pub merge_tol: f64,
 }
 
 impl Default for SimOptions {
     fn default() -> Self {
-        Self { chord_tol: 0.001 }
+        Self {
+            chord_tol: 0.001,
+            merge_tol: 0.0005,
+        }
     }
 }
 
@@ -622,7 +633,12 @@ pub fn simulate(
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .min(n_strips);
-    let mut builder = SweepBuilder::new(&grid, clip, tools, tol);
+    let merge_tol = if opts.merge_tol.is_finite() && opts.merge_tol > 0.0 {
+        opts.merge_tol
+    } else {
+        0.0
+    };
+    let mut builder = SweepBuilder::new(&grid, clip, tools, tol, merge_tol);
     let mut fragments: Vec<Fragment> = Vec::new();
     let mut done = 0;
     while done < segments.len() || done == 0 {
@@ -971,6 +987,92 @@ mod tests {
         assert!(symmetric_difference_area(&sim.final_shapes, &expected) < 1e-6);
     }
 
+    /// Number of sweeps the builder makes of `segs` (with the defaults' chord tolerance).
+    fn sweep_count(tools: &ToolTable, segs: &[Segment], merge_tol: f64) -> usize {
+        let bb = Rect {
+            min: [-200.0, -200.0],
+            max: [200.0, 200.0],
+        };
+        let grid = Grid::new(bb.grown(1.0));
+        let mut b = SweepBuilder::new(&grid, bb, tools, 0.001, merge_tol);
+        for (i, s) in segs.iter().enumerate() {
+            b.push(i, s);
+        }
+        b.flush_run();
+        b.take().items.len()
+    }
+
+    #[test]
+    fn chains_of_tiny_feeds_merge_within_the_merge_tolerance() {
+        let blank = Blank::bar(50.0, 40.0, 0.0, None).unwrap();
+        // 1000 points on a gentle arc (radius 60 mm, centre below the axis), 0.02 mm apart,
+        // chorded as tiny G01 moves: CAM output
+        let (c, rad) = ([-20.0, -40.0], 60.0);
+        let pts: Vec<[f64; 2]> = (0..1000)
+            .map(|k| {
+                let t = (90.0f64 - 10.0).to_radians() + 0.02 * k as f64 / rad;
+                [c[0] + rad * t.cos(), c[1] + rad * t.sin()]
+            })
+            .collect();
+        let mut segs = vec![
+            seg(Motion::Rapid, [10.0, 30.0], [pts[0][0], 30.0]),
+            seg(Motion::Feed, [pts[0][0], 30.0], pts[0]),
+        ];
+        segs.extend(pts.windows(2).map(|w| seg(Motion::Feed, w[0], w[1])));
+        segs.push(seg(Motion::Feed, pts[999], [pts[999][0], 30.0]));
+        segs.push(seg(Motion::Rapid, [pts[999][0], 30.0], [10.0, 30.0]));
+        let merged = sweep_count(&v35(), &segs, 0.0005);
+        let unmerged = sweep_count(&v35(), &segs, 0.0);
+        assert_eq!(unmerged, 1003);
+        // chords of 60 mm arcs within 0.0005 mm are ~0.49 mm long: ~25 moves each
+        assert!(merged < 60, "{merged} sweeps");
+        let sim = |merge_tol| {
+            let opts = SimOptions {
+                merge_tol,
+                ..SimOptions::default()
+            };
+            simulate(&blank, &v35(), &segs, &opts, &mut |_| {})
+        };
+        let (a, b) = (sim(0.0005), sim(0.0));
+        assert!(a.crashes.is_empty() && b.crashes.is_empty());
+        assert!(b.removed_area > 10.0, "{}", b.removed_area);
+        let h = hausdorff(&a.final_shapes, &b.final_shapes);
+        assert!(h <= 0.0005, "hausdorff {h}");
+        assert!(h > 0.0, "the merged result is an approximation");
+        // the default merges
+        assert_eq!(SimOptions::default().merge_tol, 0.0005);
+    }
+
+    #[test]
+    fn zig_zags_and_reversals_are_not_merged() {
+        // sideways zig-zag: every move advances along Z, but the points are 0.002 mm apart
+        let zz: Vec<Segment> = (0..100)
+            .map(|k| {
+                let r = |k: i32| 20.0 + 0.002 * f64::from(k % 2);
+                let (z0, z1) = (-0.05 * f64::from(k), -0.05 * f64::from(k + 1));
+                seg(Motion::Feed, [z0, r(k)], [z1, r(k + 1)])
+            })
+            .collect();
+        assert_eq!(sweep_count(&v35(), &zz, 0.0005), 100);
+        // back and forth along almost the same line (0.0001 mm apart): each move reverses
+        let back: Vec<Segment> = (0..100)
+            .map(|k| {
+                let z = |k: i32| -0.05 * f64::from(k % 2);
+                let r = |k: i32| 20.0 + 0.0001 * f64::from(k);
+                seg(Motion::Feed, [z(k), r(k)], [z(k + 1), r(k + 1)])
+            })
+            .collect();
+        assert_eq!(sweep_count(&v35(), &back, 0.0005), 100);
+        // a rapid in between always ends a merged run
+        let mut with_rapid = vec![
+            seg(Motion::Feed, [0.0, 20.0], [-0.05, 20.0001]),
+            seg(Motion::Feed, [-0.05, 20.0001], [-0.1, 20.0]),
+            seg(Motion::Rapid, [-0.1, 20.0], [-0.1, 20.0]),
+        ];
+        with_rapid.push(seg(Motion::Feed, [-0.1, 20.0], [-0.15, 20.0001]));
+        assert_eq!(sweep_count(&v35(), &with_rapid, 0.0005), 3);
+    }
+
     #[test]
     fn bad_input_is_skipped_with_a_warning_never_a_panic() {
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
@@ -998,7 +1100,10 @@ mod tests {
             &blank,
             &ToolTable::empty(),
             &segs,
-            &SimOptions { chord_tol: -1.0 },
+            &SimOptions {
+                chord_tol: -1.0,
+                ..SimOptions::default()
+            },
             &mut |n| calls.push(n),
         );
         assert!(sim.warnings.iter().any(|(i, _)| *i == 0));

@@ -5,8 +5,35 @@
 //! moves stamp the outline once per lead. Consecutive collinear feeds that overlap (pecks
 //! re-cutting the same line) merge into one sweep, exactly: the union of the sweeps of a
 //! convex part along two overlapping collinear intervals is its sweep along their union.
+//!
+//! # Merging nearly collinear feeds (bounded error)
+//!
+//! A chain of short feeds (CAM output: 0.05 mm G01 moves along a curve) is merged into one
+//! straight move from its first start to its last end while every programmed point in
+//! between lies within `δ = merge_tol` (default 0.0005 mm, half the default chord
+//! tolerance) of that chord, every move of the chain advances along the chord (a move that
+//! turns back ends the run) and the chord is no longer than the tool's outline (so a merged
+//! sweep is no bigger than the ones it replaces, and the tiles' air tests stay selective).
+//! Rapids and threads are never merged and end the run; a rapid is only dropped when it lies
+//! inside an *exact* run, so crash tests always see every rapid against the simulated stock.
+//!
+//! Why the error is at most `δ` (Hausdorff distance between the merged and the unmerged
+//! union of sweeps, hence between the cut boundaries they leave): the sweep of a convex
+//! part `A` along a path `C` is the Minkowski sum `A ⊕ C`, and the sweep of a non-convex
+//! outline is the union of those of its convex parts. Let `P` be the chain (a polyline from
+//! `a` to `b`) and `S = [a, b]` the chord. Every vertex of `P` is within `δ` of `S`, and the
+//! `δ`-neighbourhood of a segment is convex, so all of `P` is within `δ` of `S`. Conversely,
+//! every point `s` of `S` is within `δ` of `P`: `P` runs from one side of the line through `s`
+//! perpendicular to `S` to the other, so it crosses that line, at a point within `δ` of the
+//! chord's line, i.e. of `s`. So `H(P, S) ≤ δ`, and for any set `A`,
+//! `H(A ⊕ P, A ⊕ S) ≤ H(P, S) ≤ δ` (move each path point by ≤ δ and the translated copy of
+//! `A` moves by the same vector). A union of sets each moved by ≤ δ in Hausdorff distance
+//! is moved by ≤ δ, so the removed region, and the boundary of the stock where it was cut,
+//! move by at most `δ`; as with chording arcs, features thinner than `δ` may appear or
+//! vanish there. An arc whose single chord is within `chord_tol − δ` of it joins such
+//! chains as that chord, so the total deviation stays within `chord_tol`.
 
-use crate::geom::{clip_convex, sweep_convex, Rect, P};
+use crate::geom::{clip_convex, point_segment, sweep_convex, Rect, P};
 use crate::outline::Outline;
 use crate::overlay::{Grid, IPt};
 use crate::{AxisDir, Tool, ToolTable};
@@ -18,6 +45,9 @@ use std::ops::Range;
 pub(crate) const MAX_THREAD_STAMPS: usize = 100_000;
 /// Distance under which points count as on the same line when merging moves, mm.
 const COLLINEAR_TOL: f64 = 1e-9;
+/// Most programmed points one merged run of nearly collinear feeds may hold (each new move
+/// re-checks them all, so this bounds the work per move).
+const MAX_CHAIN: usize = 256;
 
 /// An integer bounding box.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -83,13 +113,19 @@ impl Sweeps {
     }
 }
 
-/// A run of merged collinear feeds: the segment a -> b on one line.
+/// A run of merged feeds swept as the one segment a -> b: either exact (collinear feeds,
+/// `mid` empty) or a chain of nearly collinear feeds whose programmed points `mid` lie
+/// within the merge tolerance of `[a, b]` (see the module documentation).
 struct Run {
     tool: u32,
     hint: ToolHint,
     a: P,
     b: P,
     last: usize,
+    /// Programmed points strictly between `a` and `b` of a merged chain, in order.
+    mid: Vec<P>,
+    /// Longest chord a chain may have: the size of the tool's outline, mm.
+    max_len: f64,
 }
 
 impl Run {
@@ -133,6 +169,42 @@ impl Run {
         true
     }
 
+    /// Extends the run by the feed p -> q, which must start at the run's end, when the new
+    /// chord `[a, q]` passes within `tol` of every programmed point of the chain (`mid` and
+    /// the old end), every move advances along it, and it is no longer than `max_len`.
+    /// An exact run counts as the single move `a -> b` (its sweep is that move's sweep).
+    fn try_chain(&mut self, p: P, q: P, tol: f64) -> bool {
+        let dist = |x: P, y: P| (x[0] - y[0]).hypot(x[1] - y[1]);
+        if tol <= 0.0 || self.mid.len() >= MAX_CHAIN || dist(p, self.b) > COLLINEAR_TOL {
+            return false;
+        }
+        let d = [q[0] - self.a[0], q[1] - self.a[1]];
+        let len = d[0].hypot(d[1]);
+        if !(len > COLLINEAR_TOL && len <= self.max_len) {
+            return false;
+        }
+        // every move goes forward along the chord: no reversal inside a merged run
+        let mut prev = self.a;
+        for &x in self.mid.iter().chain([self.b, q].iter()) {
+            if (x[0] - prev[0]) * d[0] + (x[1] - prev[1]) * d[1] <= 0.0 {
+                return false;
+            }
+            prev = x;
+        }
+        let (a, b) = (self.a, self.b);
+        if self
+            .mid
+            .iter()
+            .chain(std::iter::once(&b))
+            .any(|&x| point_segment(x, a, q).0 > tol)
+        {
+            return false;
+        }
+        self.mid.push(b);
+        self.b = q;
+        true
+    }
+
     /// True when the move p -> q lies within the run (its sweep is inside the run's sweep).
     fn contains(&self, p: P, q: P) -> bool {
         match self.params(p, q) {
@@ -153,6 +225,9 @@ pub(crate) struct SweepBuilder<'a> {
     clip: Rect,
     tools: &'a ToolTable,
     tol: f64,
+    /// Largest deviation of a merged chain of feeds from the programmed points, mm (0: only
+    /// exact merging).
+    merge_tol: f64,
     outlines: HashMap<(u32, u8, u64), Outline>,
     run: Option<Run>,
     scratch: Vec<P>,
@@ -163,13 +238,22 @@ pub(crate) struct SweepBuilder<'a> {
 }
 
 impl<'a> SweepBuilder<'a> {
-    /// A builder that clips sweeps to `clip` (which must lie inside the grid's rectangle).
-    pub(crate) fn new(grid: &'a Grid, clip: Rect, tools: &'a ToolTable, chord_tol: f64) -> Self {
+    /// A builder that clips sweeps to `clip` (which must lie inside the grid's rectangle),
+    /// chording arcs within `chord_tol` and merging chains of feeds within `merge_tol`
+    /// (at most `chord_tol`; 0 merges only exactly collinear feeds).
+    pub(crate) fn new(
+        grid: &'a Grid,
+        clip: Rect,
+        tools: &'a ToolTable,
+        chord_tol: f64,
+        merge_tol: f64,
+    ) -> Self {
         Self {
             grid,
             clip,
             tools,
             tol: chord_tol,
+            merge_tol: merge_tol.clamp(0.0, chord_tol),
             outlines: HashMap::new(),
             run: None,
             scratch: Vec::new(),
@@ -244,29 +328,46 @@ impl<'a> SweepBuilder<'a> {
             return;
         }
         let (p, q) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
-        if seg.arc.is_none() && seg.motion != Motion::Thread {
+        // an arc feed whose chord is within chord_tol - merge_tol of it joins chains as a chord
+        let arc_budget = self.tol - self.merge_tol;
+        let arc_as_chord = seg.arc.is_some()
+            && seg.motion == Motion::Feed
+            && self.merge_tol > 0.0
+            && arc_budget > 0.0
+            && seg.polyline(arc_budget).len() == 2;
+        if (seg.arc.is_none() || arc_as_chord) && seg.motion != Motion::Thread {
+            let merge_tol = self.merge_tol;
             if let Some(run) = &mut self.run {
                 if run.tool == seg.tool && run.hint == seg.hint {
                     match seg.motion {
-                        Motion::Feed if run.try_extend(p, q) => {
+                        Motion::Feed
+                            if (run.mid.is_empty() && run.try_extend(p, q))
+                                || run.try_chain(p, q, merge_tol) =>
+                        {
                             run.last = idx;
                             return;
                         }
-                        // inside the sweep of feeds just made: it meets no stock, removes nothing
-                        Motion::Rapid if run.contains(p, q) => return,
+                        // inside the sweep of feeds just made: it meets no stock, removes
+                        // nothing (only for exact runs: a merged chain is not the true sweep)
+                        Motion::Rapid if run.mid.is_empty() && run.contains(p, q) => return,
                         _ => {}
                     }
                 }
             }
             self.flush_run();
             if seg.motion == Motion::Feed {
-                self.outline(seg.tool, seg.hint, idx);
+                let outline = self.outline(seg.tool, seg.hint, idx);
+                let max_len = outline
+                    .bbox()
+                    .map_or(0.0, |(lo, hi)| (hi[0] - lo[0]).max(hi[1] - lo[1]));
                 self.run = Some(Run {
                     tool: seg.tool,
                     hint: seg.hint,
                     a: p,
                     b: q,
                     last: idx,
+                    mid: Vec::new(),
+                    max_len,
                 });
                 return;
             }
