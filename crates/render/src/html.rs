@@ -50,6 +50,18 @@ fn c4(v: f64) -> String {
     num(v.clamp(-CLAMP_MM, CLAMP_MM), 4)
 }
 
+/// `3rd`, `11th`, `21st`.
+fn ordinal(n: usize) -> String {
+    let suffix = match (n % 10, n % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{n}{suffix}")
+}
+
 /// A position for the tables (`—` when not finite).
 fn pos(v: f64) -> String {
     if v.is_finite() {
@@ -159,8 +171,9 @@ fn choose_moves(report: &Report, md: f64) -> Moves {
         .collect();
     let total: usize = counts.iter().sum();
     let mut stride = 1usize;
+    // Strides are odd, so that alternating kinds (cut, retract, cut, …) both show.
     if total > PATH_POINT_CAP {
-        stride = total.div_ceil(PATH_POINT_CAP);
+        stride = total.div_ceil(PATH_POINT_CAP) | 1;
         loop {
             let kept: usize = counts
                 .iter()
@@ -171,7 +184,7 @@ fn choose_moves(report: &Report, md: f64) -> Moves {
             if kept <= PATH_POINT_CAP || stride >= n {
                 break;
             }
-            stride += (stride / 4).max(1);
+            stride = (stride + (stride / 4).max(2)) | 1;
         }
     }
     let list = report
@@ -518,7 +531,11 @@ fn player_legend(out: &mut String, report: &Report) {
         "blank",
     );
     if !report.snapshots.is_empty() {
-        sw(out, "background:#c9d3df", "stock at this move");
+        sw(
+            out,
+            "border:1px solid #8c7b5a;background:#dccfae",
+            "stock still to cut at this move",
+        );
     }
     sw(
         out,
@@ -596,20 +613,20 @@ pub(crate) fn html(report: &Report) -> String {
     out.push_str("<noscript><p class=\"note\">The move slider needs JavaScript.</p></noscript>\n");
     let _ = writeln!(
         out,
-        "<div class=\"controls\"><button type=\"button\" id=\"ls-first\" title=\"first (Home)\">⏮</button><button type=\"button\" id=\"ls-prev\" title=\"previous (←)\">◀</button><button type=\"button\" id=\"ls-play\" title=\"play / pause (space)\">▶</button><button type=\"button\" id=\"ls-next\" title=\"next (→)\">▶▶</button><button type=\"button\" id=\"ls-last\" title=\"last (End)\">⏭</button>\
+        "<div class=\"controls\"><button type=\"button\" id=\"ls-first\" title=\"first move (Home)\">|◀</button><button type=\"button\" id=\"ls-prev\" title=\"previous move (←)\">◀</button><button type=\"button\" id=\"ls-play\" title=\"play / pause\">play</button><button type=\"button\" id=\"ls-next\" title=\"next move (→)\">▶</button><button type=\"button\" id=\"ls-last\" title=\"last move (End)\">▶|</button>\
 <input type=\"range\" id=\"ls-slider\" min=\"0\" max=\"{n}\" step=\"1\" value=\"{n}\" aria-label=\"move\">\
 <output id=\"ls-label\" for=\"ls-slider\">move {n} / {n}</output></div>"
     );
     player_legend(&mut out, report);
     out.push_str("<div class=\"canvasbox\"><canvas id=\"ls-canvas\" width=\"1200\" height=\"600\"></canvas></div>\n");
     let mut notes = vec![
-        "Arrow keys step one move, Page Up/Down ten, Home/End jump to the ends; a link ending in #move=20 opens at move 20; click a row of a table below to jump to its line.".to_string(),
+        "The ← and → keys step one move (with the slider focused, also Page Up/Down and Home/End); a link ending in #move=20 opens at move 20; click a row of the findings tables to jump to the first move of its line.".to_string(),
     ];
     if moves.stride > 1 {
         notes.push(format!(
-            "Toolpath thinned for this page: {} moves, only every {}th is drawn (at most about {} points); the slider still counts every move and names the nearest drawn one.",
+            "Toolpath thinned for this page: {} moves, only every {} is drawn (at most about {} points); the slider still counts every move and names the nearest drawn one.",
             grouped(n as f64, 0),
-            moves.stride,
+            ordinal(moves.stride),
             grouped(PATH_POINT_CAP as f64, 0)
         ));
     }
@@ -668,6 +685,14 @@ mod tests {
             script_safe(r#"{"a":"</script>"}"#),
             r#"{"a":"\u003c/script>"}"#
         );
+    }
+
+    #[test]
+    fn ordinals() {
+        assert_eq!(ordinal(3), "3rd");
+        assert_eq!(ordinal(11), "11th");
+        assert_eq!(ordinal(21), "21st");
+        assert_eq!(ordinal(112), "112th");
     }
 
     #[test]

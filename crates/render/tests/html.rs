@@ -205,7 +205,7 @@ fn snapshots_are_embedded_in_move_order() {
         .collect();
     assert_eq!(ring, [-60.0, 0.0, 0.0, 0.0, 0.0, 36.0, -60.0, 36.0]);
     assert!(!page.contains("No stock snapshots"));
-    assert!(page.contains("stock at this move"));
+    assert!(page.contains("stock still to cut at this move"));
 }
 
 #[test]

@@ -22,6 +22,7 @@
   var KIND = ['rapid', 'feed', 'thread'];
   var COL = [st.rapid || '#c9930a', st.feed || '#1a7f37', st.thread || '#00838f'];
   var HI = '#e0218a';
+  var STOCK = '#dccfae';
   var win = data.window || [-10, 10, -20, 20];
   var zmin = win[0], zmax = win[1], rmin = win[2] / 2, rmax = win[3] / 2;
   if (!(zmax > zmin)) { zmax = zmin + 1; }
@@ -155,16 +156,21 @@
     var si = snapAt(k);
     if (si >= 0) {
       if (!cache.snaps[si]) { cache.snaps[si] = ringsPath(snaps[si].rings || []); }
-      ctx.fillStyle = '#c9d3df';
+      ctx.fillStyle = STOCK;
       ctx.fill(cache.snaps[si], 'evenodd');
-      ctx.strokeStyle = '#7f90a6';
+      ctx.strokeStyle = '#8c7b5a';
       ctx.lineWidth = 1;
       ctx.stroke(cache.snaps[si]);
     }
-    // The final part, faint.
+    // The final part, faint; over a snapshot opaque, so that the stock still to be cut
+    // (the snapshot less the final part) is what stays visible of it.
     ctx.save();
-    ctx.globalAlpha = 0.35;
-    ctx.fillStyle = st.part || '#9db0c8';
+    if (si >= 0) {
+      ctx.fillStyle = '#c8d4e3';
+    } else {
+      ctx.globalAlpha = 0.35;
+      ctx.fillStyle = st.part || '#9db0c8';
+    }
     ctx.fill(cache.part, 'evenodd');
     ctx.globalAlpha = 0.6;
     ctx.strokeStyle = st.part_edge || '#3f5570';
@@ -263,14 +269,14 @@
   var playBtn = byId('ls-play');
   function stop() {
     if (timer !== null) { clearInterval(timer); timer = null; }
-    playBtn.textContent = '\u25b6';
+    playBtn.textContent = 'play';
   }
   function play() {
     if (timer !== null) { stop(); saveHash(); return; }
     if (k >= n) { setK(0, false); }
     var tick = Math.max(16, Math.min(250, 10000 / Math.max(1, n)));
     var step = Math.max(1, Math.round(n * tick / 10000));
-    playBtn.textContent = '\u23f8';
+    playBtn.textContent = 'pause';
     timer = setInterval(function () {
       if (k >= n) { stop(); saveHash(); return; }
       setK(k + step, false);
@@ -321,5 +327,11 @@
   }
 
   layout();
-  if (!fromHash()) { setK(n, false); }
+  if (fromHash()) {
+    // A link to a move shows the player unless it is already in view.
+    var top = byId('ls-player').getBoundingClientRect().top;
+    if (top > (window.innerHeight || 900) * 0.5) { byId('ls-player').scrollIntoView(); }
+  } else {
+    setK(n, false);
+  }
 })();
