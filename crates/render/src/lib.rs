@@ -9,6 +9,9 @@
 //! `removed_volume_mm3`, `segments`, `cycle_time_s`, `tolerance_mm`, `tools`, `alarms`,
 //! `warnings`, `crashes`, `gouges`, `deviation`. Numbers are rounded to 6 decimals;
 //! non-finite numbers are written as `null`.
+//!
+//! The HTML page ([`html`]) is self-contained: the same SVG inline, the tables, and a
+//! move slider drawing on a `<canvas>` from a compact JSON block embedded in the page.
 mod block;
 mod detail;
 mod html;

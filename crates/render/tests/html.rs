@@ -355,6 +355,7 @@ fn write_pages() {
         },
     ];
     std::fs::write(dir.join("groove_bar.html"), render::html(&r)).unwrap();
+    std::fs::write(dir.join("empty.html"), render::html(&Report::default())).unwrap();
     std::fs::write(
         dir.join("many.html"),
         render::html(&common::many_segments(1_000_000)),
