@@ -30,7 +30,11 @@
 //! `A` moves by the same vector). A union of sets each moved by ≤ δ in Hausdorff distance
 //! is moved by ≤ δ, so the removed region, and the boundary of the stock where it was cut,
 //! move by at most `δ`; as with chording arcs, features thinner than `δ` may appear or
-//! vanish there. An arc whose single chord is within `chord_tol − δ` of it joins such
+//! vanish there. The stock a later rapid is tested against is that merged stock, so a rapid
+//! that retraces a merged chain can meet a sliver at most `δ` thick that the chain's true
+//! sweep would have cut (a crash of area ≤ `δ` × its length in contact), or miss one as
+//! thin; rapids away from the cut (retracts) cannot: the merged run ends at the same
+//! programmed point. An arc whose single chord is within `chord_tol − δ` of it joins such
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
 use crate::geom::{clip_convex, point_segment, sweep_convex, Rect, P};
