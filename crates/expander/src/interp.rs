@@ -957,6 +957,28 @@ impl<'m> Interp<'m> {
         self.out.alarms.extend(c.alarms);
     }
 
+    /// Put a G70 shape's S, T and G96–G99 in force (the T word changes the tool that cuts;
+    /// it does not suspend the compensation of the G70 pass).
+    fn apply_shape_modes(&mut self, m: cycles::contour::ShapeModes) {
+        if let Some(css) = m.css {
+            self.css = css;
+        }
+        if let Some(per_rev) = m.per_rev {
+            self.per_rev = per_rev;
+        }
+        if let Some(s) = m.s {
+            self.s_value = if self.css && self.inch { s * 0.3048 } else { s };
+        }
+        if let Some(t) = m.tool {
+            if t / 100 != 0 {
+                self.tool = t / 100;
+                if !self.out.tools.contains(&self.tool) {
+                    self.out.tools.push(self.tool);
+                }
+            }
+        }
+    }
+
     /// Run a canned cycle and emit its moves with this block's span.
     fn cycle<'b>(
         &mut self,
@@ -1010,6 +1032,9 @@ impl<'m> Interp<'m> {
         for m in out.moves {
             if let Some(f) = m.feed {
                 self.feed = f;
+            }
+            if let Some(modes) = m.modes {
+                self.apply_shape_modes(modes);
             }
             let span = m.span.unwrap_or(b.span);
             if m.to.dist(self.pos) >= 1e-12 {

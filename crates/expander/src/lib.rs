@@ -18,7 +18,7 @@ pub mod toolpath;
 mod words;
 
 pub use alarm::Diagnostic;
-pub use cycles::contour::{FinishingShape, ShapeElement};
+pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
 pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
 pub use machine::{FeedMode, Increment, Machine, PqUnits, ProfileError, RapidPath};

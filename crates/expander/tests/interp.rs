@@ -352,3 +352,23 @@ fn the_start_tool_applies_before_the_first_t_word() {
     let tp = run_with("G0 X40 Z2\nT0101\nG0 X50\n", &Machine::default(), &opts);
     assert_eq!((tp.segments[0].tool, tp.segments[1].tool), (4, 1));
 }
+
+#[test]
+fn g70_applies_s_t_and_feed_modes_written_in_the_shape() {
+    let src = "G98 M3 S500 T0101\nG0 X62 Z2\nG70 P10 Q20\nN10 G0 X40 T0202\nG99 G96 S200 G1 Z-20 F0.2\nN20 X62\nM30\n";
+    let tp = run(src);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let cut = tp.segments.iter().find(|s| s.span.line == 5).unwrap();
+    assert_eq!(cut.tool, 2);
+    assert_eq!(
+        cut.feed,
+        Feed::PerRev {
+            feed: 0.2,
+            spindle: Spindle::Css {
+                vc: 200.0,
+                max_rpm: Machine::default().max_rpm
+            }
+        }
+    );
+    assert!(tp.warnings.is_empty(), "{:?}", tp.warnings);
+}

@@ -13,10 +13,9 @@
 //! - nf before ns, or a shape that contains the cycle block itself, is an alarm.
 //! - M codes other than M98/M99 inside the shape are ignored by the cycles (GSK forbids
 //!   only the subprogram calls); G04 inside the shape is ignored (no dwell time is added).
-//! - S, T, G96–G99 inside the shape: roughing ignores them (seed 003); G70 cannot switch
-//!   them yet (the cycle output carries only the feed), so G70 warns that they were not
-//!   applied. G41/G42 are read: G70 runs the shape compensated on that side; roughing
-//!   implemented yet.
+//! - F, S, T and G96–G99 inside the shape: roughing ignores them (seed 003); G70 applies
+//!   them from their block on, and they stay in force after G70 as after any block.
+//!   G41/G42 are read: G70 runs the shape compensated on that side; roughing ignores them.
 
 use super::Cycle;
 use crate::arc::{self, ArcError};
@@ -37,6 +36,8 @@ pub struct ShapeElement {
     pub rapid: bool,
     /// The F word in force inside the shape at this element (`None`: none written yet).
     pub feed: Option<f64>,
+    /// S, T and G96–G99 written inside the shape up to this element (G70 applies them).
+    pub modes: ShapeModes,
     /// The block that wrote it.
     pub span: Span,
 }
@@ -55,6 +56,20 @@ impl ShapeElement {
             ..*self
         }
     }
+}
+
+/// Spindle, tool and feed-mode words written inside a finishing shape, as in force at an
+/// element (`None`: not written in the shape so far).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ShapeModes {
+    /// S value.
+    pub s: Option<f64>,
+    /// G96 (true) or G97 (false).
+    pub css: Option<bool>,
+    /// G99 (true) or G98 (false).
+    pub per_rev: Option<bool>,
+    /// T word value `ttoo`.
+    pub tool: Option<u32>,
 }
 
 /// A finishing shape ns..nf: the intended contour of the part a G70–G73 cycle works to.
@@ -203,6 +218,7 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
         unit: c.unit,
         mode: 0,
         feed: None,
+        modes: ShapeModes::default(),
         elements: vec![],
         notes: vec![],
         ns_moves: (false, false),
@@ -242,28 +258,12 @@ struct Reader {
     /// Motion code in tenths: 0, 10, 20, 30.
     mode: i32,
     feed: Option<f64>,
+    modes: ShapeModes,
     elements: Vec<ShapeElement>,
     notes: Vec<Diagnostic>,
     ns_moves: (bool, bool),
     ns_span: Span,
     comp: Option<Side>,
-}
-
-/// The G70 warning for a word of the shape it cannot apply yet.
-fn unapplied(w: &Word) -> Diagnostic {
-    let what = if w.letter == 'G' {
-        format!("G{}", w.value)
-    } else {
-        format!("{}{}", w.letter, w.value)
-    };
-    Diagnostic::new(
-        w.span,
-        "LS-SHAPE-UNAPPLIED",
-        format!(
-            "{what} inside the finishing shape is not applied by G70 in this version (only F is)"
-        ),
-        "give S, T and G96–G99 before the G70 block to have them in force",
-    )
 }
 
 /// The alarm for a code not allowed inside a finishing shape.
@@ -288,7 +288,8 @@ impl Reader {
                         0 | 10 | 20 | 30 => motion = Some((t, w)),
                         40 => dwell = true,
                         400 => {}
-                        960 | 970 | 980 | 990 => self.notes.push(unapplied(w)),
+                        960 | 970 => self.modes.css = Some(t == 960),
+                        980 | 990 => self.modes.per_rev = Some(t == 990),
                         410 | 420 => {
                             self.comp =
                                 self.comp
@@ -334,7 +335,18 @@ impl Reader {
             let v = w.value * self.unit;
             match w.letter {
                 'G' | 'M' => {}
-                'S' | 'T' => self.notes.push(unapplied(w)),
+                'S' => self.modes.s = Some(w.value),
+                'T' if !w.has_point && (0.0..=9999.0).contains(&w.value) => {
+                    self.modes.tool = Some(w.value as u32)
+                }
+                'T' => {
+                    return Err(Diagnostic::new(
+                        w.span,
+                        "LS-T-WORD",
+                        "T must be four digits Tttoo",
+                        "write e.g. T0101: tool 01 with offset 01",
+                    ));
+                }
                 'F' => self.feed = Some(w.value),
                 'P' if dwell => {}
                 'X' | 'U' if dwell => {}
@@ -421,6 +433,7 @@ impl Reader {
                 arc,
                 rapid: self.mode == 0,
                 feed: self.feed,
+                modes: self.modes,
                 span: b.span,
             });
         }

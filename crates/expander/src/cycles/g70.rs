@@ -4,7 +4,7 @@
 //! from its block on; before the first one, the F in force at G70), then rapids back to
 //! the start point. Moves carry the span of their shape block.
 //!
-//! Choices: S, T and G96–G99 inside the shape are not applied yet (a warning says so);
+//! S, T and G96–G99 inside the shape are put in force from their block on.
 //! G41/G42 in the shape (or in force at G70) compensate the pass: the move A → B is the
 //! start-up, the rapid back to A the cancel (spec/tnrc.md). The program continues
 //! after nf when the shape follows the G70 block, else after the G70 block (FANUC).
@@ -26,6 +26,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         };
         m.arc = e.arc;
         m.feed = e.feed;
+        m.modes = Some(e.modes);
         m.span = Some(e.span);
         moves.push(m);
     }

@@ -30,6 +30,8 @@ pub(crate) struct Move {
     pub(crate) span: Option<Span>,
     /// What cuts this move beyond the tool number (grooving defaults, G75.1 I).
     pub(crate) hint: ToolHint,
+    /// S, T and G96–G99 to put in force before this move (G70 runs its shape's own).
+    pub(crate) modes: Option<contour::ShapeModes>,
 }
 
 impl Move {
@@ -42,6 +44,7 @@ impl Move {
             feed: None,
             span: None,
             hint: ToolHint::Table,
+            modes: None,
         }
     }
     /// A straight feed to `to`.
@@ -53,6 +56,7 @@ impl Move {
             feed: None,
             span: None,
             hint: ToolHint::Table,
+            modes: None,
         }
     }
 }
