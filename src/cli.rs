@@ -101,6 +101,9 @@ pub(crate) struct RunArgs {
     /// Write the PNG report here.
     #[arg(long, value_name = "F")]
     pub(crate) png: Option<PathBuf>,
+    /// Write the self-contained HTML report (picture, tables, move slider) here.
+    #[arg(long, value_name = "F")]
+    pub(crate) html: Option<PathBuf>,
     /// Folder for the default outputs <prog>.svg, <prog>.png, <prog>.json (default: current folder).
     #[arg(long, value_name = "DIR")]
     pub(crate) out: Option<PathBuf>,

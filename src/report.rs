@@ -170,3 +170,44 @@ pub(crate) fn add_deviation(
         max_undercut_mm: d.max_undercut(),
     });
 }
+
+/// Programs up to this many moves get stock snapshots for the HTML slider.
+const SNAPSHOT_MAX_MOVES: usize = 5_000;
+/// How many snapshots (besides the blank and the final part).
+const SNAPSHOTS: usize = 30;
+
+/// The stock part-way through the run, for the HTML report's move slider: re-simulating
+/// prefixes of the program costs about `SNAPSHOTS / 2` runs, so only small programs get them.
+pub(crate) fn snapshots(
+    blank: &stock::Blank,
+    tools: &stock::ToolTable,
+    segments: &[expander::Segment],
+    sim: &stock::Simulation,
+) -> Vec<render::Snapshot> {
+    let n = segments.len();
+    if n == 0 || n > SNAPSHOT_MAX_MOVES {
+        return vec![];
+    }
+    let mut marks: Vec<usize> = (1..SNAPSHOTS)
+        .map(|i| i * n / SNAPSHOTS)
+        .filter(|&k| k > 0 && k < n)
+        .collect();
+    marks.dedup();
+    let opts = stock::SimOptions::default();
+    let mut out = vec![render::Snapshot {
+        after_move: 0,
+        shapes: blank.shapes.iter().map(shape).collect(),
+    }];
+    for k in marks {
+        let part = stock::simulate(blank, tools, &segments[..k], &opts, &mut |_| {});
+        out.push(render::Snapshot {
+            after_move: k,
+            shapes: part.final_shapes.iter().map(shape).collect(),
+        });
+    }
+    out.push(render::Snapshot {
+        after_move: n,
+        shapes: sim.final_shapes.iter().map(shape).collect(),
+    });
+    out
+}

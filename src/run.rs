@@ -42,18 +42,22 @@ fn check_one(args: &CheckArgs, path: &Path, tools: &stock::ToolTable) -> u8 {
     }
 }
 
-/// Where each report goes: the explicit paths, or all three into `--out`.
+/// Where each report goes: the explicit paths, or all four into `--out`.
 fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
-    let explicit: Vec<(PathBuf, &'static str)> =
-        [(&args.svg, "svg"), (&args.png, "png"), (&args.json, "json")]
-            .into_iter()
-            .filter_map(|(p, kind)| p.clone().map(|p| (p, kind)))
-            .collect();
+    let explicit: Vec<(PathBuf, &'static str)> = [
+        (&args.svg, "svg"),
+        (&args.png, "png"),
+        (&args.json, "json"),
+        (&args.html, "html"),
+    ]
+    .into_iter()
+    .filter_map(|(p, kind)| p.clone().map(|p| (p, kind)))
+    .collect();
     if !explicit.is_empty() {
         return explicit;
     }
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    ["svg", "png", "json"]
+    ["svg", "png", "json", "html"]
         .into_iter()
         .map(|kind| (dir.join(format!("{stem}.{kind}")), kind))
         .collect()
@@ -197,6 +201,7 @@ fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
     });
     let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
     crate::report::add_deviation(&mut report, &loaded, &blank, &intents, deviation.as_ref());
+    report.snapshots = crate::report::snapshots(&blank, &tools, segments, &sim);
 
     let mut inputs = vec![path.to_path_buf()];
     inputs.extend(args.tools.clone());
@@ -207,6 +212,7 @@ fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
         let bytes = match kind {
             "svg" => render::svg(&report).into_bytes(),
             "json" => render::json(&report).into_bytes(),
+            "html" => render::html(&report).into_bytes(),
             _ => match render::png(&report) {
                 Ok(b) => b,
                 Err(e) => {

@@ -25,6 +25,14 @@ pub(crate) fn write_atomic(path: &Path, bytes: &[u8], inputs: &[PathBuf]) -> Res
     tmp.write_all(bytes)
         .and_then(|_| tmp.flush())
         .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    // A temporary file is private (0600); a report is an ordinary file.
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let _ = tmp
+            .as_file()
+            .set_permissions(std::fs::Permissions::from_mode(0o644));
+    }
     tmp.persist(path)
         .map_err(|e| format!("cannot write {}: {}", path.display(), e.error))?;
     Ok(())

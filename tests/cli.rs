@@ -83,7 +83,7 @@ fn increment_flag_is_accepted() {
 }
 
 #[test]
-fn run_writes_all_three_reports_by_default() {
+fn run_writes_all_four_reports_by_default() {
     let dir = tempfile::tempdir().unwrap();
     let out = latsim(&[
         "run",
@@ -97,7 +97,7 @@ fn run_writes_all_three_reports_by_default() {
         "--quiet",
     ]);
     assert_eq!(out.code, 0, "{}", out.stderr);
-    for ext in ["svg", "png", "json"] {
+    for ext in ["svg", "png", "json", "html"] {
         let p = dir.path().join(format!("O0002.{ext}"));
         assert!(
             std::fs::metadata(&p)
@@ -110,7 +110,17 @@ fn run_writes_all_three_reports_by_default() {
     let png = std::fs::read(dir.path().join("O0002.png")).unwrap();
     assert_eq!(&png[1..4], b"PNG");
     // no temporary files left behind
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 4);
+    let html = std::fs::read_to_string(dir.path().join("O0002.html")).unwrap();
+    assert!(
+        html.contains("type=\"range\"") && html.contains("id=\"ls-data\""),
+        "the HTML report has its slider and data"
+    );
+    // small programs carry stock snapshots for the slider
+    assert!(
+        html.contains("\"snapshots\":[{\"after\":0"),
+        "snapshots missing"
+    );
 }
 
 #[test]
