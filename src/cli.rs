@@ -13,8 +13,8 @@ pub(crate) struct Cli {
 
 #[derive(Debug, Subcommand)]
 pub(crate) enum Command {
-    /// Simulate a program on a blank and write the SVG, PNG and JSON report.
-    Run(RunArgs),
+    /// Simulate programs on a blank and write the SVG, PNG, JSON and HTML reports.
+    Run(Box<RunArgs>),
     /// Read and expand a program and report its alarms (no material removal).
     Check(CheckArgs),
     /// Print the expanded toolpath, one row per segment.

@@ -21,7 +21,11 @@ pub struct ParseError {
 
 impl ParseError {
     fn new(span: Span, message: impl Into<String>, help: impl Into<String>) -> Self {
-        Self { span, message: message.into(), help: help.into() }
+        Self {
+            span,
+            message: message.into(),
+            help: help.into(),
+        }
     }
 }
 
@@ -60,7 +64,11 @@ impl<'a> Reader<'a> {
             line: 1,
             column: 0,
             program: Program {
-                programs: vec![Subprogram { number: None, span: Span::default(), blocks: vec![] }],
+                programs: vec![Subprogram {
+                    number: None,
+                    span: Span::default(),
+                    blocks: vec![],
+                }],
                 notes: vec![],
             },
             words: vec![],
@@ -75,7 +83,12 @@ impl<'a> Reader<'a> {
     fn next(&mut self) -> Option<(Span, char)> {
         let (offset, c) = self.chars.next()?;
         self.column += 1;
-        let span = Span { line: self.line, column: self.column, offset, len: c.len_utf8() };
+        let span = Span {
+            line: self.line,
+            column: self.column,
+            offset,
+            len: c.len_utf8(),
+        };
         if c == '\n' {
             self.line += 1;
             self.column = 0;
@@ -136,27 +149,27 @@ impl<'a> Reader<'a> {
                     });
                     self.mark(span);
                 }
-                c if c.is_ascii_digit() || c == '.' || c == '+' || c == '-' => match &mut self.pending {
-                    Some(p) => {
-                        if p.text.len() >= MAX_NUMBER_CHARS {
-                            return Err(ParseError::new(
+                c if c.is_ascii_digit() || c == '.' || c == '+' || c == '-' => {
+                    match &mut self.pending {
+                        Some(p) => {
+                            if p.text.len() >= MAX_NUMBER_CHARS {
+                                return Err(ParseError::new(
                                 p.start.to(span),
                                 format!("number of address {} is too long", p.letter),
                                 "a coordinate has at most 9 digits before and 4 after the point",
                             ));
+                            }
+                            p.text.push(c);
+                            p.end = span;
+                            self.block_end = span;
                         }
-                        p.text.push(c);
-                        p.end = span;
-                        self.block_end = span;
-                    }
-                    None => {
-                        return Err(ParseError::new(
+                        None => return Err(ParseError::new(
                             span,
                             format!("number '{c}' without an address letter"),
                             "every number belongs to a word such as X100. or Z-5 — add the letter",
-                        ))
+                        )),
                     }
-                },
+                }
                 c if !c.is_ascii() && !c.is_control() => {
                     // Manuals print annotations after the block without parentheses
                     // (seed 003: `w-20 ; 精加工形狀程式段`). Accept them as comments, noted.
@@ -184,13 +197,20 @@ impl<'a> Reader<'a> {
             }
         }
         self.end_block()?;
-        self.program.programs.retain(|p| p.number.is_some() || !p.blocks.is_empty());
+        self.program
+            .programs
+            .retain(|p| p.number.is_some() || !p.blocks.is_empty());
         Ok(self.program)
     }
 
     /// Skip to the end of the line (the newline itself ends the block). Returns the last span.
     fn skip_line(&mut self) -> Span {
-        let mut last = Span { line: self.line, column: self.column, offset: 0, len: 0 };
+        let mut last = Span {
+            line: self.line,
+            column: self.column,
+            offset: 0,
+            len: 0,
+        };
         while let Some(c) = self.peek() {
             if c == '\n' {
                 break;
@@ -220,7 +240,9 @@ impl<'a> Reader<'a> {
     }
 
     fn finish_word(&mut self) -> Result<(), ParseError> {
-        let Some(p) = self.pending.take() else { return Ok(()) };
+        let Some(p) = self.pending.take() else {
+            return Ok(());
+        };
         let span = p.start.to(p.end);
         let (value, has_point) = parse_number(&p.text).ok_or_else(|| {
             if p.text.is_empty() {
@@ -257,7 +279,11 @@ impl<'a> Reader<'a> {
                         "put O and its number on a line of its own, before the program's blocks",
                     ));
                 }
-                let current = self.program.programs.last_mut().expect("always one program");
+                let current = self
+                    .program
+                    .programs
+                    .last_mut()
+                    .expect("always one program");
                 if current.number.is_none() && current.blocks.is_empty() {
                     current.number = Some(number);
                     current.span = span;
@@ -265,11 +291,18 @@ impl<'a> Reader<'a> {
                     if let Some(other) = self.program.find(number) {
                         return Err(ParseError::new(
                             span,
-                            format!("program O{number:04} is defined twice (first at {})", other.span),
+                            format!(
+                                "program O{number:04} is defined twice (first at {})",
+                                other.span
+                            ),
                             "give each program in the file its own O number",
                         ));
                     }
-                    self.program.programs.push(Subprogram { number: Some(number), span, blocks: vec![] });
+                    self.program.programs.push(Subprogram {
+                        number: Some(number),
+                        span,
+                        blocks: vec![],
+                    });
                 }
             }
             letter => {
@@ -277,12 +310,20 @@ impl<'a> Reader<'a> {
                     if let Some(first) = self.words.iter().find(|w| w.letter == letter) {
                         return Err(ParseError::new(
                             span,
-                            format!("address {letter} given twice in one block (first at {})", first.span),
+                            format!(
+                                "address {letter} given twice in one block (first at {})",
+                                first.span
+                            ),
                             format!("remove one of the two {letter} words"),
                         ));
                     }
                 }
-                self.words.push(Word { letter, value, has_point, span });
+                self.words.push(Word {
+                    letter,
+                    value,
+                    has_point,
+                    span,
+                });
             }
         }
         Ok(())
@@ -296,8 +337,19 @@ impl<'a> Reader<'a> {
             let block_delete = std::mem::replace(&mut self.block_delete, false);
             if !words.is_empty() || seq.is_some() {
                 let span = start.to(self.block_end);
-                let block = Block { words, seq: seq.map(|s| s.0), seq_span: seq.map(|s| s.1), block_delete, span };
-                self.program.programs.last_mut().expect("always one program").blocks.push(block);
+                let block = Block {
+                    words,
+                    seq: seq.map(|s| s.0),
+                    seq_span: seq.map(|s| s.1),
+                    block_delete,
+                    span,
+                };
+                self.program
+                    .programs
+                    .last_mut()
+                    .expect("always one program")
+                    .blocks
+                    .push(block);
             }
         }
         self.words.clear();
@@ -342,25 +394,38 @@ mod tests {
     use super::*;
 
     fn words(src: &str) -> Vec<(char, f64)> {
-        parse(src).unwrap().programs[0].blocks.iter().flat_map(|b| b.words.iter().map(|w| (w.letter, w.value))).collect()
+        parse(src).unwrap().programs[0]
+            .blocks
+            .iter()
+            .flat_map(|b| b.words.iter().map(|w| (w.letter, w.value)))
+            .collect()
     }
 
     #[test]
     fn spaces_inside_words_and_case() {
-        assert_eq!(words("g74 z-28.0 Q5 000 f0.1"), vec![('G', 74.0), ('Z', -28.0), ('Q', 5000.0), ('F', 0.1)]);
-        assert_eq!(words("G28 U0 W 0;"), vec![('G', 28.0), ('U', 0.0), ('W', 0.0)]);
+        assert_eq!(
+            words("g74 z-28.0 Q5 000 f0.1"),
+            vec![('G', 74.0), ('Z', -28.0), ('Q', 5000.0), ('F', 0.1)]
+        );
+        assert_eq!(
+            words("G28 U0 W 0;"),
+            vec![('G', 28.0), ('U', 0.0), ('W', 0.0)]
+        );
     }
 
     #[test]
     fn number_forms() {
-        assert_eq!(words("X100. u.1 w0. R6. Z-17.639 P30000"), vec![
-            ('X', 100.0),
-            ('U', 0.1),
-            ('W', 0.0),
-            ('R', 6.0),
-            ('Z', -17.639),
-            ('P', 30000.0)
-        ]);
+        assert_eq!(
+            words("X100. u.1 w0. R6. Z-17.639 P30000"),
+            vec![
+                ('X', 100.0),
+                ('U', 0.1),
+                ('W', 0.0),
+                ('R', 6.0),
+                ('Z', -17.639),
+                ('P', 30000.0)
+            ]
+        );
         let p = parse("X100. P1500").unwrap();
         let b = &p.programs[0].blocks[0];
         assert!(b.words[0].has_point);
@@ -376,13 +441,10 @@ mod tests {
 
     #[test]
     fn comments() {
-        assert_eq!(words("G0 X1 (hello; world) Z2 （中文）\nG1 X2 // rest ; ignored"), vec![
-            ('G', 0.0),
-            ('X', 1.0),
-            ('Z', 2.0),
-            ('G', 1.0),
-            ('X', 2.0)
-        ]);
+        assert_eq!(
+            words("G0 X1 (hello; world) Z2 （中文）\nG1 X2 // rest ; ignored"),
+            vec![('G', 0.0), ('X', 1.0), ('Z', 2.0), ('G', 1.0), ('X', 2.0)]
+        );
     }
 
     #[test]
@@ -437,7 +499,11 @@ mod tests {
     #[test]
     fn g_code_tenths() {
         let p = parse("G75.1 G01 G0").unwrap();
-        let codes: Vec<_> = p.programs[0].blocks[0].words.iter().map(|w| w.code_tenths()).collect();
+        let codes: Vec<_> = p.programs[0].blocks[0]
+            .words
+            .iter()
+            .map(|w| w.code_tenths())
+            .collect();
         assert_eq!(codes, vec![Some(751), Some(10), Some(0)]);
     }
 }

@@ -17,9 +17,18 @@ pub struct Span {
 impl Span {
     /// The smallest span covering both `self` and `other` (same source assumed).
     pub fn to(self, other: Self) -> Self {
-        let (a, b) = if self.offset <= other.offset { (self, other) } else { (other, self) };
+        let (a, b) = if self.offset <= other.offset {
+            (self, other)
+        } else {
+            (other, self)
+        };
         let end = (b.offset + b.len).max(a.offset + a.len);
-        Self { line: a.line, column: a.column, offset: a.offset, len: end - a.offset }
+        Self {
+            line: a.line,
+            column: a.column,
+            offset: a.offset,
+            len: end - a.offset,
+        }
     }
 }
 
