@@ -4,8 +4,8 @@
 
 use crate::geom::{convex_hull, point_in_ring, point_segment, sweep_convex, P};
 use crate::overlay::BoolOp;
-use crate::{area, boolean, AxisDir, Outline, Shape, Tool, ToolTable};
-use expander::{Segment, ToolHint};
+use crate::{area, boolean, Outline, Shape, ToolTable};
+use expander::Segment;
 
 /// What the part should be, and where that statement holds.
 #[derive(Debug, Clone, PartialEq)]
@@ -309,55 +309,11 @@ fn outline_cached(
     tools: &ToolTable,
     seg: &Segment,
 ) -> Outline {
-    let key = match seg.hint {
-        ToolHint::Table => (seg.tool, 0, 0),
-        ToolHint::Grooving => (seg.tool, 1, 0),
-        ToolHint::Blade {
-            width,
-            toward_plus_z,
-        } => (seg.tool, 2 + u8::from(toward_plus_z), width.to_bits()),
-    };
+    let key = crate::tools::hint_key(seg.tool, seg.hint);
     if let Some((_, o)) = cache.iter().find(|(k, _)| *k == key) {
         return o.clone();
     }
-    let o = match seg.hint {
-        ToolHint::Table => tools.outline(seg.tool).0,
-        ToolHint::Grooving => tools
-            .get(seg.tool)
-            .map_or_else(|| Tool::DEFAULT_BLADE.outline(), Tool::outline),
-        ToolHint::Blade {
-            width,
-            toward_plus_z,
-        } => {
-            let (shank_dir, reach, corner_radius) = match tools.get(seg.tool) {
-                Some(&Tool::Grooving {
-                    shank_dir,
-                    reach,
-                    corner_radius,
-                    ..
-                }) => (shank_dir, reach, corner_radius),
-                _ => (AxisDir::PlusX, 20.0, 0.0),
-            };
-            let width_dir = if toward_plus_z {
-                AxisDir::PlusZ
-            } else {
-                AxisDir::MinusZ
-            };
-            let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) {
-                shank_dir
-            } else {
-                AxisDir::PlusX
-            };
-            Tool::Grooving {
-                width,
-                width_dir,
-                shank_dir,
-                reach,
-                corner_radius: corner_radius.min(width / 2.0),
-            }
-            .outline()
-        }
-    };
+    let o = tools.outline_for(seg.tool, seg.hint).0;
     cache.push((key, o.clone()));
     o
 }

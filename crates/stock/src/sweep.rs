@@ -40,7 +40,7 @@
 use crate::geom::{clip_convex, point_segment, sweep_convex, Rect, P};
 use crate::outline::Outline;
 use crate::overlay::{Grid, IPt};
-use crate::{AxisDir, Tool, ToolTable};
+use crate::ToolTable;
 use expander::{Motion, Segment, ToolHint};
 use std::collections::HashMap;
 use std::ops::Range;
@@ -268,43 +268,11 @@ impl<'a> SweepBuilder<'a> {
 
     /// The outline of tool `t` under `hint`, warning once per tool (and hint) when defaulted.
     fn outline(&mut self, t: u32, hint: ToolHint, idx: usize) -> Outline {
-        let key = match hint {
-            ToolHint::Table => (t, 0, 0),
-            ToolHint::Grooving => (t, 1, 0),
-            ToolHint::Blade {
-                width,
-                toward_plus_z,
-            } => (t, 2 + u8::from(toward_plus_z), width.to_bits()),
-        };
+        let key = crate::tools::hint_key(t, hint);
         if let Some(o) = self.outlines.get(&key) {
             return o.clone();
         }
-        let (o, warning) = match hint {
-            ToolHint::Table => self.tools.outline(t),
-            ToolHint::Grooving => match self.tools.get(t) {
-                Some(tool) => (tool.outline(), None),
-                None => (
-                    Tool::DEFAULT_BLADE.outline(),
-                    Some(format!("T{t:02} has no entry in the tool table: the grooving cycle uses the default ({})", Tool::DEFAULT_BLADE.describe())),
-                ),
-            },
-            ToolHint::Blade { width, toward_plus_z } => {
-                // G75.1 I: the blade width is the program's; the rest from a grooving entry
-                let (shank_dir, reach, corner_radius) = match self.tools.get(t) {
-                    Some(&Tool::Grooving { shank_dir, reach, corner_radius, .. }) => (shank_dir, reach, corner_radius),
-                    _ => (AxisDir::PlusX, 20.0, 0.0),
-                };
-                if width.is_finite() && width > 0.0 && width < 1e4 {
-                    let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
-                    let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { AxisDir::PlusX };
-                    let tool = Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) };
-                    (tool.outline(), None)
-                } else {
-                    let (o, _) = self.tools.outline(t);
-                    (o, Some(format!("blade width {width} is not a positive length: T{t:02}'s outline is used")))
-                }
-            }
-        };
+        let (o, warning) = self.tools.outline_for(t, hint);
         if let Some(w) = warning {
             self.warnings.push((idx, w));
         }

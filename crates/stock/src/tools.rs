@@ -3,6 +3,7 @@
 use crate::error::{from_toml, line_col};
 use crate::outline::{self, InsertBody, Outline};
 use crate::StockError;
+use expander::ToolHint;
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -584,6 +585,52 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
             }
         }
     })
+}
+
+/// A cache key for the outline of tool `t` under `hint`.
+pub(crate) fn hint_key(t: u32, hint: ToolHint) -> (u32, u8, u64) {
+    match hint {
+        ToolHint::Table => (t, 0, 0),
+        ToolHint::Grooving => (t, 1, 0),
+        ToolHint::Blade {
+            width,
+            toward_plus_z,
+        } => (t, 2 + u8::from(toward_plus_z), width.to_bits()),
+    }
+}
+
+impl ToolTable {
+    /// The outline that cuts tool `t` when a cycle adds `hint` (spec/simulation.md, Tools):
+    /// the table's entry; in a grooving cycle with no entry, the default 3 mm blade; for
+    /// G75.1's I, a blade of the program's width (shank, reach and corner radius from the
+    /// table's grooving entry, if any). The text is a warning when a default stands in.
+    pub fn outline_for(&self, t: u32, hint: ToolHint) -> (Outline, Option<String>) {
+        match hint {
+            ToolHint::Table => self.outline(t),
+            ToolHint::Grooving => match self.get(t) {
+                Some(tool) => (tool.outline(), None),
+                None => (
+                    Tool::DEFAULT_BLADE.outline(),
+                    Some(format!("T{t:02} has no entry in the tool table: the grooving cycle uses the default ({})", Tool::DEFAULT_BLADE.describe())),
+                ),
+            },
+            ToolHint::Blade { width, toward_plus_z } => {
+                let (shank_dir, reach, corner_radius) = match self.get(t) {
+                    Some(&Tool::Grooving { shank_dir, reach, corner_radius, .. }) => (shank_dir, reach, corner_radius),
+                    _ => (AxisDir::PlusX, 20.0, 0.0),
+                };
+                if width.is_finite() && width > 0.0 && width < 1e4 {
+                    let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
+                    let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { AxisDir::PlusX };
+                    let tool = Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) };
+                    (tool.outline(), None)
+                } else {
+                    let (o, _) = self.outline(t);
+                    (o, Some(format!("blade width {width} is not a positive length: T{t:02}'s outline is used")))
+                }
+            }
+        }
+    }
 }
 
 #[cfg(test)]
