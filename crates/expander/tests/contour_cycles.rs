@@ -1,6 +1,8 @@
 //! The contour cycles G70–G73: one snapshot of each expansion, and every alarm rule at its
 //! line and column.
 
+mod common;
+use common::asset;
 use expander::{expand, Motion, Options, Toolpath};
 
 fn run(src: &str) -> Toolpath {
@@ -11,40 +13,9 @@ fn run(src: &str) -> Toolpath {
     )
 }
 
-/// One readable line per segment, for snapshots (as in tests/interp.rs).
+/// One readable line per segment, for snapshots.
 fn listing(tp: &Toolpath) -> String {
-    let mut s = String::new();
-    for seg in &tp.segments {
-        let kind = match (seg.motion, seg.arc) {
-            (Motion::Rapid, _) => "G00".to_string(),
-            (Motion::Feed, None) => "G01".to_string(),
-            (Motion::Feed, Some(a)) => format!(
-                "{} c(Z{:.3} X{:.3})",
-                if a.ccw { "G03" } else { "G02" },
-                a.center.z,
-                2.0 * a.center.r
-            ),
-            (Motion::Thread, _) => format!("G32 lead {}", seg.lead),
-        };
-        s += &format!(
-            "line {:>2}: {kind} Z{:.3} X{:.3} -> Z{:.3} X{:.3} F{:?}\n",
-            seg.span.line,
-            seg.from.z,
-            2.0 * seg.from.r,
-            seg.to.z,
-            2.0 * seg.to.r,
-            seg.feed
-        );
-    }
-    for a in tp.alarms.iter().chain(&tp.warnings) {
-        s += &format!("{a}\n");
-    }
-    s
-}
-
-fn asset(name: &str) -> String {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/programs");
-    std::fs::read_to_string(root.join(name)).unwrap()
+    common::listing(tp, |s| format!("F{:?}", s.feed))
 }
 
 #[test]

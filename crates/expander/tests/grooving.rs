@@ -1,7 +1,9 @@
 //! The grooving cycles G74, G75 and G75.1: expanded moves (snapshots a reviewer can read),
 //! exact landing points, and one test per alarm rule.
 
-use expander::{expand, Increment, Machine, Motion, Options, Toolpath};
+mod common;
+use common::asset;
+use expander::{expand, Increment, Machine, Options, Toolpath};
 
 fn run_with(src: &str, machine: &Machine) -> Toolpath {
     expand(&gcode::parse(src).unwrap(), machine, &Options::default())
@@ -18,44 +20,9 @@ fn is_c() -> Machine {
     }
 }
 
-fn asset(name: &str) -> String {
-    std::fs::read_to_string(format!(
-        "{}/../../assets/programs/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    ))
-    .unwrap()
-}
-
-/// One readable line per segment, for snapshots (as in `tests/interp.rs`).
+/// One readable line per segment, for snapshots.
 fn listing(tp: &Toolpath) -> String {
-    let mut s = String::new();
-    for seg in &tp.segments {
-        let kind = match (seg.motion, seg.arc) {
-            (Motion::Rapid, _) => "G00".to_string(),
-            (Motion::Feed, None) => "G01".to_string(),
-            (Motion::Feed, Some(a)) => format!(
-                "{} c(Z{:.3} X{:.3})",
-                if a.ccw { "G03" } else { "G02" },
-                a.center.z,
-                2.0 * a.center.r
-            ),
-            (Motion::Thread, _) => format!("G32 lead {}", seg.lead),
-        };
-        s += &format!(
-            "line {:>2}: {kind} Z{:.3} X{:.3} -> Z{:.3} X{:.3} T{:02} {:?}\n",
-            seg.span.line,
-            seg.from.z,
-            2.0 * seg.from.r,
-            seg.to.z,
-            2.0 * seg.to.r,
-            seg.tool,
-            seg.hint
-        );
-    }
-    for a in tp.alarms.iter().chain(&tp.warnings) {
-        s += &format!("{a}\n");
-    }
-    s
+    common::listing(tp, |s| format!("T{:02} {:?}", s.tool, s.hint))
 }
 
 /// The alarm of a program that must stop: (line, code).

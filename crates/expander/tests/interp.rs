@@ -1,5 +1,6 @@
 //! The modal interpreter, block by block.
 
+mod common;
 use expander::{expand, Feed, Machine, Motion, Options, Pt, RapidPath, Spindle, Toolpath};
 
 fn run_with(src: &str, machine: &Machine, opts: &Options) -> Toolpath {
@@ -19,33 +20,7 @@ fn ends(tp: &Toolpath) -> Vec<(f64, f64)> {
 
 /// One readable line per segment, for snapshots.
 fn listing(tp: &Toolpath) -> String {
-    let mut s = String::new();
-    for seg in &tp.segments {
-        let kind = match (seg.motion, seg.arc) {
-            (Motion::Rapid, _) => "G00".to_string(),
-            (Motion::Feed, None) => "G01".to_string(),
-            (Motion::Feed, Some(a)) => format!(
-                "{} c(Z{:.3} X{:.3})",
-                if a.ccw { "G03" } else { "G02" },
-                a.center.z,
-                2.0 * a.center.r
-            ),
-            (Motion::Thread, _) => format!("G32 lead {}", seg.lead),
-        };
-        s += &format!(
-            "line {:>2}: {kind} Z{:.3} X{:.3} -> Z{:.3} X{:.3} T{:02}\n",
-            seg.span.line,
-            seg.from.z,
-            2.0 * seg.from.r,
-            seg.to.z,
-            2.0 * seg.to.r,
-            seg.tool
-        );
-    }
-    for a in tp.alarms.iter().chain(&tp.warnings) {
-        s += &format!("{a}\n");
-    }
-    s
+    common::listing(tp, |s| format!("T{:02}", s.tool))
 }
 
 #[test]
