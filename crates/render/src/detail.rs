@@ -1,13 +1,22 @@
-//! Detail views: a zoomed, framed inset around each crash and gouge (at most three,
-//! crashes first), stacked at the top of the right column.
+//! Detail views: a zoomed, framed inset around each crash, gouge and G75.1 groove (at
+//! most three; crashes first, then gouges, then grooves — findings win when room is
+//! short), stacked at the top of the right column.
+//!
+//! A groove view is zoomed on the groove's box with a margin and shows the blank, the
+//! final part, the leftover and gouge overlays and the groove ring dashed (no
+//! toolpath), with its principal corners labelled `P1 Z30.00 Φ50.00` (see
+//! [`crate::groove`] for the corners, the labels' places and the deviation in the
+//! title).
 
 use std::fmt::Write as _;
 
+use crate::groove;
 use crate::layout::{colour, FS_SMALL, RIGHT_TOP, RIGHT_W, RIGHT_X};
-use crate::report::Report;
+use crate::path::shapes_d;
+use crate::report::{Groove, Report, Shape};
 use crate::scale::{Bbox, View};
-use crate::svg::{axes, centre_line, draw_content, marker, Doc};
-use crate::text::{chars_fitting, num, truncate};
+use crate::svg::{axes, centre_line, draw_content, draw_shapes, marker, Doc, MIN_PX};
+use crate::text::{chars_fitting, esc, num, truncate, width};
 
 /// At most this many detail views.
 const MAX_DETAILS: usize = 3;
@@ -16,15 +25,71 @@ const LABEL_ROOM: f64 = 58.0;
 /// Cap on toolpath points per inset.
 const DETAIL_POINT_CAP: usize = 20_000;
 
-struct Finding {
+/// Width of an inset's plot.
+const PLOT_W: f64 = RIGHT_W - LABEL_ROOM;
+/// Corner label font size, px.
+const FS_CORNER: f64 = 12.0;
+/// Corner label box height, px.
+const CORNER_BOX_H: f64 = 16.0;
+/// Room kept around a groove's box for its corner labels, px.
+const GROOVE_LABEL_PX: f64 = 30.0;
+
+enum Kind<'a> {
+    Crash,
+    Gouge,
+    /// A groove with its cleaned ring.
+    Groove(&'a Groove, Vec<[f64; 2]>),
+}
+
+struct Finding<'a> {
     title: String,
     z: f64,
     r: f64,
     half: f64,
-    crash: bool,
+    kind: Kind<'a>,
 }
 
-fn findings(report: &Report, main: &View) -> Vec<Finding> {
+impl Finding<'_> {
+    /// The mm box to show.
+    fn window(&self) -> Bbox {
+        match &self.kind {
+            Kind::Groove(_, ring) => groove_window(ring),
+            _ => Bbox::new(
+                self.z - self.half,
+                self.z + self.half,
+                self.r - self.half,
+                self.r + self.half,
+            ),
+        }
+    }
+
+    /// The plot height this view wants at most `max_h` (grooves are only as tall as
+    /// their window needs at the inset's width).
+    fn plot_h(&self, max_h: f64) -> f64 {
+        match &self.kind {
+            Kind::Groove(..) => {
+                let w = self.window();
+                (w.h() * PLOT_W / w.w().max(1e-9)).clamp(MIN_PLOT_H, max_h)
+            }
+            _ => max_h,
+        }
+    }
+}
+
+/// A groove's window: its box with a margin of 8 % of its larger side, and at least
+/// [`GROOVE_LABEL_PX`] at the inset's scale so the corner labels fit.
+fn groove_window(ring: &[[f64; 2]]) -> Bbox {
+    let b = groove::ring_box(ring);
+    let size = b.w().max(b.h()).max(1e-3);
+    let mut m = 0.08 * size;
+    for _ in 0..3 {
+        let s = PLOT_W / (b.w() + 2.0 * m).max(1e-9);
+        m = m.max(GROOVE_LABEL_PX / s);
+    }
+    b.grow(m)
+}
+
+fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     // A detail wider than a sixth of the main view shows nothing the main view doesn't.
     let max_half = (main.mm.h().min(main.mm.w()) / 6.0).max(0.05);
     let clampf = |v: f64, lo: f64| {
@@ -46,7 +111,7 @@ fn findings(report: &Report, main: &View) -> Vec<Finding> {
             z: c.z,
             r: c.r,
             half: clampf(2.5 * c.area_mm2.abs().sqrt(), 1.0),
-            crash: true,
+            kind: Kind::Crash,
         });
     }
     for g in &report.gouges {
@@ -64,10 +129,30 @@ fn findings(report: &Report, main: &View) -> Vec<Finding> {
                 (6.0 * g.depth_mm.abs()).max(2.5 * g.area_mm2.abs().sqrt()),
                 0.2,
             ),
-            crash: false,
+            kind: Kind::Gouge,
         });
     }
     out.retain(|f| f.z.is_finite() && f.r.is_finite());
+    for g in &report.grooves {
+        let Some(ring) = groove::clean_ring(&g.ring) else {
+            continue;
+        };
+        let title = match groove::deviation(&ring, &report.final_part) {
+            Some(d) => format!(
+                "groove line {} (deviation ≤ {} mm)",
+                g.line,
+                num(groove::shown_deviation(d), 3)
+            ),
+            None => format!("groove line {}", g.line),
+        };
+        out.push(Finding {
+            title,
+            z: 0.0,
+            r: 0.0,
+            half: 0.0,
+            kind: Kind::Groove(g, ring),
+        });
+    }
     out.truncate(MAX_DETAILS);
     out
 }
@@ -95,12 +180,8 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
     let mut top = RIGHT_TOP;
     doc.raw("<g id=\"details\">\n");
     for (i, f) in list.iter().enumerate() {
-        let rect = [
-            RIGHT_X + LABEL_ROOM,
-            top + 10.0,
-            RIGHT_W - LABEL_ROOM,
-            plot_h,
-        ];
+        let h = f.plot_h(plot_h);
+        let rect = [RIGHT_X + LABEL_ROOM, top + 10.0, PLOT_W, h];
         let title = format!("detail {}: {}", i + 1, f.title);
         let max = chars_fitting(RIGHT_W, FS_SMALL);
         doc.text(
@@ -111,10 +192,7 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
             colour::INK,
             &truncate(&title, max),
         );
-        let v = View::fit(
-            Bbox::new(f.z - f.half, f.z + f.half, f.r - f.half, f.r + f.half),
-            rect,
-        );
+        let v = View::fit(f.window(), rect);
         let id = format!("clip-detail-{i}");
         doc.raw("<defs>");
         doc.clip(&id, rect);
@@ -122,24 +200,119 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
         doc.rect(rect, "#ffffff", "none", 0.0);
         axes(doc, &v, 46.0, true);
         let _ = writeln!(doc.out, r#"<g clip-path="url(#{id})">"#);
-        draw_content(doc, report, &v, false, DETAIL_POINT_CAP, None);
-        centre_line(doc, &v);
-        let (x, y) = (v.x(f.z), v.y(f.r));
-        if f.crash {
-            marker(doc, x, y, colour::CRASH);
-        } else {
-            let _ = writeln!(
-                doc.out,
-                r#"<circle cx="{}" cy="{}" r="10" fill="none" stroke="{}" stroke-width="2"/>"#,
-                num(x, 2),
-                num(y, 2),
-                colour::GOUGE
-            );
+        match &f.kind {
+            Kind::Groove(g, ring) => {
+                draw_shapes(doc, report, &v, false);
+                centre_line(doc, &v);
+                groove_ring(doc, &v, g.line, ring);
+            }
+            kind => {
+                draw_content(doc, report, &v, false, DETAIL_POINT_CAP, None);
+                centre_line(doc, &v);
+                let (x, y) = (v.x(f.z), v.y(f.r));
+                if matches!(kind, Kind::Crash) {
+                    marker(doc, x, y, colour::CRASH);
+                } else {
+                    let _ = writeln!(
+                        doc.out,
+                        r#"<circle cx="{}" cy="{}" r="10" fill="none" stroke="{}" stroke-width="2"/>"#,
+                        num(x, 2),
+                        num(y, 2),
+                        colour::GOUGE
+                    );
+                }
+            }
         }
         doc.raw("</g>\n");
+        if let Kind::Groove(_, ring) = &f.kind {
+            corner_labels(doc, &v, ring);
+        }
         doc.rect(rect, "none", "#2b2f36", 1.0);
-        top += plot_h + OVERHEAD;
+        top += h + OVERHEAD;
     }
     doc.raw("</g>\n");
     top
+}
+
+/// The groove ring, dashed in the intended colour, with a dot on each principal corner.
+fn groove_ring(doc: &mut Doc, v: &View, line: u32, ring: &[[f64; 2]]) {
+    let shape = Shape {
+        outer: ring.to_vec(),
+        holes: vec![],
+    };
+    let _ = writeln!(
+        doc.out,
+        r#"<g class="groove" data-line="{line}" transform="{}">"#,
+        v.transform(false)
+    );
+    doc.mm_path(
+        v,
+        &shapes_d(std::slice::from_ref(&shape), MIN_PX / v.s),
+        "none",
+        colour::INTENDED,
+        1.8,
+        &[7.0, 4.0],
+    );
+    doc.raw("</g>\n");
+    for &i in &groove::corners(ring) {
+        let _ = writeln!(
+            doc.out,
+            r#"<circle cx="{}" cy="{}" r="3" fill="{}"/>"#,
+            num(v.x(ring[i][0]), 2),
+            num(v.y(ring[i][1]), 2),
+            colour::INTENDED
+        );
+    }
+}
+
+/// The principal corners' labels (`P1 Z30.00 Φ50.00`), on white boxes placed apart
+/// from each other inside the inset.
+fn corner_labels(doc: &mut Doc, v: &View, ring: &[[f64; 2]]) {
+    let idx = groove::corners(ring);
+    let labels: Vec<String> = idx
+        .iter()
+        .enumerate()
+        .map(|(k, &i)| groove::corner_label(k + 1, ring[i]))
+        .collect();
+    let at: Vec<[f64; 2]> = idx
+        .iter()
+        .map(|&i| [v.x(ring[i][0]), v.y(ring[i][1])])
+        .collect();
+    let size: Vec<[f64; 2]> = labels
+        .iter()
+        .map(|l| [width(l, FS_CORNER) * 0.92 + 8.0, CORNER_BOX_H])
+        .collect();
+    let px_ring: Vec<[f64; 2]> = ring.iter().map(|p| [v.x(p[0]), v.y(p[1])]).collect();
+    let b = groove::ring_box(ring);
+    let centre = [v.x((b.zmin + b.zmax) / 2.0), v.y((b.rmin + b.rmax) / 2.0)];
+    let frame = [
+        v.px[0] + 2.0,
+        v.px[1] + 2.0,
+        v.right() - 2.0,
+        v.bottom() - 2.0,
+    ];
+    let boxes = groove::place_labels(&at, &size, centre, &px_ring, frame);
+    doc.raw("<g class=\"corner-labels\">\n");
+    for (label, b) in labels.iter().zip(boxes) {
+        let Some(b) = b else { continue };
+        let _ = writeln!(
+            doc.out,
+            r##"<rect x="{}" y="{}" width="{}" height="{}" rx="2" fill="#ffffff" fill-opacity="0.88" stroke="{}" stroke-width="0.8"/>"##,
+            num(b[0], 2),
+            num(b[1], 2),
+            num(b[2] - b[0], 2),
+            num(b[3] - b[1], 2),
+            colour::INTENDED
+        );
+        let _ = writeln!(
+            doc.out,
+            r#"<text x="{}" y="{}" font-size="{}" text-anchor="middle" fill="{}">{}</text>"#,
+            num((b[0] + b[2]) / 2.0, 2),
+            num(b[3] - 4.0, 2),
+            num(FS_CORNER, 1),
+            colour::INK,
+            esc(label)
+        );
+    }
+    doc.raw("</g>\n");
 }

@@ -14,6 +14,7 @@
 //! move slider drawing on a `<canvas>` from a compact JSON block embedded in the page.
 mod block;
 mod detail;
+mod groove;
 mod html;
 mod json;
 mod layout;

@@ -146,6 +146,21 @@ pub struct Report {
     /// The stock at a few points of the run, in move order, for the HTML report's move
     /// slider; empty when not recorded (the CLI fills a few dozen for small programs).
     pub snapshots: Vec<Snapshot>,
+    /// The G75.1 grooves the program defines, each drawn as a zoomed detail view (after
+    /// the crash and gouge details, as room allows); empty when there are none. The CLI
+    /// fills it.
+    pub grooves: Vec<Groove>,
+}
+
+/// A G75.1 groove the program defines, as its intended outline.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Groove {
+    /// Source line (1-based) of the block that defines the groove.
+    pub line: u32,
+    /// The groove's outline as a closed ring in `[z, r]` (first point not repeated), in
+    /// the order of its corners (for the spec's trapezoid: P1, P2, P3, P4). The corner
+    /// labels of the detail view are numbered in this order.
+    pub ring: Vec<[f64; 2]>,
 }
 
 /// The stock as it was part-way through the run.

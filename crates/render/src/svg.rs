@@ -114,6 +114,13 @@ pub(crate) fn draw_content(
     point_cap: usize,
     toolpath_id: Option<&str>,
 ) -> bool {
+    draw_shapes(doc, report, v, mirror);
+    draw_toolpath(doc, report, v, point_cap, toolpath_id)
+}
+
+/// Blank, final part, leftovers, gouges and the intended shape of a view, in mm under
+/// its transform (no toolpath). `mirror`: also draw the lighter lower half.
+pub(crate) fn draw_shapes(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
     let md = MIN_PX / v.s;
     let blank = shapes_d(&report.stock.shapes, md);
     let part = shapes_d(&report.final_part, md);
@@ -161,7 +168,17 @@ pub(crate) fn draw_content(
         &[7.0, 4.0],
     );
     doc.raw("</g>\n");
+}
 
+/// The toolpath layer of a view (see [`draw_content`]); returns whether it was thinned.
+fn draw_toolpath(
+    doc: &mut Doc,
+    report: &Report,
+    v: &View,
+    point_cap: usize,
+    toolpath_id: Option<&str>,
+) -> bool {
+    let md = MIN_PX / v.s;
     let tp = toolpath_d(
         &report.toolpath,
         md,

@@ -10,6 +10,16 @@ fn write_pictures() {
     let r = common::groove_bar();
     std::fs::write(dir.join("groove_bar.svg"), render::svg(&r)).unwrap();
     std::fs::write(dir.join("groove_bar.png"), render::png(&r).unwrap()).unwrap();
+    let r = common::o0008_groove();
+    std::fs::write(dir.join("o0008_groove.svg"), render::svg(&r)).unwrap();
+    let png = render::png(&r).unwrap();
+    std::fs::write(dir.join("o0008_groove.png"), &png).unwrap();
+    // The right column's top at 2×, to read the groove detail's labels.
+    let img = image::load_from_memory(&png).unwrap().to_rgb8();
+    let crop = image::imageops::crop_imm(&img, 1090, 30, 510, 300).to_image();
+    image::imageops::resize(&crop, 1020, 600, image::imageops::FilterType::Nearest)
+        .save(dir.join("o0008_groove-detail-2x.png"))
+        .unwrap();
 }
 
 #[test]

@@ -107,6 +107,13 @@ fn groove_bar_matches_reference() {
 }
 
 #[test]
+fn groove_detail_matches_reference() {
+    if let Err(e) = check("o0008_groove", &common::o0008_groove()) {
+        panic!("{e}");
+    }
+}
+
+#[test]
 fn reference_check_catches_a_changed_digit() {
     if std::env::var_os("LATSIM_BLESS").is_some() {
         return;

@@ -85,6 +85,7 @@ pub(crate) fn groove_bar() -> Report {
         cycle_time_s: 102.0,
         tolerance_mm: 0.01,
         snapshots: vec![],
+        grooves: vec![],
     }
 }
 
@@ -110,4 +111,66 @@ pub(crate) fn many_segments(n: usize) -> Report {
     r.segments = n;
     r.rapid_segments = n / 2;
     r
+}
+
+/// The O0008 groove of the spec (`G75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30`) on a
+/// Φ50 × 80 bar faced at Z40: the final part is the blank minus the trapezoid P1 (30, 25),
+/// P2 (20, 15), P3 (10, 15), P4 (−7.32, 25), which is also the groove ring. Clean.
+pub(crate) fn o0008_groove() -> Report {
+    use PathKind::*;
+    let trapezoid = [[30.0, 25.0], [20.0, 15.0], [10.0, 15.0], [-7.32, 25.0]];
+    let blank = shape(&[[-40.0, 0.0], [40.0, 0.0], [40.0, 25.0], [-40.0, 25.0]]);
+    let mut outer = vec![[-40.0, 0.0], [40.0, 0.0], [40.0, 25.0]];
+    outer.extend(trapezoid);
+    outer.push([-40.0, 25.0]);
+    let part = shape(&outer);
+    Report {
+        program: "O0008.nc".into(),
+        title: "O0008".into(),
+        stock: StockInfo {
+            description: "bar Ø50 × 80, face at Z40".into(),
+            shapes: vec![blank],
+        },
+        final_part: vec![part.clone()],
+        intended: vec![part],
+        toolpath: vec![
+            mv(Rapid, 1, &[[60.0, 40.0], [30.0, 26.0]]),
+            mv(Feed, 2, &[[20.0, 26.0], [20.0, 15.0]]),
+            mv(Rapid, 2, &[[20.0, 15.0], [20.0, 26.0], [15.0, 26.0]]),
+            mv(Feed, 2, &[[15.0, 26.0], [15.0, 15.0]]),
+            mv(Rapid, 2, &[[15.0, 15.0], [15.0, 26.0], [10.0, 26.0]]),
+            mv(Feed, 2, &[[10.0, 26.0], [10.0, 15.0]]),
+            mv(Rapid, 2, &[[10.0, 15.0], [10.0, 26.0], [30.0, 26.0]]),
+            mv(
+                Feed,
+                2,
+                &[[30.0, 25.0], [20.0, 15.0], [10.0, 15.0], [-7.32, 25.0]],
+            ),
+            mv(Rapid, 2, &[[-7.32, 25.0], [-7.32, 26.0], [60.0, 40.0]]),
+        ],
+        crashes: vec![],
+        gouges: vec![],
+        gouge_shapes: vec![],
+        leftovers: vec![],
+        deviation: Some(Deviation {
+            overcut_area_mm2: 0.0,
+            undercut_area_mm2: 0.0,
+            max_overcut_mm: 0.0,
+            max_undercut_mm: 0.0,
+        }),
+        alarms: vec![],
+        warnings: vec![],
+        tools: vec!["T01 grooving 4 mm, ref. right corner".into()],
+        removed_area_mm2: 236.6,
+        removed_volume_mm3: 33_410.0,
+        segments: 9,
+        rapid_segments: 5,
+        cycle_time_s: 102.0,
+        tolerance_mm: 0.01,
+        snapshots: vec![],
+        grooves: vec![Groove {
+            line: 2,
+            ring: trapezoid.to_vec(),
+        }],
+    }
 }

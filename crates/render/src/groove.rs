@@ -1,0 +1,399 @@
+//! Geometry of a groove detail view: the ring cleaned up, its principal corners, how far
+//! the final part strays from it, and where the corner labels go.
+
+use crate::report::Shape;
+use crate::scale::Bbox;
+
+/// A ring vertex is a principal corner when the outline turns there by more than this.
+const CORNER_TURN_DEG: f64 = 20.0;
+/// At most this many corner labels per groove.
+pub(crate) const MAX_CORNER_LABELS: usize = 6;
+/// Cap on ring samples for the deviation.
+const MAX_SAMPLES: usize = 2000;
+/// Cap on part boundary edges considered for the deviation (beyond it: no number).
+const MAX_EDGES: usize = 400_000;
+
+/// The ring's finite points with repeated (closer than 1e-9 mm) neighbours and a
+/// repeated closing point dropped; `None` when fewer than three remain.
+pub(crate) fn clean_ring(ring: &[[f64; 2]]) -> Option<Vec<[f64; 2]>> {
+    let mut out: Vec<[f64; 2]> = Vec::with_capacity(ring.len());
+    for p in ring {
+        if !(p[0].is_finite() && p[1].is_finite()) {
+            continue;
+        }
+        if out.last().is_some_and(|q| dist(*q, *p) < 1e-9) {
+            continue;
+        }
+        out.push(*p);
+    }
+    while out.len() > 1 && dist(out[0], out[out.len() - 1]) < 1e-9 {
+        out.pop();
+    }
+    (out.len() >= 3).then_some(out)
+}
+
+/// Bounding box of a ring.
+pub(crate) fn ring_box(ring: &[[f64; 2]]) -> Bbox {
+    let mut b = Bbox::EMPTY;
+    for p in ring {
+        b.add(*p);
+    }
+    b
+}
+
+/// Indices of the ring's principal corners: vertices where the direction turns by more
+/// than 20°, in ring order; when there are more than six, the six sharpest.
+pub(crate) fn corners(ring: &[[f64; 2]]) -> Vec<usize> {
+    let n = ring.len();
+    let mut turns: Vec<(usize, f64)> = (0..n)
+        .filter_map(|i| {
+            let (a, p, b) = (ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]);
+            let (u, v) = ([p[0] - a[0], p[1] - a[1]], [b[0] - p[0], b[1] - p[1]]);
+            let cross = u[0] * v[1] - u[1] * v[0];
+            let dot = u[0] * v[0] + u[1] * v[1];
+            let turn = cross.abs().atan2(dot).to_degrees();
+            (turn > CORNER_TURN_DEG).then_some((i, turn))
+        })
+        .collect();
+    if turns.len() > MAX_CORNER_LABELS {
+        turns.sort_by(|x, y| y.1.total_cmp(&x.1).then(x.0.cmp(&y.0)));
+        turns.truncate(MAX_CORNER_LABELS);
+    }
+    let mut idx: Vec<usize> = turns.into_iter().map(|t| t.0).collect();
+    idx.sort_unstable();
+    idx
+}
+
+/// A corner label: `P1 Z30.00 Φ50.00` (program coordinates, Φ = diameter = 2r).
+pub(crate) fn corner_label(k: usize, p: [f64; 2]) -> String {
+    format!("P{k} Z{} Φ{}", f2(p[0]), f2(2.0 * p[1]))
+}
+
+/// Two decimals, never `-0.00`.
+fn f2(v: f64) -> String {
+    let s = format!("{v:.2}");
+    if s == "-0.00" {
+        "0.00".to_string()
+    } else {
+        s
+    }
+}
+
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// Distance from `p` to the segment `a`–`b`.
+fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let l2 = dx * dx + dy * dy;
+    let t = if l2 > 0.0 {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    dist(p, [a[0] + t * dx, a[1] + t * dy])
+}
+
+/// Whether `p` lies inside the shapes (even-odd over all rings).
+fn inside(shapes: &[Shape], p: [f64; 2]) -> bool {
+    let mut c = false;
+    for s in shapes {
+        for ring in std::iter::once(&s.outer).chain(s.holes.iter()) {
+            let n = ring.len();
+            for i in 0..n {
+                let (a, b) = (ring[i], ring[(i + 1) % n]);
+                if (a[1] > p[1]) != (b[1] > p[1]) {
+                    let z = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+                    if p[0] < z {
+                        c = !c;
+                    }
+                }
+            }
+        }
+    }
+    c
+}
+
+/// The largest distance between the groove ring and the final part's boundary, in mm;
+/// `None` when it cannot be measured (no finite part boundary near the groove, or a
+/// part too large to measure quickly).
+///
+/// Method: the ring is sampled along each edge (every 1/200 of the groove's larger
+/// size, at most 2000 samples, vertices included) and each sample's distance to the
+/// final part's boundary (edges near the groove's box) is taken; the largest is the
+/// deviation. Samples on the groove's mouth are skipped: those whose point a quarter
+/// of the groove's smaller size outside the ring (along the edge's outward normal) is
+/// not inside the final part — there the groove opens into air, and the part has no
+/// boundary to meet. So leftovers in the groove and floors or flanks cut too deep (by
+/// less than that quarter size) count; a narrow dig between samples, or one deeper than
+/// the quarter size, may not (the gouge detail views show those). Sampling makes this
+/// a close lower bound; the title rounds it up to 0.001 mm.
+pub(crate) fn deviation(ring: &[[f64; 2]], part: &[Shape]) -> Option<f64> {
+    let b = ring_box(ring);
+    if b.is_empty() {
+        return None;
+    }
+    let size = b.w().max(b.h());
+    let near = b.grow(size.max(1e-3));
+    let mut edges: Vec<([f64; 2], [f64; 2])> = Vec::new();
+    for s in part {
+        for r in std::iter::once(&s.outer).chain(s.holes.iter()) {
+            let n = r.len();
+            for i in 0..n {
+                let (a, c) = (r[i], r[(i + 1) % n]);
+                if !(a[0].is_finite() && a[1].is_finite() && c[0].is_finite() && c[1].is_finite()) {
+                    continue;
+                }
+                let mut eb = Bbox::EMPTY;
+                eb.add(a);
+                eb.add(c);
+                if eb.overlaps(&near) {
+                    edges.push((a, c));
+                }
+            }
+        }
+    }
+    if edges.is_empty() || edges.len() > MAX_EDGES {
+        return None;
+    }
+    let n = ring.len();
+    let perimeter: f64 = (0..n).map(|i| dist(ring[i], ring[(i + 1) % n])).sum();
+    let step = (size / 200.0).max(perimeter / MAX_SAMPLES as f64).max(1e-9);
+    // Outward = away from the ring's inside: right of the direction for a
+    // counter-clockwise ring, left for a clockwise one.
+    let area2: f64 = (0..n)
+        .map(|i| {
+            let (p, q) = (ring[i], ring[(i + 1) % n]);
+            p[0] * q[1] - q[0] * p[1]
+        })
+        .sum();
+    let sign = if area2 >= 0.0 { 1.0 } else { -1.0 };
+    let probe = 0.25 * b.w().min(b.h()).max(1e-3);
+    let mut worst: Option<f64> = None;
+    for i in 0..n {
+        let (a, c) = (ring[i], ring[(i + 1) % n]);
+        let len = dist(a, c);
+        if len <= 0.0 {
+            continue;
+        }
+        let normal = [sign * (c[1] - a[1]) / len, -sign * (c[0] - a[0]) / len];
+        let k = (len / step).ceil().max(1.0) as usize;
+        for j in 0..=k {
+            let t = j as f64 / k as f64;
+            let p = [a[0] + t * (c[0] - a[0]), a[1] + t * (c[1] - a[1])];
+            if !inside(part, [p[0] + probe * normal[0], p[1] + probe * normal[1]]) {
+                continue;
+            }
+            let d = edges
+                .iter()
+                .map(|(e0, e1)| seg_dist(p, *e0, *e1))
+                .fold(f64::INFINITY, f64::min);
+            if d.is_finite() {
+                worst = Some(worst.map_or(d, |w: f64| w.max(d)));
+            }
+        }
+    }
+    worst
+}
+
+/// The deviation as shown in a title: rounded up to 0.001 mm, at least 0.001.
+pub(crate) fn shown_deviation(d: f64) -> f64 {
+    ((d * 1000.0 - 1e-6).ceil() / 1000.0).max(0.001)
+}
+
+/// A px box: left, top, right, bottom.
+pub(crate) type PxBox = [f64; 4];
+
+fn boxes_overlap(a: &PxBox, b: &PxBox) -> bool {
+    a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
+}
+
+/// Whether the px segment `a`–`b` meets the box (Liang–Barsky clipping).
+fn seg_hits_box(a: [f64; 2], b: [f64; 2], r: &PxBox) -> bool {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-dx, a[0] - r[0]),
+        (dx, r[2] - a[0]),
+        (-dy, a[1] - r[1]),
+        (dy, r[3] - a[1]),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else {
+            let t = q / p;
+            if p < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+            if t0 > t1 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Place one label per corner (px points `at`, label sizes `size` = [w, h]) inside
+/// `frame` (left, top, right, bottom): each label goes to one of eight places around its
+/// corner, preferring the side away from the ring's centre `centre` and places that
+/// cross no ring edge (`ring` in px); labels never overlap each other, cover another
+/// corner, or leave the frame. A label with no free place gets `None` (left out).
+pub(crate) fn place_labels(
+    at: &[[f64; 2]],
+    size: &[[f64; 2]],
+    centre: [f64; 2],
+    ring: &[[f64; 2]],
+    frame: PxBox,
+) -> Vec<Option<PxBox>> {
+    const GAP: f64 = 5.0;
+    let mut placed: Vec<PxBox> = Vec::new();
+    let mut out = Vec::with_capacity(at.len());
+    for (i, (&[x, y], &[w, h])) in at.iter().zip(size).enumerate() {
+        let out_dir = {
+            let (dx, dy) = (x - centre[0], y - centre[1]);
+            let l = dx.hypot(dy);
+            if l > 1e-9 {
+                [dx / l, dy / l]
+            } else {
+                [0.0, -1.0]
+            }
+        };
+        // (box, direction of the box from the corner)
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let candidates = [
+            ([x + GAP, y - GAP - h, x + GAP + w, y - GAP], [s, -s]),
+            ([x - GAP - w, y - GAP - h, x - GAP, y - GAP], [-s, -s]),
+            ([x + GAP, y + GAP, x + GAP + w, y + GAP + h], [s, s]),
+            ([x - GAP - w, y + GAP, x - GAP, y + GAP + h], [-s, s]),
+            (
+                [x + GAP + 2.0, y - h / 2.0, x + GAP + 2.0 + w, y + h / 2.0],
+                [1.0, 0.0],
+            ),
+            (
+                [x - GAP - 2.0 - w, y - h / 2.0, x - GAP - 2.0, y + h / 2.0],
+                [-1.0, 0.0],
+            ),
+            (
+                [x - w / 2.0, y - GAP - 2.0 - h, x + w / 2.0, y - GAP - 2.0],
+                [0.0, -1.0],
+            ),
+            (
+                [x - w / 2.0, y + GAP + 2.0, x + w / 2.0, y + GAP + 2.0 + h],
+                [0.0, 1.0],
+            ),
+        ];
+        let n = ring.len();
+        let best = candidates
+            .iter()
+            .filter(|(b, _)| {
+                b[0] >= frame[0] && b[1] >= frame[1] && b[2] <= frame[2] && b[3] <= frame[3]
+            })
+            .filter(|(b, _)| !placed.iter().any(|p| boxes_overlap(p, b)))
+            .filter(|(b, _)| {
+                !at.iter().enumerate().any(|(j, q)| {
+                    j != i && boxes_overlap(b, &[q[0] - 4.0, q[1] - 4.0, q[0] + 4.0, q[1] + 4.0])
+                })
+            })
+            .map(|(b, d)| {
+                let crossings = (0..n)
+                    .filter(|&k| seg_hits_box(ring[k], ring[(k + 1) % n], b))
+                    .count();
+                let away = 1.0 - (d[0] * out_dir[0] + d[1] * out_dir[1]);
+                (crossings as f64 * 4.0 + away, *b)
+            })
+            .min_by(|p, q| p.0.total_cmp(&q.0))
+            .map(|(_, b)| b);
+        if let Some(b) = best {
+            placed.push(b);
+        }
+        out.push(best);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn trapezoid() -> Vec<[f64; 2]> {
+        vec![[30.0, 25.0], [20.0, 15.0], [10.0, 15.0], [-7.32, 25.0]]
+    }
+
+    fn bar_minus(groove: &[[f64; 2]]) -> Vec<Shape> {
+        let mut outer = vec![[-40.0, 0.0], [40.0, 0.0], [40.0, 25.0]];
+        outer.extend(groove.iter().copied());
+        outer.push([-40.0, 25.0]);
+        vec![Shape {
+            outer,
+            holes: vec![],
+        }]
+    }
+
+    #[test]
+    fn trapezoid_has_four_corners_and_labels() {
+        let r = trapezoid();
+        assert_eq!(corners(&r), vec![0, 1, 2, 3]);
+        assert_eq!(corner_label(1, r[0]), "P1 Z30.00 Φ50.00");
+        assert_eq!(corner_label(4, r[3]), "P4 Z-7.32 Φ50.00");
+    }
+
+    #[test]
+    fn gentle_turns_are_not_corners_and_at_most_six() {
+        // A 64-gon: every turn is 5.6°.
+        let circle: Vec<[f64; 2]> = (0..64)
+            .map(|i| {
+                let a = i as f64 * std::f64::consts::TAU / 64.0;
+                [a.cos(), a.sin()]
+            })
+            .collect();
+        assert!(corners(&circle).is_empty());
+        // A star with 10 sharp corners keeps six.
+        let star: Vec<[f64; 2]> = (0..10)
+            .map(|i| {
+                let a = i as f64 * std::f64::consts::TAU / 10.0;
+                let r = if i % 2 == 0 { 1.0 } else { 0.4 };
+                [r * a.cos(), r * a.sin()]
+            })
+            .collect();
+        assert_eq!(corners(&star).len(), 6);
+    }
+
+    #[test]
+    fn deviation_of_exact_cut_leftover_and_deep_floor() {
+        let r = trapezoid();
+        let d = deviation(&r, &bar_minus(&r)).unwrap();
+        assert!(d < 1e-9, "{d}");
+        assert_eq!(shown_deviation(d), 0.001);
+        // Floor left 0.3 mm high: a leftover.
+        let high = [[30.0, 25.0], [20.3, 15.3], [9.9, 15.3], [-7.32, 25.0]];
+        let d = deviation(&r, &bar_minus(&high)).unwrap();
+        assert!((d - 0.3).abs() < 0.02, "{d}");
+        // Floor cut 0.2 mm deep: a gouge.
+        let deep = [[30.0, 25.0], [19.8, 14.8], [10.1, 14.8], [-7.32, 25.0]];
+        let d = deviation(&r, &bar_minus(&deep)).unwrap();
+        assert!((d - 0.2).abs() < 0.02, "{d}");
+        assert_eq!(shown_deviation(0.2 + 1e-12), 0.2);
+        assert!(deviation(&r, &[]).is_none());
+    }
+
+    #[test]
+    fn labels_stay_in_frame_and_apart() {
+        let at = [[300.0, 20.0], [200.0, 120.0], [100.0, 120.0], [10.0, 20.0]];
+        let size = [[110.0, 15.0]; 4];
+        let ring = at.to_vec();
+        let frame = [0.0, 0.0, 320.0, 160.0];
+        let boxes = place_labels(&at, &size, [150.0, 70.0], &ring, frame);
+        let boxes: Vec<PxBox> = boxes.into_iter().map(|b| b.expect("placed")).collect();
+        for (i, b) in boxes.iter().enumerate() {
+            assert!(b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= 320.0 && b[3] <= 160.0);
+            for c in &boxes[i + 1..] {
+                assert!(!boxes_overlap(b, c));
+            }
+        }
+    }
+}
