@@ -110,6 +110,9 @@ pub enum ToolHint {
         width: f64,
         /// The blade spans from the reference corner toward +Z (else −Z).
         toward_plus_z: bool,
+        /// The groove is cut toward −X, so the blade body runs toward +X (an OD blade);
+        /// else toward −X (an ID blade). Used when the table has no grooving entry.
+        shank_plus_x: bool,
     },
 }
 

@@ -483,6 +483,7 @@ fn g75_1_default_start_and_signs() {
     assert!(cyc.iter().all(|s| s.hint
         == expander::ToolHint::Blade {
             width: 3.0,
-            toward_plus_z: true
+            toward_plus_z: true,
+            shank_plus_x: false
         }));
 }

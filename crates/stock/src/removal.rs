@@ -976,6 +976,7 @@ mod tests {
         plunge.hint = expander::ToolHint::Blade {
             width: 4.0,
             toward_plus_z: false,
+            shank_plus_x: true,
         };
         let sim = run(&blank, &ToolTable::empty(), &[plunge]);
         let expected = [

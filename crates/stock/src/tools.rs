@@ -595,7 +595,12 @@ pub(crate) fn hint_key(t: u32, hint: ToolHint) -> (u32, u8, u64) {
         ToolHint::Blade {
             width,
             toward_plus_z,
-        } => (t, 2 + u8::from(toward_plus_z), width.to_bits()),
+            shank_plus_x,
+        } => (
+            t,
+            2 + u8::from(toward_plus_z) + 2 * u8::from(shank_plus_x),
+            width.to_bits(),
+        ),
     }
 }
 
@@ -614,14 +619,15 @@ impl ToolTable {
                     Some(format!("T{t:02} has no entry in the tool table: the grooving cycle uses the default ({})", Tool::DEFAULT_BLADE.describe())),
                 ),
             },
-            ToolHint::Blade { width, toward_plus_z } => {
+            ToolHint::Blade { width, toward_plus_z, shank_plus_x } => {
+                let default_shank = if shank_plus_x { AxisDir::PlusX } else { AxisDir::MinusX };
                 let (shank_dir, reach, corner_radius) = match self.get(t) {
                     Some(&Tool::Grooving { shank_dir, reach, corner_radius, .. }) => (shank_dir, reach, corner_radius),
-                    _ => (AxisDir::PlusX, 20.0, 0.0),
+                    _ => (default_shank, 20.0, 0.0),
                 };
                 if width.is_finite() && width > 0.0 && width < 1e4 {
                     let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
-                    let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { AxisDir::PlusX };
+                    let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { default_shank };
                     let tool = Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) };
                     (tool.outline(), None)
                 } else {
@@ -636,6 +642,32 @@ impl ToolTable {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn g75_1_blade_without_a_table_entry_faces_the_groove() {
+        let t = ToolTable::empty();
+        let od = ToolHint::Blade {
+            width: 4.0,
+            toward_plus_z: false,
+            shank_plus_x: true,
+        };
+        let id = ToolHint::Blade {
+            width: 4.0,
+            toward_plus_z: false,
+            shank_plus_x: false,
+        };
+        let (o, w) = t.outline_for(1, od);
+        let (lo, hi) = o.bbox().unwrap();
+        assert!(
+            w.is_none() && lo[1] >= -1e-9 && hi[1] > 10.0 && (lo[0] + 4.0).abs() < 1e-9,
+            "{lo:?} {hi:?}"
+        );
+        let (lo, hi) = t.outline_for(1, id).0.bbox().unwrap();
+        assert!(
+            hi[1] <= 1e-9 && lo[1] < -10.0,
+            "an ID blade runs toward -X: {lo:?} {hi:?}"
+        );
+    }
 
     const SPEC_TABLE: &str = r#"
 [[tool]]

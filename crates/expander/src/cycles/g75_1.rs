@@ -731,6 +731,7 @@ fn process_block(c: &mut Cycle, g: &Geometry) -> Result<Output, Diagnostic> {
     let hint = i_word.map_or(ToolHint::Table, |width| ToolHint::Blade {
         width,
         toward_plus_z: shape.d > 0.0,
+        shank_plus_x: shape.h < 0.0,
     });
     let mut warnings = vec![];
     if let (None, Some((bw, plus_z))) = (i_word, c.tool_blade) {
