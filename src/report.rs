@@ -101,7 +101,14 @@ pub(crate) fn build(
                 .iter()
                 .map(|&t| {
                     let secs = times.iter().find(|(n, _)| *n == t).map_or(0.0, |(_, s)| *s);
-                    format!("{} — {secs:.1} s", tool_line(tools, t))
+                    {
+                        // "T01 · 32.6 s · turning …": the time before the long description
+                        let line = tool_line(tools, t);
+                        match line.split_once(' ') {
+                            Some((num, rest)) => format!("{num} · {secs:.1} s · {rest}"),
+                            None => format!("{line} · {secs:.1} s"),
+                        }
+                    }
                 })
                 .collect()
         },
