@@ -80,6 +80,12 @@ struct GougeJ {
 }
 
 #[derive(Serialize)]
+struct GrooveJ {
+    line: u32,
+    ring: Vec<[Option<f64>; 2]>,
+}
+
+#[derive(Serialize)]
 struct DeviationJ {
     overcut_area_mm2: Option<f64>,
     undercut_area_mm2: Option<f64>,
@@ -106,6 +112,7 @@ struct Doc<'a> {
     crashes: Vec<CrashJ>,
     gouges: Vec<GougeJ>,
     deviation: Option<DeviationJ>,
+    grooves: Vec<GrooveJ>,
 }
 
 /// The word used for a verdict in the JSON.
@@ -165,6 +172,14 @@ pub(crate) fn json(report: &Report) -> String {
             max_overcut_mm: r6(d.max_overcut_mm),
             max_undercut_mm: r6(d.max_undercut_mm),
         }),
+        grooves: report
+            .grooves
+            .iter()
+            .map(|g| GrooveJ {
+                line: g.line,
+                ring: g.ring.iter().map(zx).collect(),
+            })
+            .collect(),
     };
     // Serialising plain structs of strings, integers and Option<f64> cannot fail.
     serde_json::to_string_pretty(&doc).unwrap_or_else(|_| "{}".to_string())

@@ -7,8 +7,12 @@
 //! The JSON is a stable contract in program coordinates (`z`, `x` = diameter):
 //! `program`, `title`, `verdict`, `stock`, `final`, `removed_area_mm2`,
 //! `removed_volume_mm3`, `segments`, `cycle_time_s`, `tolerance_mm`, `tools`, `alarms`,
-//! `warnings`, `crashes`, `gouges`, `deviation`. Numbers are rounded to 6 decimals;
-//! non-finite numbers are written as `null`.
+//! `warnings`, `crashes`, `gouges`, `deviation`, and `grooves` (`[{"line": n, "ring":
+//! [[z, x], …]}]`, the G75.1 grooves of [`Report::grooves`]). Numbers are rounded to 6
+//! decimals; non-finite numbers are written as `null`.
+//!
+//! The picture's right column holds zoomed detail views of each crash, gouge and groove
+//! (at most three, findings first) above the title block.
 //!
 //! The HTML page ([`html`]) is self-contained: the same SVG inline, the tables, and a
 //! move slider drawing on a `<canvas>` from a compact JSON block embedded in the page.

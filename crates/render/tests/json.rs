@@ -119,3 +119,16 @@ fn nan_never_makes_invalid_json() {
     assert_eq!(empty["final"], Value::Array(vec![]));
     assert_eq!(empty["verdict"], "clean");
 }
+
+#[test]
+fn grooves_are_listed_in_program_coordinates() {
+    let v = parse(&common::o0008_groove());
+    let g = &v["grooves"][0];
+    assert_eq!(g["line"], 2);
+    assert_eq!(g["ring"][0], serde_json::json!([30.0, 50.0]));
+    assert_eq!(g["ring"][3], serde_json::json!([-7.32, 50.0]));
+    assert_eq!(
+        parse(&common::groove_bar())["grooves"],
+        serde_json::json!([])
+    );
+}

@@ -20,6 +20,36 @@ fn write_pictures() {
     image::imageops::resize(&crop, 1020, 600, image::imageops::FilterType::Nearest)
         .save(dir.join("o0008_groove-detail-2x.png"))
         .unwrap();
+    // A crash, a gouge and a groove (at the intended floor, 0.2 mm above the cut one).
+    let mut r = common::groove_bar();
+    r.grooves.push(render::Groove {
+        line: 11,
+        ring: vec![[-20.0, 18.0], [-20.0, 14.2], [-25.0, 14.2], [-25.0, 18.0]],
+    });
+    std::fs::write(dir.join("groove_findings.png"), render::png(&r).unwrap()).unwrap();
+    // O0008 with its floor left 0.3 mm high (a leftover) and a chamfered mouth.
+    let mut r = common::o0008_groove();
+    let high = [[30.0, 25.0], [20.3, 15.3], [9.48, 15.3], [-7.32, 25.0]];
+    let mut outer = vec![[-40.0, 0.0], [40.0, 0.0], [40.0, 25.0]];
+    outer.extend(high);
+    outer.push([-40.0, 25.0]);
+    r.final_part = vec![render::Shape {
+        outer,
+        holes: vec![],
+    }];
+    r.leftovers = vec![render::Shape {
+        outer: vec![[20.0, 15.0], [20.3, 15.3], [9.48, 15.3], [10.0, 15.0]],
+        holes: vec![],
+    }];
+    r.grooves[0].ring = vec![
+        [31.0, 25.0],
+        [30.0, 24.0],
+        [20.0, 15.0],
+        [10.0, 15.0],
+        [-6.0, 24.0],
+        [-7.32, 25.0],
+    ];
+    std::fs::write(dir.join("o0008_leftover.png"), render::png(&r).unwrap()).unwrap();
 }
 
 #[test]

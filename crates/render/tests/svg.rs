@@ -152,3 +152,74 @@ fn degenerate_reports_do_not_panic() {
         serde_json::from_str::<serde_json::Value>(&render::json(r)).expect("valid JSON");
     }
 }
+
+#[test]
+fn groove_report_has_a_groove_detail_with_corner_labels() {
+    let s = render::svg(&common::o0008_groove());
+    assert!(s.contains(r#"id="details""#));
+    assert!(s.contains(r#"class="groove" data-line="2""#));
+    assert!(
+        s.contains("detail 1: groove line 2 (deviation ≤ 0.001 mm)"),
+        "groove title"
+    );
+    for label in [
+        "P1 Z30.00 Φ50.00",
+        "P2 Z20.00 Φ30.00",
+        "P3 Z10.00 Φ30.00",
+        "P4 Z-7.32 Φ50.00",
+    ] {
+        assert!(s.contains(label), "missing corner label {label}");
+    }
+    assert!(!s.contains("NaN"));
+}
+
+#[test]
+fn grooves_come_after_findings_and_insets_stay_bounded() {
+    let groove = render::Groove {
+        line: 4,
+        ring: vec![[-20.0, 18.0], [-20.0, 14.0], [-25.0, 14.0], [-25.0, 18.0]],
+    };
+    // One crash, one gouge, one groove: three insets, the groove last.
+    let mut r = common::groove_bar();
+    r.grooves.push(groove.clone());
+    let s = render::svg(&r);
+    assert!(s.contains("detail 1: crash"));
+    assert!(s.contains("detail 2: gouge"));
+    assert!(s.contains("detail 3: groove line 4"), "groove is third");
+    // The final part's floor is at r 14; a ring with its floor at the intended r 14.2
+    // shows the 0.2 mm overcut in its title.
+    let mut r2 = r.clone();
+    r2.grooves[0].ring = vec![[-20.0, 18.0], [-20.0, 14.2], [-25.0, 14.2], [-25.0, 18.0]];
+    assert!(render::svg(&r2).contains("groove line 4 (deviation ≤ 0.2 mm)"));
+    // A second crash: the findings take the three places, the groove is left out.
+    r.crashes.push(render::Crash {
+        line: 30,
+        column: 1,
+        z: -55.0,
+        r: 19.0,
+        area_mm2: 4.0,
+    });
+    let s = render::svg(&r);
+    assert!(s.contains("detail 3: gouge"));
+    assert!(!s.contains("groove line 4"));
+    assert!(!s.contains("detail 4"));
+}
+
+#[test]
+fn odd_grooves_do_not_panic() {
+    let nan = f64::NAN;
+    for ring in [
+        vec![],
+        vec![[0.0, 1.0]],
+        vec![[0.0, 1.0], [0.0, 1.0], [0.0, 1.0]],
+        vec![[nan, 1.0], [2.0, nan], [1.0, 1.0]],
+        vec![[0.0, 20.0], [1e-7, 19.0], [0.0, 18.0]],
+        vec![[1e300, 1.0], [-1e300, 2.0], [0.0, 3.0]],
+    ] {
+        let mut r = common::o0008_groove();
+        r.grooves = vec![render::Groove { line: 9, ring }];
+        let s = render::svg(&r);
+        assert!(!s.contains("NaN") && !s.contains("inf"));
+        render::png(&r).expect("renders");
+    }
+}
