@@ -122,6 +122,15 @@ pub(crate) fn build(
             .count(),
         cycle_time_s: expander::timing::cycle_time(&tp.segments, tp.dwell_s, &loaded.machine),
         tolerance_mm: tol,
+        grooves: tp
+            .intended
+            .iter()
+            .filter(|i| i.kind == expander::IntendedKind::Groove)
+            .map(|i| render::Groove {
+                line: i.span.line,
+                ring: i.points.iter().map(|p| [p.z, p.r]).collect(),
+            })
+            .collect(),
         ..Report::default()
     }
 }

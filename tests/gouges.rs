@@ -84,6 +84,11 @@ fn g75_1_right_reference_corner_is_clean() {
     assert_eq!(v["verdict"], "clean");
     assert_eq!(v["deviation"]["overcut_area_mm2"], 0.0);
     assert_eq!(v["deviation"]["undercut_area_mm2"], 0.0);
+    // the groove is handed to the report for its detail view: P1 (Z30, Φ50) first
+    let g = &v["grooves"][0];
+    assert_eq!(g["line"], 4);
+    assert_eq!(g["ring"][0], serde_json::json!([30.0, 50.0]), "{g}");
+    assert!(g["ring"].as_array().unwrap().len() >= 4);
 }
 
 /// A 55° insert (trailing edge at 32°) descending a 45° cone: its flank gouges the cone,
