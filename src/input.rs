@@ -3,9 +3,7 @@
 
 use crate::cli::{IncrementArg, ProgramArgs, RunArgs};
 use crate::diag::{self, Source};
-use expander::tnrc::Nose;
 use expander::{Increment, Machine, Options, Toolpath};
-use std::collections::BTreeMap;
 use std::path::Path;
 
 /// Largest program file read (a million-move program is ~20 MB).
@@ -83,45 +81,6 @@ fn load_machine(args: &ProgramArgs) -> Result<Machine, ()> {
     Ok(machine)
 }
 
-/// The nose (radius, tip) of every turning insert in the table, by offset number (the
-/// table's `t`, as `T0101` pairs tool 01 with offset 01); other kinds are `None`, for which
-/// G41/G42 is ignored with a warning.
-pub(crate) fn noses(tools: &stock::ToolTable) -> BTreeMap<u32, Option<Nose>> {
-    tools
-        .numbers()
-        .into_iter()
-        .map(|t| {
-            let nose = match tools.get(t) {
-                Some(stock::Tool::Turning {
-                    nose_radius, tip, ..
-                }) => Some(Nose {
-                    radius: *nose_radius,
-                    tip: *tip,
-                }),
-                _ => None,
-            };
-            (t, nose)
-        })
-        .collect()
-}
-
-/// Every radial grooving blade in the table by tool number: width, and whether it extends
-/// toward +Z from its reference corner (G75.1 without I).
-pub(crate) fn blades(tools: &stock::ToolTable) -> BTreeMap<u32, (f64, bool)> {
-    tools
-        .numbers()
-        .into_iter()
-        .filter_map(|t| match tools.get(t) {
-            Some(stock::Tool::Grooving {
-                width, width_dir, ..
-            }) if matches!(width_dir, stock::AxisDir::PlusZ | stock::AxisDir::MinusZ) => {
-                Some((t, (*width, *width_dir == stock::AxisDir::PlusZ)))
-            }
-            _ => None,
-        })
-        .collect()
-}
-
 /// Read, parse and expand the program. Parse errors and an empty program are `Err`.
 pub(crate) fn load_program(
     args: &ProgramArgs,
@@ -159,8 +118,8 @@ pub(crate) fn load_program(
     }
     let opts = Options {
         block_delete: args.block_delete,
-        noses: noses(tools),
-        blades: blades(tools),
+        noses: tools.noses(),
+        blades: tools.blades(),
         start_tool: start_tool.or_else(|| tools.numbers().first().copied()),
         ..Options::default()
     };

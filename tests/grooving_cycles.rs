@@ -117,24 +117,6 @@ fn o0210_face_groove_and_drilled_hole() {
 }
 
 /// Parse, expand with `machine` and simulate (the common helper uses the default machine).
-fn simulate_on(
-    program: &str,
-    machine: &expander::Machine,
-    blank: &stock::Blank,
-    tools: &stock::ToolTable,
-) -> (expander::Toolpath, stock::Simulation) {
-    let p = gcode::parse(program).expect("program parses");
-    let tp = expander::expand(&p, machine, &expander::Options::default());
-    assert!(tp.alarms.is_empty(), "alarms: {:?}", tp.alarms);
-    let sim = stock::simulate(
-        blank,
-        tools,
-        &tp.segments,
-        &stock::SimOptions::default(),
-        &mut |_| {},
-    );
-    (tp, sim)
-}
 
 fn is_c() -> expander::Machine {
     expander::Machine {
@@ -164,7 +146,7 @@ fn o0008_part() -> [stock::Shape; 1] {
 #[test]
 fn o0008_cuts_the_seed_trapezoid() {
     let blank = stock::Blank::bar(50.0, 60.0, 40.0, None).unwrap();
-    let (tp, sim) = simulate_on(
+    let (tp, sim) = simulate_with(
         &read(&asset("programs/O0008-I4.nc")),
         &is_c(),
         &blank,
@@ -186,7 +168,7 @@ fn o0008_cuts_the_seed_trapezoid() {
 #[test]
 fn g75_1_finish_only_traces_the_trapezoid() {
     let blank = stock::Blank::bar(50.0, 60.0, 40.0, None).unwrap();
-    let (tp, sim) = simulate_on(
+    let (tp, sim) = simulate_with(
         &read(&asset("programs/G75_1-finish-only.nc")),
         &is_c(),
         &blank,

@@ -3,47 +3,13 @@
 mod common;
 use common::*;
 
-fn noses(
-    tools: &stock::ToolTable,
-) -> std::collections::BTreeMap<u32, Option<expander::tnrc::Nose>> {
-    tools
-        .numbers()
-        .into_iter()
-        .map(|t| match tools.get(t) {
-            Some(stock::Tool::Turning {
-                nose_radius, tip, ..
-            }) => (
-                t,
-                Some(expander::tnrc::Nose {
-                    radius: *nose_radius,
-                    tip: *tip,
-                }),
-            ),
-            _ => (t, None),
-        })
-        .collect()
-}
-
 /// Parse, expand with the table's noses, simulate.
 fn run(
     program: &str,
     blank: &stock::Blank,
     tools: &stock::ToolTable,
 ) -> (expander::Toolpath, stock::Simulation) {
-    let p = gcode::parse(program).unwrap();
-    let opts = expander::Options {
-        noses: noses(tools),
-        ..Default::default()
-    };
-    let tp = expander::expand(&p, &expander::Machine::default(), &opts);
-    let sim = stock::simulate(
-        blank,
-        tools,
-        &tp.segments,
-        &stock::SimOptions::default(),
-        &mut |_| {},
-    );
-    (tp, sim)
+    pipeline(program, &expander::Machine::default(), blank, tools)
 }
 
 /// Largest distance from the dome centre (Z−10, r5) to the part boundary along the 45°
@@ -196,7 +162,7 @@ fn interference_is_an_alarm_at_its_line() {
     let program = "M3 S800 T0101\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 Z-10\nG2 X21 Z-10.5 R0.5\nG1 X30\nG1 Z-20\nG40 G0 X50\n";
     let p = gcode::parse(program).unwrap();
     let opts = expander::Options {
-        noses: noses(&tools),
+        noses: tools.noses(),
         ..Default::default()
     };
     let tp = expander::expand(&p, &expander::Machine::default(), &opts);
@@ -213,7 +179,7 @@ fn compensation_with_a_blade_is_ignored_with_a_warning() {
     let p = gcode::parse("M3 S800 T0101\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 Z-10\nG40 G0 X50\n")
         .unwrap();
     let opts = expander::Options {
-        noses: noses(&tools),
+        noses: tools.noses(),
         ..Default::default()
     };
     let tp = expander::expand(&p, &expander::Machine::default(), &opts);
@@ -240,7 +206,7 @@ fn t_word_suspends_and_the_next_move_starts_up_again() {
     let src = "M3 S800 T0101\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 X30 Z-5\nT0101\nG1 X40 Z-10\nG1 Z-20\nG40 G0 X60\n";
     let p = gcode::parse(src).unwrap();
     let opts = expander::Options {
-        noses: noses(&tools),
+        noses: tools.noses(),
         ..Default::default()
     };
     let tp = expander::expand(&p, &expander::Machine::default(), &opts);

@@ -45,19 +45,22 @@ pub fn temp_program(name: &str, text: &[u8]) -> (tempfile::TempDir, PathBuf) {
     (dir, path)
 }
 
-/// Parse, expand and simulate in-process.
-pub fn simulate(
+/// Parse, expand (with the tool table's noses and blades, the first entry as start tool,
+/// like the CLI) and simulate in-process; alarms are left to the caller.
+pub fn pipeline(
     program: &str,
+    machine: &expander::Machine,
     blank: &stock::Blank,
     tools: &stock::ToolTable,
 ) -> (expander::Toolpath, stock::Simulation) {
     let p = gcode::parse(program).expect("program parses");
-    let tp = expander::expand(
-        &p,
-        &expander::Machine::default(),
-        &expander::Options::default(),
-    );
-    assert!(tp.alarms.is_empty(), "alarms: {:?}", tp.alarms);
+    let opts = expander::Options {
+        noses: tools.noses(),
+        blades: tools.blades(),
+        start_tool: tools.numbers().first().copied(),
+        ..Default::default()
+    };
+    let tp = expander::expand(&p, machine, &opts);
     let sim = stock::simulate(
         blank,
         tools,
@@ -66,6 +69,27 @@ pub fn simulate(
         &mut |_| {},
     );
     (tp, sim)
+}
+
+/// [`pipeline`] on `machine`, asserting the program ran without alarm.
+pub fn simulate_with(
+    program: &str,
+    machine: &expander::Machine,
+    blank: &stock::Blank,
+    tools: &stock::ToolTable,
+) -> (expander::Toolpath, stock::Simulation) {
+    let (tp, sim) = pipeline(program, machine, blank, tools);
+    assert!(tp.alarms.is_empty(), "alarms: {:?}", tp.alarms);
+    (tp, sim)
+}
+
+/// [`simulate_with`] on the default machine.
+pub fn simulate(
+    program: &str,
+    blank: &stock::Blank,
+    tools: &stock::ToolTable,
+) -> (expander::Toolpath, stock::Simulation) {
+    simulate_with(program, &expander::Machine::default(), blank, tools)
 }
 
 /// Read an asset as text.
