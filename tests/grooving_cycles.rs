@@ -116,8 +116,6 @@ fn o0210_face_groove_and_drilled_hole() {
     );
 }
 
-/// Parse, expand with `machine` and simulate (the common helper uses the default machine).
-
 fn is_c() -> expander::Machine {
     expander::Machine {
         increment: expander::Increment::IsC,
