@@ -1,0 +1,117 @@
+//! No input may panic or hang: thousands of random programs built from G-code fragments go
+//! through the reader, the interpreter, the removal and the report writers.
+
+mod common;
+
+/// A small deterministic generator (no dependency; the same programs on every run).
+struct Lcg(u64);
+
+impl Lcg {
+    fn next(&mut self) -> u64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        self.0 >> 33
+    }
+    fn pick<'a>(&mut self, items: &[&'a str]) -> &'a str {
+        items[(self.next() as usize) % items.len()]
+    }
+}
+
+const CODES: &[&str] = &[
+    "G00", "G01", "G02", "G03", "G04", "G20", "G21", "G28", "G32", "G40", "G41", "G42", "G50",
+    "G54", "G55", "G70", "G71", "G72", "G73", "G74", "G75", "G75.1", "G76", "G90", "G92", "G94",
+    "G96", "G97", "G98", "G99", "M03", "M05", "M30", "M98", "M99", "T0101", "T0202", "N10", "N20",
+    "O0001", "/", "(c)", ";", "\n",
+];
+const WORDS: &[&str] = &[
+    "X", "Z", "U", "W", "R", "I", "K", "P", "Q", "F", "S", "H", "D", "A", "B", "L", "V", "J", "E",
+];
+const NUMBERS: &[&str] = &[
+    "0", "1", "-1", "0.1", "10.", "-5.5", "30", "1500", "99999999", "1e5", "..", "-", "", "0.0001",
+    "60",
+];
+
+fn random_program(rng: &mut Lcg) -> String {
+    let mut s = String::new();
+    for _ in 0..(rng.next() % 40) {
+        if rng.next() % 3 == 0 {
+            s += rng.pick(CODES);
+        } else {
+            s += rng.pick(WORDS);
+            s += rng.pick(NUMBERS);
+        }
+        s += if rng.next() % 4 == 0 { "\n" } else { " " };
+    }
+    s
+}
+
+#[test]
+fn random_programs_never_panic() {
+    let mut rng = Lcg(0x5eed);
+    let blank = stock::Blank::bar(40.0, 40.0, 0.0, None).unwrap();
+    let tools = stock::ToolTable::from_toml(&common::read(&common::asset(
+        "tools/seed002-face3-drill10.toml",
+    )))
+    .unwrap();
+    let opts = expander::Options {
+        max_segments: 20_000,
+        max_blocks: 100_000,
+        ..Default::default()
+    };
+    let (mut parsed, mut simulated) = (0, 0);
+    for _ in 0..3000 {
+        let text = random_program(&mut rng);
+        let Ok(p) = gcode::parse(&text) else { continue };
+        parsed += 1;
+        let tp = expander::expand(&p, &expander::Machine::default(), &opts);
+        if tp.segments.len() <= 2000 {
+            let sim = stock::simulate(
+                &blank,
+                &tools,
+                &tp.segments,
+                &stock::SimOptions::default(),
+                &mut |_| {},
+            );
+            assert!(
+                sim.removed_area.is_finite() && sim.removed_area >= -1e-6,
+                "{text:?}"
+            );
+            simulated += 1;
+        }
+    }
+    eprintln!("{parsed} of 3000 random programs parsed, {simulated} simulated");
+    assert!(
+        parsed > 300 && simulated > 300,
+        "the generator must reach the interpreter and the removal"
+    );
+}
+
+/// The CLI on a few hostile files: always a clean exit code, never a panic message.
+#[test]
+fn hostile_files_through_the_cli() {
+    let cases: &[&[u8]] = &[
+        b"G0 X1e400 Z0\n",
+        b"G1 X10 Z-5 F0.1 M3 S100\nG2 X10 Z-5 I0 K0\n",
+        b"M3 S500\nG0 X40 Z2\nG75 R0.3\nG75 X30 Z-20 P1 Q1 F0.1\n",
+        b"M3 S500\nG0 X40 Z2\nG73 U1 W1 R9999\nG73 P1 Q2 U0.5 W0.1 F0.2\nN1 G1 X30\nN2 Z-10\n",
+        b"O1\nM98 P1\n",
+        &[0xef, 0xbb, 0xbf, b'G', b'0', b' ', b'X', b'1', b'0', b'\n'],
+        b"G0 X-100000000 Z100000000\n",
+    ];
+    for (k, bytes) in cases.iter().enumerate() {
+        let (dir, prog) = common::temp_program(&format!("h{k}.nc"), bytes);
+        let out = common::latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--stock",
+            "40x40",
+            "--out",
+            dir.path().to_str().unwrap(),
+            "--quiet",
+        ]);
+        assert!((0..=2).contains(&out.code), "case {k}: exit {}", out.code);
+        assert!(!out.stderr.contains("panicked"), "case {k}: {}", out.stderr);
+    }
+}
