@@ -22,6 +22,9 @@ pub(crate) fn intents(args: &RunArgs, loaded: &Loaded) -> Result<Vec<Intent>, ()
             match i.kind {
                 IntendedKind::Groove => Some(Intent::groove(&pts)),
                 IntendedKind::FinishingContour => Intent::finishing(&pts),
+                IntendedKind::Compensated { part_on_left } => {
+                    Intent::compensated(&pts, part_on_left)
+                }
             }
         })
         .collect())

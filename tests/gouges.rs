@@ -220,3 +220,23 @@ fn tnrc_interference_is_an_alarm_and_its_overcut_is_shown() {
         "{g:?}"
     );
 }
+
+/// A contour cut under G41/G42 is an intended shape: seed 004 with G42 and a r1 nose is
+/// clean but for the nose's fillet in the inside corner at Z−35, a leftover as high as the
+/// 0.043 mm step (Φ35.914 to the Φ36 bar).
+#[test]
+fn a_compensated_contour_is_the_intent() {
+    let (out, v) = run_json(&[
+        "run",
+        &a("programs/tnrc-seed004-rough.nc"),
+        "--stock",
+        "36x40",
+        "--tools",
+        &a("tools/seed004-v35-r1.toml"),
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let d = &v["deviation"];
+    assert_eq!(d["overcut_area_mm2"], 0.0, "{d}");
+    let under = d["max_undercut_mm"].as_f64().unwrap();
+    assert!((under - (36.0 - 35.914) / 2.0).abs() < 0.002, "{d}");
+}

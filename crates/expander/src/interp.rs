@@ -952,6 +952,28 @@ impl<'m> Interp<'m> {
         let Some((side, nose, section)) = self.section.take() else {
             return;
         };
+        if section.len() >= 3 {
+            // The programmed contour between start-up and cancel is an intended shape,
+            // unless a G70 already handed it over as its finishing shape.
+            let body = &section[1..section.len() - 1];
+            let mut points = vec![body[0].from];
+            for seg in body {
+                points.extend(seg.polyline(0.001).into_iter().skip(1));
+            }
+            let known = self.out.intended.iter().any(|i| {
+                i.kind == crate::IntendedKind::FinishingContour
+                    && i.points.get(1..) == Some(&points[..])
+            });
+            if !known {
+                self.out.intended.push(crate::Intended {
+                    kind: crate::IntendedKind::Compensated {
+                        part_on_left: side == Side::Right,
+                    },
+                    points,
+                    span: section[0].span,
+                });
+            }
+        }
         let c = tnrc::compensate(&section, side, nose);
         self.out.segments.extend(c.segments);
         self.out.alarms.extend(c.alarms);

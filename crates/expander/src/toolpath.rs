@@ -81,6 +81,12 @@ pub enum IntendedKind {
     /// A G70–G73 finishing shape ns..nf: an open path from the cycle's start point A; the
     /// part lies on the side away from A, within the shape's Z span.
     FinishingContour,
+    /// A contour cut under G41/G42 (the programmed path between start-up and cancel): the
+    /// part lies on the side away from the tool.
+    Compensated {
+        /// The part is on the left of the direction of travel (G42 keeps the tool right).
+        part_on_left: bool,
+    },
 }
 
 /// A shape the program itself defines, with the block that defined it.

@@ -19,6 +19,15 @@ pub struct Intent {
     pub outline: Vec<(Vec<[f64; 2]>, bool)>,
 }
 
+/// The side toward which an open intended path is closed: where the part lies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Toward {
+    MinusR,
+    PlusR,
+    MinusZ,
+    PlusZ,
+}
+
 /// Half the size of the world a zone or a closing edge may reach, mm.
 const FAR: f64 = 1e5;
 
@@ -73,20 +82,65 @@ impl Intent {
     /// The comparison is limited to the shape's Z span (its X span for facing).
     pub fn finishing(path: &[[f64; 2]]) -> Option<Self> {
         let (a, shape) = path.split_first()?;
-        let (first, last) = (*shape.first()?, *shape.last()?);
         let (lo, hi) = bbox(shape);
-        let mut ring = shape.to_vec();
-        let zone = if a[1] >= hi[1] - 1e-9 {
-            ring.extend([[last[0], -FAR], [first[0], -FAR]]);
-            rect(lo[0], hi[0], -FAR, FAR)
+        let toward = if a[1] >= hi[1] - 1e-9 {
+            Toward::MinusR
         } else if a[1] <= lo[1] + 1e-9 {
-            ring.extend([[last[0], FAR], [first[0], FAR]]);
-            rect(lo[0], hi[0], -FAR, FAR)
+            Toward::PlusR
         } else if a[0] >= hi[0] - 1e-9 {
-            ring.extend([[-FAR, last[1]], [-FAR, first[1]]]);
-            rect(-FAR, FAR, lo[1], hi[1])
+            Toward::MinusZ
         } else {
             return None;
+        };
+        Self::open_path(shape, toward)
+    }
+
+    /// A contour cut under G41/G42: the part lies on the side of the path away from the
+    /// tool (`part_on_left` of the direction of travel for G42). The region is closed
+    /// toward the side the path's normals on the part side point to on average (below for
+    /// OD turning, above for ID boring, left for facing); the comparison is limited to the
+    /// path's Z span (its X span when closed along Z).
+    pub fn compensated(path: &[[f64; 2]], part_on_left: bool) -> Option<Self> {
+        let mut n = [0.0, 0.0];
+        for w in path.windows(2) {
+            let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
+            let left = [-d[1], d[0]];
+            let s = if part_on_left { 1.0 } else { -1.0 };
+            n = [n[0] + s * left[0], n[1] + s * left[1]];
+        }
+        let toward = if n[1].abs() >= n[0].abs() {
+            if n[1] < 0.0 {
+                Toward::MinusR
+            } else {
+                Toward::PlusR
+            }
+        } else if n[0] < 0.0 {
+            Toward::MinusZ
+        } else {
+            Toward::PlusZ
+        };
+        Self::open_path(path, toward)
+    }
+
+    /// The part bounded by an open path and closed far away `toward` one side.
+    fn open_path(shape: &[[f64; 2]], toward: Toward) -> Option<Self> {
+        let (first, last) = (*shape.first()?, *shape.last()?);
+        if shape.len() < 2 {
+            return None;
+        }
+        let (lo, hi) = bbox(shape);
+        let mut ring = shape.to_vec();
+        let zone = match toward {
+            Toward::MinusR | Toward::PlusR => {
+                let r = if toward == Toward::MinusR { -FAR } else { FAR };
+                ring.extend([[last[0], r], [first[0], r]]);
+                rect(lo[0], hi[0], -FAR, FAR)
+            }
+            Toward::MinusZ | Toward::PlusZ => {
+                let z = if toward == Toward::MinusZ { -FAR } else { FAR };
+                ring.extend([[z, last[1]], [z, first[1]]]);
+                rect(-FAR, FAR, lo[1], hi[1])
+            }
         };
         let part = boolean(
             &[Shape {
