@@ -57,8 +57,12 @@ pub(crate) mod colour {
     pub(crate) const THREAD: &str = "#00838f";
     /// Gouges.
     pub(crate) const GOUGE: &str = "#d62728";
+    /// Gouge outlines: a darker red, so a gouge thinner than a pixel still shows.
+    pub(crate) const GOUGE_EDGE: &str = "#a31515";
     /// Leftovers.
     pub(crate) const LEFTOVER: &str = "#ff8c2a";
+    /// Leftover outlines: a darker orange, so a thin band still shows.
+    pub(crate) const LEFTOVER_EDGE: &str = "#d9650b";
     /// Crash markers.
     pub(crate) const CRASH: &str = "#7b3fe4";
     /// Good verdict.

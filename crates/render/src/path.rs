@@ -30,6 +30,12 @@ fn push_pt(d: &mut String, cmd: char, p: [f64; 2], decimals: usize) {
 /// Append one closed ring, dropping vertices closer than `min_dist` (mm) to the previous
 /// kept one; rings that collapse below three vertices are smaller than a pixel and skipped.
 fn ring(d: &mut String, pts: &[[f64; 2]], min_dist: f64) {
+    ring_or(d, pts, min_dist, false);
+}
+
+/// [`ring`]; with `keep_tiny`, a ring that collapses is written unthinned instead of
+/// skipped (a gouge or leftover smaller than a pixel must still show as a dot).
+fn ring_or(d: &mut String, pts: &[[f64; 2]], min_dist: f64, keep_tiny: bool) {
     let md2 = min_dist * min_dist;
     let mut kept: Vec<[f64; 2]> = Vec::with_capacity(pts.len().min(4096));
     for p in pts.iter().filter(|p| finite(p)) {
@@ -43,6 +49,15 @@ fn ring(d: &mut String, pts: &[[f64; 2]], min_dist: f64) {
         kept.pop();
     }
     if kept.len() < 3 {
+        if keep_tiny {
+            let all: Vec<[f64; 2]> = pts.iter().copied().filter(finite).collect();
+            if all.len() >= 3 {
+                for (i, p) in all.iter().enumerate() {
+                    push_pt(d, if i == 0 { 'M' } else { 'L' }, *p, SHAPE_DECIMALS);
+                }
+                d.push('Z');
+            }
+        }
         return;
     }
     for (i, p) in kept.iter().enumerate() {
@@ -56,6 +71,19 @@ pub(crate) fn shapes_d(shapes: &[Shape], min_dist: f64) -> String {
     let mut d = String::new();
     for s in shapes {
         ring(&mut d, &s.outer, min_dist);
+        for h in &s.holes {
+            ring(&mut d, h, min_dist);
+        }
+    }
+    d
+}
+
+/// Path data for gouges or leftovers: as [`shapes_d`], but an outer ring smaller than
+/// `min_dist` is kept (unthinned) rather than dropped, so its outline shows as a dot.
+pub(crate) fn deviation_d(shapes: &[Shape], min_dist: f64) -> String {
+    let mut d = String::new();
+    for s in shapes {
+        ring_or(&mut d, &s.outer, min_dist, true);
         for h in &s.holes {
             ring(&mut d, h, min_dist);
         }

@@ -4,7 +4,7 @@
 use std::fmt::Write as _;
 
 use crate::layout::{self, colour, FS_TEXT, FS_TICK, FS_TITLE, MAIN};
-use crate::path::{shapes_d, toolpath_d};
+use crate::path::{deviation_d, shapes_d, toolpath_d};
 use crate::report::{PathKind, Report};
 use crate::scale::{nice_step, step_decimals, ticks, View};
 use crate::text::{esc, num, tick_label, truncate, width};
@@ -104,8 +104,14 @@ impl Doc {
     }
 }
 
+/// Width of the outline drawn around every gouge and leftover, px: it keeps a deviation
+/// thinner than a pixel visible (a 0.25 mm band at 3 px/mm is otherwise lost under the
+/// intended line and the toolpath).
+pub(crate) const DEVIATION_EDGE_PX: f64 = 2.0;
+
 /// Shapes and toolpath of a view, in mm under its transform: used by the main view and
-/// the detail views alike. `mirror`: also draw the lighter lower half.
+/// the detail views alike. `mirror`: also draw the lighter lower half. The gouge and
+/// leftover outlines go on top of the toolpath, so that no line hides them.
 pub(crate) fn draw_content(
     doc: &mut Doc,
     report: &Report,
@@ -114,13 +120,22 @@ pub(crate) fn draw_content(
     point_cap: usize,
     toolpath_id: Option<&str>,
 ) -> bool {
-    draw_shapes(doc, report, v, mirror);
-    draw_toolpath(doc, report, v, point_cap, toolpath_id)
+    draw_section(doc, report, v, mirror);
+    let thinned = draw_toolpath(doc, report, v, point_cap, toolpath_id);
+    draw_deviation_edges(doc, report, v);
+    thinned
 }
 
-/// Blank, final part, leftovers, gouges and the intended shape of a view, in mm under
-/// its transform (no toolpath). `mirror`: also draw the lighter lower half.
+/// Blank, final part, leftovers, gouges (filled and outlined) and the intended shape of
+/// a view, in mm under its transform (no toolpath). `mirror`: also draw the lighter
+/// lower half.
 pub(crate) fn draw_shapes(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
+    draw_section(doc, report, v, mirror);
+    draw_deviation_edges(doc, report, v);
+}
+
+/// Blank, final part, the fills of leftovers and gouges, and the intended shape (dashed).
+fn draw_section(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
     let md = MIN_PX / v.s;
     let blank = shapes_d(&report.stock.shapes, md);
     let part = shapes_d(&report.final_part, md);
@@ -145,18 +160,18 @@ pub(crate) fn draw_shapes(doc: &mut Doc, report: &Report, v: &View, mirror: bool
     doc.mm_path(v, &part, colour::PART, colour::PART_EDGE, 1.3, &[]);
     doc.mm_path(
         v,
-        &shapes_d(&report.leftovers, md),
+        &deviation_d(&report.leftovers, md),
         colour::LEFTOVER,
-        colour::LEFTOVER,
-        0.8,
+        "none",
+        0.0,
         &[],
     );
     doc.mm_path(
         v,
-        &shapes_d(&report.gouge_shapes, md),
+        &deviation_d(&report.gouge_shapes, md),
         colour::GOUGE,
-        colour::GOUGE,
-        0.8,
+        "none",
+        0.0,
         &[],
     );
     doc.mm_path(
@@ -167,6 +182,33 @@ pub(crate) fn draw_shapes(doc: &mut Doc, report: &Report, v: &View, mirror: bool
         1.6,
         &[7.0, 4.0],
     );
+    doc.raw("</g>\n");
+}
+
+/// The outlines of leftovers and gouges, [`DEVIATION_EDGE_PX`] wide whatever the scale,
+/// in a darker shade of their fill (classes `leftover-edge` and `gouge-edge`).
+fn draw_deviation_edges(doc: &mut Doc, report: &Report, v: &View) {
+    if report.leftovers.is_empty() && report.gouge_shapes.is_empty() {
+        return;
+    }
+    let md = MIN_PX / v.s;
+    let _ = writeln!(
+        doc.out,
+        r#"<g class="deviations" transform="{}">"#,
+        v.transform(false)
+    );
+    for (shapes, class, edge) in [
+        (&report.leftovers, "leftover-edge", colour::LEFTOVER_EDGE),
+        (&report.gouge_shapes, "gouge-edge", colour::GOUGE_EDGE),
+    ] {
+        let d = deviation_d(shapes, md);
+        if d.is_empty() {
+            continue;
+        }
+        let _ = writeln!(doc.out, r#"<g class="{class}">"#);
+        doc.mm_path(v, &d, "none", edge, DEVIATION_EDGE_PX, &[]);
+        doc.raw("</g>\n");
+    }
     doc.raw("</g>\n");
 }
 
@@ -389,10 +431,13 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
         items.push((Sw::Line(colour::THREAD, ""), "thread"));
     }
     if !report.gouge_shapes.is_empty() || !report.gouges.is_empty() {
-        items.push((Sw::Fill(colour::GOUGE, colour::GOUGE), "gouge"));
+        items.push((Sw::Fill(colour::GOUGE, colour::GOUGE_EDGE), "gouge"));
     }
     if !report.leftovers.is_empty() {
-        items.push((Sw::Fill(colour::LEFTOVER, colour::LEFTOVER), "leftover"));
+        items.push((
+            Sw::Fill(colour::LEFTOVER, colour::LEFTOVER_EDGE),
+            "leftover",
+        ));
     }
     if !report.crashes.is_empty() {
         items.push((Sw::Marker, "crash"));

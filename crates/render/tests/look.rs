@@ -183,3 +183,21 @@ fn write_big_part_picture() {
     };
     std::fs::write(dir.join("big.png"), render::png(&r).unwrap()).unwrap();
 }
+
+/// Crops and enlarges any PNG for a closer look: `LATSIM_CROP="in.png x y w h k out.png"`
+/// (k: integer magnification, nearest neighbour).
+#[test]
+#[ignore = "for a human: LATSIM_CROP=\"in.png x y w h k out.png\" cargo test -p render --test look crop -- --ignored"]
+fn crop() {
+    let Ok(spec) = std::env::var("LATSIM_CROP") else {
+        return;
+    };
+    let a: Vec<&str> = spec.split_whitespace().collect();
+    let n = |i: usize| a[i].parse::<u32>().unwrap();
+    let img = image::open(a[0]).unwrap().to_rgb8();
+    let crop = image::imageops::crop_imm(&img, n(1), n(2), n(3), n(4)).to_image();
+    let (w, h) = (crop.width() * n(5), crop.height() * n(5));
+    image::imageops::resize(&crop, w, h, image::imageops::FilterType::Nearest)
+        .save(a[6])
+        .unwrap();
+}
