@@ -1,6 +1,12 @@
-//! Detail views: a zoomed, framed inset around each crash, gouge and G75.1 groove (at
-//! most three; crashes first, then gouges, then grooves — findings win when room is
-//! short), stacked at the top of the right column.
+//! Detail views: a zoomed, framed inset around each crash, gouge and G75.1 groove, then
+//! one for the largest leftover (at most three; crashes first, then gouges, grooves and
+//! the leftover — findings win when room is short), stacked at the top of the right
+//! column.
+//!
+//! The leftover view is centred on the leftover's thickest place (see
+//! [`crate::leftover`]) with a window about ten times its thickness, so that a thin
+//! roughing allowance shows as a band; its title gives the thickness (the report's
+//! `max_undercut_mm` when there is a single leftover region) and the Z range shown.
 //!
 //! A groove view is zoomed on the groove's box with a margin and shows the blank, the
 //! final part, the leftover and gouge overlays and the groove ring dashed (no
@@ -10,13 +16,13 @@
 
 use std::fmt::Write as _;
 
-use crate::groove;
 use crate::layout::{colour, FS_SMALL, RIGHT_TOP, RIGHT_W, RIGHT_X};
 use crate::path::shapes_d;
 use crate::report::{Groove, Report, Shape};
 use crate::scale::{Bbox, View};
 use crate::svg::{axes, centre_line, draw_content, draw_shapes, marker, Doc, MIN_PX};
 use crate::text::{chars_fitting, esc, num, truncate, width};
+use crate::{groove, leftover};
 
 /// At most this many detail views.
 const MAX_DETAILS: usize = 3;
@@ -39,6 +45,9 @@ enum Kind<'a> {
     Gouge,
     /// A groove with its cleaned ring.
     Groove(&'a Groove, Vec<[f64; 2]>),
+    /// The largest leftover, with where its thickness is measured (`[from, to]`); the
+    /// title gets the Z range shown once the view is fitted.
+    Leftover(Option<[[f64; 2]; 2]>),
 }
 
 struct Finding<'a> {
@@ -153,8 +162,48 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
             kind: Kind::Groove(g, ring),
         });
     }
+    if out.len() < MAX_DETAILS {
+        if let Some(f) = leftover_finding(report, &clampf) {
+            out.push(f);
+        }
+    }
     out.truncate(MAX_DETAILS);
     out
+}
+
+/// The view of the largest leftover, zoomed on its thickest place: `half` is five times
+/// the thickness there (clamped by `clampf` like the other findings), so the window is
+/// about ten thicknesses wide.
+fn leftover_finding<'a>(report: &Report, clampf: &dyn Fn(f64, f64) -> f64) -> Option<Finding<'a>> {
+    let shape = leftover::largest(report)?;
+    let spot = leftover::thickest(shape, &report.intended)?;
+    let reported = report
+        .deviation
+        .as_ref()
+        .map(|d| d.max_undercut_mm)
+        .filter(|t| t.is_finite() && *t > 0.0);
+    // The report's maximum is exact and belongs to this region when it is the only one.
+    let thickness = match (report.leftovers.len(), reported, spot.thickness) {
+        (1, Some(t), _) => Some(t),
+        (_, _, Some(t)) => Some(t),
+        (_, t, None) => t,
+    };
+    let size = spot.thickness.or(thickness).unwrap_or_else(|| {
+        let b = Bbox::of_shapes(std::slice::from_ref(shape));
+        b.w().min(b.h())
+    });
+    let title = match thickness {
+        Some(t) => format!("leftover up to {} mm", num(t, 3)),
+        None => "leftover".to_string(),
+    };
+    let [z, r] = spot.centre;
+    (z.is_finite() && r.is_finite()).then(|| Finding {
+        title,
+        z,
+        r,
+        half: clampf(5.0 * size, 0.02),
+        kind: Kind::Leftover(spot.measure),
+    })
 }
 
 /// Each inset's title, tick labels and gap, px.
@@ -182,7 +231,11 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
     for (i, f) in list.iter().enumerate() {
         let h = f.plot_h(plot_h);
         let rect = [RIGHT_X + LABEL_ROOM, top + 10.0, PLOT_W, h];
-        let title = format!("detail {}: {}", i + 1, f.title);
+        let v = View::fit(f.window(), rect);
+        let title = match f.kind {
+            Kind::Leftover(_) => format!("detail {}: {}, {}", i + 1, f.title, z_range(&v)),
+            _ => format!("detail {}: {}", i + 1, f.title),
+        };
         let max = chars_fitting(RIGHT_W, FS_SMALL);
         doc.text(
             RIGHT_X,
@@ -192,7 +245,6 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
             colour::INK,
             &truncate(&title, max),
         );
-        let v = View::fit(f.window(), rect);
         let id = format!("clip-detail-{i}");
         doc.raw("<defs>");
         doc.clip(&id, rect);
@@ -212,6 +264,10 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
                 let (x, y) = (v.x(f.z), v.y(f.r));
                 if matches!(kind, Kind::Crash) {
                     marker(doc, x, y, colour::CRASH);
+                } else if let Kind::Leftover(measure) = kind {
+                    if let Some(m) = measure {
+                        thickness_mark(doc, &v, *m);
+                    }
                 } else {
                     let _ = writeln!(
                         doc.out,
@@ -232,6 +288,47 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
     }
     doc.raw("</g>\n");
     top
+}
+
+/// The leftover's thickness where it is greatest: a dark line across the band from its
+/// farthest point to the intended edge, with a dot at each end.
+fn thickness_mark(doc: &mut Doc, v: &View, m: [[f64; 2]; 2]) {
+    let [a, b] = m.map(|p| [v.x(p[0]), v.y(p[1])]);
+    doc.raw("<g class=\"leftover-spot\">\n");
+    doc.line(a, b, colour::INK, 1.5, "");
+    for p in [a, b] {
+        let _ = writeln!(
+            doc.out,
+            r#"<circle cx="{}" cy="{}" r="2.5" fill="{}"/>"#,
+            num(p[0], 2),
+            num(p[1], 2),
+            colour::INK
+        );
+    }
+    doc.raw("</g>\n");
+}
+
+/// The Z range a view shows, e.g. `Z-81.2 … Z-77.3`, with enough decimals to tell its
+/// ends apart.
+fn z_range(v: &View) -> String {
+    let w = v.mm.w();
+    let dec = if w >= 20.0 {
+        1
+    } else if w >= 2.0 {
+        2
+    } else {
+        3
+    };
+    // Fixed decimals, so both ends read alike; never `-0.00`.
+    let fixed = |z: f64| {
+        let s = format!("{z:.dec$}");
+        if s.trim_start_matches(['-', '0', '.']).is_empty() {
+            s.trim_start_matches('-').to_string()
+        } else {
+            s
+        }
+    };
+    format!("Z{} … Z{}", fixed(v.mm.zmin), fixed(v.mm.zmax))
 }
 
 /// The groove ring, dashed in the intended colour, with a dot on each principal corner.

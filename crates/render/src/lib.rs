@@ -11,8 +11,10 @@
 //! [[z, x], …]}]`, the G75.1 grooves of [`Report::grooves`]). Numbers are rounded to 6
 //! decimals; non-finite numbers are written as `null`.
 //!
-//! The picture's right column holds zoomed detail views of each crash, gouge and groove
-//! (at most three, findings first) above the title block.
+//! The picture's right column holds zoomed detail views of each crash, gouge and groove,
+//! then of the largest leftover (at most three, findings first) above the title block.
+//! Gouges and leftovers are filled and outlined 2 px wide whatever the scale, so a band
+//! thinner than a pixel still shows.
 //!
 //! The HTML page ([`html`]) is self-contained: the same SVG inline, the tables, and a
 //! move slider drawing on a `<canvas>` from a compact JSON block embedded in the page.
@@ -22,6 +24,7 @@ mod groove;
 mod html;
 mod json;
 mod layout;
+mod leftover;
 mod marks;
 mod path;
 mod png;

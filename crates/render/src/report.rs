@@ -119,9 +119,11 @@ pub struct Report {
     pub crashes: Vec<Crash>,
     /// Overcuts against the intended shape.
     pub gouges: Vec<Gouge>,
-    /// Leftovers, drawn orange (areas only; no line attribution).
+    /// Leftovers, drawn orange with a darker 2 px outline (areas only; no line
+    /// attribution); the largest gets a detail view after the findings and grooves, as
+    /// room allows.
     pub leftovers: Vec<Shape>,
-    /// Gouge areas, drawn red.
+    /// Gouge areas, drawn red with a darker 2 px outline.
     pub gouge_shapes: Vec<Shape>,
     /// `None` when there is no intended shape.
     pub deviation: Option<Deviation>,

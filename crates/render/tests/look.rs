@@ -50,6 +50,10 @@ fn write_pictures() {
         [-7.32, 25.0],
     ];
     std::fs::write(dir.join("o0008_leftover.png"), render::png(&r).unwrap()).unwrap();
+    // A 0.25 mm roughing allowance along a stepped shaft: outlined, with a leftover inset.
+    let r = common::rough_band();
+    std::fs::write(dir.join("rough_band.svg"), render::svg(&r)).unwrap();
+    std::fs::write(dir.join("rough_band.png"), render::png(&r).unwrap()).unwrap();
 }
 
 #[test]

@@ -223,3 +223,98 @@ fn odd_grooves_do_not_panic() {
         render::png(&r).expect("renders");
     }
 }
+
+#[test]
+fn leftover_gets_an_outline_and_an_inset() {
+    let r = common::rough_band();
+    let s = render::svg(&r);
+    // The band (0.25 mm, under a pixel in the main view) is outlined 2 px wide: in the
+    // main view and again in its inset.
+    assert_eq!(
+        s.matches(r#"<g class="leftover-edge">"#).count(),
+        2,
+        "outlines"
+    );
+    let edge = s.split(r#"<g class="leftover-edge">"#).nth(1).unwrap();
+    assert!(
+        edge.contains(r##"stroke="#d9650b""##),
+        "darker orange stroke"
+    );
+    // Its stroke width is 2 px at the main view's scale (mm under the transform).
+    let main = s
+        .split(r#"id="section" transform="matrix("#)
+        .nth(1)
+        .unwrap();
+    let scale: f64 = main.split(' ').next().unwrap().parse().unwrap();
+    let w: f64 = edge
+        .split(r#"stroke-width=""#)
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((w * scale - 2.0).abs() < 1e-6, "{w} mm at {scale} px/mm");
+    // The outline is drawn over the toolpath.
+    assert!(s.find(r#"id="toolpath""#).unwrap() < s.find(r#"class="leftover-edge""#).unwrap());
+    // With room, the largest leftover gets an inset at its thickest place.
+    assert!(s.contains(r#"id="details""#));
+    assert!(
+        s.contains("detail 1: leftover up to 0.354 mm, Z-3"),
+        "leftover title"
+    );
+    assert!(s.contains(r#"class="leftover-spot""#));
+    // No leftover: no outline, no inset.
+    let mut clean = r.clone();
+    clean.leftovers.clear();
+    let s = render::svg(&clean);
+    assert!(!s.contains("leftover-edge") && !s.contains(r#"id="details""#));
+}
+
+#[test]
+fn leftover_inset_comes_last_and_only_with_room() {
+    let mut r = common::groove_bar();
+    r.leftovers = common::rough_band().leftovers;
+    // Crash and gouge first, the leftover third.
+    let s = render::svg(&r);
+    assert!(s.contains("detail 1: crash"));
+    assert!(s.contains("detail 2: gouge"));
+    assert!(s.contains("detail 3: leftover up to "), "leftover is third");
+    // A second crash takes its place.
+    r.crashes.push(render::Crash {
+        line: 30,
+        column: 1,
+        z: -55.0,
+        r: 19.0,
+        area_mm2: 4.0,
+    });
+    let s = render::svg(&r);
+    assert!(!s.contains(": leftover"));
+    assert!(s.contains("leftover-edge"), "still outlined");
+}
+
+#[test]
+fn sub_pixel_gouge_still_draws() {
+    let mut r = common::groove_bar();
+    // 2 µm square: far below a pixel; its outline must still be written.
+    r.gouge_shapes = vec![Shape {
+        outer: vec![
+            [-22.5, 14.0],
+            [-22.498, 14.0],
+            [-22.498, 14.002],
+            [-22.5, 14.002],
+        ],
+        holes: vec![],
+    }];
+    let s = render::svg(&r);
+    let edge = s
+        .split(r#"<g class="gouge-edge">"#)
+        .nth(1)
+        .expect("gouge outline");
+    assert!(
+        edge.trim_start().starts_with("<path d=\"M"),
+        "{}",
+        &edge[..80.min(edge.len())]
+    );
+}

@@ -174,3 +174,79 @@ pub(crate) fn o0008_groove() -> Report {
         }],
     }
 }
+
+/// A stepped shaft roughed with a 0.25 mm allowance left everywhere (like a G73 pass):
+/// one long, thin leftover band (0.35 mm round the shoulders' outer edges), no crash, no gouge.
+pub(crate) fn rough_band() -> Report {
+    use PathKind::*;
+    let profile = |a: f64| {
+        vec![
+            [-100.0, 0.0],
+            [0.0, 0.0],
+            [0.0, 20.0 + a],
+            [-30.0 + a, 20.0 + a],
+            [-30.0 + a, 30.0 + a],
+            [-60.0 + a, 30.0 + a],
+            [-60.0 + a, 40.0 + a],
+            [-100.0, 40.0 + a],
+        ]
+    };
+    let band = shape(&[
+        [0.0, 20.0],
+        [0.0, 20.25],
+        [-29.75, 20.25],
+        [-29.75, 30.25],
+        [-59.75, 30.25],
+        [-59.75, 40.25],
+        [-100.0, 40.25],
+        [-100.0, 40.0],
+        [-60.0, 40.0],
+        [-60.0, 30.0],
+        [-30.0, 30.0],
+        [-30.0, 20.0],
+    ]);
+    let fin = profile(0.25);
+    Report {
+        program: "O0106.nc".into(),
+        title: "O0106".into(),
+        stock: StockInfo {
+            description: "bar Ø90 × 100, face at Z0".into(),
+            shapes: vec![shape(&[
+                [-100.0, 0.0],
+                [0.0, 0.0],
+                [0.0, 45.0],
+                [-100.0, 45.0],
+            ])],
+        },
+        final_part: vec![shape(&fin)],
+        intended: vec![shape(&profile(0.0))],
+        toolpath: vec![
+            mv(Rapid, 3, &[[150.0, 100.0], [2.0, 47.0], [2.0, 18.0]]),
+            mv(
+                Feed,
+                5,
+                &fin[2..]
+                    .iter()
+                    .copied()
+                    .chain([[-100.0, 46.0]])
+                    .collect::<Vec<_>>(),
+            ),
+            mv(Rapid, 6, &[[-100.0, 46.0], [150.0, 100.0]]),
+        ],
+        leftovers: vec![band],
+        deviation: Some(Deviation {
+            overcut_area_mm2: 0.0,
+            undercut_area_mm2: 30.1,
+            max_overcut_mm: 0.0,
+            max_undercut_mm: 0.25 * std::f64::consts::SQRT_2,
+        }),
+        tools: vec!["T01 turning V 35°, r0, tip 3".into()],
+        removed_area_mm2: 1270.0,
+        removed_volume_mm3: 456_789.0,
+        segments: 3,
+        rapid_segments: 2,
+        cycle_time_s: 60.0,
+        tolerance_mm: 0.01,
+        ..Report::default()
+    }
+}
