@@ -228,7 +228,7 @@ fn data_json(report: &Report) -> (String, Moves) {
     );
     let _ = write!(
         out,
-        "\"style\":{{\"rapid\":\"{}\",\"feed\":\"{}\",\"thread\":\"{}\",\"part\":\"{}\",\"part_edge\":\"{}\",\"blank_edge\":\"{}\",\"intended\":\"{}\",\"gouge\":\"{}\",\"leftover\":\"{}\",\"crash\":\"{}\"}},",
+        "\"style\":{{\"rapid\":\"{}\",\"feed\":\"{}\",\"thread\":\"{}\",\"part\":\"{}\",\"part_edge\":\"{}\",\"blank_edge\":\"{}\",\"intended\":\"{}\",\"gouge\":\"{}\",\"gouge_edge\":\"{}\",\"leftover\":\"{}\",\"leftover_edge\":\"{}\",\"crash\":\"{}\"}},",
         colour::RAPID,
         colour::FEED,
         colour::THREAD,
@@ -237,7 +237,9 @@ fn data_json(report: &Report) -> (String, Moves) {
         colour::BLANK_EDGE,
         colour::INTENDED,
         colour::GOUGE,
+        colour::GOUGE_EDGE,
         colour::LEFTOVER,
+        colour::LEFTOVER_EDGE,
         colour::CRASH
     );
     for (key, shapes) in [

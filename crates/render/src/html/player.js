@@ -180,6 +180,15 @@
     ctx.fill(cache.gouges, 'evenodd');
     ctx.fillStyle = st.leftover || '#ff8c2a';
     ctx.fill(cache.leftovers, 'evenodd');
+    // Outlined 2 px wide, so a band thinner than a pixel still shows.
+    ctx.globalAlpha = 0.9;
+    ctx.lineWidth = 2;
+    ctx.lineJoin = 'round';
+    ctx.strokeStyle = st.gouge_edge || '#a31515';
+    ctx.stroke(cache.gouges);
+    ctx.strokeStyle = st.leftover_edge || '#d9650b';
+    ctx.stroke(cache.leftovers);
+    ctx.lineWidth = 1;
     ctx.globalAlpha = 0.55;
     ctx.setLineDash([7, 4]);
     ctx.strokeStyle = st.intended || '#1f6fe5';
