@@ -37,15 +37,7 @@ fn o0209_cuts_the_plain_groove() {
         [-60.0, 20.0],
         [-60.0, 0.0],
     ])];
-    let (sym, h) = compare(&sim.final_shapes, &want);
-    eprintln!(
-        "O0209: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
-        tp.segments.len()
-    );
-    assert!(
-        h <= 0.01 && sym <= 1e-3,
-        "Hausdorff {h}, symmetric difference {sym}"
-    );
+    assert_part("O0209", &tp, &sim, &want, 1e-3);
 }
 
 /// O0209 with the seed's chamfer blocks: both corners of the same blade cut the flanks to a
@@ -69,15 +61,7 @@ fn o0209_chamfers_cut_both_flanks() {
         [-60.0, 20.0],
         [-60.0, 0.0],
     ])];
-    let (sym, h) = compare(&sim.final_shapes, &want);
-    eprintln!(
-        "O0209 chamfers: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
-        tp.segments.len()
-    );
-    assert!(
-        h <= 0.01 && sym <= 1e-3,
-        "Hausdorff {h}, symmetric difference {sym}"
-    );
+    assert_part("O0209 chamfers", &tp, &sim, &want, 1e-3);
 }
 
 /// O0210 (seed 002) on a Φ40 × 40 bar: the G74 face groove Φ20…Φ30, 5 deep (a 3 mm face
@@ -105,15 +89,7 @@ fn o0210_face_groove_and_drilled_hole() {
         [-40.0, 20.0],
         [-40.0, 0.0],
     ])];
-    let (sym, h) = compare(&sim.final_shapes, &want);
-    eprintln!(
-        "O0210: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
-        tp.segments.len()
-    );
-    assert!(
-        h <= 0.01 && sym <= 1e-3,
-        "Hausdorff {h}, symmetric difference {sym}"
-    );
+    assert_part("O0210", &tp, &sim, &want, 1e-3);
 }
 
 fn is_c() -> expander::Machine {
@@ -150,16 +126,7 @@ fn o0008_cuts_the_seed_trapezoid() {
         &blank,
         &tools("seed000-groove4.toml"),
     );
-    assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
-    let (sym, h) = compare(&sim.final_shapes, &o0008_part());
-    eprintln!(
-        "O0008: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
-        tp.segments.len()
-    );
-    assert!(
-        h <= 0.01 && sym <= 1e-3,
-        "Hausdorff {h}, symmetric difference {sym}"
-    );
+    assert_part("O0008", &tp, &sim, &o0008_part(), 1e-3);
 }
 
 /// J2: the finishing pass alone traces the same trapezoid (no plunges: few moves).
@@ -175,12 +142,7 @@ fn g75_1_finish_only_traces_the_trapezoid() {
     assert!(sim.crashes.is_empty(), "{:?}", sim.crashes);
     let cycle: Vec<_> = tp.segments.iter().filter(|s| s.span.line == 6).collect();
     assert!(cycle.len() <= 10, "{} moves", cycle.len());
-    let (sym, h) = compare(&sim.final_shapes, &o0008_part());
-    eprintln!("J2: symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm");
-    assert!(
-        h <= 0.01 && sym <= 1e-3,
-        "Hausdorff {h}, symmetric difference {sym}"
-    );
+    assert_part("J2", &tp, &sim, &o0008_part(), 1e-3);
 }
 
 /// All four corners (round, chamfer, chamfer, round), three layers (V6), rough + finish (J1):
@@ -232,16 +194,8 @@ fn g75_1_corners_layers_and_finish() {
         [-30.0, 30.0],
     ]);
     let want = [shape(ring)];
-    let (sym, h) = compare(&sim.final_shapes, &want);
-    eprintln!(
-        "corners: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
-        tp.segments.len()
-    );
     // the two rounds are chorded within 0.001 mm by the removal: a few thousandths of mm²
-    assert!(
-        h <= 0.01 && sym <= 5e-3,
-        "Hausdorff {h}, symmetric difference {sym}"
-    );
+    assert_part("corners", &tp, &sim, &want, 5e-3);
 }
 
 /// L10 on a conical blank (profile TOML): the mouth follows the cone, the far mouth corner
@@ -267,15 +221,7 @@ fn g75_1_sloped_mouth_on_a_cone() {
         [-8.0, 20.0 + 8.0 * t10],
         [-30.0, 20.0 + 30.0 * t10],
     ])];
-    let (sym, h) = compare(&sim.final_shapes, &want);
-    eprintln!(
-        "cone: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
-        tp.segments.len()
-    );
-    assert!(
-        h <= 0.01 && sym <= 1e-3,
-        "Hausdorff {h}, symmetric difference {sym}"
-    );
+    assert_part("cone", &tp, &sim, &want, 1e-3);
 }
 
 /// O0008 exactly as printed (no I, no F): the blade width comes from the tool table's

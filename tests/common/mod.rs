@@ -83,6 +83,28 @@ pub fn simulate_with(
     (tp, sim)
 }
 
+/// Compare the final part with `want`: Hausdorff distance ≤ 0.01 mm and area of symmetric
+/// difference ≤ `sym_max` mm², no crash; prints the measures under `label`.
+pub fn assert_part(
+    label: &str,
+    tp: &expander::Toolpath,
+    sim: &stock::Simulation,
+    want: &[stock::Shape],
+    sym_max: f64,
+) {
+    let sym = stock::symmetric_difference_area(&sim.final_shapes, want);
+    let h = stock::hausdorff(&sim.final_shapes, want);
+    eprintln!(
+        "{label}: {} segments, symmetric difference {sym:.6} mm², Hausdorff {h:.5} mm",
+        tp.segments.len()
+    );
+    assert!(sim.crashes.is_empty(), "{label}: crashes {:?}", sim.crashes);
+    assert!(
+        h <= 0.01 && sym <= sym_max,
+        "{label}: Hausdorff {h}, symmetric difference {sym}"
+    );
+}
+
 /// [`simulate_with`] on the default machine.
 pub fn simulate(
     program: &str,
