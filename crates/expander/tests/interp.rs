@@ -1,6 +1,7 @@
 //! The modal interpreter, block by block.
 
 mod common;
+use common::asset;
 use expander::{expand, Feed, Machine, Motion, Options, Pt, RapidPath, Spindle, Toolpath};
 
 fn run_with(src: &str, machine: &Machine, opts: &Options) -> Toolpath {
@@ -346,4 +347,66 @@ fn g70_applies_s_t_and_feed_modes_written_in_the_shape() {
         }
     );
     assert!(tp.warnings.is_empty(), "{:?}", tp.warnings);
+}
+
+#[test]
+fn g90_o0002_expansion() {
+    insta::assert_snapshot!(listing(&run(&asset("O0002.nc"))));
+}
+
+#[test]
+fn g94_expansion() {
+    let src = "M3 S500 T0101\nG0 X55 Z5\nG94 X20 Z-2 F100\nZ-4\nG94 X20 Z-6 R-3\nM30\n";
+    insta::assert_snapshot!(listing(&run(src)));
+}
+
+#[test]
+fn g41_g42_switch_and_offset_00_cancel() {
+    let noses = [(
+        1,
+        Some(expander::tnrc::Nose {
+            radius: 1.0,
+            tip: 0,
+        }),
+    )]
+    .into_iter()
+    .collect();
+    let opts = Options {
+        noses,
+        ..Options::default()
+    };
+    // G42 along Z, then G41 on the way back: the switch ends the first section (its last
+    // move cancels at its programmed end) and starts a new one on the other side.
+    let src = "M3 S500 T0101\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 Z-10\nG1 X30\nG41 G1 Z-20\nG1 X40\nG40 G0 X60\n";
+    let tp = run_with(src, &Machine::default(), &opts);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let on = |line: u32| {
+        tp.segments
+            .iter()
+            .filter(move |s| s.span.line == line)
+            .copied()
+            .collect::<Vec<_>>()
+    };
+    // line 4 under G42 (tool above, +r) with the nose centre as reference (tip 0): r 11
+    assert!(
+        on(4)
+            .iter()
+            .all(|s| (s.to.r - 11.0).abs() < 1e-9 || (s.from.r - 11.0).abs() < 1e-9),
+        "{:?}",
+        on(4)
+    );
+    // line 5 ends the G42 section: its programmed end (Z-10, X30)
+    assert_eq!(on(5).last().unwrap().to, Pt::new(-10.0, 15.0));
+    // line 6 is the G41 start-up: it ends perpendicular to line 7's start (+r travel, the
+    // left is -z), 1 mm beyond its programmed end in -Z
+    assert_eq!(on(6).last().unwrap().to, Pt::new(-21.0, 15.0));
+    // T0100 (offset 00) cancels: the next move is not compensated
+    let src = "M3 S500 T0101\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 Z-10\nT0100\nG1 Z-20\nG1 X40\n";
+    let tp = run_with(src, &Machine::default(), &opts);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let after = tp.segments.iter().find(|s| s.span.line == 6).unwrap();
+    assert_eq!(
+        (after.from, after.to),
+        (Pt::new(-10.0, 10.0), Pt::new(-20.0, 10.0))
+    );
 }
