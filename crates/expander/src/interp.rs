@@ -1060,7 +1060,13 @@ impl<'m> Interp<'m> {
             }
             let span = m.span.unwrap_or(b.span);
             if m.to.dist(self.pos) >= 1e-12 {
-                self.push_at(span, m.motion, m.to, m.arc, 0.0, m.hint)?;
+                // a threading move's lead is the F in force (G92: F is the lead)
+                let lead = if m.motion == Motion::Thread {
+                    self.feed * self.unit()
+                } else {
+                    0.0
+                };
+                self.push_at(span, m.motion, m.to, m.arc, lead, m.hint)?;
             }
         }
         self.feed = feed;

@@ -410,3 +410,9 @@ fn g41_g42_switch_and_offset_00_cancel() {
         (Pt::new(-10.0, 10.0), Pt::new(-20.0, 10.0))
     );
 }
+
+#[test]
+fn g92_expansion() {
+    let src = "G97 S500 M03 T0404\nG00 X32 Z5\nG92 X29 Z-20 F2\nX28\nG92 X28 Z-20 R-1 F1.5\nM30\n";
+    insta::assert_snapshot!(common::listing(&run(src), |s| format!("lead {}", s.lead)));
+}

@@ -13,6 +13,7 @@ mod g73;
 mod g74_g75;
 pub(crate) mod g75_1;
 mod g90;
+mod g92;
 mod g94;
 
 /// One move of a cycle, from the previous move's end (or the cycle's start) to `to`.
@@ -187,6 +188,7 @@ impl Cycle<'_, '_> {
 pub(crate) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     match c.code {
         900 => g90::run(c),
+        920 => g92::run(c),
         940 => g94::run(c),
         740 | 750 => g74_g75::run(c),
         751 => g75_1::run(c),

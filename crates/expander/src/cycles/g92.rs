@@ -1,0 +1,27 @@
+//! G92 — threading cycle, straight or tapered (spec/cycles.md, "G92 / G32 / G76").
+//!
+//! `G92 X(U) Z(W) [R] F(lead);` the threading analogue of G90: rapid in X to the thread
+//! start, cut the thread to the end point at one lead per revolution, rapid out in X, rapid
+//! back in Z. Modal like G90: later blocks give only the words that change (a new X for
+//! each depth). R is the radius difference thread start minus thread end (taper).
+
+use super::{Cycle, Move, Output};
+use crate::{Motion, Pt};
+
+/// Expand one G92 block.
+pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
+    let w = super::g94::turn_words(c, 920)?;
+    let a = c.start;
+    let (end, r) = (w.end, w.r);
+    let mut thread = Move::feed(end);
+    thread.motion = Motion::Thread;
+    Ok(Output {
+        moves: vec![
+            Move::rapid(Pt::new(a.z, end.r + r)), // ① X rapid to the thread start
+            thread,                               // ② thread to the end point, F = lead
+            Move::rapid(Pt::new(end.z, a.r)),     // ③ X rapid out to the start X
+            Move::rapid(a),                       // ④ Z rapid back to the start point
+        ],
+        ..Output::default()
+    })
+}
