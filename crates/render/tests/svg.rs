@@ -1,7 +1,7 @@
 //! The SVG: layers and texts present, sizes bounded for huge toolpaths, no panics.
 mod common;
 
-use render::{PathKind, PathLine, Report, Shape};
+use render::Shape;
 
 #[test]
 fn has_layers_legend_and_title_block() {
@@ -85,47 +85,13 @@ fn png_time_for_1e5_segments() {
 
 #[test]
 fn degenerate_reports_do_not_panic() {
-    let nan = f64::NAN;
-    let mut reports = vec![Report::default()];
+    let mut reports = common::degenerate_reports();
     let mut r = common::groove_bar();
     r.final_part.clear();
     reports.push(r);
     let mut r = common::groove_bar();
     r.toolpath.clear();
     r.stock.shapes.clear();
-    reports.push(r);
-    let mut r = common::groove_bar();
-    r.final_part.push(Shape {
-        outer: vec![[nan, nan], [1.0, nan]],
-        holes: vec![vec![]],
-    });
-    r.toolpath.push(PathLine {
-        kind: PathKind::Thread,
-        line: 1,
-        points: vec![[nan, 1.0], [f64::INFINITY, 2.0]],
-    });
-    r.toolpath.push(PathLine {
-        kind: PathKind::Feed,
-        line: 2,
-        points: vec![],
-    });
-    r.crashes[0].z = nan;
-    r.gouges[0].depth_mm = nan;
-    r.cycle_time_s = nan;
-    r.removed_area_mm2 = f64::INFINITY;
-    r.tolerance_mm = nan;
-    reports.push(r);
-    // A single point and a huge coordinate.
-    let mut r = Report::default();
-    r.toolpath.push(PathLine {
-        kind: PathKind::Rapid,
-        line: 1,
-        points: vec![[1e300, -1e300], [0.0, 0.0]],
-    });
-    r.final_part.push(Shape {
-        outer: vec![[5.0, 5.0]],
-        holes: vec![],
-    });
     reports.push(r);
     // Many diagnostics, tools and long words.
     let mut r = common::groove_bar();

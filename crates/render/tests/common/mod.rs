@@ -250,3 +250,49 @@ pub(crate) fn rough_band() -> Report {
         ..Report::default()
     }
 }
+
+/// Reports no renderer may panic on: empty, emptied, non-finite values, a single point
+/// and a huge coordinate. Index 2 is the non-finite one.
+pub(crate) fn degenerate_reports() -> Vec<Report> {
+    let nan = f64::NAN;
+    let mut reports = vec![Report::default()];
+    let mut r = groove_bar();
+    r.toolpath.clear();
+    r.stock.shapes.clear();
+    r.final_part.clear();
+    reports.push(r);
+    let mut r = groove_bar();
+    r.final_part.push(Shape {
+        outer: vec![[nan, nan], [1.0, nan]],
+        holes: vec![vec![]],
+    });
+    r.toolpath.push(PathLine {
+        kind: PathKind::Thread,
+        line: 1,
+        points: vec![[nan, 1.0], [f64::INFINITY, 2.0]],
+    });
+    r.toolpath.push(PathLine {
+        kind: PathKind::Feed,
+        line: 2,
+        points: vec![],
+    });
+    r.crashes[0].z = nan;
+    r.gouges[0].depth_mm = nan;
+    r.cycle_time_s = nan;
+    r.removed_area_mm2 = f64::INFINITY;
+    r.tolerance_mm = nan;
+    reports.push(r);
+    // A single point and a huge coordinate.
+    let mut r = Report::default();
+    r.toolpath.push(PathLine {
+        kind: PathKind::Rapid,
+        line: 1,
+        points: vec![[1e300, -1e300], [0.0, 0.0]],
+    });
+    r.final_part.push(Shape {
+        outer: vec![[5.0, 5.0]],
+        holes: vec![],
+    });
+    reports.push(r);
+    reports
+}
