@@ -1,0 +1,108 @@
+//! Closed rings of points (the last point joins the first; it is not repeated).
+//!
+//! Area, moments, containment and hulls come from geo; a ring converts with
+//! [`to_polygon`]. The integer-grid areas of the removal stay in `stock::overlay`
+//! (exact i128 arithmetic on i_overlay's grid).
+
+use crate::{Pt, Rect};
+use geo::{Area, Centroid, Contains, ConvexHull, Coord, LineString, Polygon};
+
+/// The ring as a geo polygon without holes.
+pub fn to_polygon(ring: &[Pt]) -> Polygon<f64> {
+    Polygon::new(to_line_string(ring), vec![])
+}
+
+/// The points as a geo line string (not closed).
+pub fn to_line_string(points: &[Pt]) -> LineString<f64> {
+    LineString::new(points.iter().map(|&p| Coord::from(p)).collect())
+}
+
+/// The exterior ring of a geo polygon, without the repeated closing point.
+pub fn from_polygon(poly: &Polygon<f64>) -> Vec<Pt> {
+    let mut pts: Vec<Pt> = poly.exterior().coords().map(|&c| Pt::from(c)).collect();
+    if pts.len() > 1 && pts.first() == pts.last() {
+        pts.pop();
+    }
+    pts
+}
+
+/// Signed area, positive when the ring runs counter-clockwise.
+pub fn signed_area(ring: &[Pt]) -> f64 {
+    to_polygon(ring).signed_area()
+}
+
+/// ∫ r dA over the ring, signed like [`signed_area`]: its centroid's r times its signed
+/// area. 2π times it is the volume the ring sweeps turning about the axis (Pappus).
+pub fn first_moment_r(ring: &[Pt]) -> f64 {
+    let poly = to_polygon(ring);
+    let a = poly.signed_area();
+    match poly.centroid() {
+        Some(c) if a != 0.0 => c.y() * a,
+        _ => 0.0,
+    }
+}
+
+/// `p` strictly inside the ring (a point on its border is not).
+pub fn contains(ring: &[Pt], p: Pt) -> bool {
+    to_polygon(ring).contains(&geo::Point::from(Coord::from(p)))
+}
+
+/// Convex hull of some points, counter-clockwise, without collinear points; non-finite
+/// points are ignored. Fewer than three distinct points come back as they are (sorted).
+pub fn convex_hull(points: &[Pt]) -> Vec<Pt> {
+    let finite: Vec<Coord<f64>> = points
+        .iter()
+        .filter(|p| p.is_finite())
+        .map(|&p| Coord::from(p))
+        .collect();
+    let hull = geo::MultiPoint::from(finite).convex_hull();
+    let mut pts = from_polygon(&hull);
+    if pts.len() < 3 {
+        pts.sort_by(|a, b| a.z.total_cmp(&b.z).then(a.r.total_cmp(&b.r)));
+        pts.dedup();
+    }
+    pts
+}
+
+/// Box of the ring's points.
+pub fn bounds(ring: &[Pt]) -> Rect {
+    Rect::of(ring.iter().copied())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square(s: f64) -> Vec<Pt> {
+        vec![
+            Pt::new(0.0, 0.0),
+            Pt::new(s, 0.0),
+            Pt::new(s, s),
+            Pt::new(0.0, s),
+        ]
+    }
+
+    #[test]
+    fn area_moment_and_containment_of_a_square() {
+        let sq = square(2.0);
+        assert!((signed_area(&sq) - 4.0).abs() < 1e-12);
+        let mut cw = sq.clone();
+        cw.reverse();
+        assert!((signed_area(&cw) + 4.0).abs() < 1e-12);
+        // centroid r = 1, area 4: the moment is 4; revolved volume 2π·4 = π(2²)·2
+        assert!((first_moment_r(&sq) - 4.0).abs() < 1e-12);
+        assert!(contains(&sq, Pt::new(1.0, 1.0)));
+        assert!(!contains(&sq, Pt::new(3.0, 1.0)));
+    }
+
+    #[test]
+    fn hull_drops_inner_and_collinear_points() {
+        let mut pts = square(1.0);
+        pts.push(Pt::new(0.5, 0.5));
+        pts.push(Pt::new(0.5, 0.0));
+        pts.push(Pt::new(f64::NAN, 0.0));
+        let h = convex_hull(&pts);
+        assert_eq!(h.len(), 4);
+        assert!((signed_area(&h) - 1.0).abs() < 1e-12);
+    }
+}
