@@ -6,8 +6,9 @@ use crate::diag::{self, Source};
 use expander::{Increment, Machine, Options, Toolpath};
 use std::path::Path;
 
-/// Largest program file read (a million-move program is ~20 MB).
-const MAX_PROGRAM_BYTES: u64 = 512 * 1024 * 1024;
+/// Largest input file read (a million-move program is ~20 MB). Larger files are refused
+/// before they are read, so memory stays bounded whatever is given.
+const MAX_PROGRAM_BYTES: u64 = 64 * 1024 * 1024;
 
 /// A read, parsed and expanded program.
 pub(crate) struct Loaded {
@@ -28,11 +29,12 @@ pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
     if meta.len() > MAX_PROGRAM_BYTES {
         diag::print_plain(
             &format!(
-                "{what} {} is {} bytes, more than latsim reads",
+                "{what} {} is {} bytes, more than latsim reads ({} MB)",
                 path.display(),
-                meta.len()
+                meta.len(),
+                MAX_PROGRAM_BYTES / (1024 * 1024)
             ),
-            "split the file",
+            "split the program into subprograms, or check that this is the right file",
         );
         return Err(());
     }
@@ -43,11 +45,22 @@ pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
         )
     })?;
     String::from_utf8(bytes).map_err(|e| {
+        // Show the bad byte in its line: the text before it is valid, so its offset holds
+        // in the lossy copy too.
         let at = e.utf8_error().valid_up_to();
-        diag::print_plain(
-            &format!("{what} {} is not UTF-8 text (invalid byte at offset {at})", path.display()),
+        let src = Source {
+            name: path.display().to_string(),
+            text: String::from_utf8_lossy(e.as_bytes()).into_owned(),
+        };
+        diag::print_at(
+            &src,
+            at,
+            char::REPLACEMENT_CHARACTER.len_utf8(),
+            "encoding",
+            &format!("{what} is not UTF-8 text: this byte is not a character"),
             "save the file as UTF-8 (programs from a controller in GBK can be converted with iconv -f GBK -t UTF-8)",
-        )
+            false,
+        );
     })
 }
 

@@ -23,6 +23,7 @@ const EXIT_FINDINGS: u8 = 1;
 const EXIT_UNUSABLE: u8 = 2;
 
 fn main() -> ExitCode {
+    diag::install_panic_hook();
     let args = match cli::Cli::try_parse() {
         Ok(a) => a,
         Err(e) => {

@@ -3,7 +3,7 @@
 use crate::cli::{CheckArgs, RunArgs};
 use crate::diag;
 use crate::input;
-use crate::write::write_atomic;
+use crate::write;
 use crate::{EXIT_CLEAN, EXIT_FINDINGS, EXIT_UNUSABLE};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -102,13 +102,24 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         );
         return EXIT_UNUSABLE;
     }
+    let stems = output_stems(&files);
+    let mut inputs = files.clone();
+    inputs.extend(args.tools.clone());
+    inputs.extend(args.stock_file.clone());
+    inputs.extend(args.program.machine.clone());
+    inputs.extend(args.target.clone());
+    let job = |i: usize| {
+        guarded(&files[i], files.len() > 1, || {
+            run_one(args, &files[i], &stems[i], &inputs, files.len() > 1)
+        })
+    };
     if files.len() == 1 {
-        return run_one(args, &files[0], false);
+        return job(0);
     }
-    if args.svg.is_some() || args.png.is_some() || args.json.is_some() {
+    if args.svg.is_some() || args.png.is_some() || args.json.is_some() || args.html.is_some() {
         diag::print_plain(
-            "--svg, --png and --json name one file: they take one program",
-            "with several programs use --out DIR: each gets <prog>.svg, .png and .json there",
+            "--svg, --png, --json and --html name one file: they take one program",
+            "with several programs use --out DIR: each gets <prog>.svg, .png, .json and .html there",
         );
         return EXIT_UNUSABLE;
     }
@@ -121,8 +132,10 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         for _ in 0..workers {
             scope.spawn(|| loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                let Some(path) = files.get(i) else { break };
-                let code = run_one(args, path, true);
+                if i >= files.len() {
+                    break;
+                }
+                let code = job(i);
                 worst.fetch_max(code, std::sync::atomic::Ordering::Relaxed);
             });
         }
@@ -130,9 +143,59 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     worst.into_inner()
 }
 
+/// The name each program's reports take: its file stem, or its whole file name where two
+/// programs of the run share a stem (`part.nc` and `part.tap` write `part.nc.json` and
+/// `part.tap.json`, never the same `part.json`).
+fn output_stems(files: &[PathBuf]) -> Vec<String> {
+    let stem = |p: &PathBuf| {
+        p.file_stem().map_or_else(
+            || "program".to_string(),
+            |s| s.to_string_lossy().into_owned(),
+        )
+    };
+    let stems: Vec<String> = files.iter().map(stem).collect();
+    files
+        .iter()
+        .zip(&stems)
+        .map(|(f, s)| {
+            if stems.iter().filter(|t| *t == s).count() > 1 {
+                f.file_name()
+                    .map_or_else(|| s.clone(), |n| n.to_string_lossy().into_owned())
+            } else {
+                s.clone()
+            }
+        })
+        .collect()
+}
+
+/// Runs one program's job; a panic (a bug in latsim) becomes that program's own verdict,
+/// exit 2, instead of ending the whole batch.
+fn guarded(path: &Path, batch: bool, job: impl FnOnce() -> u8) -> u8 {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(job)) {
+        Ok(code) => code,
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            let message = format!("internal error while simulating {}: {what}", path.display());
+            if batch {
+                println!("{}: UNUSABLE — {message}", path.display());
+            } else {
+                diag::print_plain(
+                    &message,
+                    "this is a bug in latsim: please report it with the program",
+                );
+            }
+            EXIT_UNUSABLE
+        }
+    }
+}
+
 /// Simulate one program and write its reports. In a batch, the terminal gets only the
 /// verdict line (diagnostics are in the reports).
-fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
+fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: bool) -> u8 {
     if !(args.tol.is_finite() && args.tol > 0.0) {
         diag::print_plain(
             &format!("--tol {} is not a positive length", args.tol),
@@ -181,10 +244,6 @@ fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
         || loaded.source.name.clone(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let stem = path.file_stem().map_or_else(
-        || "program".to_string(),
-        |s| s.to_string_lossy().into_owned(),
-    );
     let Ok(intents) = crate::analysis::intents(args, &loaded) else {
         return EXIT_UNUSABLE;
     };
@@ -203,12 +262,10 @@ fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
     crate::report::add_deviation(&mut report, &loaded, &blank, &intents, deviation.as_ref());
     report.snapshots = crate::report::snapshots(&blank, &tools, segments, &sim);
 
-    let mut inputs = vec![path.to_path_buf()];
-    inputs.extend(args.tools.clone());
-    inputs.extend(args.stock_file.clone());
-    inputs.extend(args.program.machine.clone());
-    inputs.extend(args.target.clone());
-    for (path, kind) in outputs(args, &stem) {
+    // Render every report first, then write them all to disk, then make them visible:
+    // a failure anywhere leaves the previous reports as they were.
+    let mut staged = vec![];
+    for (path, kind) in outputs(args, stem) {
         let bytes = match kind {
             "svg" => render::svg(&report).into_bytes(),
             "json" => render::json(&report).into_bytes(),
@@ -221,13 +278,20 @@ fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
                 }
             },
         };
-        if let Err(e) = write_atomic(&path, &bytes, &inputs) {
-            diag::print_plain(
-                &e,
-                "choose another output path with --out, --svg, --png or --json",
-            );
-            return EXIT_UNUSABLE;
+        match write::stage(&path, &bytes, inputs) {
+            Ok(s) => staged.push(s),
+            Err(e) => {
+                diag::print_plain(
+                    &e,
+                    "choose another output path with --out, --svg, --png, --json or --html",
+                );
+                return EXIT_UNUSABLE;
+            }
         }
+    }
+    if let Err(e) = write::commit(staged) {
+        diag::print_plain(&e, "check the output folder: free space, permissions");
+        return EXIT_UNUSABLE;
     }
 
     for c in report.crashes.iter().filter(|_| !batch) {

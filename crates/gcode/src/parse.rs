@@ -31,6 +31,11 @@ impl ParseError {
 
 /// Longest number text accepted; more digits than this cannot be a real coordinate.
 const MAX_NUMBER_CHARS: usize = 20;
+/// Most digits before the decimal point (leading zeros aside): the largest value a
+/// FANUC/GSK word holds is 9 digits (99999999.9 at IS-B is already 100 km).
+const MAX_WHOLE_DIGITS: usize = 9;
+/// The help for numbers that are too long.
+const NUMBER_HELP: &str = "a number has at most 9 digits before the point and 20 characters in all";
 
 /// Read a whole program text.
 pub fn parse(source: &str) -> Result<Program, ParseError> {
@@ -154,10 +159,10 @@ impl<'a> Reader<'a> {
                         Some(p) => {
                             if p.text.len() >= MAX_NUMBER_CHARS {
                                 return Err(ParseError::new(
-                                p.start.to(span),
-                                format!("number of address {} is too long", p.letter),
-                                "a coordinate has at most 9 digits before and 4 after the point",
-                            ));
+                                    p.start.to(span),
+                                    format!("number of address {} is too long", p.letter),
+                                    NUMBER_HELP,
+                                ));
                             }
                             p.text.push(c);
                             p.end = span;
@@ -259,6 +264,24 @@ impl<'a> Reader<'a> {
                 )
             }
         })?;
+        let whole_digits = p
+            .text
+            .split('.')
+            .next()
+            .unwrap_or("")
+            .trim_start_matches(['+', '-'])
+            .trim_start_matches('0')
+            .len();
+        if whole_digits > MAX_WHOLE_DIGITS {
+            return Err(ParseError::new(
+                span,
+                format!(
+                    "number of address {} has {whole_digits} digits before the point",
+                    p.letter
+                ),
+                NUMBER_HELP,
+            ));
+        }
         match p.letter {
             'N' => {
                 if let Some((_, first)) = self.seq {
