@@ -265,3 +265,26 @@ fn a_batch_gives_every_program_its_verdict_line() {
         );
     }
 }
+
+#[test]
+fn a_machine_profile_with_an_absurd_home_is_refused_at_its_value() {
+    // found/minimal/P4: home = [1e308, -1e308] overflowed the removal grid (a panic)
+    let dir = tempfile::tempdir().unwrap();
+    let machine = dir.path().join("m.toml");
+    std::fs::write(&machine, "power_on_feed = 100.0\nhome = [1e308, -1e308]\n").unwrap();
+    let out = latsim(&[
+        "run",
+        asset("programs/O0008.nc").to_str().unwrap(),
+        "--stock",
+        "60x80",
+        "--stock-z",
+        "40",
+        "--machine",
+        machine.to_str().unwrap(),
+        "--json",
+        dir.path().join("x.json").to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("m.toml:2:8"), "{}", out.stderr);
+    assert!(!dir.path().join("x.json").exists());
+}

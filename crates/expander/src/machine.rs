@@ -118,31 +118,38 @@ impl Default for Machine {
     }
 }
 
+use toml::Spanned;
+
 #[derive(serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 struct File {
     increment: Option<Increment>,
     pq_units: Option<PqUnits>,
     feed_mode: Option<FeedMode>,
-    rapid_x: Option<f64>,
-    rapid_z: Option<f64>,
+    rapid_x: Option<Spanned<f64>>,
+    rapid_z: Option<Spanned<f64>>,
     rapid_path: Option<RapidPath>,
-    home: Option<[f64; 2]>,
-    max_rpm: Option<f64>,
-    power_on_feed: Option<f64>,
+    home: Option<Spanned<[f64; 2]>>,
+    max_rpm: Option<Spanned<f64>>,
+    power_on_feed: Option<Spanned<f64>>,
     work_offsets: Option<Offsets>,
 }
 
 #[derive(serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 struct Offsets {
-    g54: Option<[f64; 2]>,
-    g55: Option<[f64; 2]>,
-    g56: Option<[f64; 2]>,
-    g57: Option<[f64; 2]>,
-    g58: Option<[f64; 2]>,
-    g59: Option<[f64; 2]>,
+    g54: Option<Spanned<[f64; 2]>>,
+    g55: Option<Spanned<[f64; 2]>>,
+    g56: Option<Spanned<[f64; 2]>>,
+    g57: Option<Spanned<[f64; 2]>>,
+    g58: Option<Spanned<[f64; 2]>>,
+    g59: Option<Spanned<[f64; 2]>>,
 }
+
+/// Largest coordinate a profile may give, mm: no lathe travels 10 m.
+const MAX_COORD_MM: f64 = 10_000.0;
+/// Largest rate (rapid mm/min, spindle rev/min, power-on feed) a profile may give.
+const MAX_RATE: f64 = 1.0e6;
 
 /// A machine profile that could not be read.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -168,10 +175,13 @@ impl Machine {
             }
         })?;
         let mut m = Self::default();
-        let bad = |message: String| ProfileError {
-            line: 0,
-            column: 0,
-            message,
+        let bad = |span: std::ops::Range<usize>, message: String| {
+            let (line, column) = line_col(text, span.start);
+            ProfileError {
+                line,
+                column,
+                message,
+            }
         };
         if let Some(v) = file.increment {
             m.increment = v;
@@ -191,26 +201,36 @@ impl Machine {
             ("max_rpm", file.max_rpm, &mut m.max_rpm),
         ] {
             if let Some(v) = v {
-                if !(v.is_finite() && v > 0.0) {
-                    return Err(bad(format!("{name} must be a positive number, got {v}")));
+                let x = *v.get_ref();
+                if !(x.is_finite() && x > 0.0 && x <= MAX_RATE) {
+                    return Err(bad(
+                        v.span(),
+                        format!("{name} must be a positive number up to {MAX_RATE:e}, got {x}"),
+                    ));
                 }
-                *slot = v;
+                *slot = x;
             }
         }
-        let pt = |name: &str, v: [f64; 2]| {
-            if v.iter().all(|c| c.is_finite()) {
-                Ok(Pt::new(v[0], v[1] / 2.0))
+        let pt = |name: &str, v: Spanned<[f64; 2]>| {
+            let c = *v.get_ref();
+            if c.iter().all(|c| c.is_finite() && c.abs() <= MAX_COORD_MM) {
+                Ok(Pt::new(c[0], c[1] / 2.0))
             } else {
-                Err(bad(format!("{name} must be finite [z, x]")))
+                Err(bad(
+                    v.span(),
+                    format!("{name} must be [z, x] in mm, each within ±{MAX_COORD_MM}, got {c:?}"),
+                ))
             }
         };
         if let Some(f) = file.power_on_feed {
-            if !(f.is_finite() && f >= 0.0) {
-                return Err(bad(format!(
-                    "power_on_feed must be zero or positive, got {f}"
-                )));
+            let x = *f.get_ref();
+            if !(x.is_finite() && (0.0..=MAX_RATE).contains(&x)) {
+                return Err(bad(
+                    f.span(),
+                    format!("power_on_feed must be zero or positive up to {MAX_RATE:e}, got {x}"),
+                ));
             }
-            m.power_on_feed = f;
+            m.power_on_feed = x;
         }
         if let Some(h) = file.home {
             m.home = pt("home", h)?;
@@ -272,5 +292,18 @@ mod tests {
         assert_eq!(e.line, 2);
         let e = Machine::from_toml("rapid_x = -5.0").unwrap_err();
         assert!(e.message.contains("positive"));
+        assert_eq!((e.line, e.column), (1, 11));
+    }
+
+    #[test]
+    fn absurd_places_and_rates_are_refused_at_their_value() {
+        // found/minimal/P4: a home at 1e308 overflowed the removal grid
+        let e = Machine::from_toml("power_on_feed = 100.0\nhome = [1e308, -1e308]").unwrap_err();
+        assert_eq!((e.line, e.column), (2, 8));
+        assert!(e.message.contains("home"), "{}", e.message);
+        let e = Machine::from_toml("[work_offsets]\ng55 = [0.0, 20000.0]").unwrap_err();
+        assert_eq!(e.line, 2);
+        assert!(Machine::from_toml("max_rpm = 1e9").is_err());
+        assert!(Machine::from_toml("home = [9999.0, -9999.0]").is_ok());
     }
 }
