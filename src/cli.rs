@@ -37,6 +37,10 @@ pub(crate) struct ProgramArgs {
     /// Skip blocks that start with '/'.
     #[arg(long)]
     pub(crate) block_delete: bool,
+    /// Read a decimal comma (`F0,2`) as a decimal point throughout the file (German-style
+    /// posts); without it a decimal comma is an error at its place.
+    #[arg(long)]
+    pub(crate) decimal_comma: bool,
     /// No progress bar and no warnings on the terminal.
     #[arg(long, short)]
     pub(crate) quiet: bool,

@@ -6,8 +6,8 @@
 //! is printed plain as `file:line:col: code: message`.
 
 use miette::{
-    GraphicalReportHandler, LabeledSpan, MietteDiagnostic, MietteError, MietteSpanContents,
-    Severity, SourceCode, SourceSpan, SpanContents,
+    LabeledSpan, MietteDiagnostic, MietteError, MietteSpanContents, Severity, SourceCode,
+    SourceSpan, SpanContents,
 };
 use std::cell::Cell;
 
@@ -215,18 +215,13 @@ pub(crate) fn print_at(
     }
 }
 
-/// The report drawn by miette's graphical handler, or `None` if it failed (or panicked).
+/// The report drawn by miette's handler (as `{report:?}` prints it), or `None` if it
+/// panicked.
 fn render(report: &miette::Report) -> Option<String> {
     RENDERING.with(|r| r.set(true));
-    let out = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        let mut s = String::new();
-        GraphicalReportHandler::new()
-            .render_report(&mut s, report.as_ref())
-            .ok()
-            .map(|()| s + "\n")
-    }));
+    let out = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| format!("{report:?}\n")));
     RENDERING.with(|r| r.set(false));
-    out.ok().flatten()
+    out.ok()
 }
 
 /// Print a diagnostic that belongs to a line and column of a file (TOML inputs).

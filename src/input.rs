@@ -107,7 +107,10 @@ pub(crate) fn load_program(
         name: path.display().to_string(),
         text,
     };
-    let program = gcode::parse(&source.text).map_err(|e| {
+    let read = gcode::ReadOptions {
+        decimal_comma: args.decimal_comma,
+    };
+    let program = gcode::parse_with(&source.text, read).map_err(|e| {
         diag::print_at(
             &source,
             e.span.offset,

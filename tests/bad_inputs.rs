@@ -123,11 +123,12 @@ fn binary_garbage() {
         2,
         &["not UTF-8"],
     );
+    // control bytes are dropped (spec/dialects.md §1), the unexpected ones with a warning
     case(
         "ctl.nc",
-        b"\x00\x01\x02G1",
-        2,
-        &["ctl.nc:1:1", "control character"],
+        b"\x00\x01\x02G0 X50 Z5",
+        0,
+        &["ctl.nc:1:2", "2 unexpected control character(s) removed"],
     );
 }
 

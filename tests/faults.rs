@@ -30,12 +30,27 @@ fn a_caret_past_column_65535_is_shown_in_a_window() {
 }
 
 #[test]
-fn deeply_nested_parentheses_and_a_huge_span_do_not_panic() {
-    let text = format!("G0 X10 {}Z5\n", "(".repeat(30_000));
+fn deeply_nested_parentheses_do_not_panic() {
+    // found/hostile-panic-0c7206c4f8: 100 000 nested parentheses made miette panic
+    let text = format!(
+        "O0001;\nG99 M03 S500 T0101;\n{}{}\nM30;\n",
+        "(".repeat(100_000),
+        ")".repeat(100_000)
+    );
     let (_d, prog) = temp_program("deep.nc", text.as_bytes());
     let out = latsim(&["check", prog.to_str().unwrap()]);
-    assert_eq!(out.code, 2, "{}", out.stderr);
-    assert!(out.stderr.contains("deep.nc:1:"), "{}", out.stderr);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(out.stderr.contains("nested parentheses"), "{}", out.stderr);
+    assert!(out.stderr.contains("deep.nc:3:1"), "{}", out.stderr);
+    assert!(out.stderr.lines().all(|l| l.chars().count() < 300));
+    // unbalanced: FANUC's reading, the comment ends at the first ')' and the rest is code
+    let (_d, prog) = temp_program(
+        "open.nc",
+        format!("G0 X10 {}Z5\n", "(".repeat(30_000)).as_bytes(),
+    );
+    let out = latsim(&["check", prog.to_str().unwrap()]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(out.stderr.contains("not closed"), "{}", out.stderr);
 }
 
 #[test]

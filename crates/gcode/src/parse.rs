@@ -4,6 +4,12 @@
 //! case-insensitive; white space is ignored everywhere, also inside a word (`Q5 000`);
 //! comments are `( )`, full-width `（ ）` and `//` to the end of the line; `%` lines mark
 //! the tape; `/` at the start of a block is block delete.
+//!
+//! Framing as tape files and DNC software leave it (spec/dialects.md §1): a leader before
+//! the first `%` is skipped, the reading stops at the closing `%`, RS-232 and other control
+//! bytes are dropped, a lone CR ends a block like LF, `:` is the program number address,
+//! text after `;` that is not a program is a comment, a nested or unclosed comment is read
+//! the way the author meant it — each with a note the report shows.
 
 use crate::{Block, Note, Program, Span, Subprogram, Word};
 
@@ -37,9 +43,118 @@ const MAX_WHOLE_DIGITS: usize = 9;
 /// The help for numbers that are too long.
 const NUMBER_HELP: &str = "a number has at most 9 digits before the point and 20 characters in all";
 
+/// How to read numbers that a FANUC would refuse.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ReadOptions {
+    /// Read `F0,2` as `F0.2` (German-style posts); otherwise a decimal comma is an error.
+    pub decimal_comma: bool,
+}
+
 /// Read a whole program text.
 pub fn parse(source: &str) -> Result<Program, ParseError> {
-    Reader::new(source).run()
+    parse_with(source, ReadOptions::default())
+}
+
+/// Read a whole program text with options.
+pub fn parse_with(source: &str, options: ReadOptions) -> Result<Program, ParseError> {
+    Reader::new(source, options).run()
+}
+
+/// Macro B words that are letters only; any other run of two letters after `;` is prose.
+const KEYWORDS: [&str; 32] = [
+    "IF", "GOTO", "WHILE", "DO", "END", "THEN", "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR",
+    "XOR", "MOD", "SIN", "COS", "TAN", "ATAN", "ASIN", "ACOS", "SQRT", "ABS", "ROUND", "FIX",
+    "FUP", "LN", "EXP", "BIN", "BCD", "POPEN",
+];
+
+/// Whether the text after a `;` is prose (a comment in another control's style) rather
+/// than blocks: it holds a non-ASCII character, or a run of two or more letters that is
+/// not a macro keyword (in a program every letter is followed by its number).
+fn is_prose(rest: &str) -> bool {
+    let mut depth = 0;
+    let mut run = String::new();
+    let flush = |run: &mut String| {
+        let prose = run.len() >= 2 && !KEYWORDS.contains(&run.to_ascii_uppercase().as_str());
+        run.clear();
+        prose
+    };
+    for c in rest.chars() {
+        match c {
+            '(' => depth += 1,
+            ')' if depth > 0 => depth -= 1,
+            _ if depth > 0 => {}
+            c if !c.is_ascii() => return true,
+            c if c.is_ascii_alphabetic() => run.push(c),
+            _ => {
+                if flush(&mut run) {
+                    return true;
+                }
+            }
+        }
+    }
+    flush(&mut run)
+}
+
+/// Whether a line holds a program number or an address word (outside comments): a letter
+/// followed by a number, or `:` followed by digits.
+fn has_address(line: &str) -> bool {
+    let mut depth = 0;
+    let mut prev: Option<char> = None;
+    for c in line.chars().filter(|c| *c != ' ' && *c != '\t') {
+        match c {
+            '(' => depth += 1,
+            ')' if depth > 0 => depth -= 1,
+            _ if depth > 0 => {}
+            c => {
+                let numeric = c.is_ascii_digit() || matches!(c, '.' | '+' | '-');
+                if numeric
+                    && prev.is_some_and(|p| {
+                        p.is_ascii_alphabetic() || (p == ':' && c.is_ascii_digit())
+                    })
+                {
+                    return true;
+                }
+                prev = Some(c);
+            }
+        }
+    }
+    false
+}
+
+/// Where the leader ends: if a `%` comes before the first line holding a program number or
+/// an address word, everything up to the end of that `%`'s line (spec/dialects.md §1).
+fn leader_end(src: &str) -> Option<usize> {
+    let mut offset = 0;
+    for line in src.split_inclusive('\n') {
+        if has_address(line) {
+            return None;
+        }
+        offset += line.len();
+        if line.contains('%') {
+            return Some(offset);
+        }
+    }
+    None
+}
+
+/// A control byte's fate: dropped silently, dropped and counted as flow control, or dropped
+/// with a warning.
+fn control_kind(c: char) -> Option<ControlKind> {
+    match c {
+        '\u{11}'..='\u{14}' => Some(ControlKind::FlowControl),
+        '\0' | '\u{8}' | '\u{7f}' | '\u{1b}' | '\u{1a}' | '\u{c}' | '\u{b}' | '\u{feff}' => {
+            Some(ControlKind::Ignored)
+        }
+        c if (c as u32) < 0x20 && !matches!(c, '\n' | '\r' | '\t') => Some(ControlKind::Unexpected),
+        _ => None,
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum ControlKind {
+    FlowControl,
+    Ignored,
+    Unexpected,
 }
 
 struct PendingWord {
@@ -50,6 +165,8 @@ struct PendingWord {
 }
 
 struct Reader<'a> {
+    src: &'a str,
+    options: ReadOptions,
     chars: std::iter::Peekable<std::str::CharIndices<'a>>,
     line: u32,
     column: u32,
@@ -60,11 +177,18 @@ struct Reader<'a> {
     block_start: Option<Span>,
     block_end: Span,
     pending: Option<PendingWord>,
+    delete_level: u8,
+    /// Flow-control bytes dropped, and the first one's place.
+    flow_control: (usize, Span),
+    /// Other unexpected control bytes dropped, and the first one's place.
+    unexpected_control: (usize, Span),
 }
 
 impl<'a> Reader<'a> {
-    fn new(src: &'a str) -> Self {
+    fn new(src: &'a str, options: ReadOptions) -> Self {
         Self {
+            src,
+            options,
             chars: src.char_indices().peekable(),
             line: 1,
             column: 0,
@@ -82,6 +206,99 @@ impl<'a> Reader<'a> {
             block_start: None,
             block_end: Span::default(),
             pending: None,
+            delete_level: 0,
+            flow_control: (0, Span::default()),
+            unexpected_control: (0, Span::default()),
+        }
+    }
+
+    /// Byte offset of the next character.
+    fn offset(&mut self) -> usize {
+        self.chars.peek().map_or(self.src.len(), |&(o, _)| o)
+    }
+
+    /// The rest of the current line, not consumed.
+    fn rest_of_line(&mut self) -> &'a str {
+        let start = self.offset();
+        let rest = &self.src[start..];
+        &rest[..rest.find('\n').unwrap_or(rest.len())]
+    }
+
+    fn note(&mut self, span: Span, message: impl Into<String>) {
+        self.program.notes.push(Note {
+            span,
+            message: message.into(),
+        });
+    }
+
+    /// Skip the leader (spec/dialects.md §1), noting what it held.
+    fn skip_leader(&mut self) {
+        let Some(end) = leader_end(self.src) else {
+            return;
+        };
+        let text: String = self.src[..end]
+            .chars()
+            .filter(|c| !c.is_control() && *c != '%' && *c != '\u{feff}')
+            .collect();
+        let mut first = None;
+        while self.offset() < end {
+            let Some((span, _)) = self.next() else { break };
+            first.get_or_insert(span);
+        }
+        let text = text.trim();
+        if !text.is_empty() {
+            let shown: String = text.chars().take(40).collect();
+            let span = first.unwrap_or_default();
+            self.note(
+                span,
+                format!("leader skipped: \"{shown}\" (everything before the first % is not read)"),
+            );
+        }
+    }
+
+    /// After the closing `%`: nothing more is read; anything but white space and control
+    /// bytes there is noted.
+    fn skip_trailer(&mut self, at: Span) {
+        let rest = &self.src[self.offset()..];
+        if rest
+            .chars()
+            .any(|c| !c.is_whitespace() && !c.is_control() && c != '%')
+        {
+            self.note(
+                at,
+                "text after the closing % is not read (a control stops at %)",
+            );
+        }
+        while self.next().is_some() {}
+    }
+
+    /// Count a dropped control byte.
+    fn control(&mut self, kind: ControlKind, span: Span) {
+        let slot = match kind {
+            ControlKind::FlowControl => &mut self.flow_control,
+            ControlKind::Unexpected => &mut self.unexpected_control,
+            ControlKind::Ignored => return,
+        };
+        if slot.0 == 0 {
+            slot.1 = span;
+        }
+        slot.0 += 1;
+    }
+
+    fn control_notes(&mut self) {
+        let (n, at) = self.flow_control;
+        if n > 0 {
+            self.note(
+                at,
+                format!("{n} RS-232 flow-control byte(s) (DC1–DC4) removed"),
+            );
+        }
+        let (n, at) = self.unexpected_control;
+        if n > 0 {
+            self.note(
+                at,
+                format!("{n} unexpected control character(s) removed; check that this is a program text file"),
+            );
         }
     }
 
@@ -113,24 +330,101 @@ impl<'a> Reader<'a> {
     }
 
     fn run(mut self) -> Result<Program, ParseError> {
+        self.skip_leader();
         while let Some((span, c)) = self.next() {
+            if let Some(kind) = control_kind(c) {
+                self.control(kind, span);
+                continue;
+            }
             match c {
-                '\n' | ';' => self.end_block()?,
-                ' ' | '\t' | '\r' | '\u{3000}' | '\u{feff}' => {}
+                '\n' => self.end_block()?,
+                // a lone CR (EIA end of block, old Mac files) ends a block like LF
+                '\r' if self.peek() != Some('\n') => self.end_block()?,
+                ';' => {
+                    self.end_block()?;
+                    let rest = self.rest_of_line();
+                    if is_prose(rest) {
+                        let mut start = span;
+                        while self.peek().is_some_and(|c| c == ' ' || c == '\t') {
+                            self.next();
+                        }
+                        if let Some(&(offset, c)) = self.chars.peek() {
+                            start = Span {
+                                line: self.line,
+                                column: self.column + 1,
+                                offset,
+                                len: c.len_utf8(),
+                            };
+                        }
+                        let end = self.skip_line();
+                        self.note(
+                            start.to(end),
+                            "text after ';' read as a comment (a Mach3/Fagor/Siemens-style comment: a FANUC control would read it as code); write it as ( … )",
+                        );
+                    }
+                }
+                ' ' | '\t' | '\r' | '\u{3000}' => {}
                 '(' | '（' => self.skip_comment(span)?,
+                ':' if self.block_is_empty() && self.peek().is_some_and(|c| c.is_ascii_digit()) => {
+                    self.pending = Some(PendingWord {
+                        letter: 'O',
+                        start: span,
+                        end: span,
+                        text: String::new(),
+                    });
+                    self.mark(span);
+                }
+                '"' => {
+                    return Err(ParseError::new(
+                        span,
+                        "string literal is not part of this dialect",
+                        "quoted text belongs in a comment ( … )",
+                    ))
+                }
+                ',' if self
+                    .pending
+                    .as_ref()
+                    .is_some_and(|p| p.text.ends_with(|c: char| c.is_ascii_digit()))
+                    && self.peek().is_some_and(|c| c.is_ascii_digit()) =>
+                {
+                    if !self.options.decimal_comma {
+                        let p = self.pending.as_ref().expect("checked");
+                        let shown = format!("{}{},", p.letter, p.text);
+                        return Err(ParseError::new(
+                            span,
+                            format!("decimal comma in {shown}…"),
+                            "write the decimal point as '.', or read the whole file with --decimal-comma",
+                        ));
+                    }
+                    if let Some(p) = &mut self.pending {
+                        p.text.push('.');
+                        p.end = span;
+                    }
+                }
                 '/' if self.peek() == Some('/') => {
                     self.finish_word()?;
                     self.skip_line();
                 }
                 '/' => {
-                    if self.pending.is_some() || !self.words.is_empty() || self.seq.is_some() {
+                    // at the start of a block, or right after its N word (`N20 /X…`)
+                    if self.pending.as_ref().is_some_and(|p| p.letter == 'N') {
+                        self.finish_word()?;
+                    }
+                    if self.pending.is_some() || !self.words.is_empty() || self.block_delete {
                         return Err(ParseError::new(
                             span,
                             "'/' in the middle of a block",
-                            "block delete '/' must be the first character of a block",
+                            "block delete '/' must be the first character of a block (or follow its N word)",
                         ));
                     }
                     self.block_delete = true;
+                    self.delete_level = 1;
+                    if let Some(level) =
+                        self.peek().and_then(|c| c.to_digit(10)).filter(|&d| d >= 1)
+                    {
+                        self.next();
+                        self.delete_level = level as u8;
+                    }
                     self.mark(span);
                 }
                 '%' => {
@@ -142,7 +436,8 @@ impl<'a> Reader<'a> {
                             "'%' marks the start or end of the tape and stands on its own line",
                         ));
                     }
-                    self.skip_line();
+                    // the end of the tape: a control reads no further
+                    self.skip_trailer(span);
                 }
                 c if c.is_ascii_alphabetic() => {
                     self.finish_word()?;
@@ -202,10 +497,16 @@ impl<'a> Reader<'a> {
             }
         }
         self.end_block()?;
+        self.control_notes();
         self.program
             .programs
             .retain(|p| p.number.is_some() || !p.blocks.is_empty());
         Ok(self.program)
+    }
+
+    /// Nothing of the current block read yet.
+    fn block_is_empty(&self) -> bool {
+        self.pending.is_none() && self.words.is_empty() && self.seq.is_none() && !self.block_delete
     }
 
     /// Skip to the end of the line (the newline itself ends the block). Returns the last span.
@@ -227,21 +528,52 @@ impl<'a> Reader<'a> {
         last
     }
 
+    /// A comment from `(` (already read): FANUC ends it at the first `)`. **Interpretation**
+    /// (dialects.md §1): when a `(` opens inside it and, read with nesting, the
+    /// parentheses balance on the line, the whole is one comment, with a note; an unclosed
+    /// `(` runs to the end of the line, with a note; a `%` inside is text, with a note.
     fn skip_comment(&mut self, open: Span) -> Result<(), ParseError> {
-        while let Some(c) = self.peek() {
-            if c == '\n' {
-                break;
+        let rest = self.rest_of_line();
+        let closes = |c: char| c == ')' || c == '）';
+        let opens = |c: char| c == '(' || c == '（';
+        let first_close = rest.find(closes);
+        let nested_end = {
+            let mut depth = 1;
+            let mut end = None;
+            for (i, c) in rest.char_indices() {
+                if opens(c) {
+                    depth += 1;
+                } else if closes(c) {
+                    depth -= 1;
+                    if depth == 0 {
+                        end = Some(i + c.len_utf8());
+                        break;
+                    }
+                }
             }
-            self.next();
-            if c == ')' || c == '）' {
-                return Ok(());
+            end
+        };
+        let nested = rest
+            .find(opens)
+            .is_some_and(|o| first_close.is_none_or(|c| o < c));
+        let end = match (first_close, nested_end) {
+            (_, Some(e)) if nested => {
+                self.note(open, "nested parentheses read as one comment: a FANUC control would end the comment at the first ')' and read the rest as code");
+                Some(e)
             }
+            (Some(c), _) => Some(c + rest[c..].chars().next().map_or(1, char::len_utf8)),
+            (None, _) => None,
+        };
+        let body = &rest[..end.unwrap_or(rest.len())];
+        if body.contains('%') {
+            self.note(open, "'%' inside a comment: read on as text (a FANUC control stops reading the file at a %)");
         }
-        Err(ParseError::new(
-            open,
-            "comment not closed on this line",
-            "close the comment with ')' before the end of the line",
-        ))
+        let stop = self.offset() + body.len();
+        while self.offset() < stop && self.next().is_some() {}
+        if end.is_none() {
+            self.note(open, "comment not closed on this line: read as a comment to the end of the line; close it with ')'");
+        }
+        Ok(())
     }
 
     fn finish_word(&mut self) -> Result<(), ParseError> {
@@ -291,10 +623,25 @@ impl<'a> Reader<'a> {
                         "keep one N word per block",
                     ));
                 }
-                self.seq = Some((whole(value, has_point, span, 'N')?, span));
+                let n = whole(value, has_point, span, 'N')?;
+                if n == 0 {
+                    return Err(ParseError::new(
+                        span,
+                        "N0 is not a sequence number",
+                        "number blocks from N1 (up to 8 digits), or leave the N word out",
+                    ));
+                }
+                self.seq = Some((n, span));
             }
             'O' => {
                 let number = whole(value, has_point, span, 'O')?;
+                if number == 0 {
+                    return Err(ParseError::new(
+                        span,
+                        "O0 is not a program number",
+                        "number programs from O1 (up to 8 digits)",
+                    ));
+                }
                 if !self.words.is_empty() || self.seq.is_some() {
                     return Err(ParseError::new(
                         span,
@@ -358,6 +705,7 @@ impl<'a> Reader<'a> {
             let words = std::mem::take(&mut self.words);
             let seq = self.seq.take();
             let block_delete = std::mem::replace(&mut self.block_delete, false);
+            let delete_level = std::mem::replace(&mut self.delete_level, 0);
             if !words.is_empty() || seq.is_some() {
                 let span = start.to(self.block_end);
                 let block = Block {
@@ -365,6 +713,7 @@ impl<'a> Reader<'a> {
                     seq: seq.map(|s| s.0),
                     seq_span: seq.map(|s| s.1),
                     block_delete,
+                    delete_level,
                     span,
                 };
                 self.program
@@ -378,6 +727,7 @@ impl<'a> Reader<'a> {
         self.words.clear();
         self.seq = None;
         self.block_delete = false;
+        self.delete_level = 0;
         Ok(())
     }
 }
@@ -505,12 +855,125 @@ mod tests {
         assert!(e.message.contains("twice"));
         let e = parse("G1 #1=2").unwrap_err();
         assert_eq!(e.span.column, 4);
-        let e = parse("G1 (open").unwrap_err();
-        assert!(e.message.contains("comment"));
-        let e = parse("\u{0}\u{1}binary").unwrap_err();
-        assert!(e.message.contains("control"));
+        let e = parse("G1 \"A\"").unwrap_err();
+        assert!(e.message.contains("string literal"), "{}", e.message);
         let e = parse("G1 X1-2").unwrap_err();
         assert!(e.message.contains("malformed"));
+    }
+
+    fn notes(p: &Program) -> Vec<String> {
+        p.notes.iter().map(|n| n.message.clone()).collect()
+    }
+
+    #[test]
+    fn dialects_t1_framing() {
+        // spec/dialects.md §7 T1: DC2, a DNC leader glued to %, ':' program number,
+        // nested parentheses with quotes, a block of only N, the closing % and DC4
+        let text = "\u{12}&HE:%\n:0100 (FRAMING (NESTED) \"Q\" TEST) ;\nN10 G21 G99 ;\nN20 T0101 ;\nN30 G97 S800 M03 ;\nN40 ;\nN50 G00 X52. Z2. ;\nN60 G90 X46. Z-30. F0.2 ;\nN70 X42. ;\nN80 G00 X100. Z100. ;\nN90 M30 ;\n%\n\u{14}";
+        let p = parse(text).unwrap();
+        assert_eq!(p.programs.len(), 1);
+        assert_eq!(p.programs[0].number, Some(100));
+        let blocks = &p.programs[0].blocks;
+        assert_eq!(blocks.len(), 9);
+        assert!(blocks[3].words.is_empty() && blocks[3].seq == Some(40));
+        let n = notes(&p);
+        assert_eq!(n.len(), 2, "{n:?}");
+        assert!(n[0].contains("leader skipped: \"&HE:\""), "{n:?}");
+        assert!(n[1].contains("nested parentheses"), "{n:?}");
+        // the flow-control bytes: DC2 was in the leader, DC4 after the closing %
+        let p = parse("G0 X1\u{11}0 Z2\n\u{13}M30\n").unwrap();
+        assert_eq!(p.programs[0].blocks[0].words[1].value, 10.0);
+        assert!(notes(&p)[0].contains("2 RS-232"), "{:?}", notes(&p));
+    }
+
+    #[test]
+    fn leader_only_before_the_first_address_line() {
+        // a % after program text ends the tape; what follows is not read
+        let p = parse("O1\nG0 X1\n%\nG0 X2\n").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 1);
+        assert!(notes(&p)[0].contains("after the closing %"));
+        // blank lines and a comment before % are leader, with nothing to report
+        let p = parse("\n(O1234.NC)\n%\nG0 X1\n%\n").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 1);
+        assert!(notes(&p)[0].contains("O1234.NC"), "{:?}", notes(&p));
+    }
+
+    #[test]
+    fn line_ends_and_control_bytes() {
+        let p = parse("G0 X1\rG0 X2\r\nG0 X3\n\r\rG0 X4\u{1a}").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 4);
+        assert!(p.notes.is_empty(), "{:?}", notes(&p));
+        let p = parse("\u{feff}G0\u{0}\u{1} X1\tZ2").unwrap();
+        assert_eq!(p.programs[0].blocks[0].words.len(), 3);
+        assert!(
+            notes(&p)[0].contains("1 unexpected control"),
+            "{:?}",
+            notes(&p)
+        );
+    }
+
+    #[test]
+    fn prose_after_semicolon_is_a_comment_but_blocks_are_blocks() {
+        let p = parse("T0505 ;grooving blade 3 mm\nG0 X1;G1 Z2 F.1;\n").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 3);
+        assert_eq!(notes(&p).len(), 1);
+        assert!(notes(&p)[0].contains("after ';'"));
+        let p = parse("G0 X1 ; (note) G1 Z2\n").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 2);
+        // macro words are not prose: they stay code (and are refused as code)
+        assert!(parse("G0 X1 ; IF [#1 EQ 2] GOTO 5\n").is_err());
+    }
+
+    #[test]
+    fn comments_unclosed_nested_and_with_percent() {
+        let p = parse("G1 X1 (open\nG0 X2").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 2);
+        assert!(notes(&p)[0].contains("not closed"));
+        // FANUC's reading where the parentheses do not balance: ends at the first ')'
+        let p = parse("(TOOL 3 (55 DEG) RH) X1").unwrap();
+        assert!(notes(&p)[0].contains("nested"));
+        assert_eq!(p.programs[0].blocks[0].words.len(), 1);
+        // where they do not balance, FANUC's reading: the comment ends at the first ')'
+        let e = parse("(A (B) C").unwrap_err();
+        assert!(e.message.contains("C has no value"), "{}", e.message);
+        assert_eq!(e.span.column, 8);
+        let p = parse("G1 X1 (50% FEED)\nG0 X2").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 2);
+        assert!(notes(&p)[0].contains("'%' inside a comment"));
+    }
+
+    #[test]
+    fn program_and_sequence_numbers_and_block_delete_levels() {
+        assert!(parse("O0\nG0 X1").unwrap_err().message.contains("O0"));
+        assert!(parse("N0 G0 X1").unwrap_err().message.contains("N0"));
+        assert_eq!(
+            parse(":1234\nG0 X1").unwrap().programs[0].number,
+            Some(1234)
+        );
+        let p = parse("/2 G0 X1\nN20 /X2\n/G0 X3").unwrap();
+        let levels: Vec<u8> = p.programs[0]
+            .blocks
+            .iter()
+            .map(|b| b.delete_level)
+            .collect();
+        assert_eq!(levels, [2, 1, 1]);
+        assert!(p.programs[0].blocks.iter().all(|b| b.block_delete));
+    }
+
+    #[test]
+    fn decimal_comma_is_an_error_unless_asked_for() {
+        let e = parse("G1 X56,08 F0,2").unwrap_err();
+        assert!(e.message.contains("decimal comma"), "{}", e.message);
+        assert_eq!(e.span.column, 7);
+        let p = parse_with(
+            "G1 X56,08 F0,2",
+            ReadOptions {
+                decimal_comma: true,
+            },
+        )
+        .unwrap();
+        assert_eq!(p.programs[0].blocks[0].words[1].value, 56.08);
+        assert_eq!(p.programs[0].blocks[0].words[2].value, 0.2);
     }
 
     #[test]

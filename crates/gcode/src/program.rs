@@ -37,6 +37,8 @@ pub struct Block {
     pub seq_span: Option<Span>,
     /// `/` block delete was written at the start.
     pub block_delete: bool,
+    /// The block delete level: 1 for `/` and `/1`, n for `/n` (1–9); 0 without `/`.
+    pub delete_level: u8,
     /// The whole block's text span (first to last significant character).
     pub span: Span,
 }
