@@ -1,0 +1,9 @@
+//! The machine profile loader.
+#![no_main]
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    if let Ok(text) = std::str::from_utf8(data) {
+        let _ = expander::Machine::from_toml(text);
+    }
+});

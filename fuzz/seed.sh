@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Fills fuzz/corpus/<target>/ with seeds from assets/ (programs, tool tables, profiles).
+set -euo pipefail
+cd "$(dirname "$0")"
+for t in read interpret run; do
+  mkdir -p corpus/$t
+  cp ../assets/programs/*.nc corpus/$t/ 2>/dev/null || true
+  find ../assets/corpus -name '*.nc' -exec cp {} corpus/$t/ \; 2>/dev/null || true
+done
+mkdir -p corpus/toml_tools corpus/toml_machine corpus/toml_profile
+cp ../assets/tools/*.toml corpus/toml_tools/
+cp ../assets/machines/*.toml corpus/toml_machine/
+cp ../assets/blanks/*.toml ../assets/targets/*.toml corpus/toml_profile/
+echo "seeded: $(ls corpus | wc -l) targets"
