@@ -303,3 +303,27 @@ fn a_machine_profile_with_an_absurd_home_is_refused_at_its_value() {
     assert!(out.stderr.contains("m.toml:2:8"), "{}", out.stderr);
     assert!(!dir.path().join("x.json").exists());
 }
+
+#[test]
+fn thread_leads_below_the_chord_tolerance_are_swept_continuously() {
+    // found/minimal H1 (G32 F0.001 over 4 mm: 4000 stamps, > 20 s) and H2 (F0.0001 over
+    // 2 mm: memory cap): the notches between stamps would be under the chord tolerance
+    for (name, text) in [
+        ("h1.nc", "G99 M03 S500\nG00 X40 Z2\nG32 Z-2 F0.001\nM30\n"),
+        ("h2.nc", "G99 M03 S500\nG00 X40 Z2\nG32 Z0 F0.0001\nM30\n"),
+    ] {
+        let (dir, prog) = temp_program(name, text.as_bytes());
+        let json = dir.path().join("r.json");
+        let out = latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--stock",
+            "60x80",
+            "--json",
+            json.to_str().unwrap(),
+        ]);
+        assert_eq!(out.code, 0, "{name}: {}", out.stderr);
+        let report = std::fs::read_to_string(&json).unwrap();
+        assert!(report.contains("swept continuously"), "{name}: {report}");
+    }
+}

@@ -45,8 +45,10 @@ use expander::{Motion, Segment, ToolHint};
 use std::collections::HashMap;
 use std::ops::Range;
 
-/// Most stamps one thread move may make before it is swept continuously instead.
-pub(crate) const MAX_THREAD_STAMPS: usize = 100_000;
+/// Most stamps one thread move may make before it is swept continuously instead, with a
+/// warning (a real thread has a few hundred: 200 mm at 0.5 mm lead is 400; stamps that all
+/// overlap their neighbours cost the boolean engine about k², so 4 000 took 10 s).
+pub(crate) const MAX_THREAD_STAMPS: usize = 2_000;
 /// Distance under which points count as on the same line when merging moves, mm.
 const COLLINEAR_TOL: f64 = 1e-9;
 /// Most programmed points one merged run of nearly collinear feeds may hold (each new move
@@ -377,6 +379,19 @@ impl<'a> SweepBuilder<'a> {
             self.warnings.push((
                 idx,
                 format!("thread move with lead {}: swept continuously", seg.lead),
+            ));
+            return None;
+        }
+        if seg.lead <= self.tol {
+            // The notches between stamps a lead apart are about lead·cot(flank angle) deep:
+            // below the chord tolerance for any thread tool (flank half-angle ≥ 27°), so
+            // the continuous sweep is the stamped section within the tolerance.
+            self.warnings.push((
+                idx,
+                format!(
+                    "thread lead {} mm is not more than the chord tolerance {} mm: swept continuously",
+                    seg.lead, self.tol
+                ),
             ));
             return None;
         }
