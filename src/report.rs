@@ -135,6 +135,9 @@ pub(crate) fn build(
     }
 }
 
+/// Most gouges (and leftovers) listed in a report; the count of the rest is a warning.
+const MAX_LISTED: usize = 1_000;
+
 /// The deviation findings: gouges (with the first line whose sweep made them), leftovers,
 /// the intended shapes drawn dashed, and the summary.
 pub(crate) fn add_deviation(
@@ -162,9 +165,23 @@ pub(crate) fn add_deviation(
         .collect();
     let Some(d) = deviation else { return };
     let segs = &loaded.toolpath.segments;
+    for (what, n) in [("gouges", d.gouges.len()), ("leftovers", d.leftovers.len())] {
+        if n > MAX_LISTED {
+            report.warnings.push(render::Diagnostic {
+                line: 0,
+                column: 0,
+                code: "LS-FINDINGS-CAPPED".into(),
+                message: format!(
+                    "{n} {what}: the {MAX_LISTED} first are listed, {} more are not",
+                    n - MAX_LISTED
+                ),
+            });
+        }
+    }
     report.gouges = d
         .gouges
         .iter()
+        .take(MAX_LISTED)
         .map(|g| render::Gouge {
             line: g
                 .segments
@@ -177,8 +194,18 @@ pub(crate) fn add_deviation(
             depth_mm: g.depth,
         })
         .collect();
-    report.gouge_shapes = d.gouges.iter().map(|g| shape(&g.shape)).collect();
-    report.leftovers = d.leftovers.iter().map(|g| shape(&g.shape)).collect();
+    report.gouge_shapes = d
+        .gouges
+        .iter()
+        .take(MAX_LISTED)
+        .map(|g| shape(&g.shape))
+        .collect();
+    report.leftovers = d
+        .leftovers
+        .iter()
+        .take(MAX_LISTED)
+        .map(|g| shape(&g.shape))
+        .collect();
     report.deviation = Some(render::Deviation {
         overcut_area_mm2: d.overcut_area(),
         undercut_area_mm2: d.undercut_area(),

@@ -294,27 +294,8 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         return EXIT_UNUSABLE;
     }
 
-    for c in report.crashes.iter().filter(|_| !batch) {
-        eprintln!(
-            "{}:{}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm² of stock",
-            loaded.source.name,
-            c.line,
-            c.column,
-            c.z,
-            2.0 * c.r,
-            c.area_mm2
-        );
-    }
-    for g in report.gouges.iter().filter(|_| !batch) {
-        eprintln!(
-            "{}:{}: gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
-            loaded.source.name,
-            g.line,
-            g.depth_mm,
-            g.area_mm2,
-            g.z,
-            2.0 * g.r
-        );
+    if !batch {
+        print_findings(&loaded.source.name, &report);
     }
     let verdict = report.verdict();
     println!(
@@ -327,12 +308,51 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         report.cycle_time_s,
         report.alarms.len(),
         report.crashes.len(),
-        report.gouges.len()
+        deviation.as_ref().map_or(0, |d| d.gouges.len())
     );
     if verdict == render::Verdict::Clean {
         EXIT_CLEAN
     } else {
         EXIT_FINDINGS
+    }
+}
+
+/// Most crashes and gouges printed on the terminal; the reports list them all (up to
+/// their own cap).
+const MAX_PRINTED: usize = 20;
+
+/// Crashes and gouges on the terminal, `file:line` first, at most [`MAX_PRINTED`] of each.
+fn print_findings(name: &str, report: &render::Report) {
+    for c in report.crashes.iter().take(MAX_PRINTED) {
+        eprintln!(
+            "{name}:{}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm² of stock",
+            c.line,
+            c.column,
+            c.z,
+            2.0 * c.r,
+            c.area_mm2
+        );
+    }
+    for g in report.gouges.iter().take(MAX_PRINTED) {
+        eprintln!(
+            "{name}:{}: gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
+            g.line,
+            g.depth_mm,
+            g.area_mm2,
+            g.z,
+            2.0 * g.r
+        );
+    }
+    for (what, n) in [
+        ("crash(es)", report.crashes.len()),
+        ("gouge(s)", report.gouges.len()),
+    ] {
+        if n > MAX_PRINTED {
+            eprintln!(
+                "{name}: … and {} more {what}, listed in the reports",
+                n - MAX_PRINTED
+            );
+        }
     }
 }
 

@@ -327,3 +327,40 @@ fn thread_leads_below_the_chord_tolerance_are_swept_continuously() {
         assert!(report.contains("swept continuously"), "{name}: {report}");
     }
 }
+
+#[test]
+fn a_sawtooth_blank_does_not_flood_the_report_with_sliver_gouges() {
+    // found/toml-stock-slow-exit1: a 100 000-point sawtooth blank profile made 77 580
+    // "gouges" of 0.0000 mm² against O0006's finishing shape (here 20 000 points)
+    let mut path = String::new();
+    for i in 1..20_000 {
+        let x = if i % 2 == 1 { 45.0 } else { 40.0 };
+        path.push_str(&format!("{{ to = [{:.4}, {x}] }}, ", -0.004 * i as f64));
+    }
+    let toml = format!(
+        "start = [0.0, 0.0]\npath = [{{ to = [0.0, 40.0] }}, {path}{{ to = [-80.0, 0.0] }}]\n"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let blank = dir.path().join("saw.toml");
+    std::fs::write(&blank, toml).unwrap();
+    let json = dir.path().join("r.json");
+    let out = latsim(&[
+        "run",
+        asset("programs/O0006.nc").to_str().unwrap(),
+        "--stock-file",
+        blank.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert!(out.code == 0 || out.code == 1, "{}", out.stderr);
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let gouges = report["gouges"].as_array().unwrap();
+    assert!(gouges.len() <= 1000, "{} gouges listed", gouges.len());
+    assert!(
+        gouges
+            .iter()
+            .all(|g| g["area_mm2"].as_f64().unwrap() > 1e-4),
+        "sliver gouges: {gouges:?}"
+    );
+}

@@ -229,12 +229,18 @@ pub fn deviation(
     out
 }
 
-/// The components of `region` deeper than `tol` from the boundary of `part`.
+/// The components of `region` deeper than `tol` from the boundary of `part`. A region
+/// thinner everywhere than a tenth of the tolerance (mean thickness 2·area / perimeter) is
+/// boolean noise along a shared edge, not a finding, however far it reaches: a mutated
+/// blank profile made 77 580 such "gouges" of 0.0000 mm².
 fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
     region
         .into_iter()
         .filter_map(|shape| {
             let a = area(std::slice::from_ref(&shape));
+            if 2.0 * a < 0.1 * tol * perimeter(&shape) {
+                return None;
+            }
             let (depth, at) = deepest(&shape, part);
             (depth > tol && a > 0.0).then_some(Finding {
                 shape,
@@ -245,6 +251,22 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
             })
         })
         .collect()
+}
+
+/// Length of all the rings of `shape`.
+fn perimeter(shape: &Shape) -> f64 {
+    std::iter::once(&shape.outer)
+        .chain(&shape.holes)
+        .map(|ring| {
+            let n = ring.len();
+            (0..n)
+                .map(|i| {
+                    let (a, b) = (ring[i], ring[(i + 1) % n]);
+                    (b[0] - a[0]).hypot(b[1] - a[1])
+                })
+                .sum::<f64>()
+        })
+        .sum()
 }
 
 /// The point of `shape` farthest from the boundary of `part`, sampled at the vertices, the
