@@ -364,3 +364,32 @@ fn a_sawtooth_blank_does_not_flood_the_report_with_sliver_gouges() {
         "sliver gouges: {gouges:?}"
     );
 }
+
+#[test]
+fn lengths_beyond_ten_metres_are_alarms_at_their_word() {
+    // found/minimal P2 and P3: `G92 X40 R123456789` reached tiny-skia (a panic, an abort)
+    for (name, text, at) in [
+        ("p2.nc", "G00 X62 Z5\nG92 X40 R123456789 F1\n", "p2.nc:2:9"),
+        (
+            "p3.nc",
+            "G00 X62 Z5\nG92 X40 R100 F0.0001\nR123456789\n",
+            "p3.nc:3:1",
+        ),
+        ("inch.nc", "G20 G00 X400. Z5.\n", "inch.nc:1:9"),
+    ] {
+        let (dir, prog) = temp_program(name, text.as_bytes());
+        let png = dir.path().join("x.png");
+        let out = latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--stock",
+            "60x80",
+            "--png",
+            png.to_str().unwrap(),
+        ]);
+        assert_eq!(out.code, 1, "{name}: {}", out.stderr);
+        assert!(out.stderr.contains(at), "{name}: {}", out.stderr);
+        assert!(out.stderr.contains("LS-RANGE"), "{name}: {}", out.stderr);
+        assert!(png.exists());
+    }
+}

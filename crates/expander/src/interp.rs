@@ -353,6 +353,20 @@ impl<'m> Interp<'m> {
     fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
         let b = &sub.blocks[index];
         let mut used = Words::new(b);
+        let inch_here = b
+            .words
+            .iter()
+            .rev()
+            .find_map(|w| match (w.letter, w.code_tenths()) {
+                ('G', Some(200)) => Some(true),
+                ('G', Some(210)) => Some(false),
+                _ => None,
+            });
+        used.check_domain(if inch_here.unwrap_or(self.inch) {
+            25.4
+        } else {
+            1.0
+        })?;
         let is_g75_1 = b
             .words
             .iter()

@@ -61,6 +61,31 @@ impl<'b> Words<'b> {
         Ok(Some(w.value * mm_per_unit))
     }
 
+    /// Length words (X Z U W R I K) beyond what a lathe can mean are alarms at the word,
+    /// so absurd values never become geometry (a 10 m radius or travel; `unit` is 25.4
+    /// under G20).
+    pub(crate) fn check_domain(&self, unit: f64) -> Result<(), Diagnostic> {
+        const MAX_LENGTH_MM: f64 = 10_000.0;
+        for w in &self.block.words {
+            if matches!(w.letter, 'X' | 'Z' | 'U' | 'W' | 'R' | 'I' | 'K')
+                && (w.value * unit).abs() > MAX_LENGTH_MM
+            {
+                return Err(Diagnostic::new(
+                    w.span,
+                    "LS-RANGE",
+                    format!(
+                        "{}{} is {} mm: beyond what a lathe can travel or cut",
+                        w.letter,
+                        w.value,
+                        w.value * unit
+                    ),
+                    format!("lengths are limited to ±{MAX_LENGTH_MM} mm (10 m); check the number"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// The first word nothing has used, as an alarm.
     pub(crate) fn check_all_used(&self) -> Result<(), Diagnostic> {
         match self.used.iter().position(|u| !u) {
