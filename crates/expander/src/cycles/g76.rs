@@ -347,6 +347,8 @@ pub(crate) enum G76ErrorKind {
         /// Δd, mm.
         dd: f64,
     },
+    /// Haas: both F and E give the lead.
+    LeadTwice,
     /// L ≤ 0.
     Lead {
         /// L, mm.
@@ -405,7 +407,7 @@ pub(crate) struct G76Error {
     /// What is wrong.
     pub(crate) kind: G76ErrorKind,
     /// The word at fault: its letter and, when a word gave the value, its span (`None`: point
-    /// at the G76 word). `None` entirely: the block as a whole (no end point, LinuxCNC form).
+    /// at the G76 word). `None` entirely: the block as a whole (no end point, `LinuxCNC` form).
     pub(crate) at: Option<At>,
 }
 
@@ -424,7 +426,7 @@ impl G76Error {
         use G76ErrorKind as K;
         match self.kind {
             K::LinuxCnc => "LS-G76-LINUXCNC",
-            K::NoEndPoint | K::Missing { .. } => "LS-G76-WORD",
+            K::NoEndPoint | K::Missing { .. } | K::LeadTwice => "LS-G76-WORD",
             K::DecimalPoint { .. } => "LS-INCREMENT",
             K::ChamferAngle { .. } => "LS-G76-CHAMFER-ANGLE",
             K::NoZTravel | K::ChamferTooLong { .. } => "LS-G76-CHAMFER",
@@ -473,6 +475,7 @@ impl G76Error {
             }
             K::Height { k } => format!("G76 thread height k = {k} mm is not positive"),
             K::FirstDepth { dd } => format!("G76 first depth Δd = {dd} mm is not positive"),
+            K::LeadTwice => "G76: F and E both give the lead".into(),
             K::Lead { lead } => format!("G76 lead L = {lead} mm is not positive"),
             K::MinDepth { dmin } => format!("G76 minimum depth Δdmin = {dmin} mm is negative"),
             K::Allowance { d, k } if d < 0.0 => {
@@ -520,6 +523,7 @@ impl G76Error {
             K::StartAngle { .. } => "write Q in 0.001° without a decimal point, e.g. Q180000 for 180°".into(),
             K::Height { .. } => format!("give the thread height (crest to root, radius) in {l}"),
             K::FirstDepth { .. } => format!("give the first depth of cut (radius) in {l}"),
+            K::LeadTwice => "give the lead once, in F or in E".into(),
             K::Lead { .. } => "give the lead in F".into(),
             K::MinDepth { .. } => format!("{l} (minimum depth of cut) is unsigned"),
             K::Allowance { .. } => "the finishing allowance must be at least 0 and smaller than the thread height".into(),
@@ -565,7 +569,7 @@ pub(crate) enum Form {
 }
 
 /// The layout of a G76 block. `get` looks a word up by letter without consuming it
-/// (`Block::get`). J or H: LinuxCNC; K or D: one-block; X/Z/U/W: second block; F without an
+/// (`Block::get`). J or H: `LinuxCNC`; K or D: one-block; X/Z/U/W: second block; F without an
 /// end point: a second block missing it; else a first block. Whether the dialect admits the
 /// form (`fs15_format`, `haas`, `gsk980`) is the caller's check.
 pub(crate) fn classify<'w>(get: impl Fn(char) -> Option<&'w Word>) -> Result<Form, G76Error> {
@@ -660,7 +664,11 @@ fn lead<'w>(
     unit: f64,
 ) -> Result<(f64, At), G76Error> {
     match (f, e) {
-        (Some(w), _) => Ok((w.value * unit, At::word('F', Some(w)))),
+        (Some(_), Some(w)) => Err(G76Error::new(
+            G76ErrorKind::LeadTwice,
+            At::word('E', Some(w)),
+        )),
+        (Some(w), None) => Ok((w.value * unit, At::word('F', Some(w)))),
         (None, Some(w)) => Ok((w.value * unit, At::word('E', Some(w)))),
         (None, None) => match in_force {
             Some(l) => Ok((l, At::letter('F'))),
@@ -812,10 +820,10 @@ pub(crate) fn read_one_block<'w>(
     let pw = get('P');
     let (law, edges) = match pw.map(|w| (w.value, w.has_point)) {
         None => (DepthLaw::ConstantAmount, Edges::One),
-        Some((v, false)) if v == 1.0 => (DepthLaw::ConstantAmount, Edges::One),
-        Some((v, false)) if v == 2.0 => (DepthLaw::ConstantAmount, Edges::Alternating),
-        Some((v, false)) if v == 3.0 => (DepthLaw::ConstantDepth, Edges::One),
-        Some((v, false)) if v == 4.0 => (DepthLaw::ConstantDepth, Edges::Alternating),
+        Some((1.0, false)) => (DepthLaw::ConstantAmount, Edges::One),
+        Some((2.0, false)) => (DepthLaw::ConstantAmount, Edges::Alternating),
+        Some((3.0, false)) => (DepthLaw::ConstantDepth, Edges::One),
+        Some((4.0, false)) => (DepthLaw::ConstantDepth, Edges::Alternating),
         Some((value, _)) => {
             return Err(G76Error::new(
                 G76ErrorKind::InfeedType { value },
@@ -885,19 +893,19 @@ pub(crate) fn read_one_block<'w>(
 pub(crate) fn passes(p: &G76Params) -> Result<Vec<f64>, G76Error> {
     use G76ErrorKind as K;
     let at = &p.at;
-    if !(p.k > 0.0) || !p.k.is_finite() {
+    if !p.k.is_finite() || p.k <= 0.0 {
         return Err(G76Error::new(K::Height { k: p.k }, at.k));
     }
-    if !(p.dd > 0.0) || !p.dd.is_finite() {
+    if !p.dd.is_finite() || p.dd <= 0.0 {
         return Err(G76Error::new(K::FirstDepth { dd: p.dd }, at.dd));
     }
-    if !(p.lead > 0.0) || !p.lead.is_finite() {
+    if !p.lead.is_finite() || p.lead <= 0.0 {
         return Err(G76Error::new(K::Lead { lead: p.lead }, at.lead));
     }
-    if !(p.dmin >= 0.0) || !p.dmin.is_finite() {
+    if !p.dmin.is_finite() || p.dmin < 0.0 {
         return Err(G76Error::new(K::MinDepth { dmin: p.dmin }, at.dmin));
     }
-    if !(p.d >= 0.0 && p.d < p.k) {
+    if !p.d.is_finite() || p.d < 0.0 || p.d >= p.k {
         return Err(G76Error::new(K::Allowance { d: p.d, k: p.k }, at.d));
     }
     if p.m == 0 {
@@ -963,7 +971,7 @@ pub(crate) fn moves(start: Pt, p: &G76Params) -> Result<Vec<Move>, G76Error> {
     let depths = passes(p)?;
     let at = &p.at;
     let theta = p.chamfer_angle;
-    if !(theta > 0.0 && theta < 90.0) {
+    if !theta.is_finite() || theta <= 0.0 || theta >= 90.0 {
         return Err(G76Error::new(K::ChamferAngle { angle: theta }, at.chamfer));
     }
     // Z travel and the side of A (the shift and the chamfer point toward A).
@@ -1564,6 +1572,7 @@ mod tests {
             ),
             ("G76 X18.05 Z-25 D0.4 F1.5", "Missing", 'K'),
             ("G76 X18.05 Z-25 K0.975 F1.5", "Missing", 'D'),
+            ("G76 X18.05 Z-25 K0.975 D0.4 F1.5 E1.5", "LeadTwice", 'E'),
         ] {
             let b = blocks(src);
             let e = read_one_block(|l| b[0].get(l), end, None, 1.0, &cfg).unwrap_err();
