@@ -1363,6 +1363,24 @@ mod tests {
         assert!(close(last[0].to.r, 14.8, 1e-12) && last[0].to.z == 3.0);
     }
 
+    /// A thread cut toward +Z (start at Z−30, end Z0) mirrors: the shift and the chamfer
+    /// point toward −Z, the side of the start point.
+    #[test]
+    fn thread_cut_toward_plus_z() {
+        let p = G76Params {
+            end: Pt::new(0.0, 17.835 / 2.0),
+            chamfer_leads: 1.0,
+            ..sample()
+        };
+        let start = Pt::new(-30.0, 11.0);
+        let mv = moves(start, &p).unwrap();
+        let s = (p.k - 0.35) * TAN30;
+        assert!(close(mv[0].to.z, -30.0 - s, 1e-12));
+        assert!(close(mv[1].to.z, -s - 1.5, 1e-12));
+        assert!(close(mv[2].to.z, -s, 1e-12) && close(mv[2].to.r, mv[1].to.r + 1.5, 1e-12));
+        assert!(close(mv[3].to.z, -s, 1e-12) && mv[3].to.r == 11.0);
+    }
+
     /// Haas Q is the start angle (0.001°), not a depth; E gives the lead on Haas.
     #[test]
     fn haas_start_angle_and_e() {
