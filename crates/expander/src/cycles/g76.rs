@@ -194,7 +194,7 @@ pub(crate) struct FirstBlock {
     pub(crate) dmin: f64,
     /// d, mm (radius).
     pub(crate) d: f64,
-    /// Where P (m r a), Q (Δdmin) and R (d) were last written.
+    /// Where P (m r a) was last written.
     pub(crate) p_at: Option<Span>,
     /// Where Q was last written.
     pub(crate) q_at: Option<Span>,
