@@ -494,6 +494,7 @@ impl<'m> Interp<'m> {
                 };
             }
         }
+        let mut deferred_offset = None;
         if let Some(t) = used.take('T') {
             if t.has_point || t.value < 0.0 || t.value > 9999.0 {
                 return Err(alarm(
@@ -505,9 +506,16 @@ impl<'m> Interp<'m> {
             }
             let v = t.value as u32;
             let (tool, offset) = (v / 100, v % 100);
-            // A T word suspends compensation; offset 00 cancels it (spec/tnrc.md).
-            self.flush_compensation();
-            self.offset = offset;
+            // A T word suspends compensation; offset 00 cancels it (spec/tnrc.md). In a G40
+            // block the block's own move is the cancel move, made with the offset in force:
+            // the new offset takes effect after it (a `G00 G40 X… Z… T0` return must not turn
+            // the last compensated move into the cancel move).
+            if matches!(comp_word, Some((400, _))) {
+                deferred_offset = Some(offset);
+            } else {
+                self.flush_compensation();
+                self.offset = offset;
+            }
             if tool == 0 && offset != 0 {
                 self.warn(
                     t.span,
@@ -607,6 +615,9 @@ impl<'m> Interp<'m> {
                     }
                 }
             }
+        }
+        if let Some(offset) = deferred_offset {
+            self.offset = offset;
         }
         // -- M codes, part 2 (after motion).
         for (m, w) in after {

@@ -1,0 +1,51 @@
+//! Verdicts a machinist trusts (issue 13): each reproduction of a false (or missed) finding,
+//! with its hand-computed numbers.
+
+mod common;
+use common::*;
+
+fn expand(text: &str) -> expander::Toolpath {
+    let program = gcode::parse(text).unwrap();
+    expander::expand(&program, &expander::Machine::default(), &Default::default())
+}
+
+/// Item 7: `T0` in the G40 block must not make the last compensated move the cancel move
+/// (it turned the R10 dome into a straight feed and a false 2.9 mm gouge).
+#[test]
+fn t0_in_the_g40_block_keeps_the_last_compensated_arc() {
+    let body = "G99 M03 S800 T0101\nG00 X50 Z5\nG00 G42 X0 Z2\nG01 Z0 F0.1\nG03 X20 Z-10 R10\n";
+    let with_t0 = expand(&format!("{body}G00 G40 X50 Z5 T0\nM30\n"));
+    let without = expand(&format!("{body}G00 G40 X50 Z5\nM30\n"));
+    assert!(with_t0.alarms.is_empty(), "{:?}", with_t0.alarms);
+    assert_eq!(with_t0.segments.len(), without.segments.len());
+    for (a, b) in with_t0.segments.iter().zip(&without.segments) {
+        assert_eq!(
+            (a.from, a.to, a.arc.is_some()),
+            (b.from, b.to, b.arc.is_some())
+        );
+    }
+    // the dome (line 5) is still an arc: the default r0.4 nose runs outside it (G42,
+    // travelling toward -Z over the dome)
+    let dome: Vec<_> = with_t0
+        .segments
+        .iter()
+        .filter(|s| s.span.line == 5 && s.arc.is_some())
+        .collect();
+    assert!(!dome.is_empty());
+    // the nose centre runs on R10.4 around the dome centre (Z-10, r0); the segments move
+    // the imaginary tip, nose centre + (-0.4, -0.4) for tip 3
+    let arc = dome[0].arc.unwrap();
+    assert!(
+        (arc.center.z + 10.4).abs() < 1e-9 && (arc.center.r + 0.4).abs() < 1e-9,
+        "{arc:?}"
+    );
+    assert!((dome[0].from.dist(arc.center) - 10.4).abs() < 1e-9);
+    // it starts where the offset face line r = 0.4 meets the offset dome:
+    // z = sqrt(10.4² - 0.4²) - 10 - 0.4 = sqrt(108) - 10.4
+    assert!(
+        (dome[0].from.z - (108f64.sqrt() - 10.4)).abs() < 1e-9,
+        "{:?}",
+        dome[0]
+    );
+    let _ = asset("");
+}
