@@ -49,3 +49,21 @@ fn t0_in_the_g40_block_keeps_the_last_compensated_arc() {
     );
     let _ = asset("");
 }
+
+/// Item 8: a rounded corner programmed with 3 decimals is tangent within the control's
+/// tolerance: no false PS041, and the same path as with the exact tangent point
+/// (X24.7176 Z-26.5504) to within 0.002 mm.
+#[test]
+fn tangency_within_the_tolerance_is_tangency() {
+    let prog = |end: &str| {
+        format!("G99 M03 S800 T0101\nG00 X50 Z5\nG00 G42 X25 Z2\nG01 X19.925 Z-1.125 F0.1\nZ-25\nX20.82\nG03 {end} I0 K-2\nG01 X30 Z-38\nG00 G40 X40\nM30\n")
+    };
+    let printed = expand(&prog("X24.716 Z-26.551"));
+    let exact = expand(&prog("X24.7176 Z-26.5504"));
+    assert!(printed.alarms.is_empty(), "{:?}", printed.alarms);
+    assert!(exact.alarms.is_empty(), "{:?}", exact.alarms);
+    assert_eq!(printed.segments.len(), exact.segments.len());
+    for (a, b) in printed.segments.iter().zip(&exact.segments) {
+        assert!(a.to.dist(b.to) < 0.002, "{:?} vs {:?}", a.to, b.to);
+    }
+}

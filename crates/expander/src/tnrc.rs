@@ -195,6 +195,10 @@ fn progress(o: Offset, from: Pt, p: Pt) -> f64 {
     }
 }
 
+/// Two elements whose perpendicular points at the joint are closer than this (mm) join
+/// smoothly: the arc end-point tolerance of `arc.rs`.
+const TANGENT_TOL_MM: f64 = 0.005;
+
 /// The result of compensating one section.
 pub(crate) struct Compensated {
     /// Segments moving the imaginary tip.
@@ -266,7 +270,12 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
             let t1 = tangent(s, true);
             let t2 = tangent(&body[i + 1], false);
             let turn = cross(t1, t2);
-            let smooth = turn.abs() < 1e-9 && dot(t1, t2) > 0.0;
+            // Tangency within the control's tolerance is tangency: programs carry 3-decimal
+            // coordinates, so a "tangent" arc end is off by a few µm and its tangent by
+            // ~0.001 rad. Where the two perpendicular points are closer than the arc end
+            // tolerance, the joint is smooth (an inside corner that small has offset paths
+            // that meet far away or not at all: a false PS041).
+            let smooth = turn.abs() * r < TANGENT_TOL_MM && dot(t1, t2) > 0.0;
             let outside = !smooth
                 && (dot(t1, t2) < 0.0 && turn.abs() < 1e-9 || (side == Side::Left) == (turn < 0.0));
             if smooth {
