@@ -305,16 +305,18 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
         // The element must still run forward from `cur` to `end`.
         let nominal_end = perp_end(i);
         let nominal_start = perp_start(i);
+        // (a joint made smooth within TANGENT_TOL_MM may end that much past the element)
         let forward = match o {
-            Offset::Line { .. } => progress(o, cur, end) > -1e-9,
-            Offset::Circle { .. } => {
+            Offset::Line { .. } => progress(o, cur, end) > -TANGENT_TOL_MM,
+            Offset::Circle { radius, .. } => {
+                let slack = 1e-9 + TANGENT_TOL_MM / radius.max(TANGENT_TOL_MM);
                 let full = progress(o, nominal_start, nominal_end);
                 let a = progress(o, nominal_start, cur);
                 let b = progress(o, nominal_start, end);
                 let tau = std::f64::consts::TAU;
-                let norm = |x: f64| if x > tau - 1e-9 { 0.0 } else { x };
+                let norm = |x: f64| if x > tau - slack { x - tau } else { x };
                 let (a, b) = (norm(a), norm(b));
-                b + 1e-9 >= a && b <= full.max(1e-12) + 1e-9 || full < 1e-12
+                b + slack >= a && b <= full.max(1e-12) + slack || full < 1e-12
             }
         };
         if !forward {
