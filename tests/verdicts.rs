@@ -67,3 +67,20 @@ fn tangency_within_the_tolerance_is_tangency() {
         assert!(a.to.dist(b.to) < 0.002, "{:?} vs {:?}", a.to, b.to);
     }
 }
+
+/// Item 9: a type II ns block that stays at the start Z (`G00 X20 Z2` from Z2) with a Z
+/// allowance W0.1 is a sound G71, not PS064: it roughs down to the shape moved by the
+/// allowances (r = 10 + 0.4/2 = 10.2 along the Φ20 stretch).
+#[test]
+fn g71_with_w_and_a_repeated_start_z_is_sound() {
+    let text = "G99 M03 S800 T0101\nG00 X50 Z2\nG71 U1 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X20 Z2\nG01 Z-20\nX40 Z-30\nN20 X50\nM30\n";
+    let tp = expand(text);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let deepest = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Feed && s.to.z < 0.5 && s.to.z > -19.95)
+        .map(|s| s.to.r)
+        .fold(f64::INFINITY, f64::min);
+    assert!((deepest - 10.2).abs() < 1e-9, "{deepest}");
+}

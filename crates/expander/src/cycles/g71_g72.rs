@@ -258,10 +258,16 @@ impl Poly {
         let els: Vec<_> = shape.elements.iter().map(|e| e.shifted(off)).collect();
         let mut pts = vec![];
         let mut spans = vec![];
+        let b_moved = f.to_uv(els[0].to);
         if f.type2 {
-            pts.push(f.to_uv(shape.start)); // type II: A → B' is part of the shape
+            // Type II: A → B' is part of the shape. The allowance moves B' and not A, so a
+            // ns block that stays at A's Z (`G00 X20 Z2` from Z2) puts B' up to W beyond A:
+            // the leg starts at B''s column then, rather than running backwards (a false
+            // PS064 on a sound program).
+            let a = f.to_uv(shape.start);
+            pts.push((a.0.min(b_moved.0), a.1));
         }
-        pts.push(f.to_uv(els[0].to));
+        pts.push(b_moved);
         if f.type2 {
             spans.push(els[0].span);
         }
