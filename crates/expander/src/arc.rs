@@ -1,6 +1,7 @@
 //! Circular interpolation: the centre from R or from I/K, with the controller's checks.
 
-use crate::Pt;
+use crate::{Diagnostic, Pt, Span};
+use gcode::Word;
 
 /// Why an arc cannot be made.
 #[derive(Debug, Clone, PartialEq)]
@@ -70,6 +71,71 @@ pub fn check_centre(from: Pt, to: Pt, centre: Pt) -> Result<(), ArcError> {
         return Err(ArcError::NonPositiveRadius);
     }
     Ok(())
+}
+
+/// The centre of a G02/G03 from its words: R (at most 180°) or I (radius) and K, relative
+/// to the start; with the controller's alarms at the offending word. The one reader of arc
+/// words, for the interpreter and the finishing shapes of G70–G73.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn centre_from_words(
+    from: Pt,
+    to: Pt,
+    ccw: bool,
+    r: Option<&Word>,
+    i: Option<&Word>,
+    k: Option<&Word>,
+    unit: f64,
+    block: Span,
+) -> Result<Pt, Diagnostic> {
+    match (r, i, k) {
+        (Some(r), None, None) => {
+            centre_from_radius(from, to, r.value * unit, ccw).map_err(|e| alarm(r.span, e))
+        }
+        (None, None, None) => Err(Diagnostic::new(
+            block,
+            "LS-ARC",
+            "G02/G03 without R or I/K",
+            "give the radius R, or the centre offset I (radius) and K",
+        )),
+        (Some(r), _, _) => Err(Diagnostic::new(
+            r.span,
+            "LS-ARC",
+            "arc given both R and I/K",
+            "give either R or I/K, not both",
+        )),
+        (None, i, k) => {
+            let c = Pt::new(
+                from.z + k.map_or(0.0, |k| k.value * unit),
+                from.r + i.map_or(0.0, |i| i.value * unit),
+            );
+            let span = i.or(k).map_or(block, |w| w.span);
+            check_centre(from, to, c).map_err(|e| alarm(span, e))?;
+            Ok(c)
+        }
+    }
+}
+
+/// An arc error as the controller's alarm PS020 at `span`.
+pub(crate) fn alarm(span: Span, e: ArcError) -> Diagnostic {
+    let (message, help) = match e {
+        ArcError::RadiusTooSmall { r, half_chord } => (
+            format!("arc radius R{r} is too small to reach the end point (at least {half_chord:.3} needed)"),
+            "check the end point and the radius: R must be at least half the distance between start and end",
+        ),
+        ArcError::FullCircleWithR => (
+            "arc with R whose end point equals its start".to_string(),
+            "a full circle needs I/K, not R",
+        ),
+        ArcError::NonPositiveRadius => (
+            "arc radius must be positive".to_string(),
+            "give a positive R; arcs over 180° are not possible with R: use I/K or split the arc",
+        ),
+        ArcError::EndNotOnCircle { r_start, r_end } => (
+            format!("arc end point is not on the circle: radius {r_start:.4} at the start, {r_end:.4} at the end"),
+            "correct I/K (I is a radius value) or the end point",
+        ),
+    };
+    Diagnostic::new(span, "PS020", message, help)
 }
 
 #[cfg(test)]

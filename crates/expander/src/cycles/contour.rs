@@ -18,7 +18,7 @@
 //!   G41/G42 are read: G70 runs the shape compensated on that side; roughing ignores them.
 
 use super::Cycle;
-use crate::arc::{self, ArcError};
+use crate::arc;
 use crate::tnrc::Side;
 use crate::{Arc, Diagnostic, Pt, Span};
 use gcode::{Block, Word};
@@ -388,37 +388,8 @@ impl Reader {
         let from = self.pos;
         let arc = if self.mode >= 20 {
             let ccw = self.mode == 30;
-            let centre = match (r_word, i_word, k_word) {
-                (Some(r), None, None) => {
-                    arc::centre_from_radius(from, to, r.value * self.unit, ccw)
-                        .map_err(|e| arc_alarm(r.span, e))?
-                }
-                (None, None, None) => {
-                    return Err(Diagnostic::new(
-                        b.span,
-                        "LS-ARC",
-                        "G02/G03 without R or I/K",
-                        "give the radius R, or the centre offset I (radius) and K",
-                    ))
-                }
-                (Some(r), _, _) => {
-                    return Err(Diagnostic::new(
-                        r.span,
-                        "LS-ARC",
-                        "arc given both R and I/K",
-                        "give either R or I/K, not both",
-                    ))
-                }
-                (None, i, k) => {
-                    let c = Pt::new(
-                        from.z + k.map_or(0.0, |k| k.value * self.unit),
-                        from.r + i.map_or(0.0, |i| i.value * self.unit),
-                    );
-                    let span = i.or(k).map_or(b.span, |w| w.span);
-                    arc::check_centre(from, to, c).map_err(|e| arc_alarm(span, e))?;
-                    c
-                }
-            };
+            let centre =
+                arc::centre_from_words(from, to, ccw, r_word, i_word, k_word, self.unit, b.span)?;
             Some(Arc {
                 center: centre,
                 ccw,
@@ -440,27 +411,4 @@ impl Reader {
         self.pos = to;
         Ok(())
     }
-}
-
-/// The interpreter's arc alarms, at a word of the shape.
-fn arc_alarm(span: Span, e: ArcError) -> Diagnostic {
-    let (message, help) = match e {
-        ArcError::RadiusTooSmall { r, half_chord } => (
-            format!("arc radius R{r} is too small to reach the end point (at least {half_chord:.3} needed)"),
-            "R must be at least half the distance between start and end",
-        ),
-        ArcError::FullCircleWithR => (
-            "arc with R whose end point equals its start".to_string(),
-            "a full circle needs I/K, not R",
-        ),
-        ArcError::NonPositiveRadius => (
-            "arc radius must be positive".to_string(),
-            "give a positive R, or split the arc",
-        ),
-        ArcError::EndNotOnCircle { r_start, r_end } => (
-            format!("arc end point is not on the circle: radius {r_start:.4} at the start, {r_end:.4} at the end"),
-            "correct I/K (I is a radius value) or the end point",
-        ),
-    };
-    Diagnostic::new(span, "PS020", message, help)
 }

@@ -17,16 +17,13 @@
 //! - A cycle with no infeed travel (G75 without X/U or with U0; G74 without Z/W) cuts nothing
 //!   and is an alarm rather than a silent no-op.
 
-use super::{Cycle, Move, Output};
+use super::{Cycle, Move, Output, MAX_MOVES};
+use crate::codes::G74;
 use crate::{Diagnostic, Pt, ToolHint};
-
-/// The most moves one G74/G75 block may expand to; more is an alarm (a P1 Q1 typo over a
-/// long groove would otherwise make billions of moves).
-pub(crate) const MAX_MOVES: usize = 1_000_000;
 
 /// Expand one G74/G75 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
-    let g74 = c.code == 740;
+    let g74 = c.code == G74;
     let name = if g74 { "G74" } else { "G75" };
     let is_cycle_block = ['X', 'U', 'Z', 'W', 'P', 'Q']
         .iter()

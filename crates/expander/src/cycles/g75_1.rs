@@ -30,7 +30,7 @@ use super::{Cycle, Move, Output};
 use crate::{Arc, Diagnostic, IntendedKind, Motion, Pt, ToolHint};
 
 /// The most moves one G75.1 may expand to; more is an alarm.
-const MAX_MOVES: usize = super::g74_g75::MAX_MOVES;
+use super::MAX_MOVES;
 
 /// The geometry block's words, kept until the process block arrives.
 #[derive(Debug, Clone, PartialEq, Default)]

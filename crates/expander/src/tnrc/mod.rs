@@ -16,7 +16,10 @@
 //!   interference: an alarm at that block, and the path is still emitted as computed so
 //!   the report shows the overcut it would cause.
 
+mod section;
+
 use crate::{Arc, Diagnostic, Pt, Segment};
+pub(crate) use section::{Compensation, NoseTable};
 
 /// Which side of the contour the tool keeps, looking along the direction of travel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
