@@ -2,10 +2,12 @@
 //! leftovers (material that should be gone), each with its area, depth, position and the
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
-use crate::geom::{convex_hull, point_in_ring, point_segment, sweep_convex, P};
+use crate::geom::{convex_hull, pts, sweep_convex, P};
 use crate::overlay::BoolOp;
 use crate::{area, boolean, Outline, Shape, ToolTable};
 use expander::Segment;
+use geom::distance::point_segment;
+use geom::ring;
 
 /// What the part should be, and where that statement holds.
 #[derive(Debug, Clone, PartialEq)]
@@ -264,7 +266,7 @@ fn deepest(shape: &Shape, part: &[Shape]) -> (f64, [f64; 2]) {
             let c = ring.iter().fold([0.0, 0.0], |s, p| {
                 [s[0] + p[0] / n as f64, s[1] + p[1] / n as f64]
             });
-            if point_in_ring(c, ring) {
+            if ring::contains(&pts(ring), c.into()) {
                 samples.push(c);
             }
         }
@@ -285,7 +287,8 @@ pub(crate) fn boundary_distance(p: P, shapes: &[Shape]) -> f64 {
         for ring in std::iter::once(&s.outer).chain(&s.holes) {
             let n = ring.len();
             for i in 0..n {
-                best = best.min(point_segment(p, ring[i], ring[(i + 1) % n]).0);
+                best =
+                    best.min(point_segment(p.into(), ring[i].into(), ring[(i + 1) % n].into()).0);
             }
         }
     }

@@ -1,18 +1,20 @@
 //! Measures on shape sets: area, volume of revolution, symmetric difference, Hausdorff.
 
-use crate::geom::{first_moment_r, point_segment, signed_area2, Rect, P};
+use crate::geom::{pts, P};
 use crate::overlay::{boolean, BoolOp};
 use crate::Shape;
+use geom::distance::point_segment;
+use geom::{ring, Pt, Rect};
 
 /// Area in mm² of a shape set (outer areas minus hole areas, whatever the ring orientation).
 pub fn area(shapes: &[Shape]) -> f64 {
     shapes
         .iter()
         .map(|s| {
-            signed_area2(&s.outer).abs() / 2.0
+            ring::signed_area(&pts(&s.outer)).abs()
                 - s.holes
                     .iter()
-                    .map(|h| signed_area2(h).abs() / 2.0)
+                    .map(|h| ring::signed_area(&pts(h)).abs())
                     .sum::<f64>()
         })
         .sum()
@@ -21,10 +23,13 @@ pub fn area(shapes: &[Shape]) -> f64 {
 /// Volume in mm³ of the solid of revolution of a shape set about the Z axis (Pappus:
 /// 2π ∫ r dA). Shapes are expected at r ≥ 0.
 pub fn revolved_volume(shapes: &[Shape]) -> f64 {
-    let ring = |r: &Vec<P>| first_moment_r(r) * signed_area2(r).signum();
+    let moment = |r: &Vec<P>| {
+        let r = pts(r);
+        ring::first_moment_r(&r) * ring::signed_area(&r).signum()
+    };
     let m: f64 = shapes
         .iter()
-        .map(|s| ring(&s.outer) - s.holes.iter().map(ring).sum::<f64>())
+        .map(|s| moment(&s.outer) - s.holes.iter().map(moment).sum::<f64>())
         .sum();
     std::f64::consts::TAU * m
 }
@@ -102,9 +107,9 @@ struct SegIndex<'a> {
 
 impl<'a> SegIndex<'a> {
     fn new(segs: &'a [(P, P)]) -> Self {
-        let rect = Rect::of(segs.iter().flat_map(|(p, q)| [p, q]));
-        let w = (rect.max[0] - rect.min[0]).max(1e-9);
-        let hgt = (rect.max[1] - rect.min[1]).max(1e-9);
+        let rect = Rect::of(segs.iter().flat_map(|&(p, q)| [Pt::from(p), Pt::from(q)]));
+        let w = rect.width().max(1e-9);
+        let hgt = rect.height().max(1e-9);
         let n = (segs.len() as f64).max(1.0);
         let cell = ((w * hgt / n).sqrt()).max(w.max(hgt) / 4096.0).max(1e-9);
         let nx = ((w / cell).ceil() as i64).clamp(1, 4096);
@@ -113,12 +118,12 @@ impl<'a> SegIndex<'a> {
         for (k, (p, q)) in segs.iter().enumerate() {
             let c = |v: f64, o: f64, m: i64| (((v - o) / cell).floor() as i64).clamp(0, m - 1);
             let (x0, x1) = (
-                c(p[0].min(q[0]), rect.min[0], nx),
-                c(p[0].max(q[0]), rect.min[0], nx),
+                c(p[0].min(q[0]), rect.min.z, nx),
+                c(p[0].max(q[0]), rect.min.z, nx),
             );
             let (y0, y1) = (
-                c(p[1].min(q[1]), rect.min[1], ny),
-                c(p[1].max(q[1]), rect.min[1], ny),
+                c(p[1].min(q[1]), rect.min.r, ny),
+                c(p[1].max(q[1]), rect.min.r, ny),
             );
             for ix in x0..=x1 {
                 for iy in y0..=y1 {
@@ -128,7 +133,7 @@ impl<'a> SegIndex<'a> {
         }
         Self {
             segs,
-            origin: rect.min,
+            origin: rect.min.to_array(),
             cell,
             nx,
             ny,
@@ -158,7 +163,7 @@ impl<'a> SegIndex<'a> {
                 if ix >= 0 && ix < self.nx && iy >= 0 && iy < self.ny {
                     for &s in &self.cells[(ix * self.ny + iy) as usize] {
                         let (a, b) = self.segs[s as usize];
-                        best = best.min(point_segment(p, a, b).0);
+                        best = best.min(point_segment(p.into(), a.into(), b.into()).0);
                     }
                 }
             };

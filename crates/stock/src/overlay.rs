@@ -6,8 +6,9 @@
 //! boolean call works on exact integer points, and nothing is re-snapped between calls, so
 //! the stock cannot drift however many operations it goes through.
 
-use crate::geom::{Rect, P};
+use crate::geom::P;
 use crate::Shape;
+use geom::Rect;
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay::{Overlay, ShapeType};
 use i_overlay::core::overlay_rule::OverlayRule;
@@ -33,10 +34,10 @@ impl Grid {
     /// A grid covering `rect` (finite, non-empty) with the conservative 29-bit budget.
     pub(crate) fn new(rect: Rect) -> Self {
         let fr = FloatRect {
-            min_x: rect.min[0],
-            max_x: rect.max[0],
-            min_y: rect.min[1],
-            max_y: rect.max[1],
+            min_x: rect.min.z,
+            max_x: rect.max.z,
+            min_y: rect.min.r,
+            max_y: rect.max.r,
         };
         Self {
             adapter: FloatPointAdapter::new_conservative(fr),
@@ -52,11 +53,11 @@ impl Grid {
     /// Snaps a point (clamped into the grid's rectangle first, so it can never overflow).
     pub(crate) fn to_int(&self, p: P) -> IPt {
         let q = [
-            p[0].clamp(self.rect.min[0], self.rect.max[0]),
-            p[1].clamp(self.rect.min[1], self.rect.max[1]),
+            p[0].clamp(self.rect.min.z, self.rect.max.z),
+            p[1].clamp(self.rect.min.r, self.rect.max.r),
         ];
         let q = if q[0].is_nan() || q[1].is_nan() {
-            self.rect.min
+            self.rect.min.to_array()
         } else {
             q
         };

@@ -15,11 +15,13 @@
 //! the stock is exactly the stock after every earlier move) and intersects its sweep with
 //! it; the overlaps of all strips add up to the crash area.
 
-use crate::geom::{point_in_ring, point_segment, Rect, P};
+use crate::geom::{pts, P};
 use crate::overlay::{Engine, Grid, IPt, IShapes};
 use crate::sweep::{IBox, Item, SweepBuilder, Sweeps};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
 use expander::Segment;
+use geom::distance::point_segment;
+use geom::{ring, Pt, Rect};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
@@ -522,20 +524,21 @@ fn int_point_in_ring(p: IPt, ring: &[IPt]) -> bool {
 fn nearest(grid: &Grid, shapes: &IShapes, p: P) -> (f64, P) {
     let mut best = (f64::INFINITY, p);
     for s in shapes {
-        let rings: Vec<Vec<P>> = s
+        let rings: Vec<Vec<Pt>> = s
             .iter()
-            .map(|r| r.iter().map(|&q| grid.to_float(q)).collect())
+            .map(|r| r.iter().map(|&q| Pt::from(grid.to_float(q))).collect())
             .collect();
+        let at = Pt::from(p);
         if let Some((outer, holes)) = rings.split_first() {
-            if point_in_ring(p, outer) && !holes.iter().any(|h| point_in_ring(p, h)) {
+            if ring::contains(outer, at) && !holes.iter().any(|h| ring::contains(h, at)) {
                 return (0.0, p);
             }
         }
         for r in &rings {
             for k in 0..r.len() {
-                let (d, q) = point_segment(p, r[k], r[(k + 1) % r.len()]);
+                let (d, q) = point_segment(at, r[k], r[(k + 1) % r.len()]);
                 if d < best.0 {
-                    best = (d, q);
+                    best = (d, q.to_array());
                 }
             }
         }
@@ -571,7 +574,7 @@ pub fn simulate(
         })
         .cloned()
         .collect();
-    let bb = Rect::of(shapes.iter().flat_map(|s| s.outer.iter()));
+    let bb = Rect::of(shapes.iter().flat_map(|s| pts(&s.outer)));
     if shapes.len() != blank.shapes.len() {
         warnings.push((
             0,
@@ -598,10 +601,15 @@ pub fn simulate(
     let mut engine = Engine::new();
     let stock = grid.shapes_to_int(&shapes);
 
-    let (x0, x1) = (grid.to_int(clip.min).x, grid.to_int(clip.max).x);
-    let (y0, y1) = (grid.to_int(clip.min).y, grid.to_int(clip.max).y);
-    let n_strips =
-        (((clip.max[0] - clip.min[0]) / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
+    let (x0, x1) = (
+        grid.to_int(clip.min.into()).x,
+        grid.to_int(clip.max.into()).x,
+    );
+    let (y0, y1) = (
+        grid.to_int(clip.min.into()).y,
+        grid.to_int(clip.max.into()).y,
+    );
+    let n_strips = ((clip.width() / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
     let bounds: Vec<i32> = (0..=n_strips)
         .map(|k| {
             (i64::from(x0) + (i64::from(x1) - i64::from(x0)) * k as i64 / n_strips as i64) as i32
@@ -990,10 +998,7 @@ mod tests {
 
     /// Number of sweeps the builder makes of `segs` (with the defaults' chord tolerance).
     fn sweep_count(tools: &ToolTable, segs: &[Segment], merge_tol: f64) -> usize {
-        let bb = Rect {
-            min: [-200.0, -200.0],
-            max: [200.0, 200.0],
-        };
+        let bb = Rect::new(geom::Pt::new(-200.0, -200.0), geom::Pt::new(200.0, 200.0));
         let grid = Grid::new(bb.grown(1.0));
         let mut b = SweepBuilder::new(&grid, bb, tools, 0.001, merge_tol);
         for (i, s) in segs.iter().enumerate() {

@@ -37,11 +37,13 @@
 //! programmed point. An arc whose single chord is within `chord_tol − δ` of it joins such
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
-use crate::geom::{clip_convex, point_segment, sweep_convex, Rect, P};
+use crate::geom::{clip_convex, pts, sweep_convex, P};
 use crate::outline::Outline;
 use crate::overlay::{Grid, IPt};
 use crate::ToolTable;
 use expander::{Motion, Segment, ToolHint};
+use geom::distance::point_segment;
+use geom::Rect;
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -200,7 +202,7 @@ impl Run {
             .mid
             .iter()
             .chain(std::iter::once(&b))
-            .any(|&x| point_segment(x, a, q).0 > tol)
+            .any(|&x| point_segment(x.into(), a.into(), q.into()).0 > tol)
         {
             return false;
         }
@@ -444,19 +446,16 @@ impl<'a> SweepBuilder<'a> {
     }
 
     fn add_poly(&mut self, poly: &[P]) {
-        let quick = Rect::of(poly);
-        let inside = quick.min[0] >= self.clip.min[0]
-            && quick.min[1] >= self.clip.min[1]
-            && quick.max[0] <= self.clip.max[0]
-            && quick.max[1] <= self.clip.max[1];
+        let quick = Rect::of(pts(poly));
+        let inside = self.clip.contains(quick.min) && self.clip.contains(quick.max);
         let clipped;
         let poly = if inside {
             poly
         } else {
-            if quick.max[0] < self.clip.min[0]
-                || quick.min[0] > self.clip.max[0]
-                || quick.max[1] < self.clip.min[1]
-                || quick.min[1] > self.clip.max[1]
+            if quick.max.z < self.clip.min.z
+                || quick.min.z > self.clip.max.z
+                || quick.max.r < self.clip.min.r
+                || quick.min.r > self.clip.max.r
             {
                 return;
             }
