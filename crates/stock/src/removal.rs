@@ -16,8 +16,10 @@
 //! it; the overlaps of all strips add up to the crash area.
 
 use crate::geom::{pts, P};
-use crate::overlay::{Engine, Grid, IPt, IShapes};
-use crate::sweep::{IBox, Item, SweepBuilder, Sweeps};
+use crate::overlay::{
+    convex_contains, orient, point_in_ring, segments_meet, Engine, Grid, IBox, IPt, IShapes,
+};
+use crate::sweep::{Item, SweepBuilder, Sweeps};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
 use expander::Segment;
 use geom::distance::point_segment;
@@ -134,19 +136,6 @@ fn bbox_of(shapes: &IShapes) -> IBox {
     b
 }
 
-/// True when every point of `inner` is inside or on the convex counter-clockwise `outer`.
-fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
-    let n = outer.len();
-    n >= 3
-        && (0..n).all(|i| {
-            let (a, b) = (outer[i], outer[(i + 1) % n]);
-            let (ex, ey) = (i64::from(b.x - a.x), i64::from(b.y - a.y));
-            inner
-                .iter()
-                .all(|p| ex * i64::from(p.y - a.y) - ey * i64::from(p.x - a.x) >= 0)
-        })
-}
-
 /// Polygons trimmed to a box (see [`trim_to_box`]), stored flat.
 #[derive(Default)]
 struct Trimmed {
@@ -182,12 +171,7 @@ impl Trimmed {
 /// orientation tests, valid for any ring (a grid-snapped hull may be slightly non-convex).
 /// Nothing is appended when fewer than three vertices are left (no area inside `b`).
 fn trim_to_box(poly: &[IPt], b: &IBox, out: &mut Vec<IPt>) {
-    let corners = [
-        IPt::new(b.min[0], b.min[1]),
-        IPt::new(b.max[0], b.min[1]),
-        IPt::new(b.max[0], b.max[1]),
-        IPt::new(b.min[0], b.max[1]),
-    ];
+    let corners = b.corners();
     let removable = |a: IPt, k: IPt, c: IPt| {
         orient(a, c, k) < 0 && corners.iter().all(|&q| orient(a, c, q) >= 0)
     };
@@ -356,12 +340,7 @@ impl Tile {
             ]
         };
         let child = |b: IBox, engine: &mut Engine| {
-            let ring = [
-                IPt::new(b.min[0], b.min[1]),
-                IPt::new(b.max[0], b.min[1]),
-                IPt::new(b.max[0], b.max[1]),
-                IPt::new(b.min[0], b.max[1]),
-            ];
+            let ring = b.corners();
             Node::Leaf(Self::new(b, engine.intersection(&self.stock, [&ring[..]])))
         };
         let a = child(halves[0], engine);
@@ -434,12 +413,7 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
         return false;
     }
     // separating axis: an edge of the convex polygon with the whole box outside it
-    let corners = [
-        IPt::new(shapes_box.min[0], shapes_box.min[1]),
-        IPt::new(shapes_box.max[0], shapes_box.min[1]),
-        IPt::new(shapes_box.max[0], shapes_box.max[1]),
-        IPt::new(shapes_box.min[0], shapes_box.max[1]),
-    ];
+    let corners = shapes_box.corners();
     if (0..n).any(|i| {
         corners
             .iter()
@@ -452,10 +426,7 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
             let m = ring.len();
             for k in 0..m {
                 let (a, b) = (ring[k], ring[(k + 1) % m]);
-                let eb = IBox {
-                    min: [a.x.min(b.x), a.y.min(b.y)],
-                    max: [a.x.max(b.x), a.y.max(b.y)],
-                };
+                let eb = IBox::of_segment(a, b);
                 if !eb.overlaps(&pb) {
                     continue;
                 }
@@ -469,55 +440,12 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
         }
         // the polygon may lie wholly inside the shape
         if let (Some(outer), Some(&p)) = (s.first(), poly.first()) {
-            if int_point_in_ring(p, outer) && !s[1..].iter().any(|h| int_point_in_ring(p, h)) {
+            if point_in_ring(p, outer) && !s[1..].iter().any(|h| point_in_ring(p, h)) {
                 return true;
             }
         }
     }
     false
-}
-
-fn orient(a: IPt, b: IPt, c: IPt) -> i64 {
-    let v =
-        i64::from(b.x - a.x) * i64::from(c.y - a.y) - i64::from(b.y - a.y) * i64::from(c.x - a.x);
-    v.signum()
-}
-
-/// Closed segments [a, b] and [c, d] share a point.
-fn segments_meet(a: IPt, b: IPt, c: IPt, d: IPt) -> bool {
-    let (o1, o2, o3, o4) = (
-        orient(a, b, c),
-        orient(a, b, d),
-        orient(c, d, a),
-        orient(c, d, b),
-    );
-    if o1 * o2 < 0 && o3 * o4 < 0 {
-        return true;
-    }
-    let on = |p: IPt, q: IPt, r: IPt| {
-        r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
-    };
-    (o1 == 0 && on(a, b, c))
-        || (o2 == 0 && on(a, b, d))
-        || (o3 == 0 && on(c, d, a))
-        || (o4 == 0 && on(c, d, b))
-}
-
-fn int_point_in_ring(p: IPt, ring: &[IPt]) -> bool {
-    let n = ring.len();
-    let mut inside = false;
-    for i in 0..n {
-        let (a, b) = (ring[i], ring[(i + 1) % n]);
-        if (a.y > p.y) != (b.y > p.y) {
-            // x of the crossing, compared without division
-            let lhs = i128::from(p.x - a.x) * i128::from(b.y - a.y);
-            let rhs = i128::from(p.y - a.y) * i128::from(b.x - a.x);
-            if (b.y > a.y && lhs < rhs) || (b.y < a.y && lhs > rhs) {
-                inside = !inside;
-            }
-        }
-    }
-    inside
 }
 
 /// Point of `shapes` nearest to `p` (p itself when inside) and its distance.
@@ -601,14 +529,10 @@ pub fn simulate(
     let mut engine = Engine::new();
     let stock = grid.shapes_to_int(&shapes);
 
-    let (x0, x1) = (
-        grid.to_int(clip.min.into()).x,
-        grid.to_int(clip.max.into()).x,
-    );
-    let (y0, y1) = (
-        grid.to_int(clip.min.into()).y,
-        grid.to_int(clip.max.into()).y,
-    );
+    let IBox {
+        min: [x0, y0],
+        max: [x1, y1],
+    } = grid.box_to_int(&clip);
     let n_strips = ((clip.width() / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
     let bounds: Vec<i32> = (0..=n_strips)
         .map(|k| {
@@ -618,20 +542,12 @@ pub fn simulate(
     let strips: Vec<Mutex<Node>> = (0..n_strips)
         .map(|k| {
             let (a, b) = (bounds[k], bounds[k + 1]);
-            let rect = [
-                IPt::new(a, y0),
-                IPt::new(b, y0),
-                IPt::new(b, y1),
-                IPt::new(a, y1),
-            ];
-            let part = engine.intersection(&stock, [&rect[..]]);
-            Mutex::new(Node::Leaf(Tile::new(
-                IBox {
-                    min: [a, y0],
-                    max: [b, y1],
-                },
-                part,
-            )))
+            let tile = IBox {
+                min: [a, y0],
+                max: [b, y1],
+            };
+            let part = engine.intersection(&stock, [&tile.corners()[..]]);
+            Mutex::new(Node::Leaf(Tile::new(tile, part)))
         })
         .collect();
     let ctx = Ctx {

@@ -39,7 +39,7 @@
 
 use crate::geom::{clip_convex, pts, sweep_convex, P};
 use crate::outline::Outline;
-use crate::overlay::{Grid, IPt};
+use crate::overlay::{ring_perimeter, Grid, IBox, IPt};
 use crate::ToolTable;
 use expander::{Motion, Segment, ToolHint};
 use geom::distance::point_segment;
@@ -54,35 +54,6 @@ const COLLINEAR_TOL: f64 = 1e-9;
 /// Most programmed points one merged run of nearly collinear feeds may hold (each new move
 /// re-checks them all, so this bounds the work per move).
 const MAX_CHAIN: usize = 256;
-
-/// An integer bounding box.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct IBox {
-    pub(crate) min: [i32; 2],
-    pub(crate) max: [i32; 2],
-}
-
-impl IBox {
-    /// Contains nothing.
-    pub(crate) const EMPTY: Self = Self {
-        min: [i32::MAX; 2],
-        max: [i32::MIN; 2],
-    };
-
-    /// Grows the box to contain `p`.
-    pub(crate) fn add(&mut self, p: IPt) {
-        self.min = [self.min[0].min(p.x), self.min[1].min(p.y)];
-        self.max = [self.max[0].max(p.x), self.max[1].max(p.y)];
-    }
-
-    /// True when the boxes share at least a point.
-    pub(crate) fn overlaps(&self, o: &Self) -> bool {
-        self.min[0] <= o.max[0]
-            && o.min[0] <= self.max[0]
-            && self.min[1] <= o.max[1]
-            && o.min[1] <= self.max[1]
-    }
-}
 
 /// One unit of removal: the sweep of one move (or of a merged run of collinear feeds).
 #[derive(Debug, Clone)]
@@ -480,11 +451,10 @@ impl<'a> SweepBuilder<'a> {
         let mut perimeter = 0.0;
         for r in &self.out.polys[first as usize..last as usize] {
             let ring = &self.out.pts[r.start as usize..r.end as usize];
-            for (k, &p) in ring.iter().enumerate() {
+            for &p in ring {
                 bbox.add(p);
-                let q = ring[(k + 1) % ring.len()];
-                perimeter += f64::from(q.x - p.x).hypot(f64::from(q.y - p.y));
             }
+            perimeter += ring_perimeter(ring);
         }
         perimeter *= self.grid.step();
         // rounding to the grid can open slivers of at most a grid step along any edge
