@@ -170,7 +170,10 @@ fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
         &blank,
         &tools,
         segments,
-        &stock::SimOptions::default(),
+        &stock::SimOptions {
+            snapshot_after: crate::report::snapshot_marks(segments.len()),
+            ..stock::SimOptions::default()
+        },
         &mut tick,
     );
     if let Some(b) = &bar {
@@ -201,7 +204,7 @@ fn run_one(args: &RunArgs, path: &Path, batch: bool) -> u8 {
     });
     let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
     crate::report::add_deviation(&mut report, &loaded, &blank, &intents, deviation.as_ref());
-    report.snapshots = crate::report::snapshots(&blank, &tools, segments, &sim);
+    report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
 
     let mut inputs = vec![path.to_path_buf()];
     inputs.extend(args.tools.clone());

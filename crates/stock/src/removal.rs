@@ -19,6 +19,7 @@ use crate::geom::{pts, P};
 use crate::overlay::{
     convex_contains, orient, point_in_ring, segments_meet, Engine, Grid, IBox, IPt, IShapes,
 };
+use crate::snapshot::Snapshots;
 use crate::sweep::{Item, SweepBuilder, Sweeps};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
 use expander::Segment;
@@ -50,7 +51,7 @@ const MIN_TILE: f64 = 0.01;
 const EPOCH: usize = 32_768;
 
 /// Options of a removal run.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SimOptions {
     /// Chord tolerance for arcs, mm (default 0.001).
     pub chord_tol: f64,
@@ -61,6 +62,10 @@ pub struct SimOptions {
     /// most this much wherever it was cut (see the `sweep` module). Arcs take part with
     /// their chord when it lies within `chord_tol − merge_tol` of them.
     pub merge_tol: f64,
+    /// Move counts after which the stock is wanted (see [`Simulation::snapshots`]), taken
+    /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
+    /// the blank and [`Simulation::final_shapes`].
+    pub snapshot_after: Vec<usize>,
 }
 
 impl Default for SimOptions {
@@ -68,6 +73,7 @@ impl Default for SimOptions {
         Self {
             chord_tol: 0.001,
             merge_tol: 0.0005,
+            snapshot_after: Vec::new(),
         }
     }
 }
@@ -96,6 +102,10 @@ pub struct Simulation {
     pub removed_volume: f64,
     /// (first segment index, message): skipped moves, defaulted tools.
     pub warnings: Vec<(usize, String)>,
+    /// (move count k, the stock after the first k moves) for each count asked for in
+    /// [`SimOptions::snapshot_after`], ascending. A merged chain of feeds still open at k
+    /// is cut up to its last move so far; the run itself goes on unchanged.
+    pub snapshots: Vec<(usize, Vec<Shape>)>,
 }
 
 /// A rectangle of the stock with its own small polygon set.
@@ -518,6 +528,7 @@ pub fn simulate(
             removed_area: 0.0,
             removed_volume: 0.0,
             warnings,
+            snapshots: Vec::new(),
         };
     }
 
@@ -564,11 +575,13 @@ pub fn simulate(
     };
     let mut builder = SweepBuilder::new(&grid, clip, tools, tol, merge_tol);
     let mut fragments: Vec<Fragment> = Vec::new();
+    let mut snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), &stock);
     let mut done = 0;
     while done < segments.len() || done == 0 {
         let end = (done + EPOCH).min(segments.len());
         for (k, seg) in segments[done..end].iter().enumerate() {
             builder.push(done + k, seg);
+            snapshots.after_push(done + k + 1, &mut builder);
         }
         if end == segments.len() {
             builder.flush_run();
@@ -621,6 +634,7 @@ pub fn simulate(
             })
         };
         fragments.append(&mut new_frags);
+        snapshots.epoch(&sweeps, &mut engine);
         done = end;
         progress(done);
         if segments.is_empty() {
@@ -646,6 +660,11 @@ pub fn simulate(
         removed_area,
         removed_volume,
         warnings,
+        snapshots: snapshots
+            .out
+            .iter()
+            .map(|(k, s)| (*k, grid.shapes_to_float(s)))
+            .collect(),
     }
 }
 
@@ -963,6 +982,37 @@ mod tests {
         assert!(h > 0.0, "the merged result is an approximation");
         // the default merges
         assert_eq!(SimOptions::default().merge_tol, 0.0005);
+    }
+
+    #[test]
+    fn snapshots_in_the_one_pass_match_the_prefix_runs() {
+        let blank = Blank::bar(50.0, 40.0, 0.0, None).unwrap();
+        // a chain of tiny feeds (merged across the snapshot counts) between two plain cuts
+        let pts: Vec<[f64; 2]> = (0..400)
+            .map(|k| [-2.0 - 0.02 * k as f64, 22.0 - 0.001 * k as f64])
+            .collect();
+        let mut segs = vec![
+            seg(Motion::Rapid, [10.0, 30.0], [2.0, 23.0]),
+            seg(Motion::Feed, [2.0, 23.0], [-30.0, 23.0]),
+            seg(Motion::Rapid, [-30.0, 30.0], [pts[0][0], 30.0]),
+            seg(Motion::Feed, [pts[0][0], 30.0], pts[0]),
+        ];
+        segs.extend(pts.windows(2).map(|w| seg(Motion::Feed, w[0], w[1])));
+        segs.push(seg(Motion::Feed, pts[399], [pts[399][0], 30.0]));
+        let marks = vec![1, 2, 100, 250, segs.len(), 0, 100];
+        let opts = SimOptions {
+            snapshot_after: marks,
+            ..SimOptions::default()
+        };
+        let sim = simulate(&blank, &v35(), &segs, &opts, &mut |_| {});
+        let counts: Vec<usize> = sim.snapshots.iter().map(|s| s.0).collect();
+        assert_eq!(counts, [1, 2, 100, 250]);
+        for (k, shapes) in &sim.snapshots {
+            let prefix = run(&blank, &v35(), &segs[..*k]);
+            let h = hausdorff(shapes, &prefix.final_shapes);
+            assert!(h <= 0.0005, "after {k} moves: hausdorff {h}");
+        }
+        assert_eq!(sim.final_shapes, run(&blank, &v35(), &segs).final_shapes);
     }
 
     #[test]

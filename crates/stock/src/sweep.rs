@@ -93,6 +93,7 @@ impl Sweeps {
 /// A run of merged feeds swept as the one segment a -> b: either exact (collinear feeds,
 /// `mid` empty) or a chain of nearly collinear feeds whose programmed points `mid` lie
 /// within the merge tolerance of `[a, b]` (see the module documentation).
+#[derive(Clone)]
 struct Run {
     tool: u32,
     hint: ToolHint,
@@ -383,6 +384,23 @@ impl<'a> SweepBuilder<'a> {
             let outline = self.outline(run.tool, run.hint, run.last);
             self.emit_path(run.last, false, &outline, &[run.a, run.b]);
         }
+    }
+
+    /// Number of sweeps emitted since the last [`SweepBuilder::take`].
+    pub(crate) fn emitted(&self) -> usize {
+        self.out.items.len()
+    }
+
+    /// The sweep of the current merged run as [`SweepBuilder::flush_run`] would emit it,
+    /// without ending the run (for snapshots part-way through).
+    pub(crate) fn peek_run(&mut self) -> Sweeps {
+        let Some(run) = self.run.clone() else {
+            return Sweeps::default();
+        };
+        let done = std::mem::take(&mut self.out);
+        self.flush_run();
+        self.run = Some(run);
+        std::mem::replace(&mut self.out, done)
     }
 
     fn emit_path(&mut self, idx: usize, rapid: bool, outline: &Outline, path: &[P]) {
