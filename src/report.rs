@@ -219,37 +219,41 @@ const SNAPSHOT_MAX_MOVES: usize = 5_000;
 /// How many snapshots (besides the blank and the final part).
 const SNAPSHOTS: usize = 30;
 
-/// The stock part-way through the run, for the HTML report's move slider: re-simulating
-/// prefixes of the program costs about `SNAPSHOTS / 2` runs, so only small programs get them.
-pub(crate) fn snapshots(
-    blank: &stock::Blank,
-    tools: &stock::ToolTable,
-    segments: &[expander::Segment],
-    sim: &stock::Simulation,
-) -> Vec<render::Snapshot> {
-    let n = segments.len();
-    if n == 0 || n > SNAPSHOT_MAX_MOVES {
+/// Move counts after which the simulation keeps the stock for the HTML report's move
+/// slider (taken in the simulation's one pass; each costs a union of the stock tiles, so
+/// only programs up to [`SNAPSHOT_MAX_MOVES`] moves get them).
+pub(crate) fn snapshot_marks(moves: usize) -> Vec<usize> {
+    if moves == 0 || moves > SNAPSHOT_MAX_MOVES {
         return vec![];
     }
     let mut marks: Vec<usize> = (1..SNAPSHOTS)
-        .map(|i| i * n / SNAPSHOTS)
-        .filter(|&k| k > 0 && k < n)
+        .map(|i| i * moves / SNAPSHOTS)
+        .filter(|&k| k > 0 && k < moves)
         .collect();
     marks.dedup();
-    let opts = stock::SimOptions::default();
+    marks
+}
+
+/// The stock part-way through the run for the HTML report: the blank, the snapshots the
+/// simulation took at [`snapshot_marks`], and the final part.
+pub(crate) fn snapshots(
+    blank: &stock::Blank,
+    moves: usize,
+    sim: &stock::Simulation,
+) -> Vec<render::Snapshot> {
+    if moves == 0 || moves > SNAPSHOT_MAX_MOVES {
+        return vec![];
+    }
     let mut out = vec![render::Snapshot {
         after_move: 0,
         shapes: blank.shapes.iter().map(shape).collect(),
     }];
-    for k in marks {
-        let part = stock::simulate(blank, tools, &segments[..k], &opts, &mut |_| {});
-        out.push(render::Snapshot {
-            after_move: k,
-            shapes: part.final_shapes.iter().map(shape).collect(),
-        });
-    }
+    out.extend(sim.snapshots.iter().map(|(k, shapes)| render::Snapshot {
+        after_move: *k,
+        shapes: shapes.iter().map(shape).collect(),
+    }));
     out.push(render::Snapshot {
-        after_move: n,
+        after_move: moves,
         shapes: sim.final_shapes.iter().map(shape).collect(),
     });
     out

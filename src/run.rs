@@ -233,7 +233,10 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         &blank,
         &tools,
         segments,
-        &stock::SimOptions::default(),
+        &stock::SimOptions {
+            snapshot_after: crate::report::snapshot_marks(segments.len()),
+            ..stock::SimOptions::default()
+        },
         &mut tick,
     );
     if let Some(b) = &bar {
@@ -260,7 +263,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     });
     let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
     crate::report::add_deviation(&mut report, &loaded, &blank, &intents, deviation.as_ref());
-    report.snapshots = crate::report::snapshots(&blank, &tools, segments, &sim);
+    report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
 
     // Render every report first, then write them all to disk, then make them visible:
     // a failure anywhere leaves the previous reports as they were.

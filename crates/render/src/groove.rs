@@ -3,6 +3,8 @@
 
 use crate::report::Shape;
 use crate::scale::Bbox;
+use geom::distance::point_segment;
+use geom::{ring, Pt};
 
 /// A ring vertex is a principal corner when the outline turns there by more than this.
 const CORNER_TURN_DEG: f64 = 20.0;
@@ -83,36 +85,14 @@ fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
-/// Distance from `p` to the segment `a`–`b`.
-fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    dist(p, [a[0] + t * dx, a[1] + t * dy])
+/// Whether `p` lies inside the shapes (even-odd over all rings, each ring's test the
+/// `geom` kernel's).
+fn inside(rings: &[Vec<Pt>], p: [f64; 2]) -> bool {
+    rings.iter().filter(|r| ring::contains(r, p.into())).count() % 2 == 1
 }
 
-/// Whether `p` lies inside the shapes (even-odd over all rings).
-fn inside(shapes: &[Shape], p: [f64; 2]) -> bool {
-    let mut c = false;
-    for s in shapes {
-        for ring in std::iter::once(&s.outer).chain(s.holes.iter()) {
-            let n = ring.len();
-            for i in 0..n {
-                let (a, b) = (ring[i], ring[(i + 1) % n]);
-                if (a[1] > p[1]) != (b[1] > p[1]) {
-                    let z = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-                    if p[0] < z {
-                        c = !c;
-                    }
-                }
-            }
-        }
-    }
-    c
+fn pts(ring: &[[f64; 2]]) -> Vec<Pt> {
+    ring.iter().map(|&p| Pt::from(p)).collect()
 }
 
 /// The largest distance between the groove ring and the final part's boundary, in mm;
@@ -162,13 +142,16 @@ pub(crate) fn deviation(ring: &[[f64; 2]], part: &[Shape]) -> Option<f64> {
     let step = (size / 200.0).max(perimeter / MAX_SAMPLES as f64).max(1e-9);
     // Outward = away from the ring's inside: right of the direction for a
     // counter-clockwise ring, left for a clockwise one.
-    let area2: f64 = (0..n)
-        .map(|i| {
-            let (p, q) = (ring[i], ring[(i + 1) % n]);
-            p[0] * q[1] - q[0] * p[1]
-        })
-        .sum();
-    let sign = if area2 >= 0.0 { 1.0 } else { -1.0 };
+    let sign = if ring::signed_area(&pts(ring)) >= 0.0 {
+        1.0
+    } else {
+        -1.0
+    };
+    let part_rings: Vec<Vec<Pt>> = part
+        .iter()
+        .flat_map(|s| std::iter::once(&s.outer).chain(s.holes.iter()))
+        .map(|r| pts(r))
+        .collect();
     let probe = 0.25 * b.w().min(b.h()).max(1e-3);
     let mut worst: Option<f64> = None;
     for i in 0..n {
@@ -182,12 +165,15 @@ pub(crate) fn deviation(ring: &[[f64; 2]], part: &[Shape]) -> Option<f64> {
         for j in 0..=k {
             let t = j as f64 / k as f64;
             let p = [a[0] + t * (c[0] - a[0]), a[1] + t * (c[1] - a[1])];
-            if !inside(part, [p[0] + probe * normal[0], p[1] + probe * normal[1]]) {
+            if !inside(
+                &part_rings,
+                [p[0] + probe * normal[0], p[1] + probe * normal[1]],
+            ) {
                 continue;
             }
             let d = edges
                 .iter()
-                .map(|(e0, e1)| seg_dist(p, *e0, *e1))
+                .map(|(e0, e1)| point_segment(p.into(), (*e0).into(), (*e1).into()).0)
                 .fold(f64::INFINITY, f64::min);
             if d.is_finite() {
                 worst = Some(worst.map_or(d, |w: f64| w.max(d)));

@@ -5,6 +5,8 @@
 
 use crate::report::{Report, Shape};
 use crate::scale::Bbox;
+use geom::distance::point_segment;
+use geom::{ring, Pt};
 
 /// Cap on point-to-segment distance evaluations per leftover (points are sampled with a
 /// stride above it), so a finely chorded profile stays fast.
@@ -23,18 +25,10 @@ pub(crate) struct Spot {
     pub(crate) measure: Option<[[f64; 2]; 2]>,
 }
 
-/// Area of a ring (absolute, shoelace); 0 for rings with non-finite points.
+/// Area of a ring (absolute, the `geom` kernel's); 0 for rings with non-finite points.
 fn ring_area(ring: &[[f64; 2]]) -> f64 {
-    let n = ring.len();
-    if n < 3 {
-        return 0.0;
-    }
-    let mut a = 0.0;
-    for i in 0..n {
-        let (p, q) = (ring[i], ring[(i + 1) % n]);
-        a += p[0] * q[1] - q[0] * p[1];
-    }
-    let a = (a / 2.0).abs();
+    let pts: Vec<Pt> = ring.iter().map(|&p| Pt::from(p)).collect();
+    let a = ring::signed_area(&pts).abs();
     if a.is_finite() {
         a
     } else {
@@ -57,20 +51,6 @@ pub(crate) fn largest(report: &Report) -> Option<&Shape> {
         .filter(|(_, a)| *a > 0.0)
         .max_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(s, _)| s)
-}
-
-/// Nearest point to `p` on segment `a`–`b`, and the squared distance.
-fn nearest_on_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> ([f64; 2], f64) {
-    let (dz, dr) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dz * dz + dr * dr;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dz + (p[1] - a[1]) * dr) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let q = [a[0] + t * dz, a[1] + t * dr];
-    let (ez, er) = (p[0] - q[0], p[1] - q[1]);
-    (q, ez * ez + er * er)
 }
 
 fn finite(p: &[f64; 2]) -> bool {
@@ -134,18 +114,18 @@ pub(crate) fn thickest(leftover: &Shape, intended: &[Shape]) -> Option<Spot> {
     let stride = (pts.len() * segs.len()).div_ceil(MAX_EVALS).max(1);
     let mut best: Option<([f64; 2], [f64; 2], f64)> = None;
     for &p in pts.iter().step_by(stride) {
-        let (q, d2) = segs
+        let (d, q) = segs
             .iter()
-            .map(|&(a, b)| nearest_on_segment(p, a, b))
-            .min_by(|a, b| a.1.total_cmp(&b.1))?;
-        if d2.is_finite() && best.is_none_or(|b| d2 > b.2) {
-            best = Some((p, q, d2));
+            .map(|&(a, b)| point_segment(p.into(), a.into(), b.into()))
+            .min_by(|a, b| a.0.total_cmp(&b.0))?;
+        if d.is_finite() && best.is_none_or(|b| d > b.2) {
+            best = Some((p, q.to_array(), d));
         }
     }
-    let (p, q, d2) = best?;
+    let (p, q, d) = best?;
     Some(Spot {
         centre: [(p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0],
-        thickness: Some(d2.sqrt()),
+        thickness: Some(d),
         measure: Some([p, q]),
     })
 }

@@ -101,13 +101,13 @@ impl Blank {
     /// [`profile_from_toml`]: crate::profile_from_toml
     pub fn from_profile_toml(text: &str, chord_tol: f64) -> Result<Self, StockError> {
         let shapes = profile::profile_from_toml(text, chord_tol)?;
-        let r = crate::geom::Rect::of(shapes.iter().flat_map(|s| s.outer.iter()));
+        let r = geom::Rect::of(shapes.iter().flat_map(|s| crate::geom::pts(&s.outer)));
         Ok(Self {
             description: format!(
                 "profile Z{}..Z{}, up to Ø{}",
-                fmt_num(r.min[0]),
-                fmt_num(r.max[0]),
-                fmt_num(2.0 * r.max[1])
+                fmt_num(r.min.z),
+                fmt_num(r.max.z),
+                fmt_num(2.0 * r.max.r)
             ),
             shapes,
         })

@@ -2,10 +2,12 @@
 //! leftovers (material that should be gone), each with its area, depth, position and the
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
-use crate::geom::{convex_hull, point_in_ring, point_segment, sweep_convex, P};
+use crate::geom::{convex_hull, pts, sweep_convex, P};
 use crate::overlay::BoolOp;
 use crate::{area, boolean, Outline, Shape, ToolTable};
 use expander::Segment;
+use geom::distance::EdgeIndex;
+use geom::{ring, Rect};
 
 /// What the part should be, and where that statement holds.
 #[derive(Debug, Clone, PartialEq)]
@@ -234,6 +236,14 @@ pub fn deviation(
 /// boolean noise along a shared edge, not a finding, however far it reaches: a mutated
 /// blank profile made 77 580 such "gouges" of 0.0000 mm².
 fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
+    let boundary = EdgeIndex::of_rings(
+        part.iter()
+            .flat_map(|s| std::iter::once(&s.outer).chain(&s.holes))
+            .map(|r| pts(r))
+            .collect::<Vec<_>>()
+            .iter()
+            .map(Vec::as_slice),
+    );
     region
         .into_iter()
         .filter_map(|shape| {
@@ -241,7 +251,7 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
             if 2.0 * a < 0.1 * tol * perimeter(&shape) {
                 return None;
             }
-            let (depth, at) = deepest(&shape, part);
+            let (depth, at) = deepest(&shape, &boundary);
             (depth > tol && a > 0.0).then_some(Finding {
                 shape,
                 area: a,
@@ -271,8 +281,9 @@ fn perimeter(shape: &Shape) -> f64 {
 
 /// The point of `shape` farthest from the boundary of `part`, sampled at the vertices, the
 /// edge midpoints and the centroid of each ring (enough for the thin regions gouges and
-/// leftovers are; a thick region is reported at least as deep as its samples).
-fn deepest(shape: &Shape, part: &[Shape]) -> (f64, [f64; 2]) {
+/// leftovers are; a thick region is reported at least as deep as its samples). Distances
+/// to the boundary come from parry2d-f64's edge tree (infinite without a boundary).
+fn deepest(shape: &Shape, boundary: &EdgeIndex) -> (f64, [f64; 2]) {
     let mut best = (0.0, shape.outer.first().copied().unwrap_or([0.0, 0.0]));
     for ring in std::iter::once(&shape.outer).chain(&shape.holes) {
         let n = ring.len();
@@ -286,12 +297,12 @@ fn deepest(shape: &Shape, part: &[Shape]) -> (f64, [f64; 2]) {
             let c = ring.iter().fold([0.0, 0.0], |s, p| {
                 [s[0] + p[0] / n as f64, s[1] + p[1] / n as f64]
             });
-            if point_in_ring(c, ring) {
+            if ring::contains(&pts(ring), c.into()) {
                 samples.push(c);
             }
         }
         for p in samples {
-            let d = boundary_distance(p, part);
+            let d = boundary.nearest(p.into()).map_or(f64::INFINITY, |(d, _)| d);
             if d > best.0 {
                 best = (d, p);
             }
@@ -300,23 +311,9 @@ fn deepest(shape: &Shape, part: &[Shape]) -> (f64, [f64; 2]) {
     best
 }
 
-/// Distance from `p` to the nearest edge of any ring of `shapes`.
-pub(crate) fn boundary_distance(p: P, shapes: &[Shape]) -> f64 {
-    let mut best = f64::INFINITY;
-    for s in shapes {
-        for ring in std::iter::once(&s.outer).chain(&s.holes) {
-            let n = ring.len();
-            for i in 0..n {
-                best = best.min(point_segment(p, ring[i], ring[(i + 1) % n]).0);
-            }
-        }
-    }
-    best
-}
-
 /// Indices of the segments whose tool sweep overlaps `region` by more than a sliver.
 fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: f64) -> Vec<usize> {
-    let bb = bbox(&region.outer);
+    let bb = Rect::of(pts(&region.outer));
     let mut out = vec![];
     let mut cache: Vec<((u32, u8, u64), Outline)> = vec![];
     for (i, seg) in segments.iter().enumerate() {
@@ -328,10 +325,10 @@ fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: 
         let (sr0, sr1) = (seg.from.r.min(seg.to.r), seg.from.r.max(seg.to.r));
         // arcs may bulge beyond their end points by up to their radius
         let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
-        if sz1 + hi[0] + bulge < bb.0[0]
-            || sz0 + lo[0] - bulge > bb.1[0]
-            || sr1 + hi[1] + bulge < bb.0[1]
-            || sr0 + lo[1] - bulge > bb.1[1]
+        if sz1 + hi[0] + bulge < bb.min.z
+            || sz0 + lo[0] - bulge > bb.max.z
+            || sr1 + hi[1] + bulge < bb.min.r
+            || sr0 + lo[1] - bulge > bb.max.r
         {
             continue;
         }
@@ -367,16 +364,10 @@ fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: 
     out
 }
 
+/// Box of a ring as (least, greatest) corner.
 fn bbox(ring: &[P]) -> (P, P) {
-    ring.iter().fold(
-        ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
-        |(lo, hi), p| {
-            (
-                [lo[0].min(p[0]), lo[1].min(p[1])],
-                [hi[0].max(p[0]), hi[1].max(p[1])],
-            )
-        },
-    )
+    let r = Rect::of(pts(ring));
+    (r.min.into(), r.max.into())
 }
 
 /// The outline that cuts `seg`, as the removal resolves it (tool number and hint).

@@ -1,66 +1,27 @@
-//! Small plane-geometry helpers on `[f64; 2]` points (z, r).
+//! The removal's own plane geometry on `[f64; 2]` points (z, r): convex parts, sweeps of a
+//! convex polygon, clipping to a box. Area, hulls, containment, distances and boxes come
+//! from the `geom` kernel.
+
+use geom::{orient, ring, Pt, Rect};
 
 /// A point (z, r) in mm.
 pub(crate) type P = [f64; 2];
 
-/// Twice the signed area of a ring (positive when counter-clockwise).
-pub(crate) fn signed_area2(ring: &[P]) -> f64 {
-    let n = ring.len();
-    let mut s = 0.0;
-    for i in 0..n {
-        let a = ring[i];
-        let b = ring[(i + 1) % n];
-        s += a[0] * b[1] - b[0] * a[1];
-    }
-    s
+/// Points as kernel points.
+pub(crate) fn pts(ring: &[P]) -> Vec<Pt> {
+    ring.iter().map(|&p| Pt::from(p)).collect()
 }
 
-/// ∫ r dA over a ring (signed like [`signed_area2`]); 2π times it is the volume of revolution.
-pub(crate) fn first_moment_r(ring: &[P]) -> f64 {
-    let n = ring.len();
-    let mut s = 0.0;
-    for i in 0..n {
-        let a = ring[i];
-        let b = ring[(i + 1) % n];
-        s += (a[0] * b[1] - b[0] * a[1]) * (a[1] + b[1]);
-    }
-    s / 6.0
+/// Convex hull through the kernel ([`geom::ring::convex_hull`]), on `[f64; 2]` points.
+pub(crate) fn convex_hull(points: &[P]) -> Vec<P> {
+    ring::convex_hull(&pts(points))
+        .into_iter()
+        .map(Pt::to_array)
+        .collect()
 }
 
 fn cross(o: P, a: P, b: P) -> f64 {
-    (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-}
-
-/// Convex hull, counter-clockwise, without collinear points (Andrew's monotone chain).
-/// Non-finite points are ignored.
-pub(crate) fn convex_hull(points: &[P]) -> Vec<P> {
-    let mut pts: Vec<P> = points
-        .iter()
-        .copied()
-        .filter(|p| p[0].is_finite() && p[1].is_finite())
-        .collect();
-    pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-    pts.dedup();
-    if pts.len() < 3 {
-        return pts;
-    }
-    let mut hull: Vec<P> = Vec::with_capacity(pts.len() + 1);
-    for &p in &pts {
-        while hull.len() >= 2 && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
-            hull.pop();
-        }
-        hull.push(p);
-    }
-    // the upper chain may not eat into the lower one
-    let lower = hull.len() + 1;
-    for &p in pts.iter().rev().skip(1) {
-        while hull.len() >= lower && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
-            hull.pop();
-        }
-        hull.push(p);
-    }
-    hull.pop();
-    hull
+    orient(o.into(), a.into(), b.into())
 }
 
 /// True when the ring is convex (either orientation, collinear points allowed).
@@ -80,9 +41,9 @@ pub(crate) fn is_convex(ring: &[P]) -> bool {
 
 /// Splits a simple ring into convex parts, each counter-clockwise: the ring itself when it
 /// is convex, else the triangles of an ear-clipping triangulation.
-pub(crate) fn convex_parts(ring: &[P]) -> Vec<Vec<P>> {
-    let mut ring: Vec<P> = ring.to_vec();
-    if signed_area2(&ring) < 0.0 {
+pub(crate) fn convex_parts(outline: &[P]) -> Vec<Vec<P>> {
+    let mut ring: Vec<P> = outline.to_vec();
+    if ring::signed_area(&pts(&ring)) < 0.0 {
         ring.reverse();
     }
     if is_convex(&ring) {
@@ -160,63 +121,15 @@ pub(crate) fn sweep_convex(poly: &[P], d: P) -> Vec<P> {
     out
 }
 
-/// An axis-aligned box; empty when `min > max`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Rect {
-    pub(crate) min: P,
-    pub(crate) max: P,
-}
-
-impl Rect {
-    /// The empty box (the identity of [`Rect::add`]).
-    pub(crate) const EMPTY: Self = Self {
-        min: [f64::INFINITY; 2],
-        max: [f64::NEG_INFINITY; 2],
-    };
-
-    /// Grows the box to include `p`.
-    pub(crate) fn add(&mut self, p: P) {
-        self.min = [self.min[0].min(p[0]), self.min[1].min(p[1])];
-        self.max = [self.max[0].max(p[0]), self.max[1].max(p[1])];
-    }
-
-    /// Box of some points.
-    pub(crate) fn of<'a>(pts: impl IntoIterator<Item = &'a P>) -> Self {
-        let mut r = Self::EMPTY;
-        for p in pts {
-            r.add(*p);
-        }
-        r
-    }
-
-    /// True when nothing was added.
-    pub(crate) fn is_empty(&self) -> bool {
-        !(self.min[0] <= self.max[0] && self.min[1] <= self.max[1])
-    }
-
-    /// The box grown by `m` on every side.
-    pub(crate) fn grown(&self, m: f64) -> Self {
-        Self {
-            min: [self.min[0] - m, self.min[1] - m],
-            max: [self.max[0] + m, self.max[1] + m],
-        }
-    }
-
-    /// Width or height, whichever is larger.
-    pub(crate) fn size(&self) -> f64 {
-        (self.max[0] - self.min[0]).max(self.max[1] - self.min[1])
-    }
-}
-
 /// Clips a convex polygon to a box (Sutherland–Hodgman); the result stays convex.
 pub(crate) fn clip_convex(poly: &[P], rect: &Rect) -> Vec<P> {
     let mut cur: Vec<P> = poly.to_vec();
     // (axis, bound, keep when coordinate >= bound)
     let planes = [
-        (0, rect.min[0], true),
-        (0, rect.max[0], false),
-        (1, rect.min[1], true),
-        (1, rect.max[1], false),
+        (0, rect.min.z, true),
+        (0, rect.max.z, false),
+        (1, rect.min.r, true),
+        (1, rect.max.r, false),
     ];
     for (axis, bound, ge) in planes {
         if cur.is_empty() {
@@ -252,36 +165,6 @@ pub(crate) fn clip_convex(poly: &[P], rect: &Rect) -> Vec<P> {
     cur
 }
 
-/// Distance from `p` to the segment `[a, b]` and the nearest point on it.
-pub(crate) fn point_segment(p: P, a: P, b: P) -> (f64, P) {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let len2 = d[0] * d[0] + d[1] * d[1];
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let q = [a[0] + t * d[0], a[1] + t * d[1]];
-    ((p[0] - q[0]).hypot(p[1] - q[1]), q)
-}
-
-/// Even-odd point-in-ring test.
-pub(crate) fn point_in_ring(p: P, ring: &[P]) -> bool {
-    let n = ring.len();
-    let mut inside = false;
-    for i in 0..n {
-        let a = ring[i];
-        let b = ring[(i + 1) % n];
-        if (a[1] > p[1]) != (b[1] > p[1]) {
-            let z = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-            if p[0] < z {
-                inside = !inside;
-            }
-        }
-    }
-    inside
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -297,7 +180,7 @@ mod tests {
             [0.5, 0.0],
         ]);
         assert_eq!(h.len(), 4);
-        assert!((signed_area2(&h) - 2.0).abs() < 1e-12);
+        assert!((2.0 * ring::signed_area(&pts(&h)) - 2.0).abs() < 1e-12);
     }
 
     #[test]
@@ -311,22 +194,18 @@ mod tests {
             ]
             .concat(),
         );
-        assert!((signed_area2(&s) - signed_area2(&h)).abs() < 1e-12);
+        assert!(
+            (2.0 * ring::signed_area(&pts(&s)) - 2.0 * ring::signed_area(&pts(&h))).abs() < 1e-12
+        );
         let s = sweep_convex(&sq, [-3.0, 0.0]);
-        assert!((signed_area2(&s) - 8.0).abs() < 1e-12);
+        assert!((2.0 * ring::signed_area(&pts(&s)) - 8.0).abs() < 1e-12);
     }
 
     #[test]
     fn clip_keeps_the_inside_part() {
         let sq = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
-        let c = clip_convex(
-            &sq,
-            &Rect {
-                min: [1.0, -1.0],
-                max: [2.0, 2.0],
-            },
-        );
-        assert!((signed_area2(&c) / 2.0 - 2.0).abs() < 1e-12);
+        let c = clip_convex(&sq, &Rect::new(Pt::new(1.0, -1.0), Pt::new(2.0, 2.0)));
+        assert!((2.0 * ring::signed_area(&pts(&c)) / 2.0 - 2.0).abs() < 1e-12);
     }
 
     #[test]
@@ -341,8 +220,13 @@ mod tests {
         ];
         let parts = convex_parts(&l);
         assert!(parts.len() > 1);
-        let total: f64 = parts.iter().map(|p| signed_area2(p) / 2.0).sum();
+        let total: f64 = parts
+            .iter()
+            .map(|p| 2.0 * ring::signed_area(&pts(p)) / 2.0)
+            .sum();
         assert!((total - 3.0).abs() < 1e-12);
-        assert!(parts.iter().all(|p| is_convex(p) && signed_area2(p) > 0.0));
+        assert!(parts
+            .iter()
+            .all(|p| is_convex(p) && 2.0 * ring::signed_area(&pts(p)) > 0.0));
     }
 }

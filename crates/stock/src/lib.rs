@@ -20,6 +20,7 @@ mod outline;
 mod overlay;
 mod profile;
 mod removal;
+mod snapshot;
 mod sweep;
 mod tools;
 

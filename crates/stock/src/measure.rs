@@ -1,18 +1,20 @@
 //! Measures on shape sets: area, volume of revolution, symmetric difference, Hausdorff.
 
-use crate::geom::{first_moment_r, point_segment, signed_area2, Rect, P};
+use crate::geom::{pts, P};
 use crate::overlay::{boolean, BoolOp};
 use crate::Shape;
+use geom::distance::EdgeIndex;
+use geom::{ring, Pt};
 
 /// Area in mm² of a shape set (outer areas minus hole areas, whatever the ring orientation).
 pub fn area(shapes: &[Shape]) -> f64 {
     shapes
         .iter()
         .map(|s| {
-            signed_area2(&s.outer).abs() / 2.0
+            ring::signed_area(&pts(&s.outer)).abs()
                 - s.holes
                     .iter()
-                    .map(|h| signed_area2(h).abs() / 2.0)
+                    .map(|h| ring::signed_area(&pts(h)).abs())
                     .sum::<f64>()
         })
         .sum()
@@ -21,10 +23,13 @@ pub fn area(shapes: &[Shape]) -> f64 {
 /// Volume in mm³ of the solid of revolution of a shape set about the Z axis (Pappus:
 /// 2π ∫ r dA). Shapes are expected at r ≥ 0.
 pub fn revolved_volume(shapes: &[Shape]) -> f64 {
-    let ring = |r: &Vec<P>| first_moment_r(r) * signed_area2(r).signum();
+    let moment = |r: &Vec<P>| {
+        let r = pts(r);
+        ring::first_moment_r(&r) * ring::signed_area(&r).signum()
+    };
     let m: f64 = shapes
         .iter()
-        .map(|s| ring(&s.outer) - s.holes.iter().map(ring).sum::<f64>())
+        .map(|s| moment(&s.outer) - s.holes.iter().map(moment).sum::<f64>())
         .sum();
     std::f64::consts::TAU * m
 }
@@ -72,120 +77,24 @@ fn edges(shapes: &[Shape]) -> Vec<(P, P)> {
     out
 }
 
-/// sup over sample points of `from` of the distance to the edges of `to`.
+/// sup over sample points of `from` of the distance to the edges of `to`, the nearest
+/// edge found by parry2d-f64's bounding-volume tree ([`EdgeIndex`]). It gives the same
+/// numbers as the uniform grid written here before and is faster past a few hundred edges
+/// (ellipses of 2000 / 20000 edges, both ways: 0.45 s / 1.29 s with the grid, 0.30 s /
+/// 0.40 s with the tree; 100 edges: 0.17 s / 0.21 s).
 fn directed(from: &[(P, P)], to: &[(P, P)], h: f64) -> f64 {
-    let index = SegIndex::new(to);
+    let index = EdgeIndex::new(to.iter().map(|&(a, b)| (Pt::from(a), Pt::from(b))));
     let mut worst: f64 = 0.0;
     for &(p, q) in from {
-        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
-        let n = ((len / h).ceil() as usize).clamp(1, 10_000_000);
+        let (p, q) = (Pt::from(p), Pt::from(q));
+        let n = ((p.dist(q) / h).ceil() as usize).clamp(1, 10_000_000);
         for i in 0..n {
             let t = i as f64 / n as f64;
-            let s = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
-            // the sample cannot raise the maximum when it is closer than `worst`: the
-            // index search stops as soon as it proves that
-            worst = worst.max(index.nearest(s, worst));
+            let s = Pt::new(p.z + t * (q.z - p.z), p.r + t * (q.r - p.r));
+            worst = worst.max(index.nearest(s).map_or(f64::INFINITY, |(d, _)| d));
         }
     }
     worst
-}
-
-/// A uniform grid over segments for nearest-segment queries.
-struct SegIndex<'a> {
-    segs: &'a [(P, P)],
-    origin: P,
-    cell: f64,
-    nx: i64,
-    ny: i64,
-    cells: Vec<Vec<u32>>,
-}
-
-impl<'a> SegIndex<'a> {
-    fn new(segs: &'a [(P, P)]) -> Self {
-        let rect = Rect::of(segs.iter().flat_map(|(p, q)| [p, q]));
-        let w = (rect.max[0] - rect.min[0]).max(1e-9);
-        let hgt = (rect.max[1] - rect.min[1]).max(1e-9);
-        let n = (segs.len() as f64).max(1.0);
-        let cell = ((w * hgt / n).sqrt()).max(w.max(hgt) / 4096.0).max(1e-9);
-        let nx = ((w / cell).ceil() as i64).clamp(1, 4096);
-        let ny = ((hgt / cell).ceil() as i64).clamp(1, 4096);
-        let mut cells = vec![Vec::new(); (nx * ny) as usize];
-        for (k, (p, q)) in segs.iter().enumerate() {
-            let c = |v: f64, o: f64, m: i64| (((v - o) / cell).floor() as i64).clamp(0, m - 1);
-            let (x0, x1) = (
-                c(p[0].min(q[0]), rect.min[0], nx),
-                c(p[0].max(q[0]), rect.min[0], nx),
-            );
-            let (y0, y1) = (
-                c(p[1].min(q[1]), rect.min[1], ny),
-                c(p[1].max(q[1]), rect.min[1], ny),
-            );
-            for ix in x0..=x1 {
-                for iy in y0..=y1 {
-                    cells[(ix * ny + iy) as usize].push(k as u32);
-                }
-            }
-        }
-        Self {
-            segs,
-            origin: rect.min,
-            cell,
-            nx,
-            ny,
-            cells,
-        }
-    }
-
-    /// Distance from `p` to the nearest segment; may stop early with any value ≤ `enough`
-    /// once the true distance is known to be at most `enough`.
-    fn nearest(&self, p: P, enough: f64) -> f64 {
-        let cx = ((p[0] - self.origin[0]) / self.cell)
-            .floor()
-            .clamp(-1e12, 1e12) as i64;
-        let cy = ((p[1] - self.origin[1]) / self.cell)
-            .floor()
-            .clamp(-1e12, 1e12) as i64;
-        let outside = [cx - (self.nx - 1), -cx, cy - (self.ny - 1), -cy]
-            .into_iter()
-            .max()
-            .unwrap_or(0)
-            .max(0);
-        let mut best = f64::INFINITY;
-        let mut k = outside;
-        let kmax = outside + self.nx + self.ny + 2;
-        while k <= kmax {
-            let mut visit = |ix: i64, iy: i64| {
-                if ix >= 0 && ix < self.nx && iy >= 0 && iy < self.ny {
-                    for &s in &self.cells[(ix * self.ny + iy) as usize] {
-                        let (a, b) = self.segs[s as usize];
-                        best = best.min(point_segment(p, a, b).0);
-                    }
-                }
-            };
-            if k == 0 {
-                visit(cx, cy);
-            } else {
-                for ix in (cx - k)..=(cx + k) {
-                    if ix >= 0 && ix < self.nx {
-                        visit(ix, cy - k);
-                        visit(ix, cy + k);
-                    }
-                }
-                for iy in (cy - k + 1)..=(cy + k - 1) {
-                    if iy >= 0 && iy < self.ny {
-                        visit(cx - k, iy);
-                        visit(cx + k, iy);
-                    }
-                }
-            }
-            // everything in later rings is at least k cells away
-            if best <= k as f64 * self.cell || best <= enough {
-                break;
-            }
-            k += 1;
-        }
-        best
-    }
 }
 
 #[cfg(test)]

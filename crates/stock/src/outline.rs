@@ -4,7 +4,9 @@
 //! body: the insert is what touches the part in normal work, and a holder outline would
 //! need dimensions the tool table does not carry.
 
-use crate::geom::{convex_hull, convex_parts, Rect, P};
+use crate::geom::{convex_hull, convex_parts, pts, P};
+use geom::arc::Arc;
+use geom::{Pt, Rect};
 
 /// Largest distance between a chorded nose and the true arc, mm.
 pub(crate) const NOSE_CHORD_TOL: f64 = 0.001;
@@ -30,8 +32,8 @@ impl Outline {
 
     /// Bounding box as (min, max), or `None` for an empty outline.
     pub fn bbox(&self) -> Option<([f64; 2], [f64; 2])> {
-        let r = Rect::of(self.parts.iter().flatten());
-        (!r.is_empty()).then_some((r.min, r.max))
+        let r = Rect::of(self.parts.iter().flat_map(|p| pts(p)));
+        (!r.is_empty()).then_some((r.min.into(), r.max.into()))
     }
 
     /// Largest distance of any outline point from the reference point.
@@ -60,15 +62,16 @@ fn arc_points(c: P, radius: f64, a0: f64, sweep: f64) -> Vec<P> {
     if radius <= 0.0 {
         return vec![c];
     }
-    let step = if radius <= NOSE_CHORD_TOL {
-        std::f64::consts::PI
-    } else {
-        2.0 * (1.0 - NOSE_CHORD_TOL / radius).acos()
+    let arc = Arc {
+        center: c.into(),
+        radius,
+        start: a0,
+        sweep,
     };
-    let n = ((sweep.abs() / step).ceil() as usize).clamp(1, 100_000);
-    let at = |a: f64| [c[0] + radius * a.cos(), c[1] + radius * a.sin()];
-    let mut pts: Vec<P> = (0..=n)
-        .map(|i| at(a0 + sweep * i as f64 / n as f64))
+    let mut pts: Vec<P> = arc
+        .flatten(NOSE_CHORD_TOL)
+        .into_iter()
+        .map(Pt::to_array)
         .collect();
     // the extreme points along ±Z and ±X are where the part is measured: include them exactly
     let (lo, hi) = if sweep >= 0.0 {
@@ -380,7 +383,7 @@ mod tests {
     fn seed_002_blade_is_the_expected_rectangle() {
         let o = grooving(3.0, [1.0, 0.0], [0.0, 1.0], 20.0, 0.0);
         assert_eq!(o.bbox().unwrap(), ([0.0, 0.0], [3.0, 20.0]));
-        assert!((crate::geom::signed_area2(&o.parts[0]) / 2.0 - 60.0).abs() < 1e-12);
+        assert!((geom::ring::signed_area(&pts(&o.parts[0])) - 60.0).abs() < 1e-12);
     }
 
     #[test]

@@ -6,8 +6,9 @@
 //! boolean call works on exact integer points, and nothing is re-snapped between calls, so
 //! the stock cannot drift however many operations it goes through.
 
-use crate::geom::{Rect, P};
+use crate::geom::P;
 use crate::Shape;
+use geom::Rect;
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay::{Overlay, ShapeType};
 use i_overlay::core::overlay_rule::OverlayRule;
@@ -33,10 +34,10 @@ impl Grid {
     /// A grid covering `rect` (finite, non-empty) with the conservative 29-bit budget.
     pub(crate) fn new(rect: Rect) -> Self {
         let fr = FloatRect {
-            min_x: rect.min[0],
-            max_x: rect.max[0],
-            min_y: rect.min[1],
-            max_y: rect.max[1],
+            min_x: rect.min.z,
+            max_x: rect.max.z,
+            min_y: rect.min.r,
+            max_y: rect.max.r,
         };
         Self {
             adapter: FloatPointAdapter::new_conservative(fr),
@@ -52,15 +53,24 @@ impl Grid {
     /// Snaps a point (clamped into the grid's rectangle first, so it can never overflow).
     pub(crate) fn to_int(&self, p: P) -> IPt {
         let q = [
-            p[0].clamp(self.rect.min[0], self.rect.max[0]),
-            p[1].clamp(self.rect.min[1], self.rect.max[1]),
+            p[0].clamp(self.rect.min.z, self.rect.max.z),
+            p[1].clamp(self.rect.min.r, self.rect.max.r),
         ];
         let q = if q[0].is_nan() || q[1].is_nan() {
-            self.rect.min
+            self.rect.min.to_array()
         } else {
             q
         };
         self.adapter.float_to_int(&q)
+    }
+
+    /// The grid box of the corners of `rect` (each snapped like [`Grid::to_int`]).
+    pub(crate) fn box_to_int(&self, rect: &Rect) -> IBox {
+        let (lo, hi) = (self.to_int(rect.min.into()), self.to_int(rect.max.into()));
+        IBox {
+            min: [lo.x, lo.y],
+            max: [hi.x, hi.y],
+        }
     }
 
     /// Back to mm.
@@ -113,7 +123,56 @@ impl Grid {
     }
 }
 
-/// Twice the signed area of a grid ring, exact.
+/// An integer bounding box.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct IBox {
+    pub(crate) min: [i32; 2],
+    pub(crate) max: [i32; 2],
+}
+
+impl IBox {
+    /// Contains nothing.
+    pub(crate) const EMPTY: Self = Self {
+        min: [i32::MAX; 2],
+        max: [i32::MIN; 2],
+    };
+
+    /// Grows the box to contain `p`.
+    pub(crate) fn add(&mut self, p: IPt) {
+        self.min = [self.min[0].min(p.x), self.min[1].min(p.y)];
+        self.max = [self.max[0].max(p.x), self.max[1].max(p.y)];
+    }
+
+    /// Box of the segment `[a, b]`.
+    pub(crate) fn of_segment(a: IPt, b: IPt) -> Self {
+        Self {
+            min: [a.x.min(b.x), a.y.min(b.y)],
+            max: [a.x.max(b.x), a.y.max(b.y)],
+        }
+    }
+
+    /// The four corners, counter-clockwise from the lower left.
+    pub(crate) fn corners(&self) -> [IPt; 4] {
+        [
+            IPt::new(self.min[0], self.min[1]),
+            IPt::new(self.max[0], self.min[1]),
+            IPt::new(self.max[0], self.max[1]),
+            IPt::new(self.min[0], self.max[1]),
+        ]
+    }
+
+    /// True when the boxes share at least a point.
+    pub(crate) fn overlaps(&self, o: &Self) -> bool {
+        self.min[0] <= o.max[0]
+            && o.min[0] <= self.max[0]
+            && self.min[1] <= o.max[1]
+            && o.min[1] <= self.max[1]
+    }
+}
+
+/// Twice the signed area of a grid ring, exact. This stays next to i_overlay rather than
+/// in the `geom` kernel: it is exact integer (i128) arithmetic on the grid, which a float
+/// area would round.
 pub(crate) fn ring_area2(r: &[IPt]) -> i128 {
     let n = r.len();
     (0..n)
@@ -122,6 +181,75 @@ pub(crate) fn ring_area2(r: &[IPt]) -> i128 {
             i128::from(a.x) * i128::from(b.y) - i128::from(b.x) * i128::from(a.y)
         })
         .sum()
+}
+
+/// Perimeter of a grid ring in grid steps.
+pub(crate) fn ring_perimeter(ring: &[IPt]) -> f64 {
+    let n = ring.len();
+    (0..n)
+        .map(|k| {
+            let (p, q) = (ring[k], ring[(k + 1) % n]);
+            f64::from(q.x - p.x).hypot(f64::from(q.y - p.y))
+        })
+        .sum()
+}
+
+/// Exact orientation of `c` against the directed line `a → b`: 1 left, -1 right, 0 on it.
+pub(crate) fn orient(a: IPt, b: IPt, c: IPt) -> i64 {
+    let v =
+        i64::from(b.x - a.x) * i64::from(c.y - a.y) - i64::from(b.y - a.y) * i64::from(c.x - a.x);
+    v.signum()
+}
+
+/// True when every point of `inner` is inside or on the convex counter-clockwise `outer`.
+pub(crate) fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
+    let n = outer.len();
+    n >= 3
+        && (0..n).all(|i| {
+            let (a, b) = (outer[i], outer[(i + 1) % n]);
+            let (ex, ey) = (i64::from(b.x - a.x), i64::from(b.y - a.y));
+            inner
+                .iter()
+                .all(|p| ex * i64::from(p.y - a.y) - ey * i64::from(p.x - a.x) >= 0)
+        })
+}
+
+/// Closed segments [a, b] and [c, d] share a point.
+pub(crate) fn segments_meet(a: IPt, b: IPt, c: IPt, d: IPt) -> bool {
+    let (o1, o2, o3, o4) = (
+        orient(a, b, c),
+        orient(a, b, d),
+        orient(c, d, a),
+        orient(c, d, b),
+    );
+    if o1 * o2 < 0 && o3 * o4 < 0 {
+        return true;
+    }
+    let on = |p: IPt, q: IPt, r: IPt| {
+        r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
+    };
+    (o1 == 0 && on(a, b, c))
+        || (o2 == 0 && on(a, b, d))
+        || (o3 == 0 && on(c, d, a))
+        || (o4 == 0 && on(c, d, b))
+}
+
+/// Even-odd test of a grid point against a grid ring, exact.
+pub(crate) fn point_in_ring(p: IPt, ring: &[IPt]) -> bool {
+    let n = ring.len();
+    let mut inside = false;
+    for i in 0..n {
+        let (a, b) = (ring[i], ring[(i + 1) % n]);
+        if (a.y > p.y) != (b.y > p.y) {
+            // x of the crossing, compared without division
+            let lhs = i128::from(p.x - a.x) * i128::from(b.y - a.y);
+            let rhs = i128::from(p.y - a.y) * i128::from(b.x - a.x);
+            if (b.y > a.y && lhs < rhs) || (b.y < a.y && lhs > rhs) {
+                inside = !inside;
+            }
+        }
+    }
+    inside
 }
 
 /// A reusable boolean engine (keeps its buffers between calls).

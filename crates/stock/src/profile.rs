@@ -3,7 +3,7 @@
 
 use crate::error::{from_toml, line_col};
 use crate::{overlay, Shape, StockError};
-use expander::{Arc, Feed, Motion, Pt, Segment, Span};
+use expander::Pt;
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -96,18 +96,12 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
                         "the radius must be at least half the distance between the end points",
                     )
                 })?;
-                let seg = Segment {
-                    motion: Motion::Feed,
-                    from: cur,
-                    to,
-                    arc: Some(Arc { center, ccw }),
-                    tool: 0,
-                    hint: expander::ToolHint::Table,
-                    lead: 0.0,
-                    feed: Feed::Rapid,
-                    span: Span::default(),
-                };
-                ring.extend(seg.polyline(tol).iter().skip(1).map(|p| [p.z, p.r]));
+                let g = |p: Pt| geom::Pt::new(p.z, p.r);
+                let arc = geom::arc::Arc::between(g(cur), g(to), g(center), ccw);
+                let pts = arc.flatten(tol.max(1e-6)); // the floor G-code arcs are chorded with
+                                                      // the chords' inner points, then the programmed end point exactly
+                ring.extend(pts[1..pts.len() - 1].iter().map(|p| p.to_array()));
+                ring.push([to.z, to.r]);
             }
             (Some(_), None) => {
                 return Err(at(

@@ -15,11 +15,16 @@
 //! the stock is exactly the stock after every earlier move) and intersects its sweep with
 //! it; the overlaps of all strips add up to the crash area.
 
-use crate::geom::{point_in_ring, point_segment, Rect, P};
-use crate::overlay::{Engine, Grid, IPt, IShapes};
-use crate::sweep::{IBox, Item, SweepBuilder, Sweeps};
+use crate::geom::{pts, P};
+use crate::overlay::{
+    convex_contains, orient, point_in_ring, segments_meet, Engine, Grid, IBox, IPt, IShapes,
+};
+use crate::snapshot::Snapshots;
+use crate::sweep::{Item, SweepBuilder, Sweeps};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
 use expander::Segment;
+use geom::distance::point_segment;
+use geom::{ring, Pt, Rect};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
@@ -46,7 +51,7 @@ const MIN_TILE: f64 = 0.01;
 const EPOCH: usize = 32_768;
 
 /// Options of a removal run.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SimOptions {
     /// Chord tolerance for arcs, mm (default 0.001).
     pub chord_tol: f64,
@@ -57,6 +62,10 @@ pub struct SimOptions {
     /// most this much wherever it was cut (see the `sweep` module). Arcs take part with
     /// their chord when it lies within `chord_tol − merge_tol` of them.
     pub merge_tol: f64,
+    /// Move counts after which the stock is wanted (see [`Simulation::snapshots`]), taken
+    /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
+    /// the blank and [`Simulation::final_shapes`].
+    pub snapshot_after: Vec<usize>,
 }
 
 impl Default for SimOptions {
@@ -64,6 +73,7 @@ impl Default for SimOptions {
         Self {
             chord_tol: 0.001,
             merge_tol: 0.0005,
+            snapshot_after: Vec::new(),
         }
     }
 }
@@ -92,6 +102,10 @@ pub struct Simulation {
     pub removed_volume: f64,
     /// (first segment index, message): skipped moves, defaulted tools.
     pub warnings: Vec<(usize, String)>,
+    /// (move count k, the stock after the first k moves) for each count asked for in
+    /// [`SimOptions::snapshot_after`], ascending. A merged chain of feeds still open at k
+    /// is cut up to its last move so far; the run itself goes on unchanged.
+    pub snapshots: Vec<(usize, Vec<Shape>)>,
 }
 
 /// A rectangle of the stock with its own small polygon set.
@@ -132,19 +146,6 @@ fn bbox_of(shapes: &IShapes) -> IBox {
     b
 }
 
-/// True when every point of `inner` is inside or on the convex counter-clockwise `outer`.
-fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
-    let n = outer.len();
-    n >= 3
-        && (0..n).all(|i| {
-            let (a, b) = (outer[i], outer[(i + 1) % n]);
-            let (ex, ey) = (i64::from(b.x - a.x), i64::from(b.y - a.y));
-            inner
-                .iter()
-                .all(|p| ex * i64::from(p.y - a.y) - ey * i64::from(p.x - a.x) >= 0)
-        })
-}
-
 /// Polygons trimmed to a box (see [`trim_to_box`]), stored flat.
 #[derive(Default)]
 struct Trimmed {
@@ -180,12 +181,7 @@ impl Trimmed {
 /// orientation tests, valid for any ring (a grid-snapped hull may be slightly non-convex).
 /// Nothing is appended when fewer than three vertices are left (no area inside `b`).
 fn trim_to_box(poly: &[IPt], b: &IBox, out: &mut Vec<IPt>) {
-    let corners = [
-        IPt::new(b.min[0], b.min[1]),
-        IPt::new(b.max[0], b.min[1]),
-        IPt::new(b.max[0], b.max[1]),
-        IPt::new(b.min[0], b.max[1]),
-    ];
+    let corners = b.corners();
     let removable = |a: IPt, k: IPt, c: IPt| {
         orient(a, c, k) < 0 && corners.iter().all(|&q| orient(a, c, q) >= 0)
     };
@@ -354,12 +350,7 @@ impl Tile {
             ]
         };
         let child = |b: IBox, engine: &mut Engine| {
-            let ring = [
-                IPt::new(b.min[0], b.min[1]),
-                IPt::new(b.max[0], b.min[1]),
-                IPt::new(b.max[0], b.max[1]),
-                IPt::new(b.min[0], b.max[1]),
-            ];
+            let ring = b.corners();
             Node::Leaf(Self::new(b, engine.intersection(&self.stock, [&ring[..]])))
         };
         let a = child(halves[0], engine);
@@ -432,12 +423,7 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
         return false;
     }
     // separating axis: an edge of the convex polygon with the whole box outside it
-    let corners = [
-        IPt::new(shapes_box.min[0], shapes_box.min[1]),
-        IPt::new(shapes_box.max[0], shapes_box.min[1]),
-        IPt::new(shapes_box.max[0], shapes_box.max[1]),
-        IPt::new(shapes_box.min[0], shapes_box.max[1]),
-    ];
+    let corners = shapes_box.corners();
     if (0..n).any(|i| {
         corners
             .iter()
@@ -450,10 +436,7 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
             let m = ring.len();
             for k in 0..m {
                 let (a, b) = (ring[k], ring[(k + 1) % m]);
-                let eb = IBox {
-                    min: [a.x.min(b.x), a.y.min(b.y)],
-                    max: [a.x.max(b.x), a.y.max(b.y)],
-                };
+                let eb = IBox::of_segment(a, b);
                 if !eb.overlaps(&pb) {
                     continue;
                 }
@@ -467,7 +450,7 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
         }
         // the polygon may lie wholly inside the shape
         if let (Some(outer), Some(&p)) = (s.first(), poly.first()) {
-            if int_point_in_ring(p, outer) && !s[1..].iter().any(|h| int_point_in_ring(p, h)) {
+            if point_in_ring(p, outer) && !s[1..].iter().any(|h| point_in_ring(p, h)) {
                 return true;
             }
         }
@@ -475,67 +458,25 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
     false
 }
 
-fn orient(a: IPt, b: IPt, c: IPt) -> i64 {
-    let v =
-        i64::from(b.x - a.x) * i64::from(c.y - a.y) - i64::from(b.y - a.y) * i64::from(c.x - a.x);
-    v.signum()
-}
-
-/// Closed segments [a, b] and [c, d] share a point.
-fn segments_meet(a: IPt, b: IPt, c: IPt, d: IPt) -> bool {
-    let (o1, o2, o3, o4) = (
-        orient(a, b, c),
-        orient(a, b, d),
-        orient(c, d, a),
-        orient(c, d, b),
-    );
-    if o1 * o2 < 0 && o3 * o4 < 0 {
-        return true;
-    }
-    let on = |p: IPt, q: IPt, r: IPt| {
-        r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
-    };
-    (o1 == 0 && on(a, b, c))
-        || (o2 == 0 && on(a, b, d))
-        || (o3 == 0 && on(c, d, a))
-        || (o4 == 0 && on(c, d, b))
-}
-
-fn int_point_in_ring(p: IPt, ring: &[IPt]) -> bool {
-    let n = ring.len();
-    let mut inside = false;
-    for i in 0..n {
-        let (a, b) = (ring[i], ring[(i + 1) % n]);
-        if (a.y > p.y) != (b.y > p.y) {
-            // x of the crossing, compared without division
-            let lhs = i128::from(p.x - a.x) * i128::from(b.y - a.y);
-            let rhs = i128::from(p.y - a.y) * i128::from(b.x - a.x);
-            if (b.y > a.y && lhs < rhs) || (b.y < a.y && lhs > rhs) {
-                inside = !inside;
-            }
-        }
-    }
-    inside
-}
-
 /// Point of `shapes` nearest to `p` (p itself when inside) and its distance.
 fn nearest(grid: &Grid, shapes: &IShapes, p: P) -> (f64, P) {
     let mut best = (f64::INFINITY, p);
     for s in shapes {
-        let rings: Vec<Vec<P>> = s
+        let rings: Vec<Vec<Pt>> = s
             .iter()
-            .map(|r| r.iter().map(|&q| grid.to_float(q)).collect())
+            .map(|r| r.iter().map(|&q| Pt::from(grid.to_float(q))).collect())
             .collect();
+        let at = Pt::from(p);
         if let Some((outer, holes)) = rings.split_first() {
-            if point_in_ring(p, outer) && !holes.iter().any(|h| point_in_ring(p, h)) {
+            if ring::contains(outer, at) && !holes.iter().any(|h| ring::contains(h, at)) {
                 return (0.0, p);
             }
         }
         for r in &rings {
             for k in 0..r.len() {
-                let (d, q) = point_segment(p, r[k], r[(k + 1) % r.len()]);
+                let (d, q) = point_segment(at, r[k], r[(k + 1) % r.len()]);
                 if d < best.0 {
-                    best = (d, q);
+                    best = (d, q.to_array());
                 }
             }
         }
@@ -571,7 +512,7 @@ pub fn simulate(
         })
         .cloned()
         .collect();
-    let bb = Rect::of(shapes.iter().flat_map(|s| s.outer.iter()));
+    let bb = Rect::of(shapes.iter().flat_map(|s| pts(&s.outer)));
     if shapes.len() != blank.shapes.len() {
         warnings.push((
             0,
@@ -587,6 +528,7 @@ pub fn simulate(
             removed_area: 0.0,
             removed_volume: 0.0,
             warnings,
+            snapshots: Vec::new(),
         };
     }
 
@@ -598,10 +540,11 @@ pub fn simulate(
     let mut engine = Engine::new();
     let stock = grid.shapes_to_int(&shapes);
 
-    let (x0, x1) = (grid.to_int(clip.min).x, grid.to_int(clip.max).x);
-    let (y0, y1) = (grid.to_int(clip.min).y, grid.to_int(clip.max).y);
-    let n_strips =
-        (((clip.max[0] - clip.min[0]) / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
+    let IBox {
+        min: [x0, y0],
+        max: [x1, y1],
+    } = grid.box_to_int(&clip);
+    let n_strips = ((clip.width() / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
     let bounds: Vec<i32> = (0..=n_strips)
         .map(|k| {
             (i64::from(x0) + (i64::from(x1) - i64::from(x0)) * k as i64 / n_strips as i64) as i32
@@ -610,20 +553,12 @@ pub fn simulate(
     let strips: Vec<Mutex<Node>> = (0..n_strips)
         .map(|k| {
             let (a, b) = (bounds[k], bounds[k + 1]);
-            let rect = [
-                IPt::new(a, y0),
-                IPt::new(b, y0),
-                IPt::new(b, y1),
-                IPt::new(a, y1),
-            ];
-            let part = engine.intersection(&stock, [&rect[..]]);
-            Mutex::new(Node::Leaf(Tile::new(
-                IBox {
-                    min: [a, y0],
-                    max: [b, y1],
-                },
-                part,
-            )))
+            let tile = IBox {
+                min: [a, y0],
+                max: [b, y1],
+            };
+            let part = engine.intersection(&stock, [&tile.corners()[..]]);
+            Mutex::new(Node::Leaf(Tile::new(tile, part)))
         })
         .collect();
     let ctx = Ctx {
@@ -640,11 +575,13 @@ pub fn simulate(
     };
     let mut builder = SweepBuilder::new(&grid, clip, tools, tol, merge_tol);
     let mut fragments: Vec<Fragment> = Vec::new();
+    let mut snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), &stock);
     let mut done = 0;
     while done < segments.len() || done == 0 {
         let end = (done + EPOCH).min(segments.len());
         for (k, seg) in segments[done..end].iter().enumerate() {
             builder.push(done + k, seg);
+            snapshots.after_push(done + k + 1, &mut builder);
         }
         if end == segments.len() {
             builder.flush_run();
@@ -697,6 +634,7 @@ pub fn simulate(
             })
         };
         fragments.append(&mut new_frags);
+        snapshots.epoch(&sweeps, &mut engine);
         done = end;
         progress(done);
         if segments.is_empty() {
@@ -722,6 +660,11 @@ pub fn simulate(
         removed_area,
         removed_volume,
         warnings,
+        snapshots: snapshots
+            .out
+            .iter()
+            .map(|(k, s)| (*k, grid.shapes_to_float(s)))
+            .collect(),
     }
 }
 
@@ -990,10 +933,7 @@ mod tests {
 
     /// Number of sweeps the builder makes of `segs` (with the defaults' chord tolerance).
     fn sweep_count(tools: &ToolTable, segs: &[Segment], merge_tol: f64) -> usize {
-        let bb = Rect {
-            min: [-200.0, -200.0],
-            max: [200.0, 200.0],
-        };
+        let bb = Rect::new(geom::Pt::new(-200.0, -200.0), geom::Pt::new(200.0, 200.0));
         let grid = Grid::new(bb.grown(1.0));
         let mut b = SweepBuilder::new(&grid, bb, tools, 0.001, merge_tol);
         for (i, s) in segs.iter().enumerate() {
@@ -1042,6 +982,37 @@ mod tests {
         assert!(h > 0.0, "the merged result is an approximation");
         // the default merges
         assert_eq!(SimOptions::default().merge_tol, 0.0005);
+    }
+
+    #[test]
+    fn snapshots_in_the_one_pass_match_the_prefix_runs() {
+        let blank = Blank::bar(50.0, 40.0, 0.0, None).unwrap();
+        // a chain of tiny feeds (merged across the snapshot counts) between two plain cuts
+        let pts: Vec<[f64; 2]> = (0..400)
+            .map(|k| [-2.0 - 0.02 * k as f64, 22.0 - 0.001 * k as f64])
+            .collect();
+        let mut segs = vec![
+            seg(Motion::Rapid, [10.0, 30.0], [2.0, 23.0]),
+            seg(Motion::Feed, [2.0, 23.0], [-30.0, 23.0]),
+            seg(Motion::Rapid, [-30.0, 30.0], [pts[0][0], 30.0]),
+            seg(Motion::Feed, [pts[0][0], 30.0], pts[0]),
+        ];
+        segs.extend(pts.windows(2).map(|w| seg(Motion::Feed, w[0], w[1])));
+        segs.push(seg(Motion::Feed, pts[399], [pts[399][0], 30.0]));
+        let marks = vec![1, 2, 100, 250, segs.len(), 0, 100];
+        let opts = SimOptions {
+            snapshot_after: marks,
+            ..SimOptions::default()
+        };
+        let sim = simulate(&blank, &v35(), &segs, &opts, &mut |_| {});
+        let counts: Vec<usize> = sim.snapshots.iter().map(|s| s.0).collect();
+        assert_eq!(counts, [1, 2, 100, 250]);
+        for (k, shapes) in &sim.snapshots {
+            let prefix = run(&blank, &v35(), &segs[..*k]);
+            let h = hausdorff(shapes, &prefix.final_shapes);
+            assert!(h <= 0.0005, "after {k} moves: hausdorff {h}");
+        }
+        assert_eq!(sim.final_shapes, run(&blank, &v35(), &segs).final_shapes);
     }
 
     #[test]

@@ -37,11 +37,13 @@
 //! programmed point. An arc whose single chord is within `chord_tol − δ` of it joins such
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
-use crate::geom::{clip_convex, point_segment, sweep_convex, Rect, P};
+use crate::geom::{clip_convex, pts, sweep_convex, P};
 use crate::outline::Outline;
-use crate::overlay::{Grid, IPt};
+use crate::overlay::{ring_perimeter, Grid, IBox, IPt};
 use crate::ToolTable;
 use expander::{Motion, Segment, ToolHint};
+use geom::distance::point_segment;
+use geom::Rect;
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -54,35 +56,6 @@ const COLLINEAR_TOL: f64 = 1e-9;
 /// Most programmed points one merged run of nearly collinear feeds may hold (each new move
 /// re-checks them all, so this bounds the work per move).
 const MAX_CHAIN: usize = 256;
-
-/// An integer bounding box.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct IBox {
-    pub(crate) min: [i32; 2],
-    pub(crate) max: [i32; 2],
-}
-
-impl IBox {
-    /// Contains nothing.
-    pub(crate) const EMPTY: Self = Self {
-        min: [i32::MAX; 2],
-        max: [i32::MIN; 2],
-    };
-
-    /// Grows the box to contain `p`.
-    pub(crate) fn add(&mut self, p: IPt) {
-        self.min = [self.min[0].min(p.x), self.min[1].min(p.y)];
-        self.max = [self.max[0].max(p.x), self.max[1].max(p.y)];
-    }
-
-    /// True when the boxes share at least a point.
-    pub(crate) fn overlaps(&self, o: &Self) -> bool {
-        self.min[0] <= o.max[0]
-            && o.min[0] <= self.max[0]
-            && self.min[1] <= o.max[1]
-            && o.min[1] <= self.max[1]
-    }
-}
 
 /// One unit of removal: the sweep of one move (or of a merged run of collinear feeds).
 #[derive(Debug, Clone)]
@@ -122,6 +95,7 @@ impl Sweeps {
 /// A run of merged feeds swept as the one segment a -> b: either exact (collinear feeds,
 /// `mid` empty) or a chain of nearly collinear feeds whose programmed points `mid` lie
 /// within the merge tolerance of `[a, b]` (see the module documentation).
+#[derive(Clone)]
 struct Run {
     tool: u32,
     hint: ToolHint,
@@ -202,7 +176,7 @@ impl Run {
             .mid
             .iter()
             .chain(std::iter::once(&b))
-            .any(|&x| point_segment(x, a, q).0 > tol)
+            .any(|&x| point_segment(x.into(), a.into(), q.into()).0 > tol)
         {
             return false;
         }
@@ -427,6 +401,23 @@ impl<'a> SweepBuilder<'a> {
         }
     }
 
+    /// Number of sweeps emitted since the last [`SweepBuilder::take`].
+    pub(crate) fn emitted(&self) -> usize {
+        self.out.items.len()
+    }
+
+    /// The sweep of the current merged run as [`SweepBuilder::flush_run`] would emit it,
+    /// without ending the run (for snapshots part-way through).
+    pub(crate) fn peek_run(&mut self) -> Sweeps {
+        let Some(run) = self.run.clone() else {
+            return Sweeps::default();
+        };
+        let done = std::mem::take(&mut self.out);
+        self.flush_run();
+        self.run = Some(run);
+        std::mem::replace(&mut self.out, done)
+    }
+
     fn emit_path(&mut self, idx: usize, rapid: bool, outline: &Outline, path: &[P]) {
         let start = path[0];
         let item = self.begin();
@@ -459,19 +450,16 @@ impl<'a> SweepBuilder<'a> {
     }
 
     fn add_poly(&mut self, poly: &[P]) {
-        let quick = Rect::of(poly);
-        let inside = quick.min[0] >= self.clip.min[0]
-            && quick.min[1] >= self.clip.min[1]
-            && quick.max[0] <= self.clip.max[0]
-            && quick.max[1] <= self.clip.max[1];
+        let quick = Rect::of(pts(poly));
+        let inside = self.clip.contains(quick.min) && self.clip.contains(quick.max);
         let clipped;
         let poly = if inside {
             poly
         } else {
-            if quick.max[0] < self.clip.min[0]
-                || quick.min[0] > self.clip.max[0]
-                || quick.max[1] < self.clip.min[1]
-                || quick.min[1] > self.clip.max[1]
+            if quick.max.z < self.clip.min.z
+                || quick.min.z > self.clip.max.z
+                || quick.max.r < self.clip.min.r
+                || quick.min.r > self.clip.max.r
             {
                 return;
             }
@@ -496,11 +484,10 @@ impl<'a> SweepBuilder<'a> {
         let mut perimeter = 0.0;
         for r in &self.out.polys[first as usize..last as usize] {
             let ring = &self.out.pts[r.start as usize..r.end as usize];
-            for (k, &p) in ring.iter().enumerate() {
+            for &p in ring {
                 bbox.add(p);
-                let q = ring[(k + 1) % ring.len()];
-                perimeter += f64::from(q.x - p.x).hypot(f64::from(q.y - p.y));
             }
+            perimeter += ring_perimeter(ring);
         }
         perimeter *= self.grid.step();
         // rounding to the grid can open slivers of at most a grid step along any edge

@@ -1,0 +1,82 @@
+//! Stock snapshots part-way through a removal run, taken in the run's one pass.
+//!
+//! The removal itself works in epochs over tiles and batches its cuts; cutting at the
+//! snapshot counts inside it would change where batches end and so the last bits of the
+//! final part. Snapshots therefore keep their own copy of the stock and cut into it the
+//! same sweeps, in order, stopping at each count asked for.
+
+use crate::overlay::{Engine, IShapes};
+use crate::sweep::{SweepBuilder, Sweeps};
+
+/// The snapshot counts still to come, the snapshot stock and the snapshots taken.
+pub(crate) struct Snapshots {
+    marks: std::iter::Peekable<std::vec::IntoIter<usize>>,
+    stock: IShapes,
+    /// Counts reached in the current epoch: (count, number of the epoch's sweeps emitted by
+    /// then, the sweep of the merged run still open then).
+    reached: Vec<(usize, usize, Sweeps)>,
+    /// (move count, stock after that many moves), ascending.
+    pub(crate) out: Vec<(usize, IShapes)>,
+}
+
+impl Snapshots {
+    /// Snapshots after each of `marks` moves (those in `1..moves`), from `stock`.
+    pub(crate) fn new(marks: &[usize], moves: usize, stock: &IShapes) -> Self {
+        let mut m: Vec<usize> = marks
+            .iter()
+            .copied()
+            .filter(|&k| k > 0 && k < moves)
+            .collect();
+        m.sort_unstable();
+        m.dedup();
+        Self {
+            stock: if m.is_empty() {
+                Vec::new()
+            } else {
+                stock.clone()
+            },
+            marks: m.into_iter().peekable(),
+            reached: Vec::new(),
+            out: Vec::new(),
+        }
+    }
+
+    /// Called after `moves` moves were pushed into `builder`: at a snapshot count, notes how
+    /// far the builder got and the sweep of its open run.
+    pub(crate) fn after_push(&mut self, moves: usize, builder: &mut SweepBuilder) {
+        if self.marks.next_if_eq(&moves).is_some() {
+            let emitted = builder.emitted();
+            self.reached.push((moves, emitted, builder.peek_run()));
+        }
+    }
+
+    /// Called with the sweeps the builder emitted this epoch: cuts them into the snapshot
+    /// stock and takes the snapshots reached.
+    pub(crate) fn epoch(&mut self, sweeps: &Sweeps, engine: &mut Engine) {
+        let mut applied = 0;
+        for (k, emitted, open) in std::mem::take(&mut self.reached) {
+            self.cut(sweeps, applied..emitted, engine);
+            applied = emitted;
+            let snap = if open.items.is_empty() {
+                self.stock.clone()
+            } else {
+                let polys = open.items.iter().flat_map(|it| open.polys_of(it));
+                engine.difference(&self.stock, polys)
+            };
+            self.out.push((k, snap));
+        }
+        if self.marks.peek().is_some() {
+            self.cut(sweeps, applied..sweeps.items.len(), engine);
+        }
+    }
+
+    fn cut(&mut self, sweeps: &Sweeps, items: std::ops::Range<usize>, engine: &mut Engine) {
+        if items.is_empty() {
+            return;
+        }
+        let polys = sweeps.items[items]
+            .iter()
+            .flat_map(|it| sweeps.polys_of(it));
+        self.stock = engine.difference(&self.stock, polys);
+    }
+}
