@@ -170,7 +170,7 @@ impl IBox {
     }
 }
 
-/// Twice the signed area of a grid ring, exact. This stays next to i_overlay rather than
+/// Twice the signed area of a grid ring, exact. This stays next to `i_overlay` rather than
 /// in the `geom` kernel: it is exact integer (i128) arithmetic on the grid, which a float
 /// area would round.
 pub(crate) fn ring_area2(r: &[IPt]) -> i128 {
