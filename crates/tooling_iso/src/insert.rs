@@ -305,6 +305,12 @@ const NOSE_METRIC: [&str; 11] = [
 /// Inch nose radius digits (in 1/64"); 5 and 7 are not in the series.
 const NOSE_INCH: [u32; 7] = [0, 1, 2, 3, 4, 6, 8];
 
+/// The size digits of an edge length: the standard's tables give l to 0.1 mm (T with
+/// d 6.35: l = 10.998, listed 11.0, code 11), then the decimals are cut off.
+fn table_code(l: f64) -> f64 {
+    (l * 10.0).round().div_euclid(10.0)
+}
+
 fn err(text: &str, problem: impl Into<String>) -> IsoError {
     IsoError::Insert {
         designation: text.to_string(),
@@ -414,7 +420,7 @@ impl Insert {
             _ => match IC_SERIES
                 .iter()
                 .filter_map(|&d| Some((d, self.shape.edge_from_ic(d)?)))
-                .find(|(_, l)| l.floor() == code)
+                .find(|(_, l)| table_code(*l) == code)
             {
                 Some((d, l)) => {
                     self.edge_length = l;
@@ -423,17 +429,18 @@ impl Insert {
                 None => self.edge_length = code,
             },
         }
-        self.thickness =
-            match THICKNESS.iter().find(|(c, _)| *c == thick) {
-                Some(&(_, t)) => t,
-                None if thick.starts_with('T') => return Err(err(
+        self.thickness = match THICKNESS.iter().find(|(c, _)| *c == thick) {
+            Some(&(_, t)) => t,
+            None if thick.starts_with('T') => {
+                return Err(err(
                     text,
                     format!(
                         "thickness code \"{thick}\" does not exist (T1 T2 T3, or whole mm like 04)"
                     ),
-                )),
-                None => thick.parse().unwrap_or(0.0),
-            };
+                ))
+            }
+            None => thick.parse().unwrap_or(0.0),
+        };
         self.nose_radius = match nose {
             "M0" => 0.0, // round insert, metric: no corner
             n if NOSE_METRIC.contains(&n) => n.parse::<f64>().unwrap_or(0.0) / 10.0,
@@ -518,6 +525,6 @@ impl Insert {
 
     /// The edge length in whole mm, as a holder's size digits name it.
     pub fn edge_code(&self) -> u32 {
-        self.edge_length.floor() as u32
+        table_code(self.edge_length) as u32
     }
 }
