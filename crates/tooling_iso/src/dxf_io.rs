@@ -7,7 +7,7 @@
 //! tolerance with [`geom::arc::Arc`], and rejects open or self-crossing loops. Arcs are
 //! chorded in drawing units before a diameter Y is halved, so the chords stay within the
 //! tolerance of the drawn curve. Writing gives closed LWPOLYLINEs on layers `PART` and
-//! `INTENDED` in an AutoCAD 2000 file.
+//! `INTENDED` in an `AutoCAD` 2000 file.
 
 use crate::IsoError;
 use dxf::entities::{Entity, EntityType, LwPolyline};
@@ -332,15 +332,17 @@ pub fn read_drawing(drawing: &Drawing, opt: &ReadOptions) -> Result<Vec<Vec<Pt>>
 }
 
 fn polyline(ring: &[Pt], x_mode: XMode, layer: &str) -> Entity {
-    let mut p = LwPolyline::default();
-    p.vertices = ring
-        .iter()
-        .map(|q| LwPolylineVertex {
-            x: q.z,
-            y: x_mode.to_y(q.r),
-            ..Default::default()
-        })
-        .collect();
+    let mut p = LwPolyline {
+        vertices: ring
+            .iter()
+            .map(|q| LwPolylineVertex {
+                x: q.z,
+                y: x_mode.to_y(q.r),
+                ..Default::default()
+            })
+            .collect(),
+        ..Default::default()
+    };
     p.set_is_closed(true);
     let mut e = Entity::new(EntityType::LwPolyline(p));
     e.common.layer = layer.to_string();
@@ -348,7 +350,7 @@ fn polyline(ring: &[Pt], x_mode: XMode, layer: &str) -> Entity {
 }
 
 /// The drawing of a half section: `part` rings on layer `PART` (white), the optional
-/// `intended` rings on layer `INTENDED` (red), AutoCAD 2000 format.
+/// `intended` rings on layer `INTENDED` (red), `AutoCAD` 2000 format.
 pub fn section_drawing(part: &[Vec<Pt>], intended: Option<&[Vec<Pt>]>, x_mode: XMode) -> Drawing {
     let mut d = Drawing::new();
     d.header.version = AcadVersion::R2000;
