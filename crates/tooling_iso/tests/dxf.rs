@@ -363,3 +363,30 @@ fn bad_outlines_are_clear_errors() {
     let e = read_profile_str(empty, &o).unwrap_err().to_string();
     assert!(e.contains("no LINE"), "{e}");
 }
+
+#[test]
+fn files_write_and_read() {
+    let ring = vec![
+        Pt::new(0.0, 0.0),
+        Pt::new(0.0, 10.0),
+        Pt::new(-20.0, 10.0),
+        Pt::new(-20.0, 0.0),
+    ];
+    let path = std::env::temp_dir().join(format!("tooling_iso_{}.dxf", std::process::id()));
+    tooling_iso::dxf_io::write_section_file(
+        &path,
+        std::slice::from_ref(&ring),
+        None,
+        XMode::Diameter,
+    )
+    .unwrap();
+    let opt = ReadOptions {
+        x_mode: XMode::Diameter,
+        ..Default::default()
+    };
+    let back = tooling_iso::dxf_io::read_profile_file(&path, &opt).unwrap();
+    std::fs::remove_file(&path).ok();
+    assert!((signed_area(&back[0]) - 200.0).abs() < 1e-9);
+    let e = tooling_iso::dxf_io::read_profile_file("/nonexistent/x.dxf", &opt).unwrap_err();
+    assert!(e.to_string().contains("/nonexistent/x.dxf"), "{e}");
+}
