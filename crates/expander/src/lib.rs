@@ -9,6 +9,7 @@
 //! ```
 mod alarm;
 pub mod arc;
+mod codes;
 mod cycles;
 mod interp;
 mod machine;

@@ -2,6 +2,7 @@
 //! state to plain moves; the interpreter stamps them with the block's span and the feed in
 //! force, so a cycle file reads like the manual's numbered motion steps.
 
+use crate::codes::*;
 use crate::words::Words;
 use crate::{Arc, Diagnostic, IntendedKind, Machine, Motion, Pt, Span, ToolHint};
 use gcode::{Subprogram, Word};
@@ -187,14 +188,14 @@ impl Cycle<'_, '_> {
 /// Run the cycle `c.code`.
 pub(crate) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     match c.code {
-        900 => g90::run(c),
-        920 => g92::run(c),
-        940 => g94::run(c),
-        740 | 750 => g74_g75::run(c),
-        751 => g75_1::run(c),
-        700 => g70::run(c),
-        710 | 720 => g71_g72::run(c),
-        730 => g73::run(c),
+        G90 => g90::run(c),
+        G92 => g92::run(c),
+        G94 => g94::run(c),
+        G74 | G75 => g74_g75::run(c),
+        G75_1 => g75_1::run(c),
+        G70 => g70::run(c),
+        G71 | G72 => g71_g72::run(c),
+        G73 => g73::run(c),
         _ => Err(not_implemented(c)),
     }
 }
@@ -211,17 +212,17 @@ pub(crate) fn not_implemented(c: &Cycle) -> Diagnostic {
 /// A cycle's name for messages.
 pub(crate) fn name(tenths: i32) -> &'static str {
     match tenths {
-        700 => "G70 (finishing cycle)",
-        710 => "G71 (stock removal in turning)",
-        720 => "G72 (stock removal in facing)",
-        730 => "G73 (pattern repeating cycle)",
-        740 => "G74 (face grooving / peck drilling cycle)",
-        750 => "G75 (radial grooving cycle)",
-        751 => "G75.1 (radial trapezoid groove cycle)",
-        760 => "G76 (multiple threading cycle)",
-        900 => "G90 (axial turning cycle)",
-        920 => "G92 (threading cycle)",
-        940 => "G94 (face turning cycle)",
+        G70 => "G70 (finishing cycle)",
+        G71 => "G71 (stock removal in turning)",
+        G72 => "G72 (stock removal in facing)",
+        G73 => "G73 (pattern repeating cycle)",
+        G74 => "G74 (face grooving / peck drilling cycle)",
+        G75 => "G75 (radial grooving cycle)",
+        G75_1 => "G75.1 (radial trapezoid groove cycle)",
+        G76 => "G76 (multiple threading cycle)",
+        G90 => "G90 (axial turning cycle)",
+        G92 => "G92 (threading cycle)",
+        G94 => "G94 (face turning cycle)",
         _ => "this cycle",
     }
 }
@@ -230,11 +231,11 @@ pub(crate) fn name(tenths: i32) -> &'static str {
 pub(crate) fn is_cycle(tenths: i32) -> bool {
     matches!(
         tenths,
-        700 | 710 | 720 | 730 | 740 | 750 | 751 | 760 | 900 | 920 | 940
+        G70 | G71 | G72 | G73 | G74 | G75 | G75_1 | G76 | G90 | G92 | G94
     )
 }
 
 /// Whether a cycle is modal (group 01): later blocks with only coordinates repeat it.
 pub(crate) fn is_modal(tenths: i32) -> bool {
-    matches!(tenths, 900 | 920 | 940)
+    matches!(tenths, G90 | G92 | G94)
 }

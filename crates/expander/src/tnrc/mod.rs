@@ -18,6 +18,8 @@
 
 use crate::{Arc, Diagnostic, Pt, Segment};
 
+mod section;
+
 /// Which side of the contour the tool keeps, looking along the direction of travel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Side {

@@ -1,0 +1,85 @@
+//! Running a canned cycle from the interpreter: the cycle's words and state in, its moves,
+//! warnings, intended shapes and G70 compensation out.
+
+use super::flow::Flow;
+use super::Interp;
+use crate::cycles::{self, Cycle};
+use crate::words::Words;
+use crate::{Diagnostic, Motion};
+use gcode::{Subprogram, Word};
+
+impl Interp<'_> {
+    /// Run a canned cycle and emit its moves with this block's span.
+    pub(super) fn cycle<'b>(
+        &mut self,
+        code: i32,
+        g: Option<&'b Word>,
+        sub: &'b Subprogram,
+        index: usize,
+        used: &mut Words<'b>,
+    ) -> Result<Flow, Diagnostic> {
+        let b = &sub.blocks[index];
+        let tool_blade = self.blade_for(self.tool);
+        let out = {
+            let mut c = Cycle {
+                code,
+                g,
+                words: used,
+                start: self.pos,
+                shift: self.shift,
+                unit: self.unit(),
+                machine: self.machine,
+                retained: &mut self.retained,
+                program: sub,
+                index,
+                tool_blade,
+            };
+            cycles::run(&mut c)?
+        };
+        self.out.warnings.extend(out.warnings);
+        for (kind, points) in out.intended {
+            // G73 then G70 on one shape hand it over twice: keep it once.
+            if !self
+                .out
+                .intended
+                .iter()
+                .any(|i| i.kind == kind && i.points == points)
+            {
+                self.out.intended.push(crate::Intended {
+                    kind,
+                    points,
+                    span: b.span,
+                });
+            }
+        }
+        // G70 runs its pass as one compensation section (start-up A → B, cancel back to A).
+        let side = out.comp.and_then(|shape_side| shape_side.or(self.comp));
+        if let Some(side) = side {
+            if let Some(nose) = self.nose_for_offset(b.span) {
+                self.section = Some((side, nose, vec![]));
+            }
+        }
+        let feed = self.feed;
+        for m in out.moves {
+            if let Some(f) = m.feed {
+                self.feed = f;
+            }
+            if let Some(modes) = m.modes {
+                self.apply_shape_modes(modes);
+            }
+            let span = m.span.unwrap_or(b.span);
+            if m.to.dist(self.pos) >= 1e-12 {
+                // a threading move's lead is the F in force (G92: F is the lead)
+                let lead = if m.motion == Motion::Thread {
+                    self.feed * self.unit()
+                } else {
+                    0.0
+                };
+                self.push_at(span, m.motion, m.to, m.arc, lead, m.hint)?;
+            }
+        }
+        self.feed = feed;
+        self.flush_compensation();
+        Ok(out.resume_at.map_or(Flow::Next, Flow::Jump))
+    }
+}

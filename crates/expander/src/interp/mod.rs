@@ -1,0 +1,286 @@
+//! The modal interpreter: runs the blocks like a controller and emits segments.
+//!
+//! Order within one block (FANUC/GSK practice): modal G codes, F, S, T and M03/M04/M08
+//! first; then the block's one motion (or G04/G28/G50); then M05/M09, M98/M99 and the
+//! program end. A controller alarm stops the run; the segments made so far are kept.
+//!
+//! This file is the dispatcher; the words live in `modal` (G/M/F/S/T), `flow` (program
+//! flow), `motion` (moves), `actions` (G04/G28/G50), `cycle` (canned cycles), and the
+//! compensation buffer in `crate::tnrc`.
+
+mod actions;
+mod cycle;
+mod flow;
+mod modal;
+mod motion;
+mod tool_facts;
+
+use crate::arc::ArcError;
+use crate::codes::{self, G04, G28, G50, G75_1};
+use crate::cycles::{self, Retained};
+use crate::tnrc::{Nose, Side};
+use crate::words::Words;
+use crate::{Diagnostic, Machine, Pt, Segment, Span};
+use flow::{Exit, Flow};
+use gcode::{Program, Subprogram};
+pub(crate) use modal::MotionMode;
+use std::collections::BTreeMap;
+
+/// Interpreter settings from the command line.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// Skip blocks that start with `/`.
+    pub block_delete: bool,
+    /// Stop with an alarm when the program expands to more segments than this.
+    pub max_segments: usize,
+    /// Stop with an alarm after executing this many blocks (endless loops).
+    pub max_blocks: usize,
+    /// Nose radius and tip per tool offset number (`oo` of `Tttoo`) for G41/G42;
+    /// `None` marks a grooving blade, for which compensation is ignored with a warning.
+    pub noses: BTreeMap<u32, Option<Nose>>,
+    /// The nose of an offset with no entry (the documented default insert: r 0.4, tip 3).
+    pub default_nose: Nose,
+    /// The tool table's radial grooving blades by tool number: width, and whether the
+    /// blade extends toward +Z from its reference corner (G75.1 without I).
+    pub blades: BTreeMap<u32, (f64, bool)>,
+    /// The tool that cuts before the program's first T word (`--tool N`, else the tool
+    /// table's first entry); `None` leaves it 0, "no tool yet".
+    pub start_tool: Option<u32>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            block_delete: false,
+            max_segments: 5_000_000,
+            max_blocks: 20_000_000,
+            noses: BTreeMap::new(),
+            default_nose: Nose {
+                radius: 0.4,
+                tip: 3,
+            },
+            blades: BTreeMap::new(),
+            start_tool: None,
+        }
+    }
+}
+
+/// What the interpreter made of a program.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Toolpath {
+    /// The moves, in order.
+    pub segments: Vec<Segment>,
+    /// Controller alarms (at most one: an alarm stops the run).
+    pub alarms: Vec<Diagnostic>,
+    /// Warnings: the run went on.
+    pub warnings: Vec<Diagnostic>,
+    /// Total dwell time (G04), s.
+    pub dwell_s: f64,
+    /// Tool numbers used, in order of first use.
+    pub tools: Vec<u32>,
+    /// Main program number, e.g. `O0002`.
+    pub title: String,
+    /// Blocks executed.
+    pub blocks: usize,
+    /// Shapes the program defines for itself (G75.1 grooves, G70–G73 finishing shapes).
+    pub intended: Vec<crate::Intended>,
+}
+
+/// Expand a parsed program into segments.
+pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath {
+    let mut it = Interp::new(machine, opts);
+    for note in &program.notes {
+        it.warn(note.span, "W-ANNOTATION", note.message.clone(), "");
+    }
+    if let Some(main) = program.main() {
+        it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
+        let mut result = it.run(program, 0, 0, 0);
+        it.flush_compensation();
+        if result.is_ok() && it.retained.g75_1.is_some() {
+            let span = program
+                .programs
+                .iter()
+                .flat_map(|p| p.blocks.last())
+                .last()
+                .map(|b| b.span)
+                .unwrap_or_default();
+            result = Err(g75_1_unfinished(span));
+        }
+        match result {
+            Ok(Exit::End) => {}
+            Ok(Exit::Return(_)) => unreachable!("M99 in the main program is an alarm"),
+            Err(alarm) => it.out.alarms.push(alarm),
+        }
+    }
+    it.out
+}
+
+/// The interpreter's state between blocks.
+pub(crate) struct Interp<'m> {
+    machine: &'m Machine,
+    opts: &'m Options,
+    pub(crate) out: Toolpath,
+    /// Current position of the reference point, G54 frame.
+    pos: Pt,
+    /// Origin of the current work coordinate system in the G54 frame.
+    shift: Pt,
+    pub(crate) motion: MotionMode,
+    per_rev: bool,
+    inch: bool,
+    css: bool,
+    s_value: f64,
+    s_clamp: f64,
+    spindle_on: bool,
+    spindle_warned: bool,
+    feed: f64,
+    tool: u32,
+    retained: Retained,
+    /// G41/G42 mode in force (group 07); `None` is G40.
+    pub(crate) comp: Option<Side>,
+    /// Tool offset number `oo` in force.
+    pub(crate) offset: u32,
+    /// The compensation section being collected (start-up first), with its side and nose.
+    pub(crate) section: Option<(Side, Nose, Vec<Segment>)>,
+    /// Offsets already warned about (blade, no entry).
+    pub(crate) comp_warned: Vec<u32>,
+}
+
+/// A G75.1 geometry block not followed by its process block.
+fn g75_1_unfinished(span: Span) -> Diagnostic {
+    alarm(
+        span,
+        "LS-G75.1-BLOCKS",
+        "the G75.1 geometry block is not followed by its process block",
+        "write the process block (G75.1 R… ) right after the geometry block (G75.1 X Z P Q H D …)",
+    )
+}
+
+/// A controller alarm.
+pub(crate) fn alarm(
+    span: Span,
+    code: &'static str,
+    message: impl Into<String>,
+    help: impl Into<String>,
+) -> Diagnostic {
+    Diagnostic::new(span, code, message, help)
+}
+
+impl<'m> Interp<'m> {
+    fn new(machine: &'m Machine, opts: &'m Options) -> Self {
+        Self {
+            machine,
+            opts,
+            out: Toolpath::default(),
+            pos: machine.home,
+            shift: Pt::default(),
+            motion: MotionMode::Rapid,
+            per_rev: machine.feed_mode == crate::FeedMode::G99,
+            inch: false,
+            css: false,
+            s_value: 0.0,
+            s_clamp: 0.0,
+            spindle_on: false,
+            spindle_warned: false,
+            feed: machine.power_on_feed,
+            tool: opts.start_tool.unwrap_or(0),
+            retained: Retained::default(),
+            comp: None,
+            offset: 0,
+            section: None,
+            comp_warned: vec![],
+        }
+    }
+
+    pub(crate) fn warn(
+        &mut self,
+        span: Span,
+        code: &'static str,
+        message: impl Into<String>,
+        help: impl Into<String>,
+    ) {
+        self.out
+            .warnings
+            .push(Diagnostic::new(span, code, message, help));
+    }
+
+    fn unit(&self) -> f64 {
+        if self.inch {
+            25.4
+        } else {
+            1.0
+        }
+    }
+
+    /// Execute one block: its modal words, its one action, then its flow words.
+    fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
+        let b = &sub.blocks[index];
+        let mut used = Words::new(b);
+        if self.retained.g75_1.is_some() && !modal::has_g(b, |t| t == G75_1) {
+            return Err(g75_1_unfinished(b.span));
+        }
+        let g = self.g_codes(b, &mut used)?;
+        self.feed_speed_tool(&mut used, g.one_shot.map(|(t, _)| t))?;
+        let after = self.m_codes_before(b, &mut used)?;
+        self.set_compensation_mode(g.comp);
+        let modal_cycle = g
+            .motion
+            .map_or(matches!(self.motion, MotionMode::Cycle(_)), |(m, _)| {
+                matches!(m, MotionMode::Cycle(_))
+            });
+        let suspends = matches!(g.one_shot, Some((G28 | G50, _)))
+            || g.one_shot.is_some_and(|(t, _)| cycles::is_cycle(t))
+            || modal::has_g(b, |t| codes::work_offset(t).is_some())
+            || (modal_cycle && ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)));
+        if suspends {
+            // Suspended by G28, G50, G54–G59 and the cycles; resumed at the next move.
+            self.flush_compensation();
+        }
+        let mut flow = Flow::Next;
+        match g.one_shot {
+            Some((G04, w)) => self.dwell(&mut used, w)?,
+            Some((G28, w)) => self.g28(b, &mut used, w)?,
+            Some((G50, _)) => self.g50(&mut used)?,
+            Some((t, w)) => flow = self.cycle(t, Some(w), sub, index, &mut used)?,
+            None => {
+                if let Some((m, _)) = g.motion {
+                    self.motion = m;
+                }
+                if let MotionMode::Cycle(t) = self.motion {
+                    if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
+                        let w = g.motion.map(|(_, w)| w);
+                        flow = self.cycle(t, w, sub, index, &mut used)?;
+                    }
+                } else {
+                    self.start_compensation(b)?;
+                    self.motion_block(b, &mut used)?;
+                    if self.section.is_some() && (self.comp.is_none() || self.offset == 0) {
+                        // This block was the cancel block.
+                        self.flush_compensation();
+                    }
+                }
+            }
+        }
+        let flow = self.m_codes_after(&after, &mut used, flow)?;
+        used.check_all_used()?;
+        Ok(flow)
+    }
+}
+
+fn arc_alarm(span: Span, e: ArcError) -> Diagnostic {
+    match e {
+        ArcError::RadiusTooSmall { r, half_chord } => alarm(
+            span,
+            "PS020",
+            format!("arc radius R{r} is too small to reach the end point (at least {half_chord:.3} needed)"),
+            "check the end point and the radius: R must be at least half the distance between start and end",
+        ),
+        ArcError::FullCircleWithR => alarm(span, "PS020", "arc with R whose end point equals its start", "a full circle needs I/K, not R"),
+        ArcError::NonPositiveRadius => alarm(span, "PS020", "arc radius must be positive", "arcs over 180° are not possible with R on this lathe; use I/K or split the arc"),
+        ArcError::EndNotOnCircle { r_start, r_end } => alarm(
+            span,
+            "PS020",
+            format!("arc end point is not on the circle: radius {r_start:.4} at the start, {r_end:.4} at the end"),
+            "correct I/K (I is a radius value) or the end point",
+        ),
+    }
+}

@@ -1,0 +1,114 @@
+//! The compensation buffer of the interpreter: G40/G41/G42 in force, the section of moves
+//! collected from start-up to cancel, and handing it to [`super::compensate`].
+
+use super::{compensate, Nose, Side};
+use crate::codes::{G41, G42};
+use crate::interp::{alarm, Interp, MotionMode};
+use crate::{Diagnostic, Span};
+use gcode::{Block, Word};
+
+impl Interp<'_> {
+    /// G40/G41/G42 of this block (spec/tnrc.md).
+    pub(crate) fn set_compensation_mode(&mut self, comp: Option<(i32, &Word)>) {
+        if let Some((t, _)) = comp {
+            let side = match t {
+                G41 => Some(Side::Left),
+                G42 => Some(Side::Right),
+                _ => None,
+            };
+            if side.is_some() && self.comp.is_some() && side != self.comp {
+                // G41 in G42 mode (or the reverse) cancels and re-establishes.
+                self.flush_compensation();
+            }
+            self.comp = side;
+        }
+    }
+
+    /// Begin a compensation section if G41/G42 is in force, an offset is active, no section
+    /// is open and this block moves: this block is the start-up block.
+    pub(crate) fn start_compensation(&mut self, b: &Block) -> Result<(), Diagnostic> {
+        let Some(side) = self.comp else { return Ok(()) };
+        if self.section.is_some()
+            || self.offset == 0
+            || !['X', 'Z', 'U', 'W'].iter().any(|&l| b.has(l))
+        {
+            return Ok(());
+        }
+        if matches!(self.motion, MotionMode::Cw | MotionMode::Ccw) {
+            return Err(alarm(
+                b.span,
+                "PS034",
+                "tool nose radius compensation cannot start on an arc",
+                "start G41/G42 in a G00 or G01 block with a move",
+            ));
+        }
+        if let Some(nose) = self.nose_for_offset(b.span) {
+            self.section = Some((side, nose, vec![]));
+        }
+        Ok(())
+    }
+
+    /// The nose of the offset in force: from the tool table, or the default with a warning;
+    /// `None` for offset 00 or a grooving blade (compensation ignored, with a warning).
+    pub(crate) fn nose_for_offset(&mut self, span: Span) -> Option<Nose> {
+        let offset = self.offset;
+        if offset == 0 {
+            return None;
+        }
+        Some(match self.nose_for(offset) {
+            Some(Some(n)) => n,
+            Some(None) => {
+                if !self.comp_warned.contains(&offset) {
+                    self.comp_warned.push(offset);
+                    self.warn(span, "LS-TNRC-BLADE", format!("G41/G42 ignored: offset {offset:02} is a grooving blade"), "compensation applies to pointed inserts; program the blade's corner directly");
+                }
+                return None;
+            }
+            None => {
+                let n = self.default_nose();
+                if !self.comp_warned.contains(&offset) {
+                    self.comp_warned.push(offset);
+                    self.warn(
+                        span,
+                        "LS-TNRC-DEFAULT",
+                        format!("offset {offset:02} has no tool table entry: compensating with the default nose r{} tip {}", n.radius, n.tip),
+                        "give the tool in the tool table (--tools) with its nose_radius and tip",
+                    );
+                }
+                n
+            }
+        })
+    }
+
+    /// Compensate and emit the collected section; its last move is the cancel move.
+    pub(crate) fn flush_compensation(&mut self) {
+        let Some((side, nose, section)) = self.section.take() else {
+            return;
+        };
+        if section.len() >= 3 {
+            // The programmed contour between start-up and cancel is an intended shape,
+            // unless a G70 already handed it over as its finishing shape.
+            let body = &section[1..section.len() - 1];
+            let mut points = vec![body[0].from];
+            for seg in body {
+                points.extend(seg.polyline(0.001).into_iter().skip(1));
+            }
+            let known = self.out.intended.iter().any(|i| {
+                i.kind == crate::IntendedKind::FinishingContour
+                    && i.points.get(1..) == Some(&points[..])
+            });
+            if !known {
+                self.out.intended.push(crate::Intended {
+                    kind: crate::IntendedKind::Compensated {
+                        part_on_left: side == Side::Right,
+                    },
+                    points,
+                    span: section[0].span,
+                });
+            }
+        }
+        let c = compensate(&section, side, nose);
+        self.out.segments.extend(c.segments);
+        self.out.alarms.extend(c.alarms);
+    }
+}
