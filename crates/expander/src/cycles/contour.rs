@@ -18,7 +18,7 @@
 //!   G41/G42 are read: G70 runs the shape compensated on that side; roughing ignores them.
 
 use super::Cycle;
-use crate::arc::{self, ArcError};
+use crate::arc::ArcWords;
 use crate::tnrc::Side;
 use crate::{Arc, Diagnostic, Pt, Span};
 use gcode::{Block, Word};
@@ -330,7 +330,7 @@ impl Reader {
         }
         let mut to = self.pos;
         let (mut x_given, mut z_given) = (false, false);
-        let (mut r_word, mut i_word, mut k_word) = (None, None, None);
+        let mut arc_words = ArcWords::default();
         for w in b.words.iter() {
             let v = w.value * self.unit;
             match w.letter {
@@ -354,9 +354,9 @@ impl Reader {
                 'U' => (to.r, x_given) = (self.pos.r + v / 2.0, true),
                 'Z' => (to.z, z_given) = (v + self.shift.z, true),
                 'W' => (to.z, z_given) = (self.pos.z + v, true),
-                'R' if self.mode >= 20 => r_word = Some(w),
-                'I' if self.mode >= 20 => i_word = Some(w),
-                'K' if self.mode >= 20 => k_word = Some(w),
+                'R' if self.mode >= 20 => arc_words.r = Some(w),
+                'I' if self.mode >= 20 => arc_words.i = Some(w),
+                'K' if self.mode >= 20 => arc_words.k = Some(w),
                 _ => {
                     return Err(Diagnostic::new(
                         w.span,
@@ -375,50 +375,15 @@ impl Reader {
             self.ns_span = b.span;
         }
         if !x_given && !z_given {
-            if let Some(w) = r_word.or(i_word).or(k_word) {
-                return Err(Diagnostic::new(
-                    w.span,
-                    "LS-ARC",
-                    "arc data without an end point",
-                    "give the arc's end point with X/U and Z/W",
-                ));
+            if let Some(alarm) = arc_words.without_end_point() {
+                return Err(alarm);
             }
             return Ok(());
         }
         let from = self.pos;
         let arc = if self.mode >= 20 {
             let ccw = self.mode == 30;
-            let centre = match (r_word, i_word, k_word) {
-                (Some(r), None, None) => {
-                    arc::centre_from_radius(from, to, r.value * self.unit, ccw)
-                        .map_err(|e| arc_alarm(r.span, e))?
-                }
-                (None, None, None) => {
-                    return Err(Diagnostic::new(
-                        b.span,
-                        "LS-ARC",
-                        "G02/G03 without R or I/K",
-                        "give the radius R, or the centre offset I (radius) and K",
-                    ))
-                }
-                (Some(r), _, _) => {
-                    return Err(Diagnostic::new(
-                        r.span,
-                        "LS-ARC",
-                        "arc given both R and I/K",
-                        "give either R or I/K, not both",
-                    ))
-                }
-                (None, i, k) => {
-                    let c = Pt::new(
-                        from.z + k.map_or(0.0, |k| k.value * self.unit),
-                        from.r + i.map_or(0.0, |i| i.value * self.unit),
-                    );
-                    let span = i.or(k).map_or(b.span, |w| w.span);
-                    arc::check_centre(from, to, c).map_err(|e| arc_alarm(span, e))?;
-                    c
-                }
-            };
+            let centre = arc_words.centre(from, to, ccw, self.unit, b.span)?;
             Some(Arc {
                 center: centre,
                 ccw,
@@ -440,27 +405,4 @@ impl Reader {
         self.pos = to;
         Ok(())
     }
-}
-
-/// The interpreter's arc alarms, at a word of the shape.
-fn arc_alarm(span: Span, e: ArcError) -> Diagnostic {
-    let (message, help) = match e {
-        ArcError::RadiusTooSmall { r, half_chord } => (
-            format!("arc radius R{r} is too small to reach the end point (at least {half_chord:.3} needed)"),
-            "R must be at least half the distance between start and end",
-        ),
-        ArcError::FullCircleWithR => (
-            "arc with R whose end point equals its start".to_string(),
-            "a full circle needs I/K, not R",
-        ),
-        ArcError::NonPositiveRadius => (
-            "arc radius must be positive".to_string(),
-            "give a positive R, or split the arc",
-        ),
-        ArcError::EndNotOnCircle { r_start, r_end } => (
-            format!("arc end point is not on the circle: radius {r_start:.4} at the start, {r_end:.4} at the end"),
-            "correct I/K (I is a radius value) or the end point",
-        ),
-    };
-    Diagnostic::new(span, "PS020", message, help)
 }

@@ -15,7 +15,6 @@ mod modal;
 mod motion;
 mod tool_facts;
 
-use crate::arc::ArcError;
 use crate::codes::{self, G04, G28, G50, G75_1};
 use crate::cycles::{self, Retained};
 use crate::tnrc::{Nose, Side};
@@ -263,24 +262,5 @@ impl<'m> Interp<'m> {
         let flow = self.m_codes_after(&after, &mut used, flow)?;
         used.check_all_used()?;
         Ok(flow)
-    }
-}
-
-fn arc_alarm(span: Span, e: ArcError) -> Diagnostic {
-    match e {
-        ArcError::RadiusTooSmall { r, half_chord } => alarm(
-            span,
-            "PS020",
-            format!("arc radius R{r} is too small to reach the end point (at least {half_chord:.3} needed)"),
-            "check the end point and the radius: R must be at least half the distance between start and end",
-        ),
-        ArcError::FullCircleWithR => alarm(span, "PS020", "arc with R whose end point equals its start", "a full circle needs I/K, not R"),
-        ArcError::NonPositiveRadius => alarm(span, "PS020", "arc radius must be positive", "arcs over 180° are not possible with R on this lathe; use I/K or split the arc"),
-        ArcError::EndNotOnCircle { r_start, r_end } => alarm(
-            span,
-            "PS020",
-            format!("arc end point is not on the circle: radius {r_start:.4} at the start, {r_end:.4} at the end"),
-            "correct I/K (I is a radius value) or the end point",
-        ),
     }
 }

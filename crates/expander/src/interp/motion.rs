@@ -2,8 +2,8 @@
 //! arcs, and emitting the segments (through the compensation buffer when one is open).
 
 use super::modal::MotionMode;
-use super::{alarm, arc_alarm, Interp};
-use crate::arc;
+use super::{alarm, Interp};
+use crate::arc::ArcWords;
 use crate::words::Words;
 use crate::{Arc, Diagnostic, Feed, Motion, Pt, RapidPath, Segment, Span, Spindle};
 use gcode::Block;
@@ -173,19 +173,17 @@ impl Interp<'_> {
 
     pub(super) fn motion_block(&mut self, b: &Block, used: &mut Words) -> Result<(), Diagnostic> {
         let is_arc = matches!(self.motion, MotionMode::Cw | MotionMode::Ccw);
-        let r_word = if is_arc { used.take('R') } else { None };
-        let i_word = if is_arc { used.take('I') } else { None };
-        let k_word = if is_arc { used.take('K') } else { None };
-        let Some(to) = self.target(used)? else {
-            if let Some(w) = r_word.or(i_word).or(k_word) {
-                return Err(alarm(
-                    w.span,
-                    "LS-ARC",
-                    "arc data without an end point",
-                    "give the arc's end point with X/U and Z/W",
-                ));
+        let arc_words = if is_arc {
+            ArcWords {
+                r: used.take('R'),
+                i: used.take('I'),
+                k: used.take('K'),
             }
-            return Ok(());
+        } else {
+            ArcWords::default()
+        };
+        let Some(to) = self.target(used)? else {
+            return arc_words.without_end_point().map_or(Ok(()), Err);
         };
         match self.motion {
             MotionMode::Rapid => self.rapid(b, to),
@@ -198,37 +196,7 @@ impl Interp<'_> {
             MotionMode::Cycle(_) => Ok(()),
             MotionMode::Cw | MotionMode::Ccw => {
                 let ccw = self.motion == MotionMode::Ccw;
-                let u = self.unit();
-                let from = self.pos;
-                let centre = match (r_word, i_word, k_word) {
-                    (Some(r), None, None) => arc::centre_from_radius(from, to, r.value * u, ccw)
-                        .map_err(|e| arc_alarm(r.span, e))?,
-                    (None, None, None) => {
-                        return Err(alarm(
-                            b.span,
-                            "LS-ARC",
-                            "G02/G03 without R or I/K",
-                            "give the radius R, or the centre offset I (radius) and K",
-                        ));
-                    }
-                    (Some(r), _, _) => {
-                        return Err(alarm(
-                            r.span,
-                            "LS-ARC",
-                            "arc given both R and I/K",
-                            "give either R or I/K, not both",
-                        ));
-                    }
-                    (None, i, k) => {
-                        let c = Pt::new(
-                            from.z + k.map_or(0.0, |k| k.value * u),
-                            from.r + i.map_or(0.0, |i| i.value * u),
-                        );
-                        let span = i.or(k).map(|w| w.span).unwrap_or(b.span);
-                        arc::check_centre(from, to, c).map_err(|e| arc_alarm(span, e))?;
-                        c
-                    }
-                };
+                let centre = arc_words.centre(self.pos, to, ccw, self.unit(), b.span)?;
                 self.push(
                     b,
                     Motion::Feed,
