@@ -16,7 +16,7 @@ mod motion;
 mod tool_facts;
 
 use crate::codes::{self, G04, G28, G50, G75_1};
-use crate::cycles::{self, Retained};
+use crate::cycles::{self, g75_1, Retained};
 use crate::tnrc::{Nose, Side};
 use crate::words::Words;
 use crate::{Diagnostic, Machine, Pt, Segment, Span};
@@ -103,7 +103,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
                 .last()
                 .map(|b| b.span)
                 .unwrap_or_default();
-            result = Err(g75_1_unfinished(span));
+            result = Err(it.g75_1_unfinished(span));
         }
         match result {
             Ok(Exit::End) => {}
@@ -142,16 +142,6 @@ pub(crate) struct Interp<'m> {
     pub(crate) section: Option<(Side, Nose, Vec<Segment>)>,
     /// Offsets already warned about (blade, no entry).
     pub(crate) comp_warned: Vec<u32>,
-}
-
-/// A G75.1 geometry block not followed by its process block.
-fn g75_1_unfinished(span: Span) -> Diagnostic {
-    alarm(
-        span,
-        "LS-G75.1-BLOCKS",
-        "the G75.1 geometry block is not followed by its process block",
-        "write the process block (G75.1 R… ) right after the geometry block (G75.1 X Z P Q H D …)",
-    )
 }
 
 /// A controller alarm.
@@ -210,12 +200,21 @@ impl<'m> Interp<'m> {
         }
     }
 
+    /// The alarm for a G75.1 geometry block whose process block does not follow.
+    fn g75_1_unfinished(&self, span: Span) -> Diagnostic {
+        g75_1::pairing::alarm(
+            span,
+            self.retained.g75_1.as_ref(),
+            g75_1::pairing::Break::Interrupted,
+        )
+    }
+
     /// Execute one block: its modal words, its one action, then its flow words.
     fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
         let b = &sub.blocks[index];
         let mut used = Words::new(b);
         if self.retained.g75_1.is_some() && !modal::has_g(b, |t| t == G75_1) {
-            return Err(g75_1_unfinished(b.span));
+            return Err(self.g75_1_unfinished(b.span));
         }
         let g = self.g_codes(b, &mut used)?;
         self.feed_speed_tool(&mut used, g.one_shot.map(|(t, _)| t))?;
