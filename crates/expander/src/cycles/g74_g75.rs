@@ -17,12 +17,8 @@
 //! - A cycle with no infeed travel (G75 without X/U or with U0; G74 without Z/W) cuts nothing
 //!   and is an alarm rather than a silent no-op.
 
-use super::{Cycle, Move, Output};
+use super::{Cycle, Move, Output, MAX_MOVES};
 use crate::{Diagnostic, Pt, ToolHint};
-
-/// The most moves one G74/G75 block may expand to; more is an alarm (a P1 Q1 typo over a
-/// long groove would otherwise make billions of moves).
-pub(crate) const MAX_MOVES: usize = 1_000_000;
 
 /// Expand one G74/G75 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {

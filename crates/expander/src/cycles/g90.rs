@@ -4,11 +4,12 @@
 //! are retained. R is the radius difference cut start minus cut end, signed.
 
 use super::{Cycle, Move, Output};
+use crate::codes::G90;
 use crate::Pt;
 
 /// Expand one G90 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
-    let w = super::g94::turn_words(c, 900)?;
+    let w = c.turn_words(G90)?;
     let a = c.start;
     let (end, r) = (w.end, w.r);
     // When R and U have different signs, |R| ≤ |U/2| (seed 001, figure 3-57 cases 3 and 4).

@@ -6,11 +6,12 @@
 //! each depth). R is the radius difference thread start minus thread end (taper).
 
 use super::{Cycle, Move, Output};
+use crate::codes::G92;
 use crate::{Motion, Pt};
 
 /// Expand one G92 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
-    let w = super::g94::turn_words(c, 920)?;
+    let w = c.turn_words(G92)?;
     let a = c.start;
     let (end, r) = (w.end, w.r);
     let mut thread = Move::feed(end);

@@ -2,32 +2,13 @@
 //!
 //! `G94 X(U) Z(W) [R] F;` R = Z of cut start minus Z of cut end. Modal like G90.
 
-use super::{Cycle, Move, Output, TurnWords};
+use super::{Cycle, Move, Output};
+use crate::codes::G94;
 use crate::{Diagnostic, Pt};
-
-/// The end point and R of a G90/G92/G94 block, filling what the block omits from the
-/// retained words of the same cycle (or, for a new cycle, the start point and R0).
-pub(super) fn turn_words(c: &mut Cycle, code: i32) -> Result<TurnWords, Diagnostic> {
-    let prev = c.retained.turn.filter(|t| t.code == code && c.g.is_none());
-    let x = c.x_target()?;
-    let z = c.z_target()?;
-    let r = c.words.mm('R', c.unit);
-    let end = Pt::new(
-        z.or(prev.map(|p| p.end.z)).unwrap_or(c.start.z),
-        x.or(prev.map(|p| p.end.r)).unwrap_or(c.start.r),
-    );
-    let words = TurnWords {
-        code,
-        end,
-        r: r.or(prev.map(|p| p.r)).unwrap_or(0.0),
-    };
-    c.retained.turn = Some(words);
-    Ok(words)
-}
 
 /// Expand one G94 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
-    let w = turn_words(c, 940)?;
+    let w = c.turn_words(G94)?;
     let a = c.start;
     let (end, r) = (w.end, w.r);
     let half_w = end.z - a.z;

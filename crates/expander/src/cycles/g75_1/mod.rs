@@ -31,13 +31,10 @@ mod shape;
 
 use pairing::Break;
 
-use super::{Cycle, Move, Output};
+use super::{Cycle, Move, Output, MAX_MOVES};
 use crate::{Arc, Diagnostic, IntendedKind, Motion, Pt, ToolHint};
 use shape::*;
 pub use shape::{groove_shape, Corner, Trapezoid};
-
-/// The most moves one G75.1 may expand to; more is an alarm.
-const MAX_MOVES: usize = super::g74_g75::MAX_MOVES;
 
 /// The geometry block's words, kept until the process block arrives.
 #[derive(Debug, Clone, PartialEq, Default)]
