@@ -2,25 +2,9 @@
 
 pub use gcode::Span;
 
-/// A point in the half plane: `z` axial (mm), `r` radius (mm) = X / 2.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Pt {
-    /// Axial coordinate, mm.
-    pub z: f64,
-    /// Radius, mm (X / 2).
-    pub r: f64,
-}
-
-impl Pt {
-    /// A point from axial coordinate and radius.
-    pub const fn new(z: f64, r: f64) -> Self {
-        Self { z, r }
-    }
-    /// Euclidean distance to `other`.
-    pub fn dist(self, other: Self) -> f64 {
-        (self.z - other.z).hypot(self.r - other.r)
-    }
-}
+/// A point in the half plane: `z` axial (mm), `r` radius (mm) = X / 2 — the geometry
+/// kernel's point, re-exported so that downstream code names it `expander::Pt`.
+pub use geom::Pt;
 
 /// How the tool moves along a segment.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -161,26 +145,7 @@ impl Segment {
     /// A full circle (start == end) sweeps ±2π.
     pub fn sweep_angle(&self) -> f64 {
         let Some(a) = self.arc else { return 0.0 };
-        let a0 = (self.from.r - a.center.r).atan2(self.from.z - a.center.z);
-        let a1 = (self.to.r - a.center.r).atan2(self.to.z - a.center.z);
-        let tau = std::f64::consts::TAU;
-        let mut d = a1 - a0;
-        if a.ccw {
-            while d <= 1e-12 {
-                d += tau;
-            }
-            while d > tau + 1e-12 {
-                d -= tau;
-            }
-        } else {
-            while d >= -1e-12 {
-                d -= tau;
-            }
-            while d < -tau - 1e-12 {
-                d += tau;
-            }
-        }
-        d
+        geom::arc::sweep_between(self.from, self.to, a.center, a.ccw)
     }
 
     /// Points along the segment such that no chord strays more than `tol` mm from the
@@ -189,26 +154,12 @@ impl Segment {
         let Some(a) = self.arc else {
             return vec![self.from, self.to];
         };
-        let rad = a.center.dist(self.from);
-        let sweep = self.sweep_angle();
-        let tol = tol.max(1e-6);
-        // sagitta s = rad (1 - cos(θ/2)) <= tol
-        let max_step = if rad <= tol {
-            std::f64::consts::PI
-        } else {
-            2.0 * (1.0 - tol / rad).acos()
-        };
-        let n = ((sweep.abs() / max_step).ceil() as usize).clamp(1, 100_000);
-        let a0 = (self.from.r - a.center.r).atan2(self.from.z - a.center.z);
+        let arc = geom::arc::Arc::between(self.from, self.to, a.center, a.ccw);
+        let n = arc.chords(tol.max(1e-6));
+        // the end points exactly as given; the angle (sweep · i) / n as it always was
         let mut pts = Vec::with_capacity(n + 1);
         pts.push(self.from);
-        for i in 1..n {
-            let t = a0 + sweep * i as f64 / n as f64;
-            pts.push(Pt::new(
-                a.center.z + rad * t.cos(),
-                a.center.r + rad * t.sin(),
-            ));
-        }
+        pts.extend((1..n).map(|i| arc.at_angle(arc.start + arc.sweep * i as f64 / n as f64)));
         pts.push(self.to);
         pts
     }

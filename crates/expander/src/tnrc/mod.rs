@@ -56,37 +56,13 @@ impl Nose {
     }
 }
 
-fn add(a: Pt, b: Pt) -> Pt {
-    Pt::new(a.z + b.z, a.r + b.r)
-}
-fn sub(a: Pt, b: Pt) -> Pt {
-    Pt::new(a.z - b.z, a.r - b.r)
-}
-fn scale(a: Pt, k: f64) -> Pt {
-    Pt::new(a.z * k, a.r * k)
-}
-fn dot(a: Pt, b: Pt) -> f64 {
-    a.z * b.z + a.r * b.r
-}
-fn cross(a: Pt, b: Pt) -> f64 {
-    a.z * b.r - a.r * b.z
-}
-fn unit(a: Pt) -> Pt {
-    let l = a.z.hypot(a.r);
-    if l == 0.0 {
-        a
-    } else {
-        scale(a, 1.0 / l)
-    }
-}
-
 /// Unit tangent of a segment at its start (`at_end` false) or end.
 fn tangent(s: &Segment, at_end: bool) -> Pt {
     match s.arc {
-        None => unit(sub(s.to, s.from)),
+        None => (s.to - s.from).unit(),
         Some(a) => {
             let p = if at_end { s.to } else { s.from };
-            let radial = unit(sub(p, a.center));
+            let radial = (p - a.center).unit();
             // counter-clockwise: tangent is the radial vector turned +90°
             if a.ccw {
                 Pt::new(-radial.r, radial.z)
@@ -117,7 +93,7 @@ fn offset_of(s: &Segment, side: Side, r: f64) -> Offset {
         None => {
             let d = tangent(s, false);
             Offset::Line {
-                p: add(s.from, scale(normal(side, d), r)),
+                p: (s.from + (normal(side, d) * r)),
                 d,
             }
         }
@@ -138,24 +114,24 @@ fn offset_of(s: &Segment, side: Side, r: f64) -> Offset {
 fn intersect(a: Offset, b: Offset) -> Vec<Pt> {
     match (a, b) {
         (Offset::Line { p, d }, Offset::Line { p: q, d: e }) => {
-            let den = cross(d, e);
+            let den = d.cross(e);
             if den.abs() < 1e-12 {
                 return vec![];
             }
-            let t = cross(sub(q, p), e) / den;
-            vec![add(p, scale(d, t))]
+            let t = ((q - p).cross(e)) / den;
+            vec![(p + (d * t))]
         }
         (Offset::Line { p, d }, Offset::Circle { c, radius, .. })
         | (Offset::Circle { c, radius, .. }, Offset::Line { p, d }) => {
-            let f = sub(p, c);
-            let bq = dot(f, d);
-            let cq = dot(f, f) - radius * radius;
+            let f = p - c;
+            let bq = f.dot(d);
+            let cq = (f.dot(f)) - radius * radius;
             let disc = bq * bq - cq;
             if disc < 0.0 {
                 return vec![];
             }
             let s = disc.sqrt();
-            vec![add(p, scale(d, -bq - s)), add(p, scale(d, -bq + s))]
+            vec![(p + (d * (-bq - s))), (p + (d * (-bq + s)))]
         }
         (
             Offset::Circle {
@@ -165,16 +141,16 @@ fn intersect(a: Offset, b: Offset) -> Vec<Pt> {
                 c: c2, radius: r2, ..
             },
         ) => {
-            let dv = sub(c2, c1);
+            let dv = c2 - c1;
             let dd = dv.z.hypot(dv.r);
             if dd < 1e-12 || dd > r1 + r2 || dd < (r1 - r2).abs() {
                 return vec![];
             }
             let a = (r1 * r1 - r2 * r2 + dd * dd) / (2.0 * dd);
             let h = (r1 * r1 - a * a).max(0.0).sqrt();
-            let m = add(c1, scale(dv, a / dd));
+            let m = c1 + (dv * (a / dd));
             let n = Pt::new(-dv.r / dd, dv.z / dd);
-            vec![add(m, scale(n, h)), add(m, scale(n, -h))]
+            vec![(m + (n * h)), (m + (n * (-h)))]
         }
     }
 }
@@ -183,7 +159,7 @@ fn intersect(a: Offset, b: Offset) -> Vec<Pt> {
 /// (a length for lines, an angle for arcs), used to detect elements that run backwards.
 fn progress(o: Offset, from: Pt, p: Pt) -> f64 {
     match o {
-        Offset::Line { d, .. } => dot(sub(p, from), d),
+        Offset::Line { d, .. } => (p - from).dot(d),
         Offset::Circle { c, ccw, .. } => {
             let a0 = (from.r - c.r).atan2(from.z - c.z);
             let a1 = (p.r - c.r).atan2(p.z - c.z);
@@ -225,7 +201,7 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
     let last = section.len() - 1;
     // Elements 1..last are compensated; 0 is the start-up, `last` the cancel.
     let body = &section[1..last];
-    let with_tip = |p: Pt| add(p, tip);
+    let with_tip = |p: Pt| p + tip;
 
     if body.is_empty() {
         // Start-up straight into cancel: the nose touches nothing in between.
@@ -235,13 +211,8 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
 
     let offsets: Vec<Offset> = body.iter().map(|s| offset_of(s, side, r)).collect();
     // Perpendicular points at each element's ends.
-    let perp_start = |i: usize| {
-        add(
-            body[i].from,
-            scale(normal(side, tangent(&body[i], false)), r),
-        )
-    };
-    let perp_end = |i: usize| add(body[i].to, scale(normal(side, tangent(&body[i], true)), r));
+    let perp_start = |i: usize| (body[i].from) + (normal(side, tangent(&body[i], false)) * r);
+    let perp_end = |i: usize| (body[i].to) + (normal(side, tangent(&body[i], true)) * r);
 
     // Start-up: ends perpendicular to the next block's start (type A).
     let mut cur = perp_start(0);
@@ -267,10 +238,11 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
         let end = if i + 1 < body.len() {
             let t1 = tangent(s, true);
             let t2 = tangent(&body[i + 1], false);
-            let turn = cross(t1, t2);
-            let smooth = turn.abs() < 1e-9 && dot(t1, t2) > 0.0;
+            let turn = t1.cross(t2);
+            let smooth = turn.abs() < 1e-9 && (t1.dot(t2)) > 0.0;
             let outside = !smooth
-                && (dot(t1, t2) < 0.0 && turn.abs() < 1e-9 || (side == Side::Left) == (turn < 0.0));
+                && ((t1.dot(t2)) < 0.0 && turn.abs() < 1e-9
+                    || (side == Side::Left) == (turn < 0.0));
             if smooth {
                 perp_start(i + 1)
             } else if outside {
@@ -315,7 +287,7 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
         }
         let arc = match (s.arc, o) {
             (Some(a), Offset::Circle { c, .. }) => Some(Arc {
-                center: add(c, tip),
+                center: (c + tip),
                 ccw: a.ccw,
             }),
             _ => None,
@@ -338,7 +310,7 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
                     from: with_tip(a),
                     to: with_tip(b),
                     arc: Some(Arc {
-                        center: add(corner, tip),
+                        center: (corner + tip),
                         ccw,
                     }),
                     ..*s
