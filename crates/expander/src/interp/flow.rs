@@ -2,7 +2,7 @@
 //! (M99) and the program end (M02/M30). GOTO, WHILE and macro calls belong here too.
 
 use super::{alarm, Interp};
-use crate::words::Words;
+use crate::words::{whole_in, Words};
 use crate::{Diagnostic, Span};
 use gcode::{Program, Word};
 
@@ -175,7 +175,7 @@ fn m98(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
             "write M98 P<program number>, e.g. M98 P1234",
         )
     })?;
-    if p.has_point || p.value < 1.0 || p.value > 99_999_999.0 {
+    if !whole_in(p, 1.0, 99_999_999.0) {
         return Err(alarm(
             p.span,
             "PS078",
@@ -190,7 +190,7 @@ fn m98(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
         (1, v)
     };
     if let Some(l) = used.take('L') {
-        if l.has_point || l.value < 1.0 || l.value > 9999.0 {
+        if !whole_in(l, 1.0, 9999.0) {
             return Err(alarm(
                 l.span,
                 "LS-VALUE",

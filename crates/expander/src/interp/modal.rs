@@ -3,7 +3,7 @@
 
 use super::{alarm, Interp};
 use crate::codes::{self, *};
-use crate::words::Words;
+use crate::words::{whole_in, Words};
 use crate::{cycles, Diagnostic};
 use gcode::{Block, Word};
 
@@ -169,7 +169,7 @@ impl Interp<'_> {
             }
         }
         if let Some(t) = used.take('T') {
-            if t.has_point || t.value < 0.0 || t.value > 9999.0 {
+            if !whole_in(t, 0.0, 9999.0) {
                 return Err(alarm(
                     t.span,
                     "LS-T-WORD",
