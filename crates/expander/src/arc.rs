@@ -73,69 +73,87 @@ pub fn check_centre(from: Pt, to: Pt, centre: Pt) -> Result<(), ArcError> {
     Ok(())
 }
 
-/// The centre of a G02/G03 from its words: R (at most 180°) or I (radius) and K, relative
-/// to the start; with the controller's alarms at the offending word. The one reader of arc
-/// words, for the interpreter and the finishing shapes of G70–G73.
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn centre_from_words(
-    from: Pt,
-    to: Pt,
-    ccw: bool,
-    r: Option<&Word>,
-    i: Option<&Word>,
-    k: Option<&Word>,
-    unit: f64,
-    block: Span,
-) -> Result<Pt, Diagnostic> {
-    match (r, i, k) {
-        (Some(r), None, None) => {
-            centre_from_radius(from, to, r.value * unit, ccw).map_err(|e| alarm(r.span, e))
-        }
-        (None, None, None) => Err(Diagnostic::new(
-            block,
-            "LS-ARC",
-            "G02/G03 without R or I/K",
-            "give the radius R, or the centre offset I (radius) and K",
-        )),
-        (Some(r), _, _) => Err(Diagnostic::new(
-            r.span,
-            "LS-ARC",
-            "arc given both R and I/K",
-            "give either R or I/K, not both",
-        )),
-        (None, i, k) => {
-            let c = Pt::new(
-                from.z + k.map_or(0.0, |k| k.value * unit),
-                from.r + i.map_or(0.0, |i| i.value * unit),
-            );
-            let span = i.or(k).map_or(block, |w| w.span);
-            check_centre(from, to, c).map_err(|e| alarm(span, e))?;
-            Ok(c)
+/// The arc words of one G02/G03 block, as read: R, or the centre offsets I (radius) and K.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct ArcWords<'b> {
+    /// R, the radius.
+    pub(crate) r: Option<&'b Word>,
+    /// I, the centre's radial offset from the start.
+    pub(crate) i: Option<&'b Word>,
+    /// K, the centre's axial offset from the start.
+    pub(crate) k: Option<&'b Word>,
+}
+
+impl ArcWords<'_> {
+    /// The alarm for arc words in a block with no end point; `None` when there are none.
+    pub(crate) fn without_end_point(&self) -> Option<Diagnostic> {
+        self.r.or(self.i).or(self.k).map(|w| {
+            Diagnostic::new(
+                w.span,
+                "LS-ARC",
+                "arc data without an end point",
+                "give the arc's end point with X/U and Z/W",
+            )
+        })
+    }
+
+    /// The centre of the arc from `from` to `to` (mm per input unit `unit`), with the
+    /// controller's alarms; `span` is the block's, for an arc with neither R nor I/K.
+    pub(crate) fn centre(
+        &self,
+        from: Pt,
+        to: Pt,
+        ccw: bool,
+        unit: f64,
+        span: Span,
+    ) -> Result<Pt, Diagnostic> {
+        match (self.r, self.i, self.k) {
+            (Some(r), None, None) => {
+                centre_from_radius(from, to, r.value * unit, ccw).map_err(|e| alarm(r.span, e))
+            }
+            (None, None, None) => Err(Diagnostic::new(
+                span,
+                "LS-ARC",
+                "G02/G03 without R or I/K",
+                "give the radius R, or the centre offset I (radius) and K",
+            )),
+            (Some(r), _, _) => Err(Diagnostic::new(
+                r.span,
+                "LS-ARC",
+                "arc given both R and I/K",
+                "give either R or I/K, not both",
+            )),
+            (None, i, k) => {
+                let c = Pt::new(
+                    from.z + k.map_or(0.0, |k| k.value * unit),
+                    from.r + i.map_or(0.0, |i| i.value * unit),
+                );
+                let span = i.or(k).map_or(span, |w| w.span);
+                check_centre(from, to, c).map_err(|e| alarm(span, e))?;
+                Ok(c)
+            }
         }
     }
 }
 
-/// An arc error as the controller's alarm PS020 at `span`.
-pub(crate) fn alarm(span: Span, e: ArcError) -> Diagnostic {
-    let (message, help) = match e {
-        ArcError::RadiusTooSmall { r, half_chord } => (
+/// The controller alarm (PS020) for an arc that cannot be made, at the word at fault.
+fn alarm(span: Span, e: ArcError) -> Diagnostic {
+    match e {
+        ArcError::RadiusTooSmall { r, half_chord } => Diagnostic::new(
+            span,
+            "PS020",
             format!("arc radius R{r} is too small to reach the end point (at least {half_chord:.3} needed)"),
             "check the end point and the radius: R must be at least half the distance between start and end",
         ),
-        ArcError::FullCircleWithR => (
-            "arc with R whose end point equals its start".to_string(),
-            "a full circle needs I/K, not R",
-        ),
-        ArcError::NonPositiveRadius => (
-            "arc radius must be positive".to_string(),
-            "give a positive R; arcs over 180° are not possible with R: use I/K or split the arc",
-        ),
-        ArcError::EndNotOnCircle { r_start, r_end } => (
+        ArcError::FullCircleWithR => Diagnostic::new(span, "PS020", "arc with R whose end point equals its start", "a full circle needs I/K, not R"),
+        ArcError::NonPositiveRadius => Diagnostic::new(span, "PS020", "arc radius must be positive", "arcs over 180° are not possible with R on this lathe; use I/K or split the arc"),
+        ArcError::EndNotOnCircle { r_start, r_end } => Diagnostic::new(
+            span,
+            "PS020",
             format!("arc end point is not on the circle: radius {r_start:.4} at the start, {r_end:.4} at the end"),
             "correct I/K (I is a radius value) or the end point",
         ),
-    };
-    Diagnostic::new(span, "PS020", message, help)
+    }
 }
 
 #[cfg(test)]

@@ -1,75 +1,78 @@
-//! G codes by name. A G word's value in tenths (`G75.1` is 751), as
-//! [`gcode::Word::code_tenths`] gives it, so the interpreter and the cycles match on names
-//! instead of bare numbers.
+//! G codes by their value in tenths (`Word::code_tenths`): G75.1 is 751. Named so that the
+//! interpreter and the cycles read `G75_1`, not a bare 751.
 
-/// Rapid positioning.
+/// G00 rapid.
 pub(crate) const G00: i32 = 0;
-/// Linear interpolation.
+/// G01 line.
 pub(crate) const G01: i32 = 10;
-/// Circular interpolation, clockwise.
+/// G02 clockwise arc.
 pub(crate) const G02: i32 = 20;
-/// Circular interpolation, counter-clockwise.
+/// G03 counter-clockwise arc.
 pub(crate) const G03: i32 = 30;
-/// Dwell.
+/// G04 dwell.
 pub(crate) const G04: i32 = 40;
-/// Inch input.
+/// G20 inch input.
 pub(crate) const G20: i32 = 200;
-/// Metric input.
+/// G21 metric input.
 pub(crate) const G21: i32 = 210;
-/// Reference point return.
+/// G28 reference point return.
 pub(crate) const G28: i32 = 280;
-/// Thread cutting, one pass.
+/// G32 thread cutting.
 pub(crate) const G32: i32 = 320;
-/// Tool nose radius compensation cancel.
+/// G40 compensation cancel.
 pub(crate) const G40: i32 = 400;
-/// Tool nose radius compensation, tool left of the path.
+/// G41 compensation, tool left of the contour.
 pub(crate) const G41: i32 = 410;
-/// Tool nose radius compensation, tool right of the path.
+/// G42 compensation, tool right of the contour.
 pub(crate) const G42: i32 = 420;
-/// Coordinate system setting / spindle clamp.
+/// G50 coordinate setting (and G50 S spindle clamp).
 pub(crate) const G50: i32 = 500;
-/// Work coordinate systems G54 … G59.
+/// G54, the first work coordinate system; G55–G59 follow in steps of 10.
 pub(crate) const G54: i32 = 540;
-/// The last work coordinate system.
+/// G59, the last work coordinate system.
 pub(crate) const G59: i32 = 590;
-/// Finishing cycle.
+/// G70 finishing cycle.
 pub(crate) const G70: i32 = 700;
-/// Stock removal in turning.
+/// G71 stock removal in turning.
 pub(crate) const G71: i32 = 710;
-/// Stock removal in facing.
+/// G72 stock removal in facing.
 pub(crate) const G72: i32 = 720;
-/// Pattern repeating.
+/// G73 pattern repeating.
 pub(crate) const G73: i32 = 730;
-/// Face grooving / peck drilling.
+/// G74 face peck drilling / grooving.
 pub(crate) const G74: i32 = 740;
-/// Radial grooving.
+/// G75 radial grooving.
 pub(crate) const G75: i32 = 750;
-/// GSK radial trapezoid groove cycle.
+/// G75.1 GSK trapezoid groove cycle.
 pub(crate) const G75_1: i32 = 751;
-/// Multiple threading cycle.
+/// G76 multiple threading cycle (recognised, not run yet).
 pub(crate) const G76: i32 = 760;
-/// Axial (OD/ID) turning cycle.
+/// G90 turning cycle.
 pub(crate) const G90: i32 = 900;
-/// Threading cycle.
+/// G92 threading cycle.
 pub(crate) const G92: i32 = 920;
-/// Face turning cycle.
+/// G94 facing cycle.
 pub(crate) const G94: i32 = 940;
-/// Constant surface speed.
+/// G96 constant surface speed.
 pub(crate) const G96: i32 = 960;
-/// Constant spindle speed.
+/// G97 constant spindle speed.
 pub(crate) const G97: i32 = 970;
-/// Feed per minute.
+/// G98 feed per minute.
 pub(crate) const G98: i32 = 980;
-/// Feed per revolution.
+/// G99 feed per revolution.
 pub(crate) const G99: i32 = 990;
 
-/// Whether `t` is one of G54 … G59.
-pub(crate) fn is_work_offset(t: i32) -> bool {
-    (G54..=G59).contains(&t) && t % 10 == 0
+/// The work coordinate system index (0 for G54 … 5 for G59) of a G code, if it is one.
+pub(crate) fn work_offset(t: i32) -> Option<usize> {
+    (G54..=G59)
+        .contains(&t)
+        .then_some(t - G54)
+        .filter(|d| d % 10 == 0)
+        .map(|d| (d / 10) as usize)
 }
 
-/// The name of a G code in tenths: `G01`, `G75.1`.
-pub(crate) fn name(t: i32) -> String {
+/// The name of a G code as the manuals write it: G01, G75.1.
+pub(crate) fn g_name(t: i32) -> String {
     if t % 10 == 0 {
         format!("G{:02}", t / 10)
     } else {

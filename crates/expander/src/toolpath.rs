@@ -3,7 +3,7 @@
 pub use gcode::Span;
 
 /// A point in the half plane: `z` axial (mm), `r` radius (mm) = X / 2 — the geometry
-/// kernel's point, with its arithmetic.
+/// kernel's point, re-exported so that downstream code names it `expander::Pt`.
 pub use geom::Pt;
 
 /// How the tool moves along a segment.
@@ -144,9 +144,8 @@ impl Segment {
     /// Signed swept angle of an arc in radians (positive counter-clockwise); 0 for lines.
     /// A full circle (start == end) sweeps ±2π.
     pub fn sweep_angle(&self) -> f64 {
-        self.arc.map_or(0.0, |a| {
-            geom::arc::sweep_between(self.from, self.to, a.center, a.ccw)
-        })
+        let Some(a) = self.arc else { return 0.0 };
+        geom::arc::sweep_between(self.from, self.to, a.center, a.ccw)
     }
 
     /// Points along the segment such that no chord strays more than `tol` mm from the
@@ -156,12 +155,12 @@ impl Segment {
             return vec![self.from, self.to];
         };
         let arc = geom::arc::Arc::between(self.from, self.to, a.center, a.ccw);
-        let mut pts = arc.points(arc.chords(tol.max(1e-6)));
-        // the ends exactly as programmed
-        pts[0] = self.from;
-        if let Some(last) = pts.last_mut() {
-            *last = self.to;
-        }
+        let n = arc.chords(tol.max(1e-6));
+        // the end points exactly as given; the angle (sweep · i) / n as it always was
+        let mut pts = Vec::with_capacity(n + 1);
+        pts.push(self.from);
+        pts.extend((1..n).map(|i| arc.at_angle(arc.start + arc.sweep * i as f64 / n as f64)));
+        pts.push(self.to);
         pts
     }
 }

@@ -107,3 +107,8 @@ impl<'b> Words<'b> {
         self.block.span
     }
 }
+
+/// Whether a word is a whole number (written without a decimal point) within `lo ..= hi`.
+pub(crate) fn whole_in(w: &Word, lo: f64, hi: f64) -> bool {
+    !w.has_point && (lo..=hi).contains(&w.value)
+}

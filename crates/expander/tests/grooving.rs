@@ -292,6 +292,22 @@ fn g75_1_o0008_expansion() {
     insta::assert_snapshot!(listing(&run_with(&asset("O0008.nc"), &is_c())));
 }
 
+/// O0008 as printed on the IS-C machine profile that gives the feed the program lacks
+/// (assets/machines/gsk980tdi-isc.toml: G98, power-on feed 100 mm/min): the whole cycle
+/// runs on the groove P1 Z30 X50, P2 Z20 X30, P3 Z10 X30, P4 Z-7.32 X50.
+#[test]
+fn g75_1_o0008_motion_on_the_isc_profile() {
+    let text = std::fs::read_to_string(format!(
+        "{}/../../assets/machines/gsk980tdi-isc.toml",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap();
+    let machine = Machine::from_toml(&text).unwrap();
+    let tp = run_with(&asset("O0008.nc"), &machine);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    insta::assert_snapshot!(listing(&tp));
+}
+
 /// O0008 with a feed and the 4 mm blade given as I4: plunges from Z20 (where the blade fits
 /// at the floor inside the 45° flank) by 5 mm steps, the last with the far corner on
 /// the 30° flank at the floor (reference at Z10 + 4 = Z14), then the roughing contour.

@@ -18,7 +18,7 @@
 //!   G41/G42 are read: G70 runs the shape compensated on that side; roughing ignores them.
 
 use super::Cycle;
-use crate::arc;
+use crate::arc::ArcWords;
 use crate::tnrc::Side;
 use crate::{Arc, Diagnostic, Pt, Span};
 use gcode::{Block, Word};
@@ -330,7 +330,7 @@ impl Reader {
         }
         let mut to = self.pos;
         let (mut x_given, mut z_given) = (false, false);
-        let (mut r_word, mut i_word, mut k_word) = (None, None, None);
+        let mut arc_words = ArcWords::default();
         for w in b.words.iter() {
             let v = w.value * self.unit;
             match w.letter {
@@ -354,9 +354,9 @@ impl Reader {
                 'U' => (to.r, x_given) = (self.pos.r + v / 2.0, true),
                 'Z' => (to.z, z_given) = (v + self.shift.z, true),
                 'W' => (to.z, z_given) = (self.pos.z + v, true),
-                'R' if self.mode >= 20 => r_word = Some(w),
-                'I' if self.mode >= 20 => i_word = Some(w),
-                'K' if self.mode >= 20 => k_word = Some(w),
+                'R' if self.mode >= 20 => arc_words.r = Some(w),
+                'I' if self.mode >= 20 => arc_words.i = Some(w),
+                'K' if self.mode >= 20 => arc_words.k = Some(w),
                 _ => {
                     return Err(Diagnostic::new(
                         w.span,
@@ -375,21 +375,15 @@ impl Reader {
             self.ns_span = b.span;
         }
         if !x_given && !z_given {
-            if let Some(w) = r_word.or(i_word).or(k_word) {
-                return Err(Diagnostic::new(
-                    w.span,
-                    "LS-ARC",
-                    "arc data without an end point",
-                    "give the arc's end point with X/U and Z/W",
-                ));
+            if let Some(alarm) = arc_words.without_end_point() {
+                return Err(alarm);
             }
             return Ok(());
         }
         let from = self.pos;
         let arc = if self.mode >= 20 {
             let ccw = self.mode == 30;
-            let centre =
-                arc::centre_from_words(from, to, ccw, r_word, i_word, k_word, self.unit, b.span)?;
+            let centre = arc_words.centre(from, to, ccw, self.unit, b.span)?;
             Some(Arc {
                 center: centre,
                 ccw,

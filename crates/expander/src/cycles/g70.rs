@@ -9,27 +9,15 @@
 //! start-up, the rapid back to A the cancel (spec/tnrc.md). The program continues
 //! after nf when the shape follows the G70 block, else after the G70 block (FANUC).
 
-use super::contour;
+use super::{contour, passes};
 use super::{Cycle, Move, Output};
 use crate::Diagnostic;
 
 /// Expand one G70 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     let mut shape = contour::read(c)?;
-    let mut moves = Vec::with_capacity(shape.elements.len() + 1);
     // ① the shape A → B → C as written, each element with its own motion and F
-    for e in &shape.elements {
-        let mut m = if e.rapid {
-            Move::rapid(e.to)
-        } else {
-            Move::feed(e.to)
-        };
-        m.arc = e.arc;
-        m.feed = e.feed;
-        m.modes = Some(e.modes);
-        m.span = Some(e.span);
-        moves.push(m);
-    }
+    let mut moves = passes::finishing(&shape);
     // ② rapid back to the start point A
     moves.push(Move::rapid(shape.start));
     let mut out = Output {

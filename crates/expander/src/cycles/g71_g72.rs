@@ -33,7 +33,7 @@
 //! layer moves carry the cycle block's span; the final pass carries the shape's lines.
 
 use super::contour::{self, FinishingShape};
-use super::{Cycle, Move, Output};
+use super::{passes, Cycle, Move, Output};
 use crate::{Diagnostic, Pt, Span};
 
 /// Most layers one cycle may cut (a microscopic Δd is an error, not a hang).
@@ -98,17 +98,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         .collect();
     // 4. the final pass along the moved shape, then back to A
     let off = Pt::new(dw, du);
-    for (i, el) in shape.elements.iter().enumerate() {
-        let el = el.shifted(off);
-        let mut m = if i == 0 && el.rapid {
-            Move::rapid(el.to)
-        } else {
-            Move::feed(el.to)
-        };
-        m.arc = el.arc;
-        m.span = Some(el.span);
-        moves.push(m);
-    }
+    moves.extend(passes::moved(&shape, off));
     moves.push(Move::rapid(shape.start));
     let mut out = Output {
         moves,

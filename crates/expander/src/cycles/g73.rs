@@ -15,7 +15,7 @@
 //! copy; the rapids between passes carry the G73 block's.
 
 use super::contour::{self, FinishingShape};
-use super::{Cycle, Move, Output};
+use super::{passes, Cycle, Move, Output};
 use crate::{Diagnostic, Pt};
 
 /// Expand one G73 block.
@@ -38,7 +38,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
             (0.0, 0.0, 1)
         }
     };
-    out.moves = passes(&shape, (di, dk, d), (du, dw));
+    out.moves = rough_passes(&shape, (di, dk, d), (du, dw));
     out.resume_at = shape.resume_at(c.index);
     out.intended.push((
         crate::IntendedKind::FinishingContour,
@@ -69,7 +69,11 @@ fn relief_block(c: &mut Cycle) -> Result<Output, Diagnostic> {
 }
 
 /// The rough passes of the seed's steps ①–⑤.
-fn passes(shape: &FinishingShape, (di, dk, d): (f64, f64, u32), (du, dw): (f64, f64)) -> Vec<Move> {
+fn rough_passes(
+    shape: &FinishingShape,
+    (di, dk, d): (f64, f64, u32),
+    (du, dw): (f64, f64),
+) -> Vec<Move> {
     let d = d.max(2); // d = 1 is executed as 2 cuts (seed 003)
     let a = shape.start;
     let mut moves = Vec::with_capacity(d as usize * (shape.elements.len() + 1) + 1);
@@ -79,17 +83,7 @@ fn passes(shape: &FinishingShape, (di, dk, d): (f64, f64, u32), (du, dw): (f64, 
         // ① / ③ / ⑤: rapid to A_k (from A, or from C_{k-1})
         moves.push(Move::rapid(Pt::new(a.z + off.z, a.r + off.r)));
         // ② / ④: A_k → B_k as the ns block (G00 rapid, G01 feed), then B_k → C_k fed
-        for (i, e) in shape.elements.iter().enumerate() {
-            let e = e.shifted(off);
-            let mut m = if i == 0 && e.rapid {
-                Move::rapid(e.to)
-            } else {
-                Move::feed(e.to)
-            };
-            m.arc = e.arc;
-            m.span = Some(e.span);
-            moves.push(m);
-        }
+        moves.extend(passes::moved(shape, off));
     }
     moves.push(Move::rapid(a)); // C_d → A
     moves

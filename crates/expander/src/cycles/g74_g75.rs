@@ -18,7 +18,6 @@
 //!   and is an alarm rather than a silent no-op.
 
 use super::{Cycle, Move, Output, MAX_MOVES};
-use crate::codes::G74;
 use crate::{Diagnostic, Pt, ToolHint};
 
 /// Expand one G74/G75 block.

@@ -18,6 +18,7 @@ mod g76;
 mod g90;
 mod g92;
 mod g94;
+mod passes;
 
 /// One move of a cycle, from the previous move's end (or the cycle's start) to `to`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -83,6 +84,10 @@ pub(crate) struct Retained {
     pub(crate) g73: Option<(f64, f64, u32)>,
 }
 
+/// The most moves one G74/G75/G75.1 block may expand to; more is an alarm (a P1 Q1 typo
+/// over a long groove would otherwise make billions of moves).
+pub(crate) const MAX_MOVES: usize = 1_000_000;
+
 /// The retained words of G90/G92/G94.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub(crate) struct TurnWords {
@@ -138,6 +143,29 @@ pub(crate) struct Output {
 }
 
 impl Cycle<'_, '_> {
+    /// The end point and R of a G90/G92/G94 block, filling what the block omits from the
+    /// retained words of the same cycle (or, for a new cycle, the start point and R0).
+    pub(crate) fn turn_words(&mut self, code: i32) -> Result<TurnWords, Diagnostic> {
+        let prev = self
+            .retained
+            .turn
+            .filter(|t| t.code == code && self.g.is_none());
+        let x = self.x_target()?;
+        let z = self.z_target()?;
+        let r = self.words.mm('R', self.unit);
+        let end = Pt::new(
+            z.or(prev.map(|p| p.end.z)).unwrap_or(self.start.z),
+            x.or(prev.map(|p| p.end.r)).unwrap_or(self.start.r),
+        );
+        let words = TurnWords {
+            code,
+            end,
+            r: r.or(prev.map(|p| p.r)).unwrap_or(0.0),
+        };
+        self.retained.turn = Some(words);
+        Ok(words)
+    }
+
     /// Where alarms about the cycle as a whole point: its G word, or the block.
     pub(crate) fn span(&self) -> Span {
         self.g.map_or(self.words.span(), |g| g.span)

@@ -1,7 +1,8 @@
-//! Running a canned cycle: its moves stamped with the block's span, feed and tool, the
-//! shapes it hands over, and G70's compensated pass.
+//! Running a canned cycle from the interpreter: the cycle's words and state in, its moves,
+//! warnings, intended shapes and G70 compensation out.
 
-use super::{Flow, Interp};
+use super::flow::Flow;
+use super::Interp;
 use crate::cycles::{self, Cycle};
 use crate::words::Words;
 use crate::{Diagnostic, Motion};
@@ -52,12 +53,11 @@ impl Interp<'_> {
             }
         }
         // G70 runs its pass as one compensation section (start-up A → B, cancel back to A).
-        let side = out
-            .comp
-            .and_then(|shape_side| shape_side.or(self.comp.side));
+        let side = out.comp.and_then(|shape_side| shape_side.or(self.comp));
         if let Some(side) = side {
-            let noses = self.noses();
-            self.comp.open(side, &noses, b.span, &mut self.out);
+            if let Some(nose) = self.nose_for_offset(b.span) {
+                self.section = Some((side, nose, vec![]));
+            }
         }
         let feed = self.feed;
         for m in out.moves {
@@ -79,7 +79,7 @@ impl Interp<'_> {
             }
         }
         self.feed = feed;
-        self.comp.flush(&mut self.out);
+        self.flush_compensation();
         Ok(out.resume_at.map_or(Flow::Next, Flow::Jump))
     }
 }

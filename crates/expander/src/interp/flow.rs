@@ -1,12 +1,36 @@
-//! Program flow: the block loop of one O program, subprogram calls (M98) and returns
-//! (M99, M99 P), the end of the program (M02/M30), and the block budget that ends
-//! endless loops. Macro B's GOTO/WHILE/IF will live here too.
+//! Program flow: running an O program block by block, subprogram calls (M98), returns
+//! (M99) and the program end (M02/M30). GOTO, WHILE and macro calls belong here too.
 
-use super::modal::After;
-use super::{alarm, Exit, Flow, Interp, MAX_NESTING};
-use crate::words::Words;
-use crate::Diagnostic;
-use gcode::Program;
+use super::{alarm, Interp};
+use crate::words::{whole_in, Words};
+use crate::{Diagnostic, Span};
+use gcode::{Program, Word};
+
+/// FANUC's subprogram nesting limit.
+const MAX_NESTING: u32 = 4;
+
+/// How an O program was left.
+pub(super) enum Exit {
+    End,
+    Return(Option<u32>),
+}
+
+/// Where execution goes after a block.
+pub(super) enum Flow {
+    Next,
+    End,
+    Call {
+        number: u32,
+        times: u32,
+        span: Span,
+    },
+    Return {
+        seq: Option<u32>,
+        span: Span,
+    },
+    /// Continue at this block index (G70–G73 skip their finishing shape).
+    Jump(usize),
+}
 
 impl Interp<'_> {
     /// Run one O program from block `start`; `depth` 0 is the main program.
@@ -120,72 +144,82 @@ impl Interp<'_> {
         }
     }
 
-    /// The M codes that act after the motion: spindle stop, coolant off, program end,
-    /// subprogram call and return. `None` leaves the block's flow as it is.
-    pub(super) fn m_words_after(
+    /// The M codes that act after the motion: M05, M09, the program end, M98 and M99.
+    pub(super) fn m_codes_after(
         &mut self,
-        after: &After,
+        after: &[(u32, &Word)],
         used: &mut Words,
-    ) -> Result<Option<Flow>, Diagnostic> {
-        let mut flow = None;
+        mut flow: Flow,
+    ) -> Result<Flow, Diagnostic> {
         for &(m, w) in after {
             match m {
                 5 => self.spindle_on = false,
                 9 => {}
-                2 | 30 => flow = Some(Flow::End),
-                98 => {
-                    let p = used.take('P').ok_or_else(|| {
-                        alarm(
-                            w.span,
-                            "PS078",
-                            "M98 without P",
-                            "write M98 P<program number>, e.g. M98 P1234",
-                        )
-                    })?;
-                    if p.has_point || p.value < 1.0 || p.value > 99_999_999.0 {
-                        return Err(alarm(p.span, "PS078", "M98 P needs a program number", "P is [repeat count (4 digits)] + program number (4 digits), e.g. P30010"));
-                    }
-                    let v = p.value as u32;
-                    let (mut times, number) = if v > 9999 {
-                        (v / 10000, v % 10000)
-                    } else {
-                        (1, v)
-                    };
-                    if let Some(l) = used.take('L') {
-                        if l.has_point || l.value < 1.0 || l.value > 9999.0 {
-                            return Err(alarm(
-                                l.span,
-                                "LS-VALUE",
-                                "L must be a repeat count 1 … 9999",
-                                "write e.g. L3",
-                            ));
-                        }
-                        times = l.value as u32;
-                    }
-                    flow = Some(Flow::Call {
-                        number,
-                        times: times.max(1),
-                        span: w.span,
-                    });
-                }
-                99 => {
-                    let seq = match used.take('P') {
-                        Some(p) if p.has_point || p.value < 0.0 => {
-                            return Err(alarm(
-                                p.span,
-                                "LS-VALUE",
-                                "M99 P needs a sequence number",
-                                "write e.g. M99 P20 to return to N20",
-                            ));
-                        }
-                        Some(p) => Some(p.value as u32),
-                        None => None,
-                    };
-                    flow = Some(Flow::Return { seq, span: w.span });
-                }
+                2 | 30 => flow = Flow::End,
+                98 => flow = m98(w, used)?,
+                99 => flow = m99(w, used)?,
                 _ => {}
             }
         }
         Ok(flow)
     }
+}
+
+/// M98 P[count]number [L count]: the call.
+fn m98(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
+    let p = used.take('P').ok_or_else(|| {
+        alarm(
+            w.span,
+            "PS078",
+            "M98 without P",
+            "write M98 P<program number>, e.g. M98 P1234",
+        )
+    })?;
+    if !whole_in(p, 1.0, 99_999_999.0) {
+        return Err(alarm(
+            p.span,
+            "PS078",
+            "M98 P needs a program number",
+            "P is [repeat count (4 digits)] + program number (4 digits), e.g. P30010",
+        ));
+    }
+    let v = p.value as u32;
+    let (mut times, number) = if v > 9999 {
+        (v / 10000, v % 10000)
+    } else {
+        (1, v)
+    };
+    if let Some(l) = used.take('L') {
+        if !whole_in(l, 1.0, 9999.0) {
+            return Err(alarm(
+                l.span,
+                "LS-VALUE",
+                "L must be a repeat count 1 … 9999",
+                "write e.g. L3",
+            ));
+        }
+        times = l.value as u32;
+    }
+    Ok(Flow::Call {
+        number,
+        times: times.max(1),
+        span: w.span,
+    })
+}
+
+/// M99 [P sequence]: the return, to the block after the call or to N<P>.
+fn m99(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
+    let seq = match used.take('P') {
+        Some(p) if p.has_point || p.value < 0.0 => {
+            return Err(alarm(
+                p.span,
+                "LS-VALUE",
+                "M99 P needs a sequence number",
+                "write e.g. M99 P20 to return to N20",
+            ));
+        }
+        Some(p) => Some(p.value as u32),
+        None => None,
+    };
+    Ok(Flow::Return { seq, span: w.span })
 }

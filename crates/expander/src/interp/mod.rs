@@ -4,22 +4,25 @@
 //! first; then the block's one motion (or G04/G28/G50); then M05/M09, M98/M99 and the
 //! program end. A controller alarm stops the run; the segments made so far are kept.
 //!
-//! This file is the dispatcher: [`Interp::block`] runs the phases of one block in that
-//! order. The phases live apart: `modal` (G, F, S, T, M words and the modes they set),
-//! `motion` (end points, feeds, the moves of G00–G03/G32, G04, G28, G50), `cycle` (canned
-//! cycles), `flow` (the block loop, subprogram calls and returns); tool nose compensation
-//! state and buffering are in `crate::tnrc`.
+//! This file is the dispatcher; the words live in `modal` (G/M/F/S/T), `flow` (program
+//! flow), `motion` (moves), `actions` (G04/G28/G50), `cycle` (canned cycles), and the
+//! compensation buffer in `crate::tnrc`.
 
+mod actions;
 mod cycle;
 mod flow;
 mod modal;
 mod motion;
+mod tool_facts;
 
-use crate::cycles::Retained;
-use crate::tnrc::{Compensation, Nose, NoseTable};
+use crate::codes::{self, G04, G28, G50, G75_1};
+use crate::cycles::{self, g75_1, Retained};
+use crate::tnrc::{Nose, Side};
 use crate::words::Words;
 use crate::{Diagnostic, Machine, Pt, Segment, Span};
+use flow::{Exit, Flow};
 use gcode::{Program, Subprogram};
+pub(crate) use modal::MotionMode;
 use std::collections::BTreeMap;
 
 /// Interpreter settings from the command line.
@@ -82,9 +85,6 @@ pub struct Toolpath {
     pub intended: Vec<crate::Intended>,
 }
 
-/// FANUC's subprogram nesting limit.
-const MAX_NESTING: u32 = 4;
-
 /// Expand a parsed program into segments.
 pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath {
     let mut it = Interp::new(machine, opts);
@@ -94,7 +94,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
     if let Some(main) = program.main() {
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
         let mut result = it.run(program, 0, 0, 0);
-        it.comp.flush(&mut it.out);
+        it.flush_compensation();
         if result.is_ok() && it.retained.g75_1.is_some() {
             let span = program
                 .programs
@@ -103,7 +103,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
                 .last()
                 .map(|b| b.span)
                 .unwrap_or_default();
-            result = Err(g75_1_unfinished(span));
+            result = Err(it.g75_1_unfinished(span));
         }
         match result {
             Ok(Exit::End) => {}
@@ -114,47 +114,16 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
     it.out
 }
 
-enum Exit {
-    End,
-    Return(Option<u32>),
-}
-
-enum Flow {
-    Next,
-    End,
-    Call {
-        number: u32,
-        times: u32,
-        span: Span,
-    },
-    Return {
-        seq: Option<u32>,
-        span: Span,
-    },
-    /// Continue at this block index (G70–G73 skip their finishing shape).
-    Jump(usize),
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum MotionMode {
-    Rapid,
-    Line,
-    Cw,
-    Ccw,
-    Thread,
-    /// A modal canned cycle (G90/G92/G94), by code in tenths.
-    Cycle(i32),
-}
-
-struct Interp<'m> {
+/// The interpreter's state between blocks.
+pub(crate) struct Interp<'m> {
     machine: &'m Machine,
     opts: &'m Options,
-    out: Toolpath,
+    pub(crate) out: Toolpath,
     /// Current position of the reference point, G54 frame.
     pos: Pt,
     /// Origin of the current work coordinate system in the G54 frame.
     shift: Pt,
-    motion: MotionMode,
+    pub(crate) motion: MotionMode,
     per_rev: bool,
     inch: bool,
     css: bool,
@@ -165,21 +134,18 @@ struct Interp<'m> {
     feed: f64,
     tool: u32,
     retained: Retained,
-    /// G40/G41/G42, the offset in force and the section being compensated.
-    comp: Compensation,
+    /// G41/G42 mode in force (group 07); `None` is G40.
+    pub(crate) comp: Option<Side>,
+    /// Tool offset number `oo` in force.
+    pub(crate) offset: u32,
+    /// The compensation section being collected (start-up first), with its side and nose.
+    pub(crate) section: Option<(Side, Nose, Vec<Segment>)>,
+    /// Offsets already warned about (blade, no entry).
+    pub(crate) comp_warned: Vec<u32>,
 }
 
-/// A G75.1 geometry block not followed by its process block.
-fn g75_1_unfinished(span: Span) -> Diagnostic {
-    alarm(
-        span,
-        "LS-G75.1-BLOCKS",
-        "the G75.1 geometry block is not followed by its process block",
-        "write the process block (G75.1 R… ) right after the geometry block (G75.1 X Z P Q H D …)",
-    )
-}
-
-fn alarm(
+/// A controller alarm.
+pub(crate) fn alarm(
     span: Span,
     code: &'static str,
     message: impl Into<String>,
@@ -207,11 +173,14 @@ impl<'m> Interp<'m> {
             feed: machine.power_on_feed,
             tool: opts.start_tool.unwrap_or(0),
             retained: Retained::default(),
-            comp: Compensation::default(),
+            comp: None,
+            offset: 0,
+            section: None,
+            comp_warned: vec![],
         }
     }
 
-    fn warn(
+    pub(crate) fn warn(
         &mut self,
         span: Span,
         code: &'static str,
@@ -223,7 +192,6 @@ impl<'m> Interp<'m> {
             .push(Diagnostic::new(span, code, message, help));
     }
 
-    /// Millimetres per length unit: 25.4 under G20.
     fn unit(&self) -> f64 {
         if self.inch {
             25.4
@@ -232,37 +200,65 @@ impl<'m> Interp<'m> {
         }
     }
 
-    /// Where the tool table's noses come from (for G41/G42).
-    fn noses(&self) -> NoseTable<'m> {
-        NoseTable {
-            noses: &self.opts.noses,
-            default: self.opts.default_nose,
-        }
+    /// The alarm for a G75.1 geometry block whose process block does not follow.
+    fn g75_1_unfinished(&self, span: Span) -> Diagnostic {
+        g75_1::pairing::alarm(
+            span,
+            self.retained.g75_1.as_ref(),
+            g75_1::pairing::Break::Interrupted,
+        )
     }
 
-    /// The grooving blade of a tool number in the tool table: width and whether it extends
-    /// toward +Z from its reference corner (G75.1 without I).
-    fn blade_for(&self, tool: u32) -> Option<(f64, bool)> {
-        self.opts.blades.get(&tool).copied()
-    }
-
-    /// Run one block: its words in the controller's order (see the module doc).
+    /// Execute one block: its modal words, its one action, then its flow words.
     fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
         let b = &sub.blocks[index];
         let mut used = Words::new(b);
-        self.check_block(b, &used)?;
-        let g = self.g_words(b, &mut used)?;
-        self.feed_and_speed(&mut used, &g)?;
-        let deferred_offset = self.t_word(&mut used, &g)?;
-        let after = self.m_words_before(b, &mut used)?;
-        self.compensation_mode(b, &g);
-        let mut flow = self.action(sub, index, &mut used, &g)?;
-        if let Some(offset) = deferred_offset {
-            self.comp.offset = offset;
+        if self.retained.g75_1.is_some() && !modal::has_g(b, |t| t == G75_1) {
+            return Err(self.g75_1_unfinished(b.span));
         }
-        if let Some(f) = self.m_words_after(&after, &mut used)? {
-            flow = f;
+        let g = self.g_codes(b, &mut used)?;
+        self.feed_speed_tool(&mut used, g.one_shot.map(|(t, _)| t))?;
+        let after = self.m_codes_before(b, &mut used)?;
+        self.set_compensation_mode(g.comp);
+        let modal_cycle = g
+            .motion
+            .map_or(matches!(self.motion, MotionMode::Cycle(_)), |(m, _)| {
+                matches!(m, MotionMode::Cycle(_))
+            });
+        let suspends = matches!(g.one_shot, Some((G28 | G50, _)))
+            || g.one_shot.is_some_and(|(t, _)| cycles::is_cycle(t))
+            || modal::has_g(b, |t| codes::work_offset(t).is_some())
+            || (modal_cycle && ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)));
+        if suspends {
+            // Suspended by G28, G50, G54–G59 and the cycles; resumed at the next move.
+            self.flush_compensation();
         }
+        let mut flow = Flow::Next;
+        match g.one_shot {
+            Some((G04, w)) => self.dwell(&mut used, w)?,
+            Some((G28, w)) => self.g28(b, &mut used, w)?,
+            Some((G50, _)) => self.g50(&mut used)?,
+            Some((t, w)) => flow = self.cycle(t, Some(w), sub, index, &mut used)?,
+            None => {
+                if let Some((m, _)) = g.motion {
+                    self.motion = m;
+                }
+                if let MotionMode::Cycle(t) = self.motion {
+                    if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
+                        let w = g.motion.map(|(_, w)| w);
+                        flow = self.cycle(t, w, sub, index, &mut used)?;
+                    }
+                } else {
+                    self.start_compensation(b)?;
+                    self.motion_block(b, &mut used)?;
+                    if self.section.is_some() && (self.comp.is_none() || self.offset == 0) {
+                        // This block was the cancel block.
+                        self.flush_compensation();
+                    }
+                }
+            }
+        }
+        let flow = self.m_codes_after(&after, &mut used, flow)?;
         used.check_all_used()?;
         Ok(flow)
     }

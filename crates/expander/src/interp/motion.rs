@@ -1,56 +1,14 @@
-//! The block's action: its one motion (G00, G01, G02/G03, G32), or G04, G28, G50, or a
-//! cycle; end points, feeds, and the segments they make.
+//! The block's motion: end points in the work frame, feeds, rapids, lines, threads and
+//! arcs, and emitting the segments (through the compensation buffer when one is open).
 
-use super::modal::GWords;
-use super::{alarm, Flow, Interp, MotionMode};
-use crate::codes::*;
+use super::modal::MotionMode;
+use super::{alarm, Interp};
+use crate::arc::ArcWords;
 use crate::words::Words;
-use crate::{arc, Arc, Diagnostic, Feed, Motion, Pt, RapidPath, Segment, Span, ToolHint};
-use gcode::{Block, Subprogram, Word};
-
-/// Axis words that make a block move.
-const AXES: [char; 4] = ['X', 'Z', 'U', 'W'];
+use crate::{Arc, Diagnostic, Feed, Motion, Pt, RapidPath, Segment, Span, Spindle};
+use gcode::Block;
 
 impl Interp<'_> {
-    /// Run the block's one action.
-    pub(super) fn action<'b>(
-        &mut self,
-        sub: &'b Subprogram,
-        index: usize,
-        used: &mut Words<'b>,
-        g: &GWords<'b>,
-    ) -> Result<Flow, Diagnostic> {
-        let b = &sub.blocks[index];
-        match g.one_shot {
-            Some((G04, w)) => self.dwell(used, w)?,
-            Some((G28, w)) => self.g28(b, used, w)?,
-            Some((G50, _)) => self.g50(used)?,
-            Some((t, w)) => return self.cycle(t, Some(w), sub, index, used),
-            None => {
-                if let Some((m, _)) = g.motion {
-                    self.motion = m;
-                }
-                if let MotionMode::Cycle(t) = self.motion {
-                    if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
-                        return self.cycle(t, g.motion.map(|(_, w)| w), sub, index, used);
-                    }
-                } else {
-                    let noses = self.noses();
-                    let moves = AXES.iter().any(|&l| b.has(l));
-                    let on_arc = matches!(self.motion, MotionMode::Cw | MotionMode::Ccw);
-                    self.comp
-                        .start(moves, on_arc, b.span, &noses, &mut self.out)?;
-                    self.motion_block(b, used)?;
-                    if self.comp.is_open() && (self.comp.side.is_none() || self.comp.offset == 0) {
-                        // This block was the cancel block.
-                        self.comp.flush(&mut self.out);
-                    }
-                }
-            }
-        }
-        Ok(Flow::Next)
-    }
-
     /// The target of X/U Z/W in the G54 frame; `None` when no axis word is given.
     pub(super) fn target(&self, used: &mut Words) -> Result<Option<Pt>, Diagnostic> {
         let u = self.unit();
@@ -85,7 +43,7 @@ impl Interp<'_> {
         Ok(any.then_some(p))
     }
 
-    fn feed_for(&mut self, span: Span, motion: Motion) -> Result<Feed, Diagnostic> {
+    pub(super) fn feed_for(&mut self, span: Span, motion: Motion) -> Result<Feed, Diagnostic> {
         if motion == Motion::Rapid {
             return Ok(Feed::Rapid);
         }
@@ -107,8 +65,13 @@ impl Interp<'_> {
             ));
         }
         let f = self.feed * self.unit();
-        // a thread's F is its lead: per revolution whatever G98/G99 says
-        Ok(if self.per_rev || motion == Motion::Thread {
+        if motion == Motion::Thread {
+            return Ok(Feed::PerRev {
+                feed: f,
+                spindle: self.spindle(),
+            });
+        }
+        Ok(if self.per_rev {
             Feed::PerRev {
                 feed: f,
                 spindle: self.spindle(),
@@ -118,7 +81,22 @@ impl Interp<'_> {
         })
     }
 
-    fn push(
+    pub(super) fn spindle(&self) -> Spindle {
+        if self.css {
+            Spindle::Css {
+                vc: self.s_value,
+                max_rpm: if self.s_clamp > 0.0 {
+                    self.s_clamp
+                } else {
+                    self.machine.max_rpm
+                },
+            }
+        } else {
+            Spindle::Rpm(self.s_value)
+        }
+    }
+
+    pub(super) fn push(
         &mut self,
         b: &Block,
         motion: Motion,
@@ -126,11 +104,9 @@ impl Interp<'_> {
         arc: Option<Arc>,
         lead: f64,
     ) -> Result<(), Diagnostic> {
-        self.push_at(b.span, motion, to, arc, lead, ToolHint::Table)
+        self.push_at(b.span, motion, to, arc, lead, crate::ToolHint::Table)
     }
 
-    /// Emit one move from the current position (into the compensation section when one is
-    /// open).
     pub(super) fn push_at(
         &mut self,
         span: Span,
@@ -138,9 +114,10 @@ impl Interp<'_> {
         to: Pt,
         arc: Option<Arc>,
         lead: f64,
-        hint: ToolHint,
+        hint: crate::ToolHint,
     ) -> Result<(), Diagnostic> {
-        if self.out.segments.len() + self.comp.buffered() >= self.opts.max_segments {
+        let buffered = self.section.as_ref().map_or(0, |s| s.2.len());
+        if self.out.segments.len() + buffered >= self.opts.max_segments {
             return Err(alarm(
                 span,
                 "LS-TOO-LONG",
@@ -163,14 +140,15 @@ impl Interp<'_> {
             feed,
             span,
         };
-        if let Some(seg) = self.comp.buffer(seg) {
-            self.out.segments.push(seg);
+        match &mut self.section {
+            Some((_, _, buf)) => buf.push(seg),
+            None => self.out.segments.push(seg),
         }
         self.pos = to;
         Ok(())
     }
 
-    fn rapid(&mut self, b: &Block, to: Pt) -> Result<(), Diagnostic> {
+    pub(super) fn rapid(&mut self, b: &Block, to: Pt) -> Result<(), Diagnostic> {
         if to.dist(self.pos) < 1e-12 {
             return Ok(());
         }
@@ -193,21 +171,19 @@ impl Interp<'_> {
         self.push(b, Motion::Rapid, to, None, 0.0)
     }
 
-    fn motion_block(&mut self, b: &Block, used: &mut Words) -> Result<(), Diagnostic> {
+    pub(super) fn motion_block(&mut self, b: &Block, used: &mut Words) -> Result<(), Diagnostic> {
         let is_arc = matches!(self.motion, MotionMode::Cw | MotionMode::Ccw);
-        let r_word = if is_arc { used.take('R') } else { None };
-        let i_word = if is_arc { used.take('I') } else { None };
-        let k_word = if is_arc { used.take('K') } else { None };
-        let Some(to) = self.target(used)? else {
-            if let Some(w) = r_word.or(i_word).or(k_word) {
-                return Err(alarm(
-                    w.span,
-                    "LS-ARC",
-                    "arc data without an end point",
-                    "give the arc's end point with X/U and Z/W",
-                ));
+        let arc_words = if is_arc {
+            ArcWords {
+                r: used.take('R'),
+                i: used.take('I'),
+                k: used.take('K'),
             }
-            return Ok(());
+        } else {
+            ArcWords::default()
+        };
+        let Some(to) = self.target(used)? else {
+            return arc_words.without_end_point().map_or(Ok(()), Err);
         };
         match self.motion {
             MotionMode::Rapid => self.rapid(b, to),
@@ -220,102 +196,18 @@ impl Interp<'_> {
             MotionMode::Cycle(_) => Ok(()),
             MotionMode::Cw | MotionMode::Ccw => {
                 let ccw = self.motion == MotionMode::Ccw;
-                let center = arc::centre_from_words(
-                    self.pos,
+                let centre = arc_words.centre(self.pos, to, ccw, self.unit(), b.span)?;
+                self.push(
+                    b,
+                    Motion::Feed,
                     to,
-                    ccw,
-                    r_word,
-                    i_word,
-                    k_word,
-                    self.unit(),
-                    b.span,
-                )?;
-                self.push(b, Motion::Feed, to, Some(Arc { center, ccw }), 0.0)
+                    Some(Arc {
+                        center: centre,
+                        ccw,
+                    }),
+                    0.0,
+                )
             }
         }
-    }
-
-    fn dwell(&mut self, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
-        let p = used.take('P');
-        let x = used.take('X').or_else(|| used.take('U'));
-        let seconds = match (p, x) {
-            (Some(p), None) => {
-                if p.has_point {
-                    return Err(alarm(
-                        p.span,
-                        "LS-VALUE",
-                        "G04 P is in milliseconds and takes no decimal point",
-                        "write G04 P1500 for 1.5 s, or G04 X1.5",
-                    ));
-                }
-                p.value / 1000.0
-            }
-            (None, Some(x)) => x.value,
-            (None, None) => {
-                return Err(alarm(
-                    g.span,
-                    "LS-VALUE",
-                    "G04 without a time",
-                    "write G04 P<ms> or G04 X<seconds>",
-                ))
-            }
-            (Some(p), Some(_)) => {
-                return Err(alarm(
-                    p.span,
-                    "LS-VALUE",
-                    "G04 with both P and X/U",
-                    "give the dwell once",
-                ))
-            }
-        };
-        if seconds < 0.0 {
-            return Err(alarm(
-                g.span,
-                "LS-VALUE",
-                "negative dwell",
-                "give a positive time",
-            ));
-        }
-        self.out.dwell_s += seconds;
-        Ok(())
-    }
-
-    /// G28: rapid to the intermediate point, then the named axes to the reference point.
-    fn g28(&mut self, b: &Block, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
-        let x_given = b.has('X') || b.has('U');
-        let z_given = b.has('Z') || b.has('W');
-        let Some(mid) = self.target(used)? else {
-            return Err(alarm(
-                g.span,
-                "LS-VALUE",
-                "G28 without an axis",
-                "write e.g. G28 U0 W0 to return both axes through the current position",
-            ));
-        };
-        self.rapid(b, mid)?;
-        let home = self.machine.home;
-        let to = Pt::new(
-            if z_given { home.z } else { mid.z },
-            if x_given { home.r } else { mid.r },
-        );
-        self.rapid(b, to)
-    }
-
-    /// G50: the current position gets the given work coordinates; G50 S is handled with S.
-    fn g50(&mut self, used: &mut Words) -> Result<(), Diagnostic> {
-        let u = self.unit();
-        if let Some(x) = used.take('X') {
-            self.shift.r = self.pos.r - x.value * u / 2.0;
-        }
-        if let Some(z) = used.take('Z') {
-            self.shift.z = self.pos.z - z.value * u;
-        }
-        if let Some(du) = used.take('U') {
-            self.shift.r -= du.value * u / 2.0;
-        }
-        if let Some(dw) = used.take('W') {
-            self.shift.z -= dw.value * u;
-        }
-        Ok(())
     }
 }

@@ -21,6 +21,8 @@ mod section;
 use crate::{Arc, Diagnostic, Pt, Segment};
 pub(crate) use section::{Compensation, NoseTable};
 
+mod section;
+
 /// Which side of the contour the tool keeps, looking along the direction of travel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Side {
@@ -119,14 +121,14 @@ fn intersect(a: Offset, b: Offset) -> Vec<Pt> {
             if den.abs() < 1e-12 {
                 return vec![];
             }
-            let t = (q - p).cross(e) / den;
+            let t = ((q - p).cross(e)) / den;
             vec![(p + (d * t))]
         }
         (Offset::Line { p, d }, Offset::Circle { c, radius, .. })
         | (Offset::Circle { c, radius, .. }, Offset::Line { p, d }) => {
             let f = p - c;
             let bq = f.dot(d);
-            let cq = f.dot(f) - radius * radius;
+            let cq = (f.dot(f)) - radius * radius;
             let disc = bq * bq - cq;
             if disc < 0.0 {
                 return vec![];
@@ -151,7 +153,7 @@ fn intersect(a: Offset, b: Offset) -> Vec<Pt> {
             let h = (r1 * r1 - a * a).max(0.0).sqrt();
             let m = c1 + (dv * (a / dd));
             let n = Pt::new(-dv.r / dd, dv.z / dd);
-            vec![(m + (n * h)), (m + (n * -h))]
+            vec![(m + (n * h)), (m + (n * (-h)))]
         }
     }
 }
@@ -216,8 +218,8 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
 
     let offsets: Vec<Offset> = body.iter().map(|s| offset_of(s, side, r)).collect();
     // Perpendicular points at each element's ends.
-    let perp_start = |i: usize| body[i].from + (normal(side, tangent(&body[i], false)) * r);
-    let perp_end = |i: usize| body[i].to + (normal(side, tangent(&body[i], true)) * r);
+    let perp_start = |i: usize| (body[i].from) + (normal(side, tangent(&body[i], false)) * r);
+    let perp_end = |i: usize| (body[i].to) + (normal(side, tangent(&body[i], true)) * r);
 
     // Start-up: ends perpendicular to the next block's start (type A).
     let mut cur = perp_start(0);
@@ -244,14 +246,10 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
             let t1 = tangent(s, true);
             let t2 = tangent(&body[i + 1], false);
             let turn = t1.cross(t2);
-            // Tangency within the control's tolerance is tangency: programs carry 3-decimal
-            // coordinates, so a "tangent" arc end is off by a few µm and its tangent by
-            // ~0.001 rad. Where the two perpendicular points are closer than the arc end
-            // tolerance, the joint is smooth (an inside corner that small has offset paths
-            // that meet far away or not at all: a false PS041).
-            let smooth = turn.abs() * r < TANGENT_TOL_MM && t1.dot(t2) > 0.0;
+            let smooth = turn.abs() < 1e-9 && (t1.dot(t2)) > 0.0;
             let outside = !smooth
-                && (t1.dot(t2) < 0.0 && turn.abs() < 1e-9 || (side == Side::Left) == (turn < 0.0));
+                && ((t1.dot(t2)) < 0.0 && turn.abs() < 1e-9
+                    || (side == Side::Left) == (turn < 0.0));
             if smooth {
                 perp_start(i + 1)
             } else if outside {
