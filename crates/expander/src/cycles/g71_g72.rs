@@ -45,7 +45,7 @@ const EPS: f64 = 1e-9;
 
 /// Expand one G71 or G72 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
-    let g72 = c.code == crate::codes::G72;
+    let g72 = c.code == 720;
     if !c.words.has('P') && !c.words.has('Q') {
         return depth_block(c, g72);
     }

@@ -22,7 +22,7 @@ use crate::{Diagnostic, Pt, ToolHint};
 
 /// Expand one G74/G75 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
-    let g74 = c.code == G74;
+    let g74 = c.code == 740;
     let name = if g74 { "G74" } else { "G75" };
     let is_cycle_block = ['X', 'U', 'Z', 'W', 'P', 'Q']
         .iter()

@@ -13,7 +13,7 @@ mod g71_g72;
 mod g73;
 mod g74_g75;
 pub(crate) mod g75_1;
-#[allow(dead_code)] // hooked into the interpreter after the interp split
+#[allow(dead_code)] // hooked into the interpreter after the interp split (issue 14)
 mod g76;
 mod g90;
 mod g92;
@@ -214,35 +214,6 @@ impl Cycle<'_, '_> {
         }
     }
 }
-
-impl Cycle<'_, '_> {
-    /// The end point and R of a G90/G92/G94 block, filling what the block omits from the
-    /// retained words of the same cycle (or, for a new cycle, the start point and R0).
-    pub(super) fn turn_words(&mut self, code: i32) -> Result<TurnWords, Diagnostic> {
-        let prev = self
-            .retained
-            .turn
-            .filter(|t| t.code == code && self.g.is_none());
-        let x = self.x_target()?;
-        let z = self.z_target()?;
-        let r = self.words.mm('R', self.unit);
-        let end = Pt::new(
-            z.or(prev.map(|p| p.end.z)).unwrap_or(self.start.z),
-            x.or(prev.map(|p| p.end.r)).unwrap_or(self.start.r),
-        );
-        let words = TurnWords {
-            code,
-            end,
-            r: r.or(prev.map(|p| p.r)).unwrap_or(0.0),
-        };
-        self.retained.turn = Some(words);
-        Ok(words)
-    }
-}
-
-/// The most moves one grooving block (G74, G75, G75.1) may expand to; more is an alarm (a
-/// P1 Q1 typo over a long groove would otherwise make billions of moves).
-pub(crate) const MAX_MOVES: usize = 1_000_000;
 
 /// Run the cycle `c.code`.
 pub(crate) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {

@@ -15,7 +15,7 @@ mod modal;
 mod motion;
 mod tool_facts;
 
-use crate::codes::{self, G04, G28, G50, G75_1};
+use crate::codes::{self, G04, G20, G21, G28, G40, G50, G75_1};
 use crate::cycles::{self, g75_1, Retained};
 use crate::tnrc::{Nose, Side};
 use crate::words::Words;
@@ -213,11 +213,15 @@ impl<'m> Interp<'m> {
     fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
         let b = &sub.blocks[index];
         let mut used = Words::new(b);
+        let inch = modal::has_g(b, |t| t == G20) || (self.inch && !modal::has_g(b, |t| t == G21));
+        used.check_domain(if inch { 25.4 } else { 1.0 })?;
         if self.retained.g75_1.is_some() && !modal::has_g(b, |t| t == G75_1) {
             return Err(self.g75_1_unfinished(b.span));
         }
         let g = self.g_codes(b, &mut used)?;
-        self.feed_speed_tool(&mut used, g.one_shot.map(|(t, _)| t))?;
+        let cancels = matches!(g.comp, Some((G40, _)));
+        let deferred_offset =
+            self.feed_speed_tool(&mut used, g.one_shot.map(|(t, _)| t), cancels)?;
         let after = self.m_codes_before(b, &mut used)?;
         self.set_compensation_mode(g.comp);
         let modal_cycle = g
@@ -257,6 +261,9 @@ impl<'m> Interp<'m> {
                     }
                 }
             }
+        }
+        if let Some(offset) = deferred_offset {
+            self.offset = offset;
         }
         let flow = self.m_codes_after(&after, &mut used, flow)?;
         used.check_all_used()?;

@@ -141,7 +141,8 @@ impl Interp<'_> {
         &mut self,
         used: &mut Words,
         one_shot: Option<i32>,
-    ) -> Result<(), Diagnostic> {
+        cancels: bool,
+    ) -> Result<Option<u32>, Diagnostic> {
         if let Some(f) = used.take('F') {
             if f.value < 0.0 {
                 return Err(alarm(
@@ -168,6 +169,7 @@ impl Interp<'_> {
                 self.s_value = self.speed(s.value);
             }
         }
+        let mut deferred = None;
         if let Some(t) = used.take('T') {
             if !whole_in(t, 0.0, 9999.0) {
                 return Err(alarm(
@@ -179,9 +181,16 @@ impl Interp<'_> {
             }
             let v = t.value as u32;
             let (tool, offset) = (v / 100, v % 100);
-            // A T word suspends compensation; offset 00 cancels it (spec/tnrc.md).
-            self.flush_compensation();
-            self.offset = offset;
+            // A T word suspends compensation; offset 00 cancels it (spec/tnrc.md). In a G40
+            // block the block's own move is the cancel move, made with the offset in force:
+            // the new offset takes effect after it (a `G00 G40 X… Z… T0` return must not turn
+            // the last compensated move into the cancel move).
+            if cancels {
+                deferred = Some(offset);
+            } else {
+                self.flush_compensation();
+                self.offset = offset;
+            }
             if tool == 0 && offset != 0 {
                 self.warn(
                     t.span,
@@ -192,7 +201,7 @@ impl Interp<'_> {
             }
             self.select_tool(tool);
         }
-        Ok(())
+        Ok(deferred)
     }
 
     /// The S value in force for a programmed S: under G96 in inch, feet/min become m/min.

@@ -16,10 +16,7 @@
 //!   interference: an alarm at that block, and the path is still emitted as computed so
 //!   the report shows the overcut it would cause.
 
-mod section;
-
 use crate::{Arc, Diagnostic, Pt, Segment};
-pub(crate) use section::{Compensation, NoseTable};
 
 mod section;
 
@@ -246,7 +243,12 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
             let t1 = tangent(s, true);
             let t2 = tangent(&body[i + 1], false);
             let turn = t1.cross(t2);
-            let smooth = turn.abs() < 1e-9 && (t1.dot(t2)) > 0.0;
+            // Tangency within the control's tolerance is tangency: programs carry 3-decimal
+            // coordinates, so a "tangent" arc end is off by a few µm and its tangent by
+            // ~0.001 rad. Where the two perpendicular points are closer than the arc end
+            // tolerance, the joint is smooth (an inside corner that small has offset paths
+            // that meet far away or not at all: a false PS041).
+            let smooth = turn.abs() * r < TANGENT_TOL_MM && t1.dot(t2) > 0.0;
             let outside = !smooth
                 && ((t1.dot(t2)) < 0.0 && turn.abs() < 1e-9
                     || (side == Side::Left) == (turn < 0.0));
