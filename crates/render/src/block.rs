@@ -1,9 +1,9 @@
 //! The title block in the right column: verdict, program, stock, tools, removal, cycle
 //! time, tolerance, deviation, then the alarms and warnings as `line N: message`.
 
+use crate::doc::Doc;
 use crate::layout::{colour, FS_SMALL, FS_TEXT, FS_VERDICT, RIGHT_BOTTOM, RIGHT_W, RIGHT_X};
 use crate::report::{Diagnostic, Report, Verdict};
-use crate::svg::Doc;
 use crate::text::{chars_fitting, duration, grouped, mm, plural, quantity, wrap};
 
 /// Width of the label column.

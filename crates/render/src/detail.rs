@@ -16,11 +16,12 @@
 
 use std::fmt::Write as _;
 
+use crate::doc::{marker, Doc};
 use crate::layout::{colour, FS_SMALL, RIGHT_TOP, RIGHT_W, RIGHT_X};
 use crate::path::shapes_d;
+use crate::plot::{axes, centre_line, draw_content, draw_shapes, MIN_PX};
 use crate::report::{Groove, Report, Shape};
 use crate::scale::{Bbox, View};
-use crate::svg::{axes, centre_line, draw_content, draw_shapes, marker, Doc, MIN_PX};
 use crate::text::{chars_fitting, esc, num, truncate, width};
 use crate::{groove, leftover};
 

@@ -20,6 +20,7 @@
 //! move slider drawing on a `<canvas>` from a compact JSON block embedded in the page.
 mod block;
 mod detail;
+mod doc;
 mod groove;
 mod html;
 mod json;
@@ -27,6 +28,7 @@ mod layout;
 mod leftover;
 mod marks;
 mod path;
+mod plot;
 mod png;
 mod report;
 mod scale;

@@ -1,10 +1,10 @@
 //! Crash and gouge markers in the main view, each with a label and a leader line placed
 //! where it overlaps neither the frame nor another label.
 
+use crate::doc::{marker, Doc};
 use crate::layout::{colour, FS_TEXT};
 use crate::report::Report;
 use crate::scale::View;
-use crate::svg::{marker, Doc};
 use crate::text::width;
 
 /// At most this many labelled markers of each kind (the title block lists the rest).

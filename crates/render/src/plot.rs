@@ -1,0 +1,229 @@
+//! What a view shows, in mm under its transform: the half section, the toolpath, the
+//! deviation outlines, and the axes and centre line around it. Used by the main view
+//! ([`crate::svg`]) and the detail views ([`crate::detail`]) alike.
+
+use std::fmt::Write as _;
+
+use crate::doc::Doc;
+use crate::layout::{self, colour, FS_TICK};
+use crate::path::{deviation_d, shapes_d, toolpath_d};
+use crate::report::Report;
+use crate::scale::{nice_step, step_decimals, ticks, View};
+use crate::text::{tick_label, width};
+
+/// Points closer than this (px) to the previous kept point are dropped.
+pub(crate) const MIN_PX: f64 = 0.3;
+
+/// Width of the outline drawn around every gouge and leftover, px: it keeps a deviation
+/// thinner than a pixel visible (a 0.25 mm band at 3 px/mm is otherwise lost under the
+/// intended line and the toolpath).
+pub(crate) const DEVIATION_EDGE_PX: f64 = 2.0;
+
+/// Shapes and toolpath of a view, in mm under its transform: used by the main view and
+/// the detail views alike. `mirror`: also draw the lighter lower half. The gouge and
+/// leftover outlines go on top of the toolpath, so that no line hides them.
+pub(crate) fn draw_content(
+    doc: &mut Doc,
+    report: &Report,
+    v: &View,
+    mirror: bool,
+    point_cap: usize,
+    toolpath_id: Option<&str>,
+) -> bool {
+    draw_section(doc, report, v, mirror);
+    let thinned = draw_toolpath(doc, report, v, point_cap, toolpath_id);
+    draw_deviation_edges(doc, report, v);
+    thinned
+}
+
+/// Blank, final part, leftovers, gouges (filled and outlined) and the intended shape of
+/// a view, in mm under its transform (no toolpath). `mirror`: also draw the lighter
+/// lower half.
+pub(crate) fn draw_shapes(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
+    draw_section(doc, report, v, mirror);
+    draw_deviation_edges(doc, report, v);
+}
+
+/// Blank, final part, the fills of leftovers and gouges, and the intended shape (dashed).
+fn draw_section(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
+    let md = MIN_PX / v.s;
+    let blank = shapes_d(&report.stock.shapes, md);
+    let part = shapes_d(&report.final_part, md);
+    if mirror {
+        let _ = writeln!(
+            doc.out,
+            r#"<g id="mirror" transform="{}">"#,
+            v.transform(true)
+        );
+        doc.mm_path(v, &blank, colour::BLANK_MIRROR, "#d5d0c4", 1.0, &[]);
+        doc.mm_path(v, &part, colour::PART_MIRROR, "#b9c4d3", 1.0, &[]);
+        doc.raw("</g>\n");
+    }
+    let _ = writeln!(
+        doc.out,
+        r#"<g{} transform="{}">"#,
+        // Ids must be unique: only the main view's section gets one.
+        if mirror { r#" id="section""# } else { "" },
+        v.transform(false)
+    );
+    doc.mm_path(v, &blank, colour::BLANK, colour::BLANK_EDGE, 1.0, &[]);
+    doc.mm_path(v, &part, colour::PART, colour::PART_EDGE, 1.3, &[]);
+    doc.mm_path(
+        v,
+        &deviation_d(&report.leftovers, md),
+        colour::LEFTOVER,
+        "none",
+        0.0,
+        &[],
+    );
+    doc.mm_path(
+        v,
+        &deviation_d(&report.gouge_shapes, md),
+        colour::GOUGE,
+        "none",
+        0.0,
+        &[],
+    );
+    doc.mm_path(
+        v,
+        &shapes_d(&report.intended, md),
+        "none",
+        colour::INTENDED,
+        1.6,
+        &[7.0, 4.0],
+    );
+    doc.raw("</g>\n");
+}
+
+/// The outlines of leftovers and gouges, [`DEVIATION_EDGE_PX`] wide whatever the scale,
+/// in a darker shade of their fill (classes `leftover-edge` and `gouge-edge`).
+fn draw_deviation_edges(doc: &mut Doc, report: &Report, v: &View) {
+    if report.leftovers.is_empty() && report.gouge_shapes.is_empty() {
+        return;
+    }
+    let md = MIN_PX / v.s;
+    let _ = writeln!(
+        doc.out,
+        r#"<g class="deviations" transform="{}">"#,
+        v.transform(false)
+    );
+    for (shapes, class, edge) in [
+        (&report.leftovers, "leftover-edge", colour::LEFTOVER_EDGE),
+        (&report.gouge_shapes, "gouge-edge", colour::GOUGE_EDGE),
+    ] {
+        let d = deviation_d(shapes, md);
+        if d.is_empty() {
+            continue;
+        }
+        let _ = writeln!(doc.out, r#"<g class="{class}">"#);
+        doc.mm_path(v, &d, "none", edge, DEVIATION_EDGE_PX, &[]);
+        doc.raw("</g>\n");
+    }
+    doc.raw("</g>\n");
+}
+
+/// The toolpath layer of a view (see [`draw_content`]); returns whether it was thinned.
+fn draw_toolpath(
+    doc: &mut Doc,
+    report: &Report,
+    v: &View,
+    point_cap: usize,
+    toolpath_id: Option<&str>,
+) -> bool {
+    let md = MIN_PX / v.s;
+    let tp = toolpath_d(
+        &report.toolpath,
+        md,
+        &v.mm.grow(v.mm.w().max(v.mm.h()) * 0.05),
+        point_cap,
+    );
+    match toolpath_id {
+        Some(id) => {
+            let _ = writeln!(
+                doc.out,
+                r#"<g id="{id}" transform="{}" opacity="0.9">"#,
+                v.transform(false)
+            );
+        }
+        None => {
+            let _ = writeln!(
+                doc.out,
+                r#"<g transform="{}" opacity="0.9">"#,
+                v.transform(false)
+            );
+        }
+    }
+    doc.mm_path(v, &tp.rapid, "none", colour::RAPID, 1.1, &[5.0, 4.0]);
+    doc.mm_path(v, &tp.feed, "none", colour::FEED, 1.3, &[]);
+    doc.mm_path(v, &tp.thread, "none", colour::THREAD, 1.3, &[]);
+    doc.raw("</g>\n");
+    tp.thinned()
+}
+
+/// Grid lines, frame, tick marks and labels of a view. Returns the tick step.
+pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
+    let (x0, y0, x1, y1) = (v.px[0], v.px[1], v.right(), v.bottom());
+    // Widen the step until the widest label fits between ticks with room to spare.
+    let mut step = nice_step(min_px / v.s);
+    for _ in 0..4 {
+        let dec = step_decimals(step);
+        let widest = [v.mm.zmin, v.mm.zmax]
+            .iter()
+            .map(|t| width(&tick_label((t / step).round() * step, dec), FS_TICK))
+            .fold(0.0, f64::max);
+        if step * v.s >= widest + 14.0 {
+            break;
+        }
+        step = nice_step((widest + 14.0) / v.s);
+    }
+    let dec = step_decimals(step);
+    let zt = ticks(v.mm.zmin, v.mm.zmax, step);
+    let rt = ticks(v.mm.rmin, v.mm.rmax, step);
+    if grid {
+        for &t in &zt {
+            let x = v.x(t);
+            doc.line([x, y0], [x, y1], colour::GRID, 1.0, "");
+        }
+        for &t in &rt {
+            let y = v.y(t);
+            doc.line([x0, y], [x1, y], colour::GRID, 1.0, "");
+        }
+    }
+    for &t in &zt {
+        let x = v.x(t);
+        doc.line([x, y1], [x, y1 + 5.0], colour::INK, 1.0, "");
+        let label = tick_label(t, dec);
+        // A label that would run off the page is left out (its tick stays).
+        let half = width(&label, FS_TICK) / 2.0;
+        if x + half <= layout::W - 4.0 && x - half >= 4.0 {
+            doc.text(x, y1 + 19.0, FS_TICK, "middle", colour::INK, &label);
+        }
+    }
+    for &t in &rt {
+        let y = v.y(t);
+        doc.line([x0 - 5.0, y], [x0, y], colour::INK, 1.0, "");
+        doc.text(
+            x0 - 8.0,
+            y + FS_TICK * 0.35,
+            FS_TICK,
+            "end",
+            colour::INK,
+            &tick_label(t, dec),
+        );
+    }
+    step
+}
+
+/// The axis centre line (dash-dot) across a view, at r = 0.
+pub(crate) fn centre_line(doc: &mut Doc, v: &View) {
+    let y = v.y(0.0);
+    if y >= v.px[1] && y <= v.bottom() {
+        doc.line(
+            [v.px[0], y],
+            [v.right(), y],
+            "#2b2f36",
+            1.0,
+            r#"stroke-dasharray="16 4 3 4""#,
+        );
+    }
+}
