@@ -143,6 +143,7 @@ fn sample(poly: &[(f64, f64)], closed: bool) -> Vec<(f64, f64)> {
 
 /// Hausdorff distance between the expected outline and the final section's boundary within
 /// the expected outline's Z span, leaving out the boundary that lies on the axis (x = 0).
+/// Both are given as (z, diameter); the distance is measured in the section (z, radius), in mm.
 fn hausdorff(report: &Json, expected: &[(f64, f64)]) -> f64 {
     let zmin = expected.iter().map(|p| p.0).fold(f64::INFINITY, f64::min) - 1e-6;
     let zmax = expected.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max) + 1e-6;
@@ -152,7 +153,7 @@ fn hausdorff(report: &Json, expected: &[(f64, f64)]) -> f64 {
             r.as_array()
                 .unwrap()
                 .iter()
-                .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap()))
+                .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap() / 2.0))
                 .collect()
         };
         rings.push(ring(&poly["outer"]));
@@ -173,6 +174,8 @@ fn hausdorff(report: &Json, expected: &[(f64, f64)]) -> f64 {
     if fin.is_empty() {
         return f64::INFINITY;
     }
+    let expected: Vec<(f64, f64)> = expected.iter().map(|&(z, x)| (z, x / 2.0)).collect();
+    let expected = &expected[..];
     let exp_pts = sample(expected, false);
     let d1 = exp_pts
         .iter()
