@@ -17,7 +17,11 @@ fn corpus_dir() -> PathBuf {
 }
 
 fn sidecars(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<_> = std::fs::read_dir(dir).unwrap().flatten().map(|e| e.path()).collect();
+    let mut entries: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
     entries.sort();
     for p in entries {
         if p.is_dir() {
@@ -33,13 +37,18 @@ fn sidecars(dir: &Path, out: &mut Vec<PathBuf>) {
 
 /// Flags `latsim run` has today.
 fn run_help() -> String {
-    let o = Command::new(env!("CARGO_BIN_EXE_latsim")).args(["run", "--help"]).output().unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_latsim"))
+        .args(["run", "--help"])
+        .output()
+        .unwrap();
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
 fn has_flag(help: &str, flag: &str) -> bool {
     help.split(|c: char| c.is_whitespace() || c == ',' || c == '=')
-        .any(|w| w == flag || w.starts_with(&format!("{flag}=")) || w.starts_with(&format!("{flag}<")))
+        .any(|w| {
+            w == flag || w.starts_with(&format!("{flag}=")) || w.starts_with(&format!("{flag}<"))
+        })
 }
 
 fn num(v: &Toml) -> Option<f64> {
@@ -62,7 +71,10 @@ fn run(sidecar: &Path, side: &Toml, help: &str) -> Result<Json, String> {
         args.push(val);
         Ok(())
     };
-    let control = side.get("control").and_then(Toml::as_str).unwrap_or("gsk980");
+    let control = side
+        .get("control")
+        .and_then(Toml::as_str)
+        .unwrap_or("gsk980");
     if control != "gsk980" {
         flag("--control", control.into())?;
     }
@@ -92,12 +104,19 @@ fn run(sidecar: &Path, side: &Toml, help: &str) -> Result<Json, String> {
     args.push("--json".into());
     args.push(json.display().to_string());
     args.push("--quiet".into());
-    let out = Command::new(env!("CARGO_BIN_EXE_latsim")).args(&args).output().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_latsim"))
+        .args(&args)
+        .output()
+        .unwrap();
     let text = std::fs::read_to_string(&json).map_err(|_| {
         format!(
             "no report (exit {:?}): {}",
             out.status.code(),
-            String::from_utf8_lossy(&out.stderr).lines().take(3).collect::<Vec<_>>().join(" | ")
+            String::from_utf8_lossy(&out.stderr)
+                .lines()
+                .take(3)
+                .collect::<Vec<_>>()
+                .join(" | ")
         )
     })?;
     serde_json::from_str(&text).map_err(|e| format!("bad JSON: {e}"))
@@ -112,14 +131,21 @@ fn findings<'a>(report: &'a Json, kind: &str) -> Vec<&'a Json> {
         "alarm" => "alarms",
         other => panic!("unknown finding kind {other}"),
     };
-    report[key].as_array().map(|a| a.iter().collect()).unwrap_or_default()
+    report[key]
+        .as_array()
+        .map(|a| a.iter().collect())
+        .unwrap_or_default()
 }
 
 /// Distance from point p to segment ab, in (z, x) mm.
 fn seg_dist(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
     let (dx, dy) = (b.0 - a.0, b.1 - a.1);
     let l2 = dx * dx + dy * dy;
-    let t = if l2 == 0.0 { 0.0 } else { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0) };
+    let t = if l2 == 0.0 {
+        0.0
+    } else {
+        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
+    };
     let (cx, cy) = (a.0 + t * dx, a.1 + t * dy);
     ((p.0 - cx).powi(2) + (p.1 - cy).powi(2)).sqrt()
 }
@@ -146,7 +172,11 @@ fn sample(poly: &[(f64, f64)], closed: bool) -> Vec<(f64, f64)> {
 /// Both are given as (z, diameter); the distance is measured in the section (z, radius), in mm.
 fn hausdorff(report: &Json, expected: &[(f64, f64)]) -> f64 {
     let zmin = expected.iter().map(|p| p.0).fold(f64::INFINITY, f64::min) - 1e-6;
-    let zmax = expected.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max) + 1e-6;
+    let zmax = expected
+        .iter()
+        .map(|p| p.0)
+        .fold(f64::NEG_INFINITY, f64::max)
+        + 1e-6;
     let mut rings: Vec<Vec<(f64, f64)>> = Vec::new();
     for poly in report["final"].as_array().into_iter().flatten() {
         let ring = |r: &Json| -> Vec<(f64, f64)> {
@@ -179,7 +209,11 @@ fn hausdorff(report: &Json, expected: &[(f64, f64)]) -> f64 {
     let exp_pts = sample(expected, false);
     let d1 = exp_pts
         .iter()
-        .map(|&p| fin.iter().map(|&(a, b)| seg_dist(p, a, b)).fold(f64::INFINITY, f64::min))
+        .map(|&p| {
+            fin.iter()
+                .map(|&(a, b)| seg_dist(p, a, b))
+                .fold(f64::INFINITY, f64::min)
+        })
         .fold(0.0, f64::max);
     let mut d2: f64 = 0.0;
     for &(a, b) in &fin {
@@ -200,9 +234,15 @@ fn hausdorff(report: &Json, expected: &[(f64, f64)]) -> f64 {
 /// Every way the report misses the sidecar's expectation (empty: it meets it).
 fn misses(report: &Json, expect: &Toml) -> Vec<String> {
     let mut m = Vec::new();
-    let verdict = expect.get("verdict").and_then(Toml::as_str).expect("[expect] verdict");
+    let verdict = expect
+        .get("verdict")
+        .and_then(Toml::as_str)
+        .expect("[expect] verdict");
     if report["verdict"].as_str() != Some(verdict) {
-        m.push(format!("verdict {} (expected {verdict})", report["verdict"]));
+        m.push(format!(
+            "verdict {} (expected {verdict})",
+            report["verdict"]
+        ));
     }
     let exp: Vec<&Toml> = expect
         .get("finding")
@@ -211,8 +251,10 @@ fn misses(report: &Json, expect: &Toml) -> Vec<String> {
         .unwrap_or_default();
     // Exactly the listed crashes and gouges: no more, no fewer.
     for kind in ["crash", "gouge", "rapid_scrape", "alarm"] {
-        let want: Vec<&&Toml> =
-            exp.iter().filter(|f| f.get("kind").and_then(Toml::as_str) == Some(kind)).collect();
+        let want: Vec<&&Toml> = exp
+            .iter()
+            .filter(|f| f.get("kind").and_then(Toml::as_str) == Some(kind))
+            .collect();
         let got = findings(report, kind);
         if (kind == "crash" || kind == "gouge" || !want.is_empty()) && got.len() != want.len() {
             let lines: Vec<String> = got.iter().map(|g| format!("{}", g["line"])).collect();
@@ -234,7 +276,9 @@ fn misses(report: &Json, expect: &Toml) -> Vec<String> {
                 let tol = f.get("depth_tol").and_then(num).unwrap_or(0.05);
                 match hit["depth_mm"].as_f64() {
                     Some(got) if (got - d).abs() <= tol => {}
-                    Some(got) => m.push(format!("{kind} line {line}: depth {got:.3} (expected {d} ± {tol})")),
+                    Some(got) => m.push(format!(
+                        "{kind} line {line}: depth {got:.3} (expected {d} ± {tol})"
+                    )),
                     None => m.push(format!("{kind} line {line}: the report gives no depth")),
                 }
             }
@@ -258,7 +302,9 @@ fn misses(report: &Json, expect: &Toml) -> Vec<String> {
         let tol = expect.get("hausdorff_mm").and_then(num).unwrap_or(0.05);
         let h = hausdorff(report, &pts);
         if h > tol {
-            m.push(format!("final profile off by {h:.3} mm (Hausdorff, expected ≤ {tol})"));
+            m.push(format!(
+                "final profile off by {h:.3} mm (Hausdorff, expected ≤ {tol})"
+            ));
         }
     }
     m
@@ -269,15 +315,29 @@ fn corpus() {
     let help = run_help();
     let mut files = Vec::new();
     sidecars(&corpus_dir(), &mut files);
-    assert!(files.len() >= 40, "the corpus has {} programs, expected at least 40", files.len());
+    assert!(
+        files.len() >= 40,
+        "the corpus has {} programs, expected at least 40",
+        files.len()
+    );
     let (mut ok, mut pending) = (0, 0);
     let mut failures = Vec::new();
     for sc in &files {
-        let name = sc.strip_prefix(corpus_dir()).unwrap().with_extension("").display().to_string();
+        let name = sc
+            .strip_prefix(corpus_dir())
+            .unwrap()
+            .with_extension("")
+            .display()
+            .to_string();
         let text = std::fs::read_to_string(sc).unwrap();
         let side: Toml = toml::from_str(&text).unwrap_or_else(|e| panic!("{name}.toml: {e}"));
-        let status = side.get("status").and_then(Toml::as_str).unwrap_or("pending");
-        let expect = side.get("expect").unwrap_or_else(|| panic!("{name}.toml: no [expect]"));
+        let status = side
+            .get("status")
+            .and_then(Toml::as_str)
+            .unwrap_or("pending");
+        let expect = side
+            .get("expect")
+            .unwrap_or_else(|| panic!("{name}.toml: no [expect]"));
         let result = run(sc, &side, &help).map(|r| misses(&r, expect));
         match (status, result) {
             ("expected", Ok(m)) if m.is_empty() => ok += 1,
@@ -300,5 +360,9 @@ fn corpus() {
     }
     println!("corpus: {ok} expected ok, {pending} pending");
     eprintln!("corpus: {ok} expected ok, {pending} pending");
-    assert!(failures.is_empty(), "corpus failures:\n{}", failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "corpus failures:\n{}",
+        failures.join("\n")
+    );
 }

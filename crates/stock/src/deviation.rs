@@ -216,15 +216,28 @@ pub fn deviation(
     chord_tol: f64,
 ) -> Deviation {
     let mut out = Deviation::default();
-    for intent in intents {
-        let blank_zone = boolean(blank, &intent.zone, BoolOp::Intersection);
-        let should_stay = boolean(&blank_zone, &intent.part, BoolOp::Intersection);
-        let final_zone = boolean(final_shapes, &intent.zone, BoolOp::Intersection);
-        let gone = boolean(&should_stay, final_shapes, BoolOp::Difference);
-        let left = boolean(&final_zone, &intent.part, BoolOp::Difference);
-        out.gouges.extend(findings(gone, &intent.part, tol));
-        out.leftovers.extend(findings(left, &intent.part, tol));
+    if intents.is_empty() {
+        return out;
     }
+    // P is the blank intersected with what every intent keeps: within its zone its part,
+    // outside its zone anything (an OD contour says nothing about the bore an ID contour
+    // finishes: spec/simulation.md, "The intended shape"). The comparison holds where at
+    // least one intent speaks.
+    let world = vec![rect(-FAR, FAR, -FAR, FAR)];
+    let mut part = blank.to_vec();
+    let mut zone: Vec<Shape> = vec![];
+    for intent in intents {
+        let elsewhere = boolean(&world, &intent.zone, BoolOp::Difference);
+        let keeps = boolean(&intent.part, &elsewhere, BoolOp::Union);
+        part = boolean(&part, &keeps, BoolOp::Intersection);
+        zone = boolean(&zone, &intent.zone, BoolOp::Union);
+    }
+    let should_stay = boolean(&part, &zone, BoolOp::Intersection);
+    let final_zone = boolean(final_shapes, &zone, BoolOp::Intersection);
+    let gone = boolean(&should_stay, final_shapes, BoolOp::Difference);
+    let left = boolean(&final_zone, &part, BoolOp::Difference);
+    out.gouges = findings(gone, &part, tol);
+    out.leftovers = findings(left, &part, tol);
     for g in &mut out.gouges {
         g.segments = sweeping(&g.shape, segments, tools, chord_tol);
     }
