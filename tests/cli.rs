@@ -53,10 +53,12 @@ fn check_counts_and_exit_status() {
         "{}",
         out.stdout
     );
-    let (_dir, prog) = temp_program("thread.nc", b"M3 S300\nG0 X30 Z5\nG76 P010060 Q100 R0.05\n");
+    let (_dir, prog) = temp_program(
+        "thread.nc",
+        b"G99 M3 S300\nG0 X30 Z5\nG76 P010060 Q100 R0.05\nG76 X27.4 Z-20 P1300 Q300 F2\nM30\n",
+    );
     let out = latsim(&["check", prog.to_str().unwrap()]);
-    assert_eq!(out.code, 1, "G76 is not implemented yet: an alarm");
-    assert!(out.stderr.contains("thread.nc:3:1"), "{}", out.stderr);
+    assert_eq!(out.code, 0, "the two-block G76 runs: {}", out.stderr);
     // seed 004 as printed runs with its G42 (the default nose, with a warning)
     let out = latsim(&["check", asset("programs/tnrc-seed004.nc").to_str().unwrap()]);
     assert_eq!(out.code, 0, "{}", out.stderr);

@@ -45,6 +45,7 @@ const EPS: f64 = 1e-9;
 pub(crate) enum DepthLaw {
     /// Constant cutting amount: hₙ = Δd·√n (FANUC two-block, P1/P2).
     ConstantAmount,
+    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// Constant depth of cut: hₙ = n·Δd (P3/P4).
     ConstantDepth,
 }
@@ -54,6 +55,7 @@ pub(crate) enum DepthLaw {
 pub(crate) enum Edges {
     /// One flank: every pass start lies on the line at a/2 through the final root point.
     One,
+    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// Alternating flanks: the shift flips side pass by pass (+ then −).
     Alternating,
 }
@@ -109,6 +111,7 @@ pub(crate) struct Sources {
 }
 
 impl Sources {
+    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// Letters of the FANUC two-block form, no spans.
     pub(crate) const fn two_block() -> Self {
         Self {
@@ -225,6 +228,7 @@ impl Default for FirstBlock {
     }
 }
 
+#[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
 /// Which one-block dialect is read (messages and unit of K/D).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Flavor {
@@ -234,6 +238,7 @@ pub(crate) enum Flavor {
     Fs15,
 }
 
+#[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
 /// What a one-block G76 takes from the machine rather than from words.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct OneBlockConfig {
@@ -257,6 +262,7 @@ pub(crate) struct OneBlockConfig {
 }
 
 impl OneBlockConfig {
+    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// Haas: settings 86 (finish allowance), 99 (minimum cut), 95/96 (chamfer, only when
     /// `m23` — M23 in force), one pass at full depth.
     pub(crate) const fn haas(
@@ -278,6 +284,7 @@ impl OneBlockConfig {
         }
     }
     /// FANUC FS15 format: the parameters the two-block first block would set.
+    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control (issue 11)
     pub(crate) fn fs15(first: &FirstBlock, chamfer_angle: f64) -> Self {
         Self {
             flavor: Flavor::Fs15,
@@ -327,6 +334,7 @@ pub(crate) enum G76ErrorKind {
         /// The one-block form (0–120) rather than the two-block list.
         one_block: bool,
     },
+    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// One-block P not 1–4.
     InfeedType {
         /// The value written.
@@ -767,6 +775,7 @@ pub(crate) fn read_second<'w>(
     })
 }
 
+#[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
 /// Read the one-block form `G76 X(U) Z(W) K D [I] [A] [P] [Q] F(E)` (Haas §3.5, FS15 §4.5).
 /// `end`, `f_in_force`, `unit` as for [`read_second`]; the rest comes from `cfg`.
 pub(crate) fn read_one_block<'w>(
@@ -957,6 +966,46 @@ fn estimate(p: &G76Params, target: f64) -> f64 {
     by_dd.min(by_min).ceil() + f64::from(p.m)
 }
 
+/// Run a G76 block in the interpreter (FANUC/GSK two-block form): the first block only
+/// stores m r a, Δdmin and d (retained as the control keeps them); the second cuts the
+/// passes from the cycle's start point. The one-block form (Haas, FANUC 10/11/15) is read
+/// by [`read_one_block`] but is a dialect's: under the GSK/FANUC-A default it is an alarm
+/// naming the control to use.
+pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
+    let g_span = c.g.map_or(c.words.span(), |w| w.span);
+    let block = c.words.block;
+    let pq_mm = c.machine.pq_mm();
+    let unit = c.unit;
+    let first = c.retained.g76.unwrap_or_default();
+    match classify(|l| block.get(l)).map_err(|e| e.diagnostic(g_span))? {
+        Form::First => {
+            let f = read_first(|l| c.words.take(l), &first, pq_mm, unit)
+                .map_err(|e| e.diagnostic(g_span))?;
+            c.retained.g76 = Some(f);
+            Ok(super::Output::default())
+        }
+        Form::Second => {
+            let end = Pt::new(
+                c.z_target()?.unwrap_or(c.start.z),
+                c.x_target()?.unwrap_or(c.start.r),
+            );
+            // the chamfer angle of parameter No. 5131: 45°
+            let params = read_second(|l| c.words.take(l), &first, end, None, pq_mm, unit, 45.0)
+                .map_err(|e| e.diagnostic(g_span))?;
+            let moves = moves(c.start, &params).map_err(|e| e.diagnostic(g_span))?;
+            Ok(super::Output {
+                moves,
+                ..super::Output::default()
+            })
+        }
+        Form::OneBlock => Err(c.alarm(
+            "LS-G76-ONE-BLOCK",
+            "the one-block G76 (K, D words) is the Haas / FANUC 10/11/15 format",
+            "write the two-block form G76 P(m)(r)(a) Q R / G76 X Z R P Q F, or run the program with the control that reads it (--control haas, issue 11)",
+        )),
+    }
+}
+
 /// A thread move to `to`.
 fn thread(to: Pt) -> Move {
     let mut m = Move::feed(to);
@@ -1032,6 +1081,7 @@ pub(crate) fn moves(start: Pt, p: &G76Params) -> Result<Vec<Move>, G76Error> {
     Ok(out)
 }
 
+#[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
 /// Advice that does not stop the program: a first depth larger than the whole thread height
 /// (P and Q of the second block swapped?). The pass law caps it at k − d (§4.2).
 pub(crate) fn first_depth_exceeds_height(p: &G76Params) -> bool {

@@ -13,7 +13,6 @@ mod g71_g72;
 mod g73;
 mod g74_g75;
 pub(crate) mod g75_1;
-#[allow(dead_code)] // hooked into the interpreter after the interp split (issue 14)
 mod g76;
 mod g90;
 mod g92;
@@ -82,6 +81,8 @@ pub(crate) struct Retained {
     pub(crate) g72: Option<(f64, f64)>,
     /// G73 U(Δi) W(Δk) R(d), GSK data parameters NO.053–055.
     pub(crate) g73: Option<(f64, f64, u32)>,
+    /// G76 first block: m r a, Δdmin, d.
+    pub(crate) g76: Option<g76::FirstBlock>,
 }
 
 /// The most moves one G74/G75/G75.1 block may expand to; more is an alarm (a P1 Q1 typo
@@ -226,6 +227,7 @@ pub(crate) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         G70 => g70::run(c),
         G71 | G72 => g71_g72::run(c),
         G73 => g73::run(c),
+        G76 => g76::run(c),
         _ => Err(not_implemented(c)),
     }
 }
