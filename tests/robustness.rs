@@ -36,13 +36,17 @@ const NUMBERS: &[&str] = &[
 fn random_program(rng: &mut Lcg) -> String {
     let mut s = String::new();
     for _ in 0..(rng.next() % 40) {
-        if rng.next() % 3 == 0 {
+        if rng.next().is_multiple_of(3) {
             s += rng.pick(CODES);
         } else {
             s += rng.pick(WORDS);
             s += rng.pick(NUMBERS);
         }
-        s += if rng.next() % 4 == 0 { "\n" } else { " " };
+        s += if rng.next().is_multiple_of(4) {
+            "\n"
+        } else {
+            " "
+        };
     }
     s
 }

@@ -9,7 +9,7 @@
 //!
 //! Algorithms come from **geo** (area, containment, hull, Hausdorff, simplification) and
 //! **parry2d-f64** (projection onto polylines); boolean operations live in the `stock`
-//! crate behind its i_overlay integration. Where a hand-written routine is kept, its doc
+//! crate behind its `i_overlay` integration. Where a hand-written routine is kept, its doc
 //! comment says why (with the measurement in ARCHITECTURE.md).
 
 pub mod arc;

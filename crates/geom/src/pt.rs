@@ -92,7 +92,7 @@ impl From<Pt> for [f64; 2] {
 }
 impl From<Pt> for geo::Coord<f64> {
     fn from(p: Pt) -> Self {
-        geo::Coord { x: p.z, y: p.r }
+        Self { x: p.z, y: p.r }
     }
 }
 impl From<geo::Coord<f64>> for Pt {

@@ -2,7 +2,7 @@
 //!
 //! Area, moments, containment and hulls come from geo; a ring converts with
 //! [`to_polygon`]. The integer-grid areas of the removal stay in `stock::overlay`
-//! (exact i128 arithmetic on i_overlay's grid).
+//! (exact i128 arithmetic on `i_overlay`'s grid).
 
 use crate::{Pt, Rect};
 use geo::{Area, Centroid, Contains, ConvexHull, Coord, LineString, Polygon};

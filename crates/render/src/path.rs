@@ -198,7 +198,7 @@ fn one_pass(lines: &[PathLine], min_dist: f64, window: &Bbox, stride: usize) -> 
             }
         }
         nth += 1;
-        if (nth - 1) % stride != 0 {
+        if !(nth - 1).is_multiple_of(stride) {
             continue;
         }
         let i = match l.kind {
