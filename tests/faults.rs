@@ -393,3 +393,26 @@ fn lengths_beyond_ten_metres_are_alarms_at_their_word() {
         assert!(png.exists());
     }
 }
+
+#[test]
+fn a_self_intersecting_blank_profile_is_refused() {
+    // issue 17: a bowtie --stock-file was accepted silently and ran CLEAN
+    let dir = tempfile::tempdir().unwrap();
+    let blank = dir.path().join("bowtie.toml");
+    std::fs::write(
+        &blank,
+        "start = [0.0, 0.0]\npath = [{ to = [-10.0, 20.0] }, { to = [0.0, 20.0] }, { to = [-10.0, 0.0] }]\n",
+    )
+    .unwrap();
+    let out = latsim(&[
+        "run",
+        asset("programs/O0002.nc").to_str().unwrap(),
+        "--stock-file",
+        blank.to_str().unwrap(),
+        "--json",
+        dir.path().join("x.json").to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("crosses itself"), "{}", out.stderr);
+    assert!(out.stderr.contains("bowtie.toml:1:9"), "{}", out.stderr);
+}

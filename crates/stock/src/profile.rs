@@ -49,10 +49,13 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
         }
     };
     let check = |p: [f64; 2], span: std::ops::Range<usize>| -> Result<Pt, StockError> {
-        if !(p[0].is_finite() && p[1].is_finite() && p[0].abs() < 1e9 && p[1].abs() < 1e9) {
+        if !(p[0].is_finite() && p[1].is_finite() && p[0].abs() <= 1e4 && p[1].abs() <= 2e4) {
             return Err(at(
                 span,
-                format!("point [{}, {}] is not a finite coordinate", p[0], p[1]),
+                format!(
+                    "point [{}, {}] is not a coordinate a lathe can hold (|z| ≤ 10 m, x ≤ 20 m)",
+                    p[0], p[1]
+                ),
                 HELP,
             ));
         }
@@ -120,8 +123,21 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
         }
         cur = to;
     }
+    let signed = geom::ring::signed_area(&crate::geom::pts(&ring)).abs();
     let shapes = overlay::clean(&[ring]);
-    if crate::area(&shapes) <= 0.0 {
+    let area = crate::area(&shapes);
+    // A simple outline encloses what its signed area says; one that crosses itself (a
+    // bowtie) has lobes that cancel in the signed area but not in the region.
+    if (area - signed).abs() > 1e-6 * area.max(1.0) + 1e-6 {
+        return Err(at(
+            raw.start.span(),
+            format!(
+                "the outline crosses itself: its lobes enclose {area:.4} mm² but wind to {signed:.4} mm²"
+            ),
+            "list the points once around the outline, without crossing an edge",
+        ));
+    }
+    if area <= 0.0 {
         return Err(at(
             raw.start.span(),
             "the profile encloses no area".into(),
