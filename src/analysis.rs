@@ -13,10 +13,12 @@ pub(crate) fn intents(args: &RunArgs, loaded: &Loaded) -> Result<Vec<Intent>, ()
             .map_err(|e| input::print_stock_error(path, &text, &e))?;
         return Ok(vec![Intent::target(part)]);
     }
-    Ok(loaded
-        .toolpath
-        .intended
+    let intended = &loaded.toolpath.intended;
+    Ok(intended
         .iter()
+        .enumerate()
+        .filter(|(k, i)| !overcut_later(intended, *k, i))
+        .map(|(_, i)| i)
         .filter_map(|i| {
             let pts: Vec<[f64; 2]> = i.points.iter().map(|p| [p.z, p.r]).collect();
             match i.kind {
@@ -28,4 +30,26 @@ pub(crate) fn intents(args: &RunArgs, loaded: &Loaded) -> Result<Vec<Intent>, ()
             }
         })
         .collect())
+}
+
+/// A contour cut under G41/G42 is an intent only when it is the last pass over its stretch
+/// of surface (spec/simulation.md, "The intended shape": roughing passes are not intents,
+/// compensated or not): it is dropped when a later compensated contour with the part on the
+/// same side covers an overlapping Z span.
+fn overcut_later(all: &[expander::Intended], k: usize, i: &expander::Intended) -> bool {
+    let IntendedKind::Compensated { part_on_left } = i.kind else {
+        return false;
+    };
+    let span = |i: &expander::Intended| {
+        i.points
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.z), hi.max(p.z))
+            })
+    };
+    let (lo, hi) = span(i);
+    all[k + 1..].iter().any(|later| {
+        let (a, b) = span(later);
+        later.kind == (IntendedKind::Compensated { part_on_left }) && a < hi - 1e-6 && b > lo + 1e-6
+    })
 }

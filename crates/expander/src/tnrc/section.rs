@@ -87,24 +87,30 @@ impl Interp<'_> {
         };
         if section.len() >= 3 {
             // The programmed contour between start-up and cancel is an intended shape,
-            // unless a G70 already handed it over as its finishing shape.
+            // unless a G70 already handed it over as its finishing shape. A rapid inside
+            // the section separates passes: each chain of feeds is its own contour (the
+            // report keeps only the last pass over a stretch of surface: roughing under
+            // G41/G42 is not an intent).
             let body = &section[1..section.len() - 1];
-            let mut points = vec![body[0].from];
-            for seg in body {
-                points.extend(seg.polyline(0.001).into_iter().skip(1));
-            }
-            let known = self.out.intended.iter().any(|i| {
-                i.kind == crate::IntendedKind::FinishingContour
-                    && i.points.get(1..) == Some(&points[..])
-            });
-            if !known {
-                self.out.intended.push(crate::Intended {
-                    kind: crate::IntendedKind::Compensated {
-                        part_on_left: side == Side::Right,
-                    },
-                    points,
-                    span: section[0].span,
+            for chain in body.split(|s| s.motion == crate::Motion::Rapid) {
+                let Some(first) = chain.first() else { continue };
+                let mut points = vec![first.from];
+                for seg in chain {
+                    points.extend(seg.polyline(0.001).into_iter().skip(1));
+                }
+                let known = self.out.intended.iter().any(|i| {
+                    i.kind == crate::IntendedKind::FinishingContour
+                        && i.points.get(1..) == Some(&points[..])
                 });
+                if !known {
+                    self.out.intended.push(crate::Intended {
+                        kind: crate::IntendedKind::Compensated {
+                            part_on_left: side == Side::Right,
+                        },
+                        points,
+                        span: first.span,
+                    });
+                }
             }
         }
         let c = compensate(&section, side, nose);
