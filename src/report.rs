@@ -53,21 +53,45 @@ pub(crate) fn build(
     tol: f64,
 ) -> Report {
     let tp = &loaded.toolpath;
-    let crashes = sim
+    // spec/simulation.md, "Rapids that cut": deeper than the profile's rapid_cut_tol is a
+    // crash, else a rapid scrape (a warning)
+    let cut = |c: &stock::Crash| {
+        let span = tp.segments[c.segment].span;
+        Crash {
+            line: span.line,
+            column: span.column,
+            z: c.at[0],
+            r: c.at[1],
+            area_mm2: c.area,
+            depth_mm: c.depth,
+        }
+    };
+    let cut_tol = loaded.machine.rapid_cut_tol;
+    let crashes: Vec<Crash> = sim
         .crashes
         .iter()
-        .map(|c| {
-            let span = tp.segments[c.segment].span;
-            Crash {
-                line: span.line,
-                column: span.column,
-                z: c.at[0],
-                r: c.at[1],
-                area_mm2: c.area,
-            }
-        })
+        .filter(|c| c.depth > cut_tol)
+        .map(cut)
+        .collect();
+    let rapid_cuts: Vec<Crash> = sim
+        .crashes
+        .iter()
+        .filter(|c| c.depth <= cut_tol)
+        .map(cut)
         .collect();
     let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(diagnostic).collect();
+    warnings.extend(rapid_cuts.iter().map(|c| Diagnostic {
+        line: c.line,
+        column: c.column,
+        code: "LS-RAPID-SCRAPE".into(),
+        message: format!(
+            "rapid scrapes {:.3} mm deep ({:.4} mm² of stock) at Z{:.3} X{:.3}: not more than rapid_cut_tol {cut_tol} mm, so not a crash; a rapid should clear the stock",
+            c.depth_mm,
+            c.area_mm2,
+            c.z,
+            2.0 * c.r
+        ),
+    }));
     for (seg, message) in &sim.warnings {
         let span = tp.segments.get(*seg).map(|s| s.span).unwrap_or_default();
         warnings.push(Diagnostic {
@@ -93,6 +117,7 @@ pub(crate) fn build(
         final_part: sim.final_shapes.iter().map(shape).collect(),
         toolpath: tp.segments.iter().map(path_line).collect(),
         crashes,
+        rapid_cuts,
         alarms: tp.alarms.iter().map(diagnostic).collect(),
         warnings,
         tools: {

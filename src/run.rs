@@ -328,11 +328,12 @@ const MAX_PRINTED: usize = 20;
 fn print_findings(name: &str, report: &render::Report) {
     for c in report.crashes.iter().take(MAX_PRINTED) {
         eprintln!(
-            "{name}:{}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm² of stock",
+            "{name}:{}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² of stock",
             c.line,
             c.column,
             c.z,
             2.0 * c.r,
+            c.depth_mm,
             c.area_mm2
         );
     }

@@ -84,3 +84,62 @@ fn g71_with_w_and_a_repeated_start_z_is_sound() {
         .fold(f64::INFINITY, f64::min);
     assert!((deepest - 10.2).abs() < 1e-9, "{deepest}");
 }
+
+fn run_json(name: &str, text: &str, extra: &[&str]) -> (i32, serde_json::Value) {
+    let (dir, prog) = temp_program(name, text.as_bytes());
+    let json = dir.path().join("r.json");
+    let mut args = vec![
+        "run",
+        prog.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let out = latsim(&args);
+    let report = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    (out.code, report)
+}
+
+/// Item 1: a rapid that scrapes is not a crash. `G01 X48 / Z-38.1 / G00 X52` on a Φ50.8
+/// bar with the default 55° insert on a 93° holder: the leading edge re-touches the wedge
+/// its 3° clearance left, 0.05 mm thick normal to the retract — a rapid cut below
+/// rapid_cut_tol (0.1 mm): a warning and `rapid_cuts`, not `crashes`.
+#[test]
+fn a_rapid_that_scrapes_is_not_a_crash() {
+    let text = "G99 M03 S800 T0101\nG00 X52 Z2\nG01 X48 F0.2\nZ-38.1\nG00 X52\nG00 Z2\nM30\n";
+    let (code, r) = run_json("scrape.nc", text, &["--stock", "50.8x60"]);
+    assert_eq!(code, 0, "{r}");
+    assert_eq!(r["crashes"].as_array().unwrap().len(), 0);
+    let cuts = r["rapid_cuts"].as_array().unwrap();
+    assert_eq!(cuts.len(), 1, "{cuts:?}");
+    assert_eq!(cuts[0]["line"], 5);
+    let depth = cuts[0]["depth_mm"].as_f64().unwrap();
+    // the wedge between the 3° edge and the retract: tan 3° × the 1.4 mm cut depth ≈ 0.07
+    // along the edge, 0.05 normal to the X retract at the corner the insert meets
+    assert!(depth > 0.0 && depth < 0.1, "{depth}");
+    assert!(r["warnings"].to_string().contains("LS-RAPID-SCRAPE"));
+}
+
+/// Item 1: a part-off blade rapiding 0.5 mm into the bar stays a crash, with its depth.
+#[test]
+fn a_blade_rapiding_into_the_bar_is_a_crash_with_its_depth() {
+    let tools = "[[tool]]\nt = 1\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"-z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
+    let dir = tempfile::tempdir().unwrap();
+    let table = dir.path().join("t.toml");
+    std::fs::write(&table, tools).unwrap();
+    let text = "G99 M03 S600 T0101\nG00 X60 Z-20\nG00 X49\nG00 X60\nM30\n";
+    let (code, r) = run_json(
+        "partoff.nc",
+        text,
+        &["--stock", "50x60", "--tools", table.to_str().unwrap()],
+    );
+    assert_eq!(code, 1, "{r}");
+    let crashes = r["crashes"].as_array().unwrap();
+    assert_eq!(crashes.len(), 1, "{crashes:?}");
+    assert_eq!(crashes[0]["line"], 3);
+    // X49 on a Φ50 bar: 0.5 mm radial, normal to the blade's Z width of 3 mm the cut is
+    // the blade width deep (the overlap is 3 mm × 0.5 mm, measured across the X move)
+    let depth = crashes[0]["depth_mm"].as_f64().unwrap();
+    assert!((depth - 3.0).abs() < 0.01, "{depth}");
+    assert!((crashes[0]["area_mm2"].as_f64().unwrap() - 1.5).abs() < 0.01);
+}

@@ -99,6 +99,10 @@ pub struct Machine {
     /// F in force at power-on (0: none, so a cutting move before any F is alarm PS011,
     /// as on FANUC; a GSK keeps its last F, which a profile can give here).
     pub power_on_feed: f64,
+    /// A rapid that removes stock is a crash when the thickness it removes (normal to the
+    /// move) exceeds this, mm; below it is a rapid scrape, a warning (spec/simulation.md,
+    /// "Rapids that cut").
+    pub rapid_cut_tol: f64,
 }
 
 impl Default for Machine {
@@ -114,6 +118,7 @@ impl Default for Machine {
             max_rpm: 4000.0,
             work_offsets: [Pt::default(); 6],
             power_on_feed: 0.0,
+            rapid_cut_tol: 0.1,
         }
     }
 }
@@ -132,6 +137,7 @@ struct File {
     home: Option<Spanned<[f64; 2]>>,
     max_rpm: Option<Spanned<f64>>,
     power_on_feed: Option<Spanned<f64>>,
+    rapid_cut_tol: Option<Spanned<f64>>,
     work_offsets: Option<Offsets>,
 }
 
@@ -231,6 +237,16 @@ impl Machine {
                 ));
             }
             m.power_on_feed = x;
+        }
+        if let Some(t) = file.rapid_cut_tol {
+            let x = *t.get_ref();
+            if !(x.is_finite() && (0.0..=MAX_COORD_MM).contains(&x)) {
+                return Err(bad(
+                    t.span(),
+                    format!("rapid_cut_tol must be a depth in mm, zero or positive, got {x}"),
+                ));
+            }
+            m.rapid_cut_tol = x;
         }
         if let Some(h) = file.home {
             m.home = pt("home", h)?;

@@ -68,6 +68,20 @@ struct CrashJ {
     z: Option<f64>,
     x: Option<f64>,
     area_mm2: Option<f64>,
+    depth_mm: Option<f64>,
+}
+
+impl From<&crate::Crash> for CrashJ {
+    fn from(c: &crate::Crash) -> Self {
+        Self {
+            line: c.line,
+            column: c.column,
+            z: r6(c.z),
+            x: r6(2.0 * c.r),
+            area_mm2: r6(c.area_mm2),
+            depth_mm: r6(c.depth_mm),
+        }
+    }
 }
 
 #[derive(Serialize)]
@@ -110,6 +124,7 @@ struct Doc<'a> {
     alarms: Vec<Diag<'a>>,
     warnings: Vec<Diag<'a>>,
     crashes: Vec<CrashJ>,
+    rapid_cuts: Vec<CrashJ>,
     gouges: Vec<GougeJ>,
     deviation: Option<DeviationJ>,
     grooves: Vec<GrooveJ>,
@@ -144,17 +159,8 @@ pub(crate) fn json(report: &Report) -> String {
         tools: &report.tools,
         alarms: report.alarms.iter().map(Diag::from).collect(),
         warnings: report.warnings.iter().map(Diag::from).collect(),
-        crashes: report
-            .crashes
-            .iter()
-            .map(|c| CrashJ {
-                line: c.line,
-                column: c.column,
-                z: r6(c.z),
-                x: r6(2.0 * c.r),
-                area_mm2: r6(c.area_mm2),
-            })
-            .collect(),
+        crashes: report.crashes.iter().map(CrashJ::from).collect(),
+        rapid_cuts: report.rapid_cuts.iter().map(CrashJ::from).collect(),
         gouges: report
             .gouges
             .iter()

@@ -48,6 +48,8 @@ pub struct Crash {
     pub r: f64,
     /// Stock area the rapid swept through, mm² of the half section.
     pub area_mm2: f64,
+    /// Thickness of stock removed, normal to the move, mm.
+    pub depth_mm: f64,
 }
 
 /// Part material removed that should have stayed.
@@ -115,8 +117,10 @@ pub struct Report {
     pub intended: Vec<Shape>,
     /// The toolpath, one entry per segment.
     pub toolpath: Vec<PathLine>,
-    /// Rapids into stock.
+    /// Rapids into stock deeper than the machine's `rapid_cut_tol`.
     pub crashes: Vec<Crash>,
+    /// Rapids that scrape stock no deeper than `rapid_cut_tol` (warnings, not crashes).
+    pub rapid_cuts: Vec<Crash>,
     /// Overcuts against the intended shape.
     pub gouges: Vec<Gouge>,
     /// Leftovers, drawn orange with a darker 2 px outline (areas only; no line

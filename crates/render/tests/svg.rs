@@ -164,6 +164,7 @@ fn grooves_come_after_findings_and_insets_stay_bounded() {
         z: -55.0,
         r: 19.0,
         area_mm2: 4.0,
+        depth_mm: 1.0,
     });
     let s = render::svg(&r);
     assert!(s.contains("detail 3: gouge"));
@@ -254,6 +255,7 @@ fn leftover_inset_comes_last_and_only_with_room() {
         z: -55.0,
         r: 19.0,
         area_mm2: 4.0,
+        depth_mm: 1.0,
     });
     let s = render::svg(&r);
     assert!(!s.contains(": leftover"));

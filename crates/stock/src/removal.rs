@@ -87,6 +87,9 @@ pub struct Crash {
     pub at: [f64; 2],
     /// Area of stock the rapid's sweep overlapped, mm².
     pub area: f64,
+    /// Depth of the cut: the thickness of the overlapped stock measured normal to the
+    /// move (a rapid that scrapes a 0.07 mm wedge has depth 0.07), mm.
+    pub depth: f64,
 }
 
 /// The result of a removal run.
@@ -132,6 +135,8 @@ struct Fragment {
     area: f64,
     dist: f64,
     at: P,
+    /// The overlap's extent along the move's normal: (least, largest) projection.
+    across: (f64, f64),
 }
 
 fn bbox_of(shapes: &IShapes) -> IBox {
@@ -302,6 +307,7 @@ impl Tile {
                             area: a,
                             dist,
                             at,
+                            across: across(ctx.grid, &overlap, it.dir),
                         });
                     }
                 }
@@ -459,6 +465,25 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
 }
 
 /// Point of `shapes` nearest to `p` (p itself when inside) and its distance.
+/// The least and largest projection of the region's points on the normal of `dir` (for a
+/// zero direction, the region's larger extent along an axis).
+fn across(grid: &Grid, shapes: &IShapes, dir: P) -> (f64, f64) {
+    let n = if dir == [0.0, 0.0] {
+        [1.0, 0.0]
+    } else {
+        [-dir[1], dir[0]]
+    };
+    let mut span = (f64::INFINITY, f64::NEG_INFINITY);
+    for ring in shapes.iter().flatten() {
+        for &q in ring {
+            let p = grid.to_float(q);
+            let t = p[0] * n[0] + p[1] * n[1];
+            span = (span.0.min(t), span.1.max(t));
+        }
+    }
+    span
+}
+
 fn nearest(grid: &Grid, shapes: &IShapes, p: P) -> (f64, P) {
     let mut best = (f64::INFINITY, p);
     for s in shapes {
@@ -678,8 +703,11 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
         let seg = frags[i].seg;
         let mut j = i;
         let (mut total, mut best) = (0.0, &frags[i]);
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         while j < frags.len() && frags[j].seg == seg {
             total += frags[j].area;
+            lo = lo.min(frags[j].across.0);
+            hi = hi.max(frags[j].across.1);
             if frags[j].dist < best.dist {
                 best = &frags[j];
             }
@@ -690,6 +718,7 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
                 segment: seg,
                 at: best.at,
                 area: total,
+                depth: (hi - lo).max(0.0),
             });
         }
         i = j;

@@ -72,6 +72,9 @@ pub(crate) struct Item {
     pub(crate) start: P,
     /// Overlap area above which a rapid is a crash, mm².
     pub(crate) eps: f64,
+    /// Unit direction of the move (zero for a stamp set), to measure a rapid cut's depth
+    /// normal to it.
+    pub(crate) dir: P,
 }
 
 /// A list of sweeps with their polygons stored flat.
@@ -431,7 +434,15 @@ impl<'a> SweepBuilder<'a> {
                 self.add_poly(&poly);
             }
         }
-        self.end(item, idx, rapid, start);
+        let end = path[path.len() - 1];
+        let (dz, dr) = (end[0] - start[0], end[1] - start[1]);
+        let len = dz.hypot(dr);
+        let dir = if len > 0.0 {
+            [dz / len, dr / len]
+        } else {
+            [0.0, 0.0]
+        };
+        self.end(item, idx, rapid, start, dir);
     }
 
     fn emit_stamps(&mut self, idx: usize, outline: &Outline, at: &[P], start: P) {
@@ -442,7 +453,7 @@ impl<'a> SweepBuilder<'a> {
                 self.add_poly(&poly);
             }
         }
-        self.end(item, idx, false, start);
+        self.end(item, idx, false, start, [0.0, 0.0]);
     }
 
     fn begin(&self) -> (u32, f64) {
@@ -475,7 +486,7 @@ impl<'a> SweepBuilder<'a> {
         self.out.polys.push(start..self.out.pts.len() as u32);
     }
 
-    fn end(&mut self, (first, _): (u32, f64), idx: usize, rapid: bool, start: P) {
+    fn end(&mut self, (first, _): (u32, f64), idx: usize, rapid: bool, start: P, dir: P) {
         let last = self.out.polys.len() as u32;
         if last == first {
             return; // wholly outside the envelope: air
@@ -499,6 +510,7 @@ impl<'a> SweepBuilder<'a> {
             bbox,
             start,
             eps,
+            dir,
         });
     }
 
