@@ -103,7 +103,7 @@ fn run_json(name: &str, text: &str, extra: &[&str]) -> (i32, serde_json::Value) 
 /// Item 1: a rapid that scrapes is not a crash. `G01 X48 / Z-38.1 / G00 X52` on a Φ50.8
 /// bar with the default 55° insert on a 93° holder: the leading edge re-touches the wedge
 /// its 3° clearance left, 0.05 mm thick normal to the retract — a rapid cut below
-/// rapid_cut_tol (0.1 mm): a warning and `rapid_cuts`, not `crashes`.
+/// `rapid_cut_tol` (0.1 mm): a warning and `rapid_cuts`, not `crashes`.
 #[test]
 fn a_rapid_that_scrapes_is_not_a_crash() {
     let text = "G99 M03 S800 T0101\nG00 X52 Z2\nG01 X48 F0.2\nZ-38.1\nG00 X52\nG00 Z2\nM30\n";
