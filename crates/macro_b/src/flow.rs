@@ -930,9 +930,9 @@ mod tests {
         assert_eq!(local(&s, 2), Value::num(6.0));
         assert_eq!(out, vec!["B", "B", "B", "AFTER"]);
         // GOTO with computed targets, rounded: 4.49 → N4, 4.5 → N5
-        let (out, _) = run_one("#1 = 4.49\nGOTO #1\nN4 !FOUR\nGOTO 99\nN5 !FIVE\nN99 !END")
+        let (out, _) = run_one("#1 = 4.49\nGOTO #1\nN4 !FOUR\nGOTO 99\nN5 !FIVE\nN99 !LAST")
             .unwrap();
-        assert_eq!(out, vec!["FOUR", "END"]);
+        assert_eq!(out, vec!["FOUR", "LAST"]);
         let (out, _) = run_one("#1 = 4.5\nGOTO #1\nN4 !FOUR\nN5 !FIVE").unwrap();
         assert_eq!(out, vec!["FIVE"]);
         // backward GOTO loop, IF … GOTO

