@@ -216,11 +216,7 @@ impl MacroState {
                     while k > 0 {
                         let d = k & 0xF;
                         if d > 9 {
-                            return Err(domain(
-                                e.span,
-                                e,
-                                format!("BIN: {x} is not a BCD value"),
-                            ));
+                            return Err(domain(e.span, e, format!("BIN: {x} is not a BCD value")));
                         }
                         v += d * scale;
                         scale *= 10;
@@ -312,8 +308,7 @@ impl MacroState {
         let n = self.var_number(target, sys)?;
         let v = self.eval(value, sys)?;
         let options = self.options;
-        self.vars
-            .write(n, v, comment, target_span, &options, sys)
+        self.vars.write(n, v, comment, target_span, &options, sys)
     }
 
     /// Run a statement that does not move control: an assignment, or `IF … THEN`

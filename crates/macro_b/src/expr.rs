@@ -467,69 +467,68 @@ impl<'a> Parser<'a> {
             });
         };
         let simple = |t: Tok| (t, start + 1);
-        let (tok, end) = match c {
-            '#' => simple(Tok::Hash),
-            '[' => simple(Tok::LBr),
-            ']' => simple(Tok::RBr),
-            ',' => simple(Tok::Comma),
-            '+' => simple(Tok::Plus),
-            '-' => simple(Tok::Minus),
-            '*' => simple(Tok::Star),
-            '/' => simple(Tok::Slash),
-            '=' => simple(Tok::Assign),
-            ';' => (Tok::End, start),
-            '(' => {
-                let close = text[start..].find(')').map(|i| start + i);
-                let end = close.map_or(text.len(), |i| i + 1);
-                let body = &text[start + 1..close.unwrap_or(text.len())];
-                (Tok::Comment(body.trim().to_string()), end)
-            }
-            c if c.is_ascii_digit() || c == '.' => {
-                let mut end = start;
-                let mut point = false;
-                while end < text.len() {
-                    let b = bytes[end];
-                    if b.is_ascii_digit() {
-                        end += 1;
-                    } else if b == b'.' && !point {
-                        point = true;
-                        end += 1;
-                    } else {
-                        break;
-                    }
+        let (tok, end) =
+            match c {
+                '#' => simple(Tok::Hash),
+                '[' => simple(Tok::LBr),
+                ']' => simple(Tok::RBr),
+                ',' => simple(Tok::Comma),
+                '+' => simple(Tok::Plus),
+                '-' => simple(Tok::Minus),
+                '*' => simple(Tok::Star),
+                '/' => simple(Tok::Slash),
+                '=' => simple(Tok::Assign),
+                ';' => (Tok::End, start),
+                '(' => {
+                    let close = text[start..].find(')').map(|i| start + i);
+                    let end = close.map_or(text.len(), |i| i + 1);
+                    let body = &text[start + 1..close.unwrap_or(text.len())];
+                    (Tok::Comment(body.trim().to_string()), end)
                 }
-                let s = &text[start..end];
-                let v = if s == "." {
-                    None
-                } else {
-                    s.parse::<f64>().ok()
-                };
-                match v {
-                    Some(v) if s.len() <= 20 => (Tok::Num(v, point), end),
-                    _ => {
-                        return Err(MacroError::syntax(
+                c if c.is_ascii_digit() || c == '.' => {
+                    let mut end = start;
+                    let mut point = false;
+                    while end < text.len() {
+                        let b = bytes[end];
+                        if b.is_ascii_digit() {
+                            end += 1;
+                        } else if b == b'.' && !point {
+                            point = true;
+                            end += 1;
+                        } else {
+                            break;
+                        }
+                    }
+                    let s = &text[start..end];
+                    let v = if s == "." {
+                        None
+                    } else {
+                        s.parse::<f64>().ok()
+                    };
+                    match v {
+                        Some(v) if s.len() <= 20 => (Tok::Num(v, point), end),
+                        _ => return Err(MacroError::syntax(
                             self.src.span(start, end),
                             format!("malformed number '{s}'"),
                             "a number is digits with at most one decimal point, e.g. 17.5 or 100.",
-                        ))
+                        )),
                     }
                 }
-            }
-            c if c.is_ascii_alphabetic() => {
-                let mut end = start;
-                while end < text.len() && bytes[end].is_ascii_alphabetic() {
-                    end += 1;
+                c if c.is_ascii_alphabetic() => {
+                    let mut end = start;
+                    while end < text.len() && bytes[end].is_ascii_alphabetic() {
+                        end += 1;
+                    }
+                    (Tok::Word(text[start..end].to_ascii_uppercase()), end)
                 }
-                (Tok::Word(text[start..end].to_ascii_uppercase()), end)
-            }
-            c => {
-                return Err(MacroError::syntax(
-                    self.src.span(start, start + c.len_utf8()),
-                    format!("unexpected character '{c}' in a macro expression"),
-                    "expressions use # [ ] + - * / , numbers and macro words",
-                ))
-            }
-        };
+                c => {
+                    return Err(MacroError::syntax(
+                        self.src.span(start, start + c.len_utf8()),
+                        format!("unexpected character '{c}' in a macro expression"),
+                        "expressions use # [ ] + - * / , numbers and macro words",
+                    ))
+                }
+            };
         self.at = end;
         Ok(Token { tok, start, end })
     }
@@ -697,15 +696,16 @@ impl<'a> Parser<'a> {
                 VarRef::Indirect(Box::new(e))
             }
             Tok::Hash => {
-                return Err(self.error_here(
-                    "'##' is not valid",
-                    "write an indirect reference as #[#1]",
-                ))
+                return Err(
+                    self.error_here("'##' is not valid", "write an indirect reference as #[#1]")
+                )
             }
             other => {
                 let found = Self::describe(&other);
                 return Err(self.error_here(
-                    format!("'#' must be followed by a variable number or [expression], found {found}"),
+                    format!(
+                        "'#' must be followed by a variable number or [expression], found {found}"
+                    ),
                     "write #1, #100 or #[#1+1]",
                 ));
             }
@@ -953,10 +953,8 @@ impl<'a> Parser<'a> {
                             }
                         }
                         Tok::Word(w) if w == "GOTO" => {
-                            return Err(self.error_here(
-                                "THEN GOTO is not allowed",
-                                "write IF [cond] GOTO n",
-                            ))
+                            return Err(self
+                                .error_here("THEN GOTO is not allowed", "write IF [cond] GOTO n"))
                         }
                         _ => {
                             let rest_start = self.peek_n(0)?.start;
@@ -1171,7 +1169,10 @@ mod tests {
         let ExprKind::Binary(_, l, r) = &e.kind else {
             panic!()
         };
-        assert_eq!((l.span.line, l.span.column, l.span.offset, l.span.len), (7, 5, 100, 2));
+        assert_eq!(
+            (l.span.line, l.span.column, l.span.offset, l.span.len),
+            (7, 5, 100, 2)
+        );
         assert_eq!((r.span.column, r.span.len), (10, 9));
         assert_eq!(e.span.len, 14);
         assert!(matches!(r.kind, ExprKind::Var(VarRef::Indirect(_))));
@@ -1261,7 +1262,10 @@ mod tests {
         // Haas forms
         let h = Options::haas();
         let st = parse_stmt("IF [#1 NE #0] THEN G01 X#24 F#9", Span::default(), &h).unwrap();
-        let StmtKind::IfThenBlock { text, text_span, .. } = st.kind else {
+        let StmtKind::IfThenBlock {
+            text, text_span, ..
+        } = st.kind
+        else {
             panic!()
         };
         assert_eq!(text, "G01 X#24 F#9");

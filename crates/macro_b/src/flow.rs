@@ -224,7 +224,10 @@ impl<B> MacroProgram<B> {
             None | Some([]) => Err(MacroError::new(
                 ErrorKind::SequenceMissing,
                 span,
-                format!("{what} N{n}: no block N{n} in {}", program_name(self.number)),
+                format!(
+                    "{what} N{n}: no block N{n} in {}",
+                    program_name(self.number)
+                ),
                 format!("number the target block N{n}, or correct the target"),
             )),
             Some([i]) => Ok(*i),
@@ -307,7 +310,7 @@ pub struct Flow<'p, B> {
     counts: Vec<Vec<u64>>,
     /// (program, line) of the loop head last jumped back to, for the budget alarm.
     last_loop: Option<(usize, usize)>,
-    iterations: HashMap<(usize, usize), u64>,
+    iterations: Vec<Vec<u64>>,
 }
 
 impl<'p, B> Flow<'p, B> {
@@ -327,7 +330,7 @@ impl<'p, B> Flow<'p, B> {
             executed: 0,
             counts: programs.iter().map(|p| vec![0; p.lines.len()]).collect(),
             last_loop: None,
-            iterations: HashMap::new(),
+            iterations: programs.iter().map(|p| vec![0; p.lines.len()]).collect(),
         }
     }
 
@@ -341,9 +344,11 @@ impl<'p, B> Flow<'p, B> {
         &self.counts[program]
     }
 
-    /// Iterations of each loop: (program, line of its WHILE/DO or backward GOTO) → count.
-    pub fn loop_iterations(&self) -> &HashMap<(usize, usize), u64> {
-        &self.iterations
+    /// Iterations of the loops of `programs[program]`, per line: how many times control
+    /// jumped back to the line's `WHILE`/`DO` (from its `END`), or back from the line's
+    /// `GOTO` or `M99`. 0 for lines that head no loop.
+    pub fn loop_iterations(&self, program: usize) -> &[u64] {
+        &self.iterations[program]
     }
 
     /// Call levels open, the main program included.
@@ -369,12 +374,14 @@ impl<'p, B> Flow<'p, B> {
     }
 
     fn top(&mut self) -> &mut Frame {
-        self.frames.last_mut().expect("a frame is open while running")
+        self.frames
+            .last_mut()
+            .expect("a frame is open while running")
     }
 
     fn back_jump(&mut self, prog: usize, head: usize) {
         self.last_loop = Some((prog, head));
-        *self.iterations.entry((prog, head)).or_default() += 1;
+        self.iterations[prog][head] += 1;
     }
 
     fn budget_error(&self, prog: usize, line: usize) -> MacroError {
@@ -389,7 +396,7 @@ impl<'p, B> Flow<'p, B> {
                     Some(StmtKind::Goto { .. } | StmtKind::IfGoto { .. }) => "GOTO".into(),
                     _ => "M99".into(),
                 };
-                let n = self.iterations.get(&(p, l)).copied().unwrap_or(0);
+                let n = self.iterations[p][l];
                 MacroError::new(
                     ErrorKind::Budget,
                     line.span,
@@ -561,8 +568,16 @@ impl<'p, B> Flow<'p, B> {
     fn check_depth(&self, kind: CallKind, span: Span) -> Result<()> {
         let count = |k| self.frames.iter().filter(|f| f.kind == k).count();
         let (n, limit, what) = match kind {
-            CallKind::Macro => (count(CallKind::Macro), self.limits.macro_depth, "macro calls"),
-            _ => (count(CallKind::Sub), self.limits.sub_depth, "subprogram calls"),
+            CallKind::Macro => (
+                count(CallKind::Macro),
+                self.limits.macro_depth,
+                "macro calls",
+            ),
+            _ => (
+                count(CallKind::Sub),
+                self.limits.sub_depth,
+                "subprogram calls",
+            ),
         };
         let total = self.frames.len() - 1;
         let (over, limit, what) = if n >= limit {
@@ -578,10 +593,7 @@ impl<'p, B> Flow<'p, B> {
             return Err(MacroError::new(
                 ErrorKind::CallDepth,
                 span,
-                format!(
-                    "more than {limit} {what} nested: {} → …",
-                    self.call_chain()
-                ),
+                format!("more than {limit} {what} nested: {} → …", self.call_chain()),
                 "a program that calls itself needs an exit condition; otherwise flatten the calls",
             ));
         }
@@ -868,10 +880,7 @@ mod tests {
 
     /// Run to the end, collecting NC block texts; `M98 Pn`, `M99`, `G65 Pn …` blocks
     /// written as `!CALL n`, `!SUB n`, `!RET`, `!RETP n` drive the calls.
-    fn run(
-        programs: &[MacroProgram<String>],
-        state: &mut MacroState,
-    ) -> Result<Vec<String>> {
+    fn run(programs: &[MacroProgram<String>], state: &mut MacroState) -> Result<Vec<String>> {
         let mut flow = Flow::new(programs, 0, state.options.limits);
         let mut out = Vec::new();
         while let Some(step) = flow.next(state, &mut NoMachine)? {
@@ -895,9 +904,7 @@ mod tests {
                     at.span,
                 )?,
                 ["SUB", n] => flow.call_sub(n.parse().unwrap(), 1, at.span)?,
-                ["SUBL", n, l] => {
-                    flow.call_sub(n.parse().unwrap(), l.parse().unwrap(), at.span)?
-                }
+                ["SUBL", n, l] => flow.call_sub(n.parse().unwrap(), l.parse().unwrap(), at.span)?,
                 ["LOCAL", n, l] => {
                     flow.call_local(n.parse().unwrap(), l.parse().unwrap(), at.span)?
                 }
@@ -930,8 +937,8 @@ mod tests {
         assert_eq!(local(&s, 2), Value::num(6.0));
         assert_eq!(out, vec!["B", "B", "B", "AFTER"]);
         // GOTO with computed targets, rounded: 4.49 → N4, 4.5 → N5
-        let (out, _) = run_one("#1 = 4.49\nGOTO #1\nN4 !FOUR\nGOTO 99\nN5 !FIVE\nN99 !LAST")
-            .unwrap();
+        let (out, _) =
+            run_one("#1 = 4.49\nGOTO #1\nN4 !FOUR\nGOTO 99\nN5 !FIVE\nN99 !LAST").unwrap();
         assert_eq!(out, vec!["FOUR", "LAST"]);
         let (out, _) = run_one("#1 = 4.5\nGOTO #1\nN4 !FOUR\nN5 !FIVE").unwrap();
         assert_eq!(out, vec!["FIVE"]);
@@ -974,12 +981,18 @@ mod tests {
         assert_eq!(e.kind, ErrorKind::EndWithoutDo);
         assert_eq!(e.span.line, 2);
         assert_eq!(e.message, "END1 without DO1");
-        let e = program(None, "WHILE [1] DO1\nWHILE [1] DO2\nWHILE [1] DO3\nDO1\nEND1\nEND3\nEND2\nEND1")
-            .unwrap_err();
+        let e = program(
+            None,
+            "WHILE [1] DO1\nWHILE [1] DO2\nWHILE [1] DO3\nDO1\nEND1\nEND3\nEND2\nEND1",
+        )
+        .unwrap_err();
         assert_eq!(e.kind, ErrorKind::LoopNesting);
         assert_eq!(e.span.line, 4);
-        let e = program(None, "WHILE [1] DO1\nWHILE [1] DO2\nDO3\nWHILE [1] DO3\nEND3\nEND3\nEND2\nEND1")
-            .unwrap_err();
+        let e = program(
+            None,
+            "WHILE [1] DO1\nWHILE [1] DO2\nDO3\nWHILE [1] DO3\nEND3\nEND3\nEND2\nEND1",
+        )
+        .unwrap_err();
         assert_eq!(e.kind, ErrorKind::LoopNesting);
         assert_eq!(e.span.line, 4);
         let e = program(None, "WHILE [1] DO1\nWHILE [1] DO2\nDO1\nEND1").unwrap_err();
@@ -1020,8 +1033,8 @@ mod tests {
         let e = run_one("GOTO 5\nWHILE [1] DO1\nN5 !A\nEND1").unwrap_err();
         assert_eq!(e.kind, ErrorKind::JumpIntoLoop);
         assert!(e.message.contains("lines 2–4"), "{}", e.message);
-        let (out, _) = run_one("#1 = 0\nWHILE [#1 LT 1] DO1\n#1 = 1\nGOTO 5\n!SKIP\nN5 !IN\nEND1")
-            .unwrap();
+        let (out, _) =
+            run_one("#1 = 0\nWHILE [#1 LT 1] DO1\n#1 = 1\nGOTO 5\n!SKIP\nN5 !IN\nEND1").unwrap();
         assert_eq!(out, vec!["IN"]);
         // duplicates that are not jumped to are fine
         let (out, _) = run_one("N1 !A\nN1 !B").unwrap();
@@ -1126,9 +1139,14 @@ mod tests {
         let mut s = MacroState::new(o);
         let e = run(&p, &mut s).unwrap_err();
         assert_eq!(e.kind, ErrorKind::CallDepth);
-        assert!(e.message.starts_with("more than 5 macro calls nested"), "{}", e.message);
         assert!(
-            e.message.contains("the main program line 1 → O0001 line 2 → O0001"),
+            e.message.starts_with("more than 5 macro calls nested"),
+            "{}",
+            e.message
+        );
+        assert!(
+            e.message
+                .contains("the main program line 1 → O0001 line 2 → O0001"),
             "{}",
             e.message
         );
@@ -1160,7 +1178,11 @@ mod tests {
         ];
         let mut s = MacroState::new(o2);
         let e = run(&p, &mut s).unwrap_err();
-        assert!(e.message.contains("more than 3 calls in total"), "{}", e.message);
+        assert!(
+            e.message.contains("more than 3 calls in total"),
+            "{}",
+            e.message
+        );
     }
 
     fn arg(letter: char, v: f64) -> Argument {
@@ -1220,7 +1242,7 @@ mod tests {
         assert_eq!(l[5], Value::num(3.0));
         assert_eq!(l[7], Value::num(5.0)); // J of triplet 2 = #8
         assert_eq!(l[9], Value::num(7.0)); // I of triplet 3 = #10
-        // mixed: the value given later wins (#7 is D and I of triplet 2)
+                                           // mixed: the value given later wins (#7 is D and I of triplet 2)
         let l = g65_locals(&[arg('D', 1.0), arg('I', 2.0), arg('I', 3.0)]).unwrap();
         assert_eq!(l[6], Value::num(3.0));
         let l = g65_locals(&[arg('I', 2.0), arg('I', 3.0), arg('D', 1.0)]).unwrap();

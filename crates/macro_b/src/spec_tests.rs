@@ -70,7 +70,11 @@ fn read(src: &str, options: &Options) -> Result<Vec<MacroProgram<Nc>>> {
             }
             Body::Block(Nc { words })
         };
-        programs.last_mut().unwrap().1.push(Line { seq, span, body });
+        programs
+            .last_mut()
+            .unwrap()
+            .1
+            .push(Line { seq, span, body });
     }
     programs
         .into_iter()
@@ -189,8 +193,11 @@ fn run(src: &str, options: Options) -> Result<Run> {
             lathe.moves.push((lathe.g, lathe.x, lathe.z));
         }
     }
-    let loops = (0..programs[0].lines().len())
-        .filter_map(|l| flow.loop_iterations().get(&(0, l)).copied())
+    let loops = flow
+        .loop_iterations(0)
+        .iter()
+        .copied()
+        .filter(|&n| n > 0)
         .collect();
     Ok(Run {
         lathe,
@@ -348,7 +355,8 @@ fn bad_inputs_are_alarms_at_their_place() {
     assert_eq!(e.kind, ErrorKind::EndWithoutDo);
     assert_eq!((e.span.line, e.span.column), (2, 1));
     // DO nested beyond the limit
-    let e = err("WHILE [1] DO1\nWHILE [1] DO2\nWHILE [1] DO3\nWHILE [1] DO1\nEND1\nEND3\nEND2\nEND1");
+    let e =
+        err("WHILE [1] DO1\nWHILE [1] DO2\nWHILE [1] DO3\nWHILE [1] DO1\nEND1\nEND3\nEND2\nEND1");
     assert_eq!(e.kind, ErrorKind::LoopNesting);
     assert_eq!(e.span.line, 4);
     assert!(e.message.contains("4 deep"), "{}", e.message);
@@ -364,12 +372,18 @@ fn bad_inputs_are_alarms_at_their_place() {
     assert_eq!(e.span.line, 2);
     assert!(e.message.contains("ran 2499999 times"), "{}", e.message);
     // #3000 alarm with its text, from inside a macro
-    let e = err("G65 P9100 ;\nM30 ;\nO9100\nIF [#24 EQ #0] GOTO 90 ;\nM99 ;\nN90 #3000 = 1 (X MISSING) ;");
+    let e = err(
+        "G65 P9100 ;\nM30 ;\nO9100\nIF [#24 EQ #0] GOTO 90 ;\nM99 ;\nN90 #3000 = 1 (X MISSING) ;",
+    );
     assert_eq!(e.kind, ErrorKind::ProgramAlarm { code: 3001 });
     assert_eq!(e.message, "alarm 3001: X MISSING");
     assert_eq!((e.span.line, e.span.column), (6, 5));
     // position read, modal read
-    let r = run("G01 X20. Z-3. ;\n#100 = #5001 + #5002 + #4001 ;", Options::fanuc()).unwrap();
+    let r = run(
+        "G01 X20. Z-3. ;\n#100 = #5001 + #5002 + #4001 ;",
+        Options::fanuc(),
+    )
+    .unwrap();
     assert_eq!(r.state.vars.common(100), Some(Value::num(18.0)));
     let e = err("#1 = #5021 ;");
     assert_eq!(e.kind, ErrorKind::NotSimulated);

@@ -1,8 +1,6 @@
 //! Variables: locals per call level, common and retained variables, and the system
 //! variables the interpreter answers through [`System`] (spec/dialects.md §5.1, §5.7).
 
-use std::collections::BTreeSet;
-
 use gcode::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
@@ -197,8 +195,8 @@ pub struct VarEntry {
 pub struct Variables {
     levels: Vec<Locals>,
     common: Vec<Value>,
-    read: BTreeSet<u32>,
-    set: BTreeSet<u32>,
+    /// Per variable number below 1000: bit 0 read, bit 1 set (main level and commons).
+    touched: Vec<u8>,
 }
 
 impl Default for Variables {
@@ -213,8 +211,7 @@ impl Variables {
         Self {
             levels: vec![[Value::VACANT; 33]],
             common: vec![Value::VACANT; 1000],
-            read: BTreeSet::new(),
-            set: BTreeSet::new(),
+            touched: vec![0; 1000],
         }
     }
 
@@ -275,28 +272,24 @@ impl Variables {
     /// The variables of the main level and the common variables that the run read or set,
     /// with their final values, in number order.
     pub fn report(&self) -> Vec<VarEntry> {
-        self.read
-            .union(&self.set)
-            .map(|&n| VarEntry {
+        (1..1000u32)
+            .filter(|&n| self.touched[n as usize] != 0)
+            .map(|n| VarEntry {
                 number: n,
                 value: if n <= 33 {
                     self.levels[0][n as usize - 1]
                 } else {
                     self.common[n as usize]
                 },
-                read: self.read.contains(&n),
-                set: self.set.contains(&n),
+                read: self.touched[n as usize] & 1 != 0,
+                set: self.touched[n as usize] & 2 != 0,
             })
             .collect()
     }
 
     fn note(&mut self, n: u32, set: bool) {
         if n > 33 || self.levels.len() == 1 {
-            if set {
-                self.set.insert(n);
-            } else {
-                self.read.insert(n);
-            }
+            self.touched[n as usize] |= if set { 2 } else { 1 };
         }
     }
 
