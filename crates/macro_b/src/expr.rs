@@ -412,6 +412,10 @@ impl Src<'_> {
     }
 }
 
+/// Most operators in one expression: far beyond real programs, and it keeps evaluation's
+/// recursion shallow whatever the input.
+const MAX_OPERATORS: usize = 200;
+
 struct Parser<'a> {
     src: Src<'a>,
     /// Byte position of the lexer.
@@ -421,6 +425,8 @@ struct Parser<'a> {
     /// End of the last consumed token.
     last_end: usize,
     depth: usize,
+    /// Operators read so far (bounds the tree's depth).
+    ops: usize,
 }
 
 fn keyword_help() -> &'static str {
@@ -444,6 +450,7 @@ impl<'a> Parser<'a> {
             ahead: Vec::new(),
             last_end: 0,
             depth: 0,
+            ops: 0,
         }
     }
 
@@ -637,6 +644,18 @@ impl<'a> Parser<'a> {
         })
     }
 
+    fn count_op(&mut self, t: &Token) -> Result<()> {
+        self.ops += 1;
+        if self.ops > MAX_OPERATORS {
+            return Err(MacroError::syntax(
+                self.span_of(t),
+                format!("more than {MAX_OPERATORS} operators in one expression"),
+                "split the computation over several assignments",
+            ));
+        }
+        Ok(())
+    }
+
     fn level(&mut self, level: u8) -> Result<Expr> {
         if level < 3 {
             return self.unary();
@@ -646,7 +665,8 @@ impl<'a> Parser<'a> {
             if op.level() != level {
                 break;
             }
-            self.bump()?;
+            let t = self.bump()?;
+            self.count_op(&t)?;
             let rhs = self.level(level - 1)?;
             let span = lhs.span.to(rhs.span);
             lhs = Expr {
@@ -661,6 +681,7 @@ impl<'a> Parser<'a> {
         match self.peek()? {
             Tok::Minus | Tok::Plus => {
                 let t = self.bump()?;
+                self.count_op(&t)?;
                 let e = self.unary()?;
                 let span = self.span_of(&t).to(e.span);
                 let kind = if t.tok == Tok::Minus {
@@ -1191,6 +1212,16 @@ mod tests {
         // function brackets count
         let e = parse_expr("[[[[SIN[[1]]]]]]", Span::default()).unwrap_err();
         assert_eq!(e.kind, ErrorKind::BracketNesting);
+    }
+
+    #[test]
+    fn huge_inputs_are_refused_not_overflowed() {
+        let long = vec!["1"; 5000].join("+");
+        let e = parse_expr(&long, Span::default()).unwrap_err();
+        assert!(e.message.contains("operators"));
+        let signs = format!("{}1", "-".repeat(100_000));
+        assert!(parse_expr(&signs, Span::default()).is_err());
+        assert!(parse_expr(&vec!["1"; 200].join("+"), Span::default()).is_ok());
     }
 
     #[test]
