@@ -517,7 +517,6 @@ impl<'p, B> Flow<'p, B> {
         pi: usize,
         li: usize,
     ) -> Result<()> {
-        let prog = &self.programs[pi];
         let v = state.required(target, "GOTO target", sys)?;
         let n = round_half_away(v);
         if !(1.0..=99_999_999.0).contains(&n) {
@@ -528,7 +527,13 @@ impl<'p, B> Flow<'p, B> {
                 "jump to an N number that is written in this program",
             ));
         }
-        let t = prog.find_seq(n as u32, target.span, "GOTO")?;
+        self.jump_within(pi, li, n as u32, target.span, "GOTO")
+    }
+
+    /// Jump to block `Nn` of program `pi` from its line `li`.
+    fn jump_within(&mut self, pi: usize, li: usize, n: u32, span: Span, what: &str) -> Result<()> {
+        let prog = &self.programs[pi];
+        let t = prog.find_seq(n, span, what)?;
         if let Some(&(s, e)) = prog
             .loops
             .iter()
@@ -536,9 +541,9 @@ impl<'p, B> Flow<'p, B> {
         {
             return Err(MacroError::new(
                 ErrorKind::JumpIntoLoop,
-                target.span,
+                span,
                 format!(
-                    "GOTO {n} jumps into the loop of lines {}–{} from outside it",
+                    "{what} {n} jumps into the loop of lines {}–{} from outside it",
                     prog.lines[s].span.line, prog.lines[e].span.line
                 ),
                 "jump to the WHILE line or before it; jumping out of a loop or within it is allowed",
@@ -549,6 +554,15 @@ impl<'p, B> Flow<'p, B> {
         }
         self.top().pc = t;
         Ok(())
+    }
+
+    /// Haas `M99 Pn` (and `[cond] M99 Pn` when its condition held): a jump to block `Nn`
+    /// of the current program that does not return to the caller (spec §3.6). Call it
+    /// after [`Flow::next`] handed out the `M99` block; `span` is the P word.
+    pub fn jump(&mut self, seq: u32, span: Span) -> Result<()> {
+        let f = self.frames.last().expect("running");
+        let (pi, li) = (f.prog, f.pc.saturating_sub(1));
+        self.jump_within(pi, li, seq, span, "M99 P")
     }
 
     fn find_program(&self, number: u32, span: Span) -> Result<usize> {
@@ -910,6 +924,7 @@ mod tests {
                 }
                 ["RET"] => flow.ret(state, None, at.span)?,
                 ["RETP", n] => flow.ret(state, Some(n.parse().unwrap()), at.span)?,
+                ["JUMP", n] => flow.jump(n.parse().unwrap(), at.span)?,
                 ["END"] => break,
                 _ => out.push(block.clone()),
             }
@@ -1104,6 +1119,16 @@ mod tests {
         run(&p, &mut s).unwrap();
         assert_eq!(s.vars.common(100), Some(Value::num(4.0)));
         assert!(local(&s, 1).is_vacant());
+        // Haas M99 Pn: a branch inside the subprogram, no return
+        let main = program(None, "!SUB 20\n!BACK").unwrap();
+        let s20 = program(
+            Some(20),
+            "N5 #1 = #1 + 1\n!IN\nIF [#1 GE 2] GOTO 9\n!JUMP 5\nN9 !RET",
+        )
+        .unwrap();
+        let p = [main, s20];
+        let mut s = MacroState::new(Options::haas());
+        assert_eq!(run(&p, &mut s).unwrap(), vec!["IN", "IN", "BACK"]);
         // falling off the end of a subprogram returns
         let main = program(None, "!SUB 400\n!BACK").unwrap();
         let s400 = program(Some(400), "!IN").unwrap();
