@@ -1,0 +1,564 @@
+//! Variables: locals per call level, common and retained variables, and the system
+//! variables the interpreter answers through [`System`] (spec/dialects.md §5.1, §5.7).
+
+use gcode::Span;
+
+use crate::error::{ErrorKind, MacroError, Result};
+use crate::flow::letter_of_argument;
+use crate::options::Options;
+use crate::value::{round_half_away, Value};
+
+/// The 33 local variables `#1`–`#33` of one call level.
+pub type Locals = [Value; 33];
+
+/// An axis of a lathe's position variables (`#5001` X, `#5002` Z).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Axis {
+    /// X, as a diameter.
+    X,
+    /// Z.
+    Z,
+}
+
+/// Which position a position variable reads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Position {
+    /// `#5001`–`#5002`: end point of the last block, work coordinates.
+    BlockEnd,
+    /// `#5021`–`#5022`: machine position (work position + active work offset).
+    Machine,
+    /// `#5041`–`#5042`: current work position.
+    Work,
+}
+
+/// The timers `#3001` (milliseconds) and `#3002` (hours).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Timer {
+    /// `#3001`.
+    Millis,
+    /// `#3002`.
+    Hours,
+}
+
+/// The machine state behind the system variables of spec §5.7. The interpreter implements
+/// it; every method has a default that answers "not simulated", so an implementation
+/// overrides only what it keeps. A `None` (or `false` from a setter) becomes the error
+/// "system variable #n not simulated" at the variable's place.
+pub trait System {
+    /// `#5001`…: a position, X as a diameter.
+    fn position(&self, _kind: Position, _axis: Axis) -> Option<f64> {
+        None
+    }
+    /// `#4001`–`#4021`: the modal G code of group 1…21 (`G01` → 1, `G99` → 99).
+    fn modal_group(&self, _group: u32) -> Option<f64> {
+        None
+    }
+    /// `#4101`–`#4126`: the last value of an address (`F`, `S`, `T` …); `Some(VACANT)`
+    /// when the address was never given.
+    fn last_address(&self, _letter: char) -> Option<Value> {
+        None
+    }
+    /// `#3001`/`#3002`: simulated cycle time since the last write.
+    fn timer(&self, _timer: Timer) -> Option<f64> {
+        None
+    }
+    /// Write `#3001`/`#3002`. `false`: not simulated.
+    fn set_timer(&mut self, _timer: Timer, _value: f64) -> bool {
+        false
+    }
+    /// `#3901` (1) / `#3902` (2): parts counters.
+    fn parts_counter(&self, _which: u8) -> Option<f64> {
+        None
+    }
+    /// Write `#3901`/`#3902`. `false`: not simulated.
+    fn set_parts_counter(&mut self, _which: u8, _value: f64) -> bool {
+        false
+    }
+    /// `#2001`+: a tool offset, when the profile maps them. `None` gives the error
+    /// "tool offset variables not mapped".
+    fn tool_offset(&self, _number: u32) -> Option<f64> {
+        None
+    }
+    /// `#3006 = n (message)`: stop with a message and continue. `false`: not simulated.
+    fn stop_message(&mut self, _number: f64, _message: &str) -> bool {
+        false
+    }
+}
+
+/// A [`System`] that simulates nothing: every system variable is "not simulated".
+#[derive(Debug, Clone, Copy, Default)]
+pub struct NoMachine;
+
+impl System for NoMachine {}
+
+/// What a variable number names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Class {
+    Null,
+    Local(usize),
+    Common(usize),
+    ToolOffset(u32),
+    Alarm,
+    Stop,
+    Timer(Timer),
+    Parts(u8),
+    Modal(u32),
+    LastAddress(char),
+    Position(Position, Axis),
+    NotSimulated,
+    Missing,
+}
+
+fn is_common(n: i64) -> bool {
+    (100..=199).contains(&n) || (500..=999).contains(&n)
+}
+
+fn classify(n: i64, options: &Options) -> Class {
+    match n {
+        0 => Class::Null,
+        1..=33 => Class::Local(n as usize - 1),
+        n if is_common(n) => Class::Common(n as usize),
+        n if options.is_haas() && n >= 10_000 && is_common(n - 10_000) => {
+            Class::Common(n as usize - 10_000)
+        }
+        2001..=2999 => Class::ToolOffset(n as u32),
+        3000 => Class::Alarm,
+        3006 => Class::Stop,
+        3001 => Class::Timer(Timer::Millis),
+        3002 => Class::Timer(Timer::Hours),
+        3901 => Class::Parts(1),
+        3902 => Class::Parts(2),
+        4001..=4021 => Class::Modal((n - 4000) as u32),
+        4101..=4126 => match letter_of_argument((n - 4100) as u8) {
+            Some(c) => Class::LastAddress(c),
+            None => Class::NotSimulated,
+        },
+        5001 => Class::Position(Position::BlockEnd, Axis::X),
+        5002 => Class::Position(Position::BlockEnd, Axis::Z),
+        5021 => Class::Position(Position::Machine, Axis::X),
+        5022 => Class::Position(Position::Machine, Axis::Z),
+        5041 => Class::Position(Position::Work, Axis::X),
+        5042 => Class::Position(Position::Work, Axis::Z),
+        n if n >= 1000 => Class::NotSimulated,
+        _ => Class::Missing,
+    }
+}
+
+fn not_simulated(n: i64, span: Span) -> MacroError {
+    MacroError::new(
+        ErrorKind::NotSimulated,
+        span,
+        format!("system variable #{n} not simulated"),
+        "latsim simulates #3000 #3001 #3002 #3006 #3901 #3902 #4001–#4021 #4101–#4126 #5001 #5002 #5021 #5022 #5041 #5042, and #2001+ when the profile maps tool offsets",
+    )
+}
+
+fn missing(n: i64, span: Span) -> MacroError {
+    MacroError::new(
+        ErrorKind::NoSuchVariable,
+        span,
+        format!("variable #{n} does not exist"),
+        "locals are #1–#33, common variables #100–#199 and #500–#999, system variables #1000 and up",
+    )
+}
+
+fn read_only(n: i64, span: Span) -> MacroError {
+    MacroError::new(
+        ErrorKind::ReadOnly,
+        span,
+        format!("#{n} is read-only"),
+        if n == 0 {
+            "#0 is always vacant; to make a variable vacant write #1 = #0"
+        } else {
+            "system variables that report the machine state cannot be written"
+        },
+    )
+}
+
+/// One line of the variable report: a variable the run read or set, and its final value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VarEntry {
+    /// The variable number.
+    pub number: u32,
+    /// Its value at the end.
+    pub value: Value,
+    /// The run read it.
+    pub read: bool,
+    /// The run set it.
+    pub set: bool,
+}
+
+/// All macro variables of a run: one local set per call level, the common variables
+/// (`#100`–`#199` vacant at start, `#500`–`#999` loaded from `--vars`), and a record of
+/// which variables of the main level were read and set, for the report.
+#[derive(Debug, Clone)]
+pub struct Variables {
+    levels: Vec<Locals>,
+    common: Vec<Value>,
+    /// Per variable number below 1000: bit 0 read, bit 1 set (main level and commons).
+    touched: Vec<u8>,
+}
+
+impl Default for Variables {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Variables {
+    /// Everything vacant, one local level (the main program's).
+    pub fn new() -> Self {
+        Self {
+            levels: vec![[Value::VACANT; 33]],
+            common: vec![Value::VACANT; 1000],
+            touched: vec![0; 1000],
+        }
+    }
+
+    /// The call level: 0 in the main program, +1 per `G65` level.
+    pub fn level(&self) -> usize {
+        self.levels.len() - 1
+    }
+
+    /// A new local set for a `G65`/`G66` call: vacant except the arguments.
+    pub fn push_level(&mut self, args: Locals) {
+        self.levels.push(args);
+    }
+
+    /// Leave a `G65` level (`M99`): its locals are gone. The main level stays.
+    pub fn pop_level(&mut self) {
+        if self.levels.len() > 1 {
+            self.levels.pop();
+        }
+    }
+
+    /// Local `#n` (1–33) of the current level.
+    pub fn local(&self, n: usize) -> Value {
+        self.levels.last().expect("main level")[n - 1]
+    }
+
+    /// Set local `#n` (1–33) of the current level (e.g. from a G65 argument on a repeat).
+    pub fn set_local(&mut self, n: usize, v: Value) {
+        self.levels.last_mut().expect("main level")[n - 1] = v;
+    }
+
+    /// A common variable (`#100`–`#199`, `#500`–`#999`); `None` for other numbers.
+    pub fn common(&self, n: u32) -> Option<Value> {
+        is_common(i64::from(n)).then(|| self.common[n as usize])
+    }
+
+    /// Load a retained variable from `--vars FILE` (`#500`–`#999`; `#100`–`#199` also
+    /// accepted for Haas, where they are retained).
+    pub fn load(&mut self, n: u32, v: f64, span: Span) -> Result<()> {
+        if !is_common(i64::from(n)) {
+            return Err(MacroError::new(
+                ErrorKind::NoSuchVariable,
+                span,
+                format!("#{n} is not a common variable"),
+                "--vars sets #100–#199 and #500–#999",
+            ));
+        }
+        self.common[n as usize] = Value::num(v);
+        Ok(())
+    }
+
+    /// The retained variables `#500`–`#999` that hold a value, to save after a run.
+    pub fn retained(&self) -> Vec<(u32, f64)> {
+        (500..1000u32)
+            .filter_map(|n| self.common[n as usize].get().map(|v| (n, v)))
+            .collect()
+    }
+
+    /// The variables of the main level and the common variables that the run read or set,
+    /// with their final values, in number order.
+    pub fn report(&self) -> Vec<VarEntry> {
+        (1..1000u32)
+            .filter(|&n| self.touched[n as usize] != 0)
+            .map(|n| VarEntry {
+                number: n,
+                value: if n <= 33 {
+                    self.levels[0][n as usize - 1]
+                } else {
+                    self.common[n as usize]
+                },
+                read: self.touched[n as usize] & 1 != 0,
+                set: self.touched[n as usize] & 2 != 0,
+            })
+            .collect()
+    }
+
+    fn note(&mut self, n: u32, set: bool) {
+        if n > 33 || self.levels.len() == 1 {
+            self.touched[n as usize] |= if set { 2 } else { 1 };
+        }
+    }
+
+    /// Read `#n` (`n` already rounded for `#[expr]`). `span` is the variable's place.
+    pub fn read(
+        &mut self,
+        n: i64,
+        span: Span,
+        options: &Options,
+        sys: &mut dyn System,
+    ) -> Result<Value> {
+        let v = match classify(n, options) {
+            Class::Null => Value::VACANT,
+            Class::Local(i) => {
+                self.note(i as u32 + 1, false);
+                self.levels.last().expect("main level")[i]
+            }
+            Class::Common(i) => {
+                self.note(i as u32, false);
+                self.common[i]
+            }
+            Class::ToolOffset(k) => match sys.tool_offset(k) {
+                Some(v) => Value::num(v),
+                None => {
+                    return Err(MacroError::new(
+                        ErrorKind::NotSimulated,
+                        span,
+                        format!("#{n}: tool offset variables not mapped"),
+                        "map tool offset variables in the machine profile, or read the value from the tool table another way",
+                    ))
+                }
+            },
+            Class::Alarm | Class::Stop => {
+                return Err(MacroError::new(
+                    ErrorKind::NotSimulated,
+                    span,
+                    format!("#{n} can only be written"),
+                    "#3000 raises an alarm and #3006 stops with a message when written",
+                ))
+            }
+            Class::Timer(t) => Value::num(sys.timer(t).ok_or_else(|| not_simulated(n, span))?),
+            Class::Parts(k) => {
+                Value::num(sys.parts_counter(k).ok_or_else(|| not_simulated(n, span))?)
+            }
+            Class::Modal(g) => {
+                Value::num(sys.modal_group(g).ok_or_else(|| not_simulated(n, span))?)
+            }
+            Class::LastAddress(c) => sys.last_address(c).ok_or_else(|| not_simulated(n, span))?,
+            Class::Position(p, a) => {
+                Value::num(sys.position(p, a).ok_or_else(|| not_simulated(n, span))?)
+            }
+            Class::NotSimulated => return Err(not_simulated(n, span)),
+            Class::Missing => return Err(missing(n, span)),
+        };
+        Ok(v)
+    }
+
+    /// Write `#n = v`. `comment` is the statement's `( … )` text (the message of `#3000`
+    /// and `#3006`). Writing `#3000` returns the program's alarm as the error
+    /// ([`ErrorKind::ProgramAlarm`]).
+    pub fn write(
+        &mut self,
+        n: i64,
+        v: Value,
+        comment: Option<&str>,
+        span: Span,
+        options: &Options,
+        sys: &mut dyn System,
+    ) -> Result<()> {
+        match classify(n, options) {
+            Class::Local(i) => {
+                self.note(i as u32 + 1, true);
+                self.levels.last_mut().expect("main level")[i] = v;
+            }
+            Class::Common(i) => {
+                self.note(i as u32, true);
+                self.common[i] = v;
+            }
+            Class::Alarm => {
+                let k = round_half_away(v.or_zero());
+                if !(0.0..=999.0).contains(&k) {
+                    return Err(MacroError::new(
+                        ErrorKind::Domain,
+                        span,
+                        format!("#3000 = {k}: the alarm number must be 0–999"),
+                        "write #3000 = n (message) with n from 0 to 999",
+                    ));
+                }
+                let code = k as u32 + if options.is_haas() { 1000 } else { 3000 };
+                let message = match comment {
+                    Some(m) if !m.is_empty() => format!("alarm {code}: {m}"),
+                    _ => format!("alarm {code}"),
+                };
+                return Err(MacroError::new(
+                    ErrorKind::ProgramAlarm { code },
+                    span,
+                    message,
+                    "the program raised this alarm itself (#3000)",
+                ));
+            }
+            Class::Stop => {
+                if !sys.stop_message(v.or_zero(), comment.unwrap_or("")) {
+                    return Err(not_simulated(n, span));
+                }
+            }
+            Class::Timer(t) => {
+                if !sys.set_timer(t, v.or_zero()) {
+                    return Err(not_simulated(n, span));
+                }
+            }
+            Class::Parts(k) => {
+                if !sys.set_parts_counter(k, v.or_zero()) {
+                    return Err(not_simulated(n, span));
+                }
+            }
+            Class::Null
+            | Class::ToolOffset(_)
+            | Class::Modal(_)
+            | Class::LastAddress(_)
+            | Class::Position(..) => return Err(read_only(n, span)),
+            Class::NotSimulated => return Err(not_simulated(n, span)),
+            Class::Missing => return Err(missing(n, span)),
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    struct Lathe {
+        ms: f64,
+    }
+    impl System for Lathe {
+        fn position(&self, kind: Position, axis: Axis) -> Option<f64> {
+            Some(match (kind, axis) {
+                (Position::BlockEnd | Position::Work, Axis::X) => 42.0,
+                (Position::BlockEnd | Position::Work, Axis::Z) => 2.0,
+                (Position::Machine, Axis::X) => 142.0,
+                (Position::Machine, Axis::Z) => 302.0,
+            })
+        }
+        fn modal_group(&self, group: u32) -> Option<f64> {
+            (group == 1).then_some(1.0)
+        }
+        fn last_address(&self, letter: char) -> Option<Value> {
+            Some(if letter == 'F' {
+                Value::num(0.2)
+            } else {
+                Value::VACANT
+            })
+        }
+        fn timer(&self, _: Timer) -> Option<f64> {
+            Some(self.ms)
+        }
+        fn set_timer(&mut self, _: Timer, v: f64) -> bool {
+            self.ms = v;
+            true
+        }
+    }
+
+    const S: Span = Span {
+        line: 3,
+        column: 1,
+        offset: 20,
+        len: 5,
+    };
+
+    #[test]
+    fn ranges() {
+        let o = Options::fanuc();
+        let mut v = Variables::new();
+        let sys = &mut NoMachine;
+        assert!(v.read(1, S, &o, sys).unwrap().is_vacant());
+        assert!(v.read(0, S, &o, sys).unwrap().is_vacant());
+        v.write(100, Value::num(3.0), None, S, &o, sys).unwrap();
+        v.write(999, Value::num(4.0), None, S, &o, sys).unwrap();
+        assert_eq!(v.read(100, S, &o, sys).unwrap(), Value::num(3.0));
+        for n in [34, 99, 200, 499, -1] {
+            let e = v.read(n, S, &o, sys).unwrap_err();
+            assert_eq!(e.kind, ErrorKind::NoSuchVariable, "#{n}");
+            assert_eq!(e.span, S);
+        }
+        let e = v.write(0, Value::num(1.0), None, S, &o, sys).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::ReadOnly);
+        // Haas NGC alias
+        let h = Options::haas();
+        v.write(10_500, Value::num(7.0), None, S, &h, sys).unwrap();
+        assert_eq!(v.read(500, S, &h, sys).unwrap(), Value::num(7.0));
+        assert!(v.read(10_500, S, &o, sys).is_err());
+        assert_eq!(v.retained(), vec![(500, 7.0), (999, 4.0)]);
+    }
+
+    #[test]
+    fn locals_per_level() {
+        let o = Options::fanuc();
+        let sys = &mut NoMachine;
+        let mut v = Variables::new();
+        v.write(1, Value::num(1.0), None, S, &o, sys).unwrap();
+        let mut args = [Value::VACANT; 33];
+        args[23] = Value::num(24.0);
+        v.push_level(args);
+        assert_eq!(v.level(), 1);
+        assert!(v.read(1, S, &o, sys).unwrap().is_vacant());
+        assert_eq!(v.read(24, S, &o, sys).unwrap(), Value::num(24.0));
+        v.write(2, Value::num(5.0), None, S, &o, sys).unwrap();
+        v.pop_level();
+        assert_eq!(v.read(1, S, &o, sys).unwrap(), Value::num(1.0));
+        assert!(v.read(2, S, &o, sys).unwrap().is_vacant());
+        let r = v.report();
+        assert_eq!(r.len(), 2);
+        assert_eq!((r[0].number, r[0].read, r[0].set), (1, true, true));
+        assert_eq!((r[1].number, r[1].read, r[1].set), (2, true, false));
+    }
+
+    #[test]
+    fn system_variables() {
+        let o = Options::fanuc();
+        let mut v = Variables::new();
+        let mut m = Lathe { ms: 5.0 };
+        assert_eq!(v.read(5001, S, &o, &mut m).unwrap(), Value::num(42.0));
+        assert_eq!(v.read(5002, S, &o, &mut m).unwrap(), Value::num(2.0));
+        assert_eq!(v.read(5022, S, &o, &mut m).unwrap(), Value::num(302.0));
+        assert_eq!(v.read(5041, S, &o, &mut m).unwrap(), Value::num(42.0));
+        assert_eq!(v.read(4001, S, &o, &mut m).unwrap(), Value::num(1.0));
+        assert_eq!(v.read(4109, S, &o, &mut m).unwrap(), Value::num(0.2));
+        assert!(v.read(4119, S, &o, &mut m).unwrap().is_vacant());
+        assert_eq!(v.read(3001, S, &o, &mut m).unwrap(), Value::num(5.0));
+        v.write(3001, Value::num(0.0), None, S, &o, &mut m).unwrap();
+        assert_eq!(m.ms, 0.0);
+        // not simulated: named
+        for n in [5003, 4002, 4110, 3004, 1000, 6000, 3901] {
+            let e = v.read(n, S, &o, &mut m).unwrap_err();
+            assert_eq!(e.kind, ErrorKind::NotSimulated, "#{n}");
+            assert!(e.message.contains(&format!("#{n}")), "{}", e.message);
+        }
+        let e = v.read(2001, S, &o, &mut m).unwrap_err();
+        assert!(e.message.contains("tool offset variables not mapped"));
+        // read-only
+        for n in [5001, 4001, 4109] {
+            let e = v
+                .write(n, Value::num(1.0), None, S, &o, &mut m)
+                .unwrap_err();
+            assert_eq!(e.kind, ErrorKind::ReadOnly, "#{n}");
+        }
+    }
+
+    #[test]
+    fn program_alarm_3000() {
+        let mut v = Variables::new();
+        let sys = &mut NoMachine;
+        let e = v
+            .write(
+                3000,
+                Value::num(12.0),
+                Some("TOOL BROKEN"),
+                S,
+                &Options::fanuc(),
+                sys,
+            )
+            .unwrap_err();
+        assert_eq!(e.kind, ErrorKind::ProgramAlarm { code: 3012 });
+        assert_eq!(e.message, "alarm 3012: TOOL BROKEN");
+        assert_eq!(e.span, S);
+        let e = v
+            .write(3000, Value::num(1.0), None, S, &Options::haas(), sys)
+            .unwrap_err();
+        assert_eq!(e.kind, ErrorKind::ProgramAlarm { code: 1001 });
+        assert_eq!(e.message, "alarm 1001");
+    }
+}
