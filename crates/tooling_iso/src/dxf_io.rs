@@ -90,6 +90,19 @@ fn bulge_points(p0: Pt, p1: Pt, bulge: f64, tol: f64) -> Vec<Pt> {
     pts
 }
 
+/// The pieces of a (LW)POLYLINE, its vertices taken from its object coordinate system
+/// (extrusion `normal_z`) into the drawing's.
+fn polyline_pieces(v: &[(Pt, f64)], closed: bool, normal_z: f64, tol: f64, out: &mut Vec<Piece>) {
+    let mut local = Vec::new();
+    vertex_pieces(v, closed, tol, &mut local);
+    for piece in &mut local {
+        for q in &mut piece.pts {
+            *q = ocs(normal_z, *q);
+        }
+    }
+    out.extend(local);
+}
+
 fn vertex_pieces(verts: &[(Pt, f64)], closed: bool, tol: f64, out: &mut Vec<Piece>) {
     let n = verts.len();
     if n < 2 {
@@ -158,28 +171,14 @@ fn pieces(drawing: &Drawing, opt: &ReadOptions) -> Vec<Piece> {
                     .iter()
                     .map(|v| (Pt::new(v.x, v.y), v.bulge))
                     .collect();
-                let mut local = Vec::new();
-                vertex_pieces(&v, p.is_closed(), tol, &mut local);
-                for piece in &mut local {
-                    for q in &mut piece.pts {
-                        *q = ocs(p.extrusion_direction.z, *q);
-                    }
-                }
-                out.extend(local);
+                polyline_pieces(&v, p.is_closed(), p.extrusion_direction.z, tol, &mut out);
             }
             EntityType::Polyline(p) => {
                 let v: Vec<(Pt, f64)> = p
                     .vertices()
                     .map(|v| (Pt::new(v.location.x, v.location.y), v.bulge))
                     .collect();
-                let mut local = Vec::new();
-                vertex_pieces(&v, p.is_closed(), tol, &mut local);
-                for piece in &mut local {
-                    for q in &mut piece.pts {
-                        *q = ocs(p.normal.z, *q);
-                    }
-                }
-                out.extend(local);
+                polyline_pieces(&v, p.is_closed(), p.normal.z, tol, &mut out);
             }
             _ => {}
         }

@@ -169,12 +169,7 @@ fn two_digits(text: &str, s: &[char], at: usize, what: &str) -> Result<u32, IsoE
 impl Holder {
     /// Parses an external holder or a boring bar (spaces and case do not matter).
     pub fn parse(text: &str) -> Result<Self, IsoError> {
-        let designation = text.trim().to_string();
-        let s: Vec<char> = designation
-            .chars()
-            .filter(|c| !c.is_whitespace())
-            .map(|c| c.to_ascii_uppercase())
-            .collect();
+        let (designation, s) = crate::normalized(text);
         if s.first().is_some_and(|c| "SAEF".contains(*c))
             && s.get(1).is_some_and(char::is_ascii_digit)
         {

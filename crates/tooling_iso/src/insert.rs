@@ -322,12 +322,7 @@ impl Insert {
     /// Parses a designation: spaces and case do not matter; a maker's suffix after the nose
     /// code (`-PM`, `EN`, …) is kept.
     pub fn parse(text: &str) -> Result<Self, IsoError> {
-        let designation = text.trim().to_string();
-        let s: Vec<char> = designation
-            .chars()
-            .filter(|c| !c.is_whitespace())
-            .map(|c| c.to_ascii_uppercase())
-            .collect();
+        let (designation, s) = crate::normalized(text);
         if s.len() < 7 {
             return Err(err(
                 text,

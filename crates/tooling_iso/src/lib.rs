@@ -174,3 +174,15 @@ pub fn turning_facts(insert: &Insert, holder: &Holder) -> Result<TurningFacts, I
 pub fn turning_facts_from(insert: &str, holder: &str) -> Result<TurningFacts, IsoError> {
     turning_facts(&Insert::parse(insert)?, &Holder::parse(holder)?)
 }
+
+/// A designation as written (trimmed, for messages) and as read: its characters without
+/// spaces, in upper case.
+fn normalized(text: &str) -> (String, Vec<char>) {
+    let designation = text.trim().to_string();
+    let chars = designation
+        .chars()
+        .filter(|c| !c.is_whitespace())
+        .map(|c| c.to_ascii_uppercase())
+        .collect();
+    (designation, chars)
+}
