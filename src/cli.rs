@@ -31,6 +31,10 @@ pub(crate) struct ProgramArgs {
     /// Machine profile (TOML): increment system, P/Q units, rapid rates, home position.
     #[arg(long, value_name = "F")]
     pub(crate) machine: Option<PathBuf>,
+    /// The control the program is written for: its G-code system, power-on modes and
+    /// cycle forms (spec/dialects.md §0). Wins over the machine profile's `control` key.
+    #[arg(long, value_enum, value_name = "CONTROL")]
+    pub(crate) control: Option<ControlArg>,
     /// Least input increment, overriding the machine profile.
     #[arg(long, value_enum, value_name = "SYSTEM")]
     pub(crate) increment: Option<IncrementArg>,
@@ -53,6 +57,39 @@ pub(crate) struct CheckArgs {
     /// Tool table (TOML): nose radii and tips for G41/G42.
     #[arg(long, value_name = "F")]
     pub(crate) tools: Option<PathBuf>,
+}
+
+/// `--control`: the spellings of `expander::Control::key`.
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub(crate) enum ControlArg {
+    /// GSK 980TD (system A, G98 at power-on): the default
+    #[value(name = "gsk980")]
+    Gsk980,
+    /// FANUC lathe, G-code system A (G99 at power-on)
+    #[value(name = "fanuc-a")]
+    FanucA,
+    /// FANUC lathe, G-code system B
+    #[value(name = "fanuc-b")]
+    FanucB,
+    /// FANUC lathe, G-code system C
+    #[value(name = "fanuc-c")]
+    FanucC,
+    /// Haas lathe (system A plus Haas one-block cycles)
+    #[value(name = "haas")]
+    Haas,
+}
+
+impl ControlArg {
+    /// The interpreter's control.
+    pub(crate) fn control(self) -> expander::Control {
+        match self {
+            Self::Gsk980 => expander::Control::Gsk980,
+            Self::FanucA => expander::Control::FanucA,
+            Self::FanucB => expander::Control::FanucB,
+            Self::FanucC => expander::Control::FanucC,
+            Self::Haas => expander::Control::Haas,
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

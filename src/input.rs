@@ -65,11 +65,12 @@ pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
 }
 
 fn load_machine(args: &ProgramArgs) -> Result<Machine, ()> {
+    let control = args.control.map(|c| c.control());
     let mut machine = match &args.machine {
-        None => Machine::default(),
+        None => Machine::for_control(control.unwrap_or_default()),
         Some(path) => {
             let text = read_text(path, "machine profile")?;
-            Machine::from_toml(&text).map_err(|e| {
+            Machine::from_toml_for(&text, control).map_err(|e| {
                 let src = Source {
                     name: path.display().to_string(),
                     text: text.clone(),

@@ -110,6 +110,11 @@ pub(crate) fn build(
     Report {
         program: program_name.to_string(),
         title: tp.title.clone(),
+        control: format!(
+            "{} — {}",
+            loaded.machine.control.key(),
+            loaded.machine.control.title()
+        ),
         stock: StockInfo {
             description: blank.description.clone(),
             shapes: blank.shapes.iter().map(shape).collect(),

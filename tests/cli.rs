@@ -195,3 +195,41 @@ fn run_on_a_folder_prints_one_verdict_line_per_program() {
     ]);
     assert_eq!(out.code, 2);
 }
+
+#[test]
+fn control_sets_the_power_on_feed_mode_and_is_named_in_the_report() {
+    // F0.2 with no G98/G99: mm/min on a GSK 980TD (the default), mm/rev on a FANUC lathe.
+    let (dir, prog) = temp_program(
+        "feed.nc",
+        b"T0101\nM3 S1000\nG0 X40 Z2\nG1 Z-50 F0.2\nG0 X100 Z100\nM30\n",
+    );
+    let time = |control: &str| {
+        let json = dir.path().join(format!("{control}.json"));
+        let out = latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--stock",
+            "50x60",
+            "--control",
+            control,
+            "--json",
+            json.to_str().unwrap(),
+        ]);
+        assert_eq!(out.code, 0, "{}", out.stderr);
+        let v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap();
+        assert!(
+            v["control"].as_str().unwrap().starts_with(control),
+            "{}",
+            v["control"]
+        );
+        v["cycle_time_s"].as_f64().unwrap()
+    };
+    let gsk = time("gsk980");
+    let fanuc = time("fanuc-a");
+    // 52 mm at 0.2 mm/min is 15 600 s; at 0.2 mm/rev and 1000 rev/min, 15.6 s.
+    assert!(gsk > 15_000.0, "{gsk}");
+    assert!(fanuc < 60.0 && fanuc > 15.0, "{fanuc}");
+    let out = latsim(&["check", prog.to_str().unwrap(), "--control", "siemens"]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+}

@@ -22,7 +22,9 @@ pub use alarm::Diagnostic;
 pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
 pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
-pub use machine::{FeedMode, Increment, Machine, PqUnits, ProfileError, RapidPath};
+pub use machine::{
+    Control, FeedMode, GCodeSystem, Increment, Machine, PqUnits, ProfileError, RapidPath, Units,
+};
 pub use toolpath::{
     Arc, Feed, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,
 };

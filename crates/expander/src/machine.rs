@@ -1,9 +1,12 @@
 //! The machine profile (`--machine F`): what differs between one lathe and the next.
 //!
 //! ```toml
+//! control = "gsk980"        # gsk980 | fanuc-a | fanuc-b | fanuc-c | haas: the built-in profile
+//!                           # the other keys override (spec/dialects.md §0)
 //! increment = "is-b"        # least input increment: "is-b" 0.001 mm | "is-c" 0.0001 mm
 //! pq_units = "increment"    # G74/G75/G75.1/G76 P and Q: "increment" | "mm" (GSK NO182.7)
 //! feed_mode = "g98"         # power-on feed mode: "g98" mm/min | "g99" mm/rev
+//! power_on_units = "mm"     # power-on input units: "mm" | "inch" (G20/G21 in the program win)
 //! rapid_x = 6000.0          # rapid traverse, mm/min of tool travel along X (radial)
 //! rapid_z = 8000.0          # rapid traverse, mm/min along Z
 //! rapid_path = "straight"   # "straight" | "per-axis" (each axis at its own rate: a dog-leg)
@@ -15,6 +18,107 @@
 //! ```
 
 use crate::Pt;
+
+/// The control a program is written for (spec/dialects.md §0). A program does not say which
+/// dialect it is in, and the same code means different motion in each (`G90`, `G92`, `G94`
+/// are cycles in system A, modes in B and C), so the control is an input, never a guess.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+pub enum Control {
+    /// GSK 980TD, the control of the seed documents: system A words, G98 at power-on.
+    #[default]
+    #[serde(rename = "gsk980")]
+    Gsk980,
+    /// FANUC lathe, G-code system A (G99 at power-on: parameter 3402 FPM = 0).
+    #[serde(rename = "fanuc-a")]
+    FanucA,
+    /// FANUC lathe, G-code system B (G90/G91 modes, G77/G78/G79 cycles, G94/G95 feeds).
+    #[serde(rename = "fanuc-b")]
+    FanucB,
+    /// FANUC lathe, G-code system C (B plus G70/G71 units and G72–G78 cycles).
+    #[serde(rename = "fanuc-c")]
+    FanucC,
+    /// Haas lathe: system A codes plus Haas one-block cycles and words.
+    #[serde(rename = "haas")]
+    Haas,
+}
+
+/// FANUC lathe G-code system (spec/dialects.md §2.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GCodeSystem {
+    /// G90/G92/G94 are cycles, U/W incremental (GSK, FANUC A, Haas).
+    A,
+    /// G90/G91 absolute/incremental, G77/G78/G79 cycles, G94/G95 feed modes.
+    B,
+    /// As B, and G20/G21/G24 cycles, G70/G71 inch/metric, G72–G78 multiple cycles.
+    C,
+}
+
+impl Control {
+    /// Every control, in the order `--control` lists them.
+    pub const ALL: [Self; 5] = [
+        Self::Gsk980,
+        Self::FanucA,
+        Self::FanucB,
+        Self::FanucC,
+        Self::Haas,
+    ];
+
+    /// The CLI and profile spelling: `gsk980`, `fanuc-a`, … `haas`.
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Gsk980 => "gsk980",
+            Self::FanucA => "fanuc-a",
+            Self::FanucB => "fanuc-b",
+            Self::FanucC => "fanuc-c",
+            Self::Haas => "haas",
+        }
+    }
+
+    /// How the report's title block names it.
+    pub fn title(self) -> &'static str {
+        match self {
+            Self::Gsk980 => "GSK 980TD (G-code system A)",
+            Self::FanucA => "FANUC lathe, G-code system A",
+            Self::FanucB => "FANUC lathe, G-code system B",
+            Self::FanucC => "FANUC lathe, G-code system C",
+            Self::Haas => "Haas lathe",
+        }
+    }
+
+    /// Parse the CLI/profile spelling.
+    pub fn from_key(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|c| c.key() == s)
+    }
+
+    /// The G-code system its codes are read in.
+    pub fn system(self) -> GCodeSystem {
+        match self {
+            Self::FanucB => GCodeSystem::B,
+            Self::FanucC => GCodeSystem::C,
+            Self::Gsk980 | Self::FanucA | Self::Haas => GCodeSystem::A,
+        }
+    }
+
+    /// Power-on feed mode: GSK 980TD starts in G98 (mm/min); FANUC lathes (parameter 3402
+    /// FPM = 0, the factory value) and Haas start in feed per revolution (dialects.md §2.4).
+    pub fn power_on_feed_mode(self) -> FeedMode {
+        match self {
+            Self::Gsk980 => FeedMode::G98,
+            _ => FeedMode::G99,
+        }
+    }
+}
+
+/// Input units at power-on (before any G20/G21).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Units {
+    /// Millimetres.
+    #[default]
+    Mm,
+    /// Inches (a US Haas with Setting 9 = inch).
+    Inch,
+}
 
 /// Least input increment system.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
@@ -78,6 +182,10 @@ pub enum PqUnits {
 /// A lathe's settings. `Machine::default()` is a GSK980TDi-like lathe.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Machine {
+    /// The control (dialect) the programs are written for.
+    pub control: Control,
+    /// Input units at power-on.
+    pub power_on_units: Units,
     /// IS-B or IS-C.
     pub increment: Increment,
     /// P/Q units of the grooving and threading cycles.
@@ -107,10 +215,19 @@ pub struct Machine {
 
 impl Default for Machine {
     fn default() -> Self {
+        Self::for_control(Control::Gsk980)
+    }
+}
+
+impl Machine {
+    /// The built-in profile of a control: its power-on modes; the rest as the GSK980TDi.
+    pub fn for_control(control: Control) -> Self {
         Self {
+            control,
+            power_on_units: Units::Mm,
             increment: Increment::IsB,
             pq_units: PqUnits::Increment,
-            feed_mode: FeedMode::G98,
+            feed_mode: control.power_on_feed_mode(),
             rapid_x: 6000.0,
             rapid_z: 8000.0,
             rapid_path: RapidPath::Straight,
@@ -128,6 +245,8 @@ use toml::Spanned;
 #[derive(serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 struct File {
+    control: Option<Control>,
+    power_on_units: Option<Units>,
     increment: Option<Increment>,
     pq_units: Option<PqUnits>,
     feed_mode: Option<FeedMode>,
@@ -170,8 +289,14 @@ pub struct ProfileError {
 }
 
 impl Machine {
-    /// Read a profile; absent keys keep the defaults.
+    /// Read a profile; absent keys keep the defaults of its `control` (else gsk980).
     pub fn from_toml(text: &str) -> Result<Self, ProfileError> {
+        Self::from_toml_for(text, None)
+    }
+
+    /// Read a profile on the built-in profile of `control` (the command line's
+    /// `--control`, which wins over the file's `control` key); absent keys keep its values.
+    pub fn from_toml_for(text: &str, control: Option<Control>) -> Result<Self, ProfileError> {
         let file: File = toml::from_str(text).map_err(|e| {
             let (line, column) = e.span().map(|s| line_col(text, s.start)).unwrap_or((0, 0));
             ProfileError {
@@ -180,7 +305,10 @@ impl Machine {
                 message: e.message().to_string(),
             }
         })?;
-        let mut m = Self::default();
+        let mut m = Self::for_control(control.or(file.control).unwrap_or_default());
+        if let Some(v) = file.power_on_units {
+            m.power_on_units = v;
+        }
         let bad = |span: std::ops::Range<usize>, message: String| {
             let (line, column) = line_col(text, span.start);
             ProfileError {
@@ -300,6 +428,37 @@ mod tests {
         assert_eq!(m.home, Pt::new(100.0, 100.0));
         assert_eq!(m.work_offsets[1], Pt::new(-10.0, 0.0));
         assert!((m.pq_mm() - 0.0001).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_control_brings_its_power_on_modes_and_the_file_overrides_them() {
+        assert_eq!(Machine::default().control, Control::Gsk980);
+        assert_eq!(Machine::default().feed_mode, FeedMode::G98);
+        for c in [
+            Control::FanucA,
+            Control::FanucB,
+            Control::FanucC,
+            Control::Haas,
+        ] {
+            assert_eq!(Machine::for_control(c).feed_mode, FeedMode::G99, "{c:?}");
+            assert_eq!(Control::from_key(c.key()), Some(c));
+        }
+        let m = Machine::from_toml("control = \"haas\"\npower_on_units = \"inch\"").unwrap();
+        assert_eq!(
+            (m.control, m.feed_mode, m.power_on_units),
+            (Control::Haas, FeedMode::G99, Units::Inch)
+        );
+        let m = Machine::from_toml("control = \"haas\"\nfeed_mode = \"g98\"").unwrap();
+        assert_eq!(
+            m.feed_mode,
+            FeedMode::G98,
+            "a key of the file wins over the control's value"
+        );
+        // The command line's control wins over the file's.
+        let m = Machine::from_toml_for("control = \"haas\"", Some(Control::FanucB)).unwrap();
+        assert_eq!(m.control.system(), GCodeSystem::B);
+        let e = Machine::from_toml("control = \"siemens\"").unwrap_err();
+        assert_eq!(e.line, 1);
     }
 
     #[test]

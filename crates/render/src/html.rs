@@ -357,6 +357,9 @@ fn summary_table(out: &mut String, report: &Report) {
         program = format!("{program} ({})", report.title);
     }
     row(out, "program", &esc(&program));
+    if !report.control.is_empty() {
+        row(out, "control", &esc(&report.control));
+    }
     row(out, "stock", &esc(&report.stock.description));
     let tools = if report.tools.is_empty() {
         "—".to_string()

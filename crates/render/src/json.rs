@@ -111,6 +111,8 @@ struct DeviationJ {
 struct Doc<'a> {
     program: &'a str,
     title: &'a str,
+    /// `--control` key the program was read for (additive field).
+    control: &'a str,
     verdict: &'static str,
     stock: Stock,
     #[serde(rename = "final")]
@@ -145,6 +147,7 @@ pub(crate) fn json(report: &Report) -> String {
     let doc = Doc {
         program: &report.program,
         title: &report.title,
+        control: &report.control,
         verdict: verdict_word(report.verdict()),
         stock: Stock {
             description: report.stock.description.clone(),

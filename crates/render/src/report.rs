@@ -109,6 +109,9 @@ pub struct Report {
     pub program: String,
     /// Program number or title, e.g. `O0002`; may be empty.
     pub title: String,
+    /// The control the program was read for (`--control`), e.g. `haas`; empty in reports
+    /// made without one.
+    pub control: String,
     /// The blank.
     pub stock: StockInfo,
     /// The final half section after all removal.

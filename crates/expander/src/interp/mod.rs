@@ -164,7 +164,7 @@ impl<'m> Interp<'m> {
             shift: Pt::default(),
             motion: MotionMode::Rapid,
             per_rev: machine.feed_mode == crate::FeedMode::G99,
-            inch: false,
+            inch: machine.power_on_units == crate::machine::Units::Inch,
             css: false,
             s_value: 0.0,
             s_clamp: 0.0,

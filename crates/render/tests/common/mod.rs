@@ -41,6 +41,7 @@ pub(crate) fn groove_bar() -> Report {
     Report {
         program: "O0042.nc".into(),
         title: "O0042".into(),
+        control: "gsk980 — GSK 980TD (G-code system A)".into(),
         stock: StockInfo {
             description: "bar Ø40 × 60, face at Z0".into(),
             shapes: vec![blank],
@@ -128,6 +129,7 @@ pub(crate) fn o0008_groove() -> Report {
     Report {
         program: "O0008.nc".into(),
         title: "O0008".into(),
+        control: "gsk980 — GSK 980TD (G-code system A)".into(),
         stock: StockInfo {
             description: "bar Ø50 × 80, face at Z40".into(),
             shapes: vec![blank],
