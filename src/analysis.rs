@@ -5,11 +5,21 @@ use crate::input::{self, Loaded};
 use expander::IntendedKind;
 use stock::Intent;
 
+/// Chord tolerance of a `--target` profile's arcs, mm: as fine as a DXF drawing's arcs are
+/// read (`tooling_iso::dxf_io::ReadOptions`), so the intended part drawn and written back
+/// with `--dxf` stays within 0.0005 mm of the true arcs.
+const TARGET_CHORD_TOL: f64 = 0.0001;
+
 /// The intents: `--target F`, else the shapes the program defines for itself.
 pub(crate) fn intents(args: &RunArgs, loaded: &Loaded) -> Result<Vec<Intent>, ()> {
     if let Some(path) = &args.target {
+        if crate::cad::is_dxf(path) {
+            let rings = crate::cad::read_rings(path, args.dxf_x, crate::cad::Role::Target)?;
+            let part = stock::Blank::from_rings(&rings, "").shapes;
+            return Ok(vec![Intent::target(part)]);
+        }
         let text = input::read_text(path, "target")?;
-        let part = stock::profile_from_toml(&text, 0.001)
+        let part = stock::profile_from_toml(&text, TARGET_CHORD_TOL)
             .map_err(|e| input::print_stock_error(path, &text, &e))?;
         return Ok(vec![Intent::target(part)]);
     }

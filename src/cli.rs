@@ -120,13 +120,14 @@ pub(crate) struct RunArgs {
     /// Bore diameter: makes the bar a tube.
     #[arg(long, value_name = "D")]
     pub(crate) bore: Option<f64>,
-    /// Blank profile (TOML: start and path in program coordinates) for castings and forgings.
+    /// Blank profile for castings and forgings: a profile TOML (start and path in program
+    /// coordinates) or a DXF drawing of the half section (`.dxf`).
     #[arg(long, value_name = "F", conflicts_with = "stock")]
     pub(crate) stock_file: Option<PathBuf>,
     /// Tool table (TOML, [[tool]] entries).
     #[arg(long, value_name = "F")]
     pub(crate) tools: Option<PathBuf>,
-    /// The intended part (profile TOML, as --stock-file); default: the shapes the program
+    /// The intended part (profile TOML or `.dxf`, as --stock-file); default: the shapes the program
     /// defines (G70–G73 finishing shapes, G75.1 grooves).
     #[arg(long, value_name = "F")]
     pub(crate) target: Option<PathBuf>,
@@ -148,9 +149,26 @@ pub(crate) struct RunArgs {
     /// Folder for the default outputs <prog>.svg, <prog>.png, <prog>.json (default: current folder).
     #[arg(long, value_name = "DIR")]
     pub(crate) out: Option<PathBuf>,
+    /// Write the final half section (layer PART) and the intended part (layer INTENDED)
+    /// as a DXF drawing (AutoCAD 2000) here.
+    #[arg(long, value_name = "F")]
+    pub(crate) dxf: Option<PathBuf>,
+    /// How a DXF's Y maps to the lathe's X, for `--stock-file`/`--target` `.dxf` files and
+    /// `--dxf`: the radius (a true half section) or the diameter.
+    #[arg(long, value_enum, value_name = "AXIS", default_value_t = DxfXArg::Radius)]
+    pub(crate) dxf_x: DxfXArg,
     /// Deviation tolerance in mm for gouges and leftovers.
     #[arg(long, value_name = "MM", default_value_t = 0.01)]
     pub(crate) tol: f64,
+}
+
+/// `--dxf-x`: what a DXF drawing's Y is.
+#[derive(Debug, Clone, Copy, ValueEnum, PartialEq, Eq)]
+pub(crate) enum DxfXArg {
+    /// Y is the radius (the true half section)
+    Radius,
+    /// Y is the diameter
+    Diameter,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum, PartialEq, Eq)]

@@ -196,6 +196,14 @@ pub(crate) fn load_tools(path: Option<&Path>) -> Result<stock::ToolTable, ()> {
 /// The blank from `--stock`/`--bore`/`--stock-z` or `--stock-file`.
 pub(crate) fn load_blank(args: &RunArgs) -> Result<stock::Blank, ()> {
     if let Some(path) = &args.stock_file {
+        if crate::cad::is_dxf(path) {
+            let rings = crate::cad::read_rings(path, args.dxf_x, crate::cad::Role::Blank)?;
+            let name = path.file_name().unwrap_or_default().to_string_lossy();
+            return Ok(stock::Blank::from_rings(
+                &rings,
+                &format!("profile {name} (DXF)"),
+            ));
+        }
         let text = read_text(path, "stock file")?;
         return stock::Blank::from_profile_toml(&text, 0.001)
             .map_err(|e| print_stock_error(path, &text, &e));

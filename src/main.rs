@@ -4,6 +4,7 @@
 //! files, flags, progress and exit codes.
 
 mod analysis;
+mod cad;
 mod cli;
 mod diag;
 mod expand_cmd;

@@ -49,17 +49,20 @@ fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
         (&args.png, "png"),
         (&args.json, "json"),
         (&args.html, "html"),
+        (&args.dxf, "dxf"),
     ]
     .into_iter()
     .filter_map(|(p, kind)| p.clone().map(|p| (p, kind)))
     .collect();
-    if !explicit.is_empty() {
+    if explicit.iter().any(|(_, kind)| *kind != "dxf") {
         return explicit;
     }
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    // `--dxf` alone adds the drawing to the four default reports.
     ["svg", "png", "json", "html"]
         .into_iter()
         .map(|kind| (dir.join(format!("{stem}.{kind}")), kind))
+        .chain(explicit)
         .collect()
 }
 
@@ -116,9 +119,14 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     if files.len() == 1 {
         return job(0);
     }
-    if args.svg.is_some() || args.png.is_some() || args.json.is_some() || args.html.is_some() {
+    if args.svg.is_some()
+        || args.png.is_some()
+        || args.json.is_some()
+        || args.html.is_some()
+        || args.dxf.is_some()
+    {
         diag::print_plain(
-            "--svg, --png, --json and --html name one file: they take one program",
+            "--svg, --png, --json, --html and --dxf name one file: they take one program",
             "with several programs use --out DIR: each gets <prog>.svg, .png, .json and .html there",
         );
         return EXIT_UNUSABLE;
@@ -273,6 +281,13 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
             "svg" => render::svg(&report).into_bytes(),
             "json" => render::json(&report).into_bytes(),
             "html" => render::html(&report).into_bytes(),
+            "dxf" => match crate::cad::section_dxf(&report, args.dxf_x) {
+                Ok(b) => b,
+                Err(e) => {
+                    diag::print_plain(&e, "");
+                    return EXIT_UNUSABLE;
+                }
+            },
             _ => match render::png(&report) {
                 Ok(b) => b,
                 Err(e) => {

@@ -53,6 +53,10 @@ pub struct ReadOptions {
     pub join_tol: f64,
     /// Read only entities on this layer (default: all).
     pub layer: Option<&'static str>,
+    /// Without `layer`: read only this layer when the drawing has entities on it, else all
+    /// (a section written by [`section_drawing`] holds the part and the intended outline on
+    /// two layers whose loops share corners; each is one profile).
+    pub prefer_layer: Option<&'static str>,
 }
 
 impl Default for ReadOptions {
@@ -62,6 +66,7 @@ impl Default for ReadOptions {
             chord_tol: 0.0001,
             join_tol: 0.001,
             layer: None,
+            prefer_layer: None,
         }
     }
 }
@@ -306,6 +311,15 @@ pub fn read_profile_file(
 
 /// Reads the closed profiles of a loaded drawing.
 pub fn read_drawing(drawing: &Drawing, opt: &ReadOptions) -> Result<Vec<Vec<Pt>>, IsoError> {
+    let mut opt = *opt;
+    if opt.layer.is_none() {
+        opt.layer = opt.prefer_layer.filter(|l| {
+            drawing
+                .entities()
+                .any(|e| e.common.layer.eq_ignore_ascii_case(l))
+        });
+    }
+    let opt = &opt;
     let pieces = pieces(drawing, opt);
     if pieces.is_empty() {
         return Err(IsoError::Dxf(
