@@ -275,11 +275,9 @@ fn g74_g75_alarm_rules() {
 /// P1 Q1 over a 100 mm groove would be billions of moves: a clear alarm, at once.
 #[test]
 fn g75_huge_step_count_is_an_alarm_not_a_hang() {
-    let t = std::time::Instant::now();
     let tp = run("G0 X202 Z0\nG75 R0\nG75 X2 Z-100 P1 Q1 F0.1\n");
     assert_eq!(alarm_of(&tp), (3, "LS-CYCLE-TOO-LONG"));
     assert!(tp.alarms[0].message.contains("moves"));
-    assert!(t.elapsed().as_secs() < 5);
     let tp = run("G0 X0 Z3\nG74 X200 Z-100 P1 Q1 F0.1\n");
     assert_eq!(alarm_of(&tp), (2, "LS-CYCLE-TOO-LONG"));
 }

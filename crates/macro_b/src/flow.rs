@@ -1058,9 +1058,7 @@ mod tests {
 
     #[test]
     fn runaway_loop_ends_by_budget_quickly() {
-        let started = std::time::Instant::now();
         let e = run_one("#1 = 0\nWHILE [#1 GE 0] DO1\n#1 = #1 + 1\nEND1").unwrap_err();
-        let took = started.elapsed();
         assert_eq!(e.kind, ErrorKind::Budget);
         assert_eq!(e.span.line, 2);
         assert!(
@@ -1069,7 +1067,6 @@ mod tests {
             "{}",
             e.message
         );
-        assert!(took.as_secs_f64() < 1.0, "{took:?}");
         // GOTO loops and DO without WHILE too
         let e = run_one("!A\nN1 #1 = 1\nGOTO 1").unwrap_err();
         assert_eq!(e.kind, ErrorKind::Budget);

@@ -364,10 +364,9 @@ fn bad_inputs_are_alarms_at_their_place() {
     let e = err("#1 = 3 ;\nIF [#1 GT 2] GOTO 40 ;\nN30 G00 X1. ;");
     assert_eq!(e.kind, ErrorKind::SequenceMissing);
     assert_eq!((e.span.line, e.span.column), (2, 19));
-    // a runaway loop ended by the budget, fast
-    let t = std::time::Instant::now();
+    // a runaway loop ended by the budget (its speed is measured by the benchmark, not
+    // asserted here: a loaded CI box must not fail a timing)
     let e = err("#1 = 1 ;\nWHILE [#1 GT 0] DO1 ;\nG00 X#1 ;\n#1 = #1 + 1 ;\nEND1 ;");
-    assert!(t.elapsed().as_secs_f64() < 1.0, "{:?}", t.elapsed());
     assert_eq!(e.kind, ErrorKind::Budget);
     assert_eq!(e.span.line, 2);
     assert!(e.message.contains("ran 2499999 times"), "{}", e.message);

@@ -252,6 +252,28 @@ pub(crate) fn point_in_ring(p: IPt, ring: &[IPt]) -> bool {
     inside
 }
 
+/// Whether `p` has a non-zero winding number around `ring` (any ring, self-crossing too;
+/// exact). Points on the ring may go either way.
+pub(crate) fn winds(p: IPt, ring: &[IPt]) -> bool {
+    let n = ring.len();
+    let mut w = 0i32;
+    for i in 0..n {
+        let (a, b) = (ring[i], ring[(i + 1) % n]);
+        let side = || {
+            i128::from(b.x - a.x) * i128::from(p.y - a.y)
+                - i128::from(p.x - a.x) * i128::from(b.y - a.y)
+        };
+        if a.y <= p.y {
+            if b.y > p.y && side() > 0 {
+                w += 1;
+            }
+        } else if b.y <= p.y && side() < 0 {
+            w -= 1;
+        }
+    }
+    w != 0
+}
+
 /// A reusable boolean engine (keeps its buffers between calls).
 pub(crate) struct Engine {
     ov: Overlay<i32>,

@@ -17,7 +17,7 @@
 
 use crate::geom::{pts, P};
 use crate::overlay::{
-    convex_contains, orient, point_in_ring, segments_meet, Engine, Grid, IBox, IPt, IShapes,
+    convex_contains, orient, point_in_ring, segments_meet, winds, Engine, Grid, IBox, IPt, IShapes,
 };
 use crate::snapshot::Snapshots;
 use crate::sweep::{Item, SweepBuilder, Sweeps};
@@ -156,25 +156,33 @@ fn bbox_of(shapes: &IShapes) -> IBox {
 struct Trimmed {
     pts: Vec<IPt>,
     rings: Vec<std::ops::Range<usize>>,
+    /// Per ring: whether it came from a convex polygon (see `Sweeps::polys_flagged_of`).
+    convex: Vec<bool>,
 }
 
 impl Trimmed {
     fn clear(&mut self) {
         self.pts.clear();
         self.rings.clear();
+        self.convex.clear();
     }
 
     /// Appends `poly` trimmed to `b` (nothing when its overlap with `b` has no area).
-    fn push(&mut self, poly: &[IPt], b: &IBox) {
+    fn push(&mut self, (poly, convex): (&[IPt], bool), b: &IBox) {
         let start = self.pts.len();
         trim_to_box(poly, b, &mut self.pts);
         if self.pts.len() > start {
             self.rings.push(start..self.pts.len());
+            self.convex.push(convex);
         }
     }
 
     fn iter(&self) -> impl Iterator<Item = &[IPt]> + Clone {
         self.rings.iter().map(|r| &self.pts[r.clone()])
+    }
+
+    fn iter_flagged(&self) -> impl Iterator<Item = (&[IPt], bool)> {
+        self.iter().zip(self.convex.iter().copied())
     }
 }
 
@@ -230,7 +238,7 @@ impl Tile {
         let items = &sweeps.items;
         trim.clear();
         for &i in &self.pending {
-            for p in sweeps.polys_of(&items[i as usize]) {
+            for p in sweeps.polys_flagged_of(&items[i as usize]) {
                 trim.push(p, &self.bbox);
             }
         }
@@ -240,13 +248,14 @@ impl Tile {
         self.pending.clear();
     }
 
-    /// True when the rapid's sweep lies inside one pending sweep polygon (already cut).
+    /// True when the rapid's sweep lies inside one convex pending sweep polygon (already
+    /// cut).
     fn covered_by_pending(&self, sweeps: &Sweeps, it: &Item) -> bool {
         sweeps.polys_of(it).all(|rp| {
             self.pending.iter().rev().any(|&j| {
                 sweeps
-                    .polys_of(&sweeps.items[j as usize])
-                    .any(|pp| convex_contains(pp, rp))
+                    .polys_flagged_of(&sweeps.items[j as usize])
+                    .any(|(pp, convex)| convex && convex_contains(pp, rp))
             })
         })
     }
@@ -284,17 +293,20 @@ impl Tile {
                 continue;
             }
             trim.clear();
-            for p in sweeps.polys_of(it) {
+            for p in sweeps.polys_flagged_of(it) {
                 trim.push(p, &self.bbox);
             }
-            if !trim.iter().any(|p| touches(p, &self.stock, &self.bbox)) {
+            if !trim
+                .iter_flagged()
+                .any(|(p, convex)| touches(p, convex, &self.stock, &self.bbox))
+            {
                 continue;
             }
             if it.rapid && !self.covered_by_pending(sweeps, it) {
                 self.flush(sweeps, engine, &mut trim);
                 if it.bbox.overlaps(&self.bbox) {
                     trim.clear();
-                    for p in sweeps.polys_of(it) {
+                    for p in sweeps.polys_flagged_of(it) {
                         trim.push(p, &self.bbox);
                     }
                     let overlap = engine.intersection(&self.stock, trim.iter());
@@ -417,9 +429,10 @@ impl Node {
     }
 }
 
-/// Whether a convex polygon and shapes may share a point (touching counts): an edge of
-/// one crosses an edge of the other, or a vertex of one lies in the other.
-fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
+/// Whether a polygon and shapes may share a point (touching counts): an edge of one
+/// crosses an edge of the other, or a vertex of one lies in the other (for a chain sweep's
+/// ring, `convex` false: a point of non-zero winding).
+fn touches(poly: &[IPt], convex: bool, shapes: &IShapes, shapes_box: &IBox) -> bool {
     let mut pb = IBox::EMPTY;
     for &p in poly {
         pb.add(p);
@@ -430,11 +443,13 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
     }
     // separating axis: an edge of the convex polygon with the whole box outside it
     let corners = shapes_box.corners();
-    if (0..n).any(|i| {
-        corners
-            .iter()
-            .all(|&c| orient(poly[i], poly[(i + 1) % n], c) < 0)
-    }) {
+    if convex
+        && (0..n).any(|i| {
+            corners
+                .iter()
+                .all(|&c| orient(poly[i], poly[(i + 1) % n], c) < 0)
+        })
+    {
         return false;
     }
     for s in shapes {
@@ -446,7 +461,11 @@ fn touches(poly: &[IPt], shapes: &IShapes, shapes_box: &IBox) -> bool {
                 if !eb.overlaps(&pb) {
                     continue;
                 }
-                if convex_contains(poly, &[a]) {
+                if if convex {
+                    convex_contains(poly, &[a])
+                } else {
+                    winds(a, poly)
+                } {
                     return true;
                 }
                 if (0..n).any(|i| segments_meet(poly[i], poly[(i + 1) % n], a, b)) {

@@ -37,7 +37,7 @@
 //! programmed point. An arc whose single chord is within `chord_tol − δ` of it joins such
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
-use crate::geom::{clip_convex, pts, sweep_convex, P};
+use crate::geom::{clip_convex, pts, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
 use crate::overlay::{ring_perimeter, Grid, IBox, IPt};
 use crate::ToolTable;
@@ -82,6 +82,9 @@ pub(crate) struct Item {
 pub(crate) struct Sweeps {
     pts: Vec<IPt>,
     polys: Vec<Range<u32>>,
+    /// Per polygon: convex (a hull or a stamp), else a chain sweep's ring whose positive
+    /// winding is the sweep (see [`sweep_chain`]); convexity shortcuts skip those.
+    convex: Vec<bool>,
     /// The sweeps, in program order.
     pub(crate) items: Vec<Item>,
 }
@@ -92,6 +95,18 @@ impl Sweeps {
         self.polys[it.polys.start as usize..it.polys.end as usize]
             .iter()
             .map(|r| &self.pts[r.start as usize..r.end as usize])
+    }
+
+    /// The polygons of one item, each with whether it is convex.
+    pub(crate) fn polys_flagged_of(
+        &self,
+        it: &Item,
+    ) -> impl Iterator<Item = (&[IPt], bool)> + Clone {
+        let r = it.polys.start as usize..it.polys.end as usize;
+        self.polys[r.clone()]
+            .iter()
+            .zip(&self.convex[r])
+            .map(|(p, &c)| (&self.pts[p.start as usize..p.end as usize], c))
     }
 }
 
@@ -424,15 +439,14 @@ impl<'a> SweepBuilder<'a> {
     fn emit_path(&mut self, idx: usize, rapid: bool, outline: &Outline, path: &[P]) {
         let start = path[0];
         let item = self.begin();
-        for w in path.windows(2) {
-            let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
+        if path.len() > 2 && !rapid {
+            // a chorded arc: one ring per convex part instead of a hull per chord
             for part in &outline.parts {
-                self.scratch.clear();
-                self.scratch
-                    .extend(part.iter().map(|v| [v[0] + w[0][0], v[1] + w[0][1]]));
-                let poly = sweep_convex(&self.scratch, d);
-                self.add_poly(&poly);
+                let ring = sweep_chain(part, path);
+                self.add_ring(&ring);
             }
+        } else {
+            self.emit_hulls(outline, path);
         }
         let end = path[path.len() - 1];
         let (dz, dr) = (end[0] - start[0], end[1] - start[1]);
@@ -443,6 +457,20 @@ impl<'a> SweepBuilder<'a> {
             [0.0, 0.0]
         };
         self.end(item, idx, rapid, start, dir);
+    }
+
+    /// The hull of each convex part along each straight piece of `path`.
+    fn emit_hulls(&mut self, outline: &Outline, path: &[P]) {
+        for w in path.windows(2) {
+            let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
+            for part in &outline.parts {
+                self.scratch.clear();
+                self.scratch
+                    .extend(part.iter().map(|v| [v[0] + w[0][0], v[1] + w[0][1]]));
+                let poly = sweep_convex(&self.scratch, d);
+                self.add_poly(&poly);
+            }
+        }
     }
 
     fn emit_stamps(&mut self, idx: usize, outline: &Outline, at: &[P], start: P) {
@@ -460,7 +488,18 @@ impl<'a> SweepBuilder<'a> {
         (self.out.polys.len() as u32, 0.0)
     }
 
+    /// Adds a convex polygon.
     fn add_poly(&mut self, poly: &[P]) {
+        self.add(poly, true);
+    }
+
+    /// Adds a chain sweep's ring (not convex; clipping keeps the winding number of every
+    /// point inside the clip box, which is all the non-zero fill reads).
+    fn add_ring(&mut self, ring: &[P]) {
+        self.add(ring, false);
+    }
+
+    fn add(&mut self, poly: &[P], convex: bool) {
         let quick = Rect::of(pts(poly));
         let inside = self.clip.contains(quick.min) && self.clip.contains(quick.max);
         let clipped;
@@ -484,6 +523,7 @@ impl<'a> SweepBuilder<'a> {
         let grid = self.grid;
         self.out.pts.extend(poly.iter().map(|&p| grid.to_int(p)));
         self.out.polys.push(start..self.out.pts.len() as u32);
+        self.out.convex.push(convex);
     }
 
     fn end(&mut self, (first, _): (u32, f64), idx: usize, rapid: bool, start: P, dir: P) {
