@@ -159,10 +159,11 @@ pub enum Tool {
 impl Tool {
     /// The documented default when the table has no entry: a 55° insert (D), nose r 0.4,
     /// tip 3, on a 93° holder, 11 mm edge.
+    /// Its nose is the interpreter's default nose ([`toolfacts::Nose::DEFAULT`]).
     pub const DEFAULT: Self = Self::Turning {
         insert: Insert::D,
-        nose_radius: 0.4,
-        tip: 3,
+        nose_radius: toolfacts::Nose::DEFAULT.radius,
+        tip: toolfacts::Nose::DEFAULT.tip,
         entering_angle: 93.0,
         edge: 11.0,
     };
