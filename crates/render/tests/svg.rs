@@ -72,18 +72,6 @@ fn small_toolpath_is_not_thinned() {
 }
 
 #[test]
-fn png_time_for_1e5_segments() {
-    let r = common::many_segments(100_000);
-    let t = std::time::Instant::now();
-    let png = render::png(&r).unwrap();
-    println!(
-        "png of 10^5 segments: {} bytes in {:?}",
-        png.len(),
-        t.elapsed()
-    );
-}
-
-#[test]
 fn degenerate_reports_do_not_panic() {
     let mut reports = common::degenerate_reports();
     let mut r = common::groove_bar();
