@@ -135,8 +135,7 @@ pub(crate) fn load_program(
     }
     let opts = Options {
         block_delete: args.block_delete,
-        noses: tools.noses(),
-        blades: tools.blades(),
+        tools: tools.facts(),
         start_tool: start_tool.or_else(|| tools.numbers().first().copied()),
         ..Options::default()
     };

@@ -156,9 +156,13 @@ pub(crate) fn build(
             .intended
             .iter()
             .filter(|i| i.kind == expander::IntendedKind::Groove)
-            .map(|i| render::Groove {
-                line: i.span.line,
-                ring: i.points.iter().map(|p| [p.z, p.r]).collect(),
+            .map(|i| {
+                let ring: Vec<[f64; 2]> = i.points.iter().map(|p| [p.z, p.r]).collect();
+                render::Groove {
+                    line: i.span.line,
+                    deviation_mm: stock::groove_deviation(&ring, &sim.final_shapes),
+                    ring,
+                }
             })
             .collect(),
         ..Report::default()
@@ -168,8 +172,8 @@ pub(crate) fn build(
 /// Most gouges (and leftovers) listed in a report; the count of the rest is a warning.
 const MAX_LISTED: usize = 1_000;
 
-/// The deviation findings: gouges (with the first line whose sweep made them), leftovers,
-/// the intended shapes drawn dashed, and the summary.
+/// The deviation findings: gouges (with the first line whose sweep made them), leftovers
+/// (and where the largest is thickest), the intended shapes drawn dashed, and the summary.
 pub(crate) fn add_deviation(
     report: &mut Report,
     loaded: &Loaded,
@@ -179,7 +183,7 @@ pub(crate) fn add_deviation(
 ) {
     let _ = blank;
     // Closed rings as they are; an open path is drawn out and back.
-    report.intended = intents
+    let intended: Vec<stock::Shape> = intents
         .iter()
         .flat_map(|i| i.outline.iter())
         .map(|(line, closed)| {
@@ -187,12 +191,13 @@ pub(crate) fn add_deviation(
             if !closed {
                 outer.extend(line.iter().rev().skip(1).take(line.len().saturating_sub(2)));
             }
-            Shape {
+            stock::Shape {
                 outer,
                 holes: vec![],
             }
         })
         .collect();
+    report.intended = intended.iter().map(shape).collect();
     let Some(d) = deviation else { return };
     let segs = &loaded.toolpath.segments;
     for (what, n) in [("gouges", d.gouges.len()), ("leftovers", d.leftovers.len())] {
@@ -230,12 +235,20 @@ pub(crate) fn add_deviation(
         .take(MAX_LISTED)
         .map(|g| shape(&g.shape))
         .collect();
-    report.leftovers = d
+    let leftovers: Vec<stock::Shape> = d
         .leftovers
         .iter()
         .take(MAX_LISTED)
-        .map(|g| shape(&g.shape))
+        .map(|g| g.shape.clone())
         .collect();
+    report.leftover_spot =
+        stock::leftover_spot(&leftovers, &intended).map(|s| render::LeftoverSpot {
+            leftover: s.leftover,
+            centre: s.centre,
+            thickness: s.thickness,
+            measure: s.measure,
+        });
+    report.leftovers = leftovers.iter().map(shape).collect();
     report.deviation = Some(render::Deviation {
         overcut_area_mm2: d.overcut_area(),
         undercut_area_mm2: d.undercut_area(),

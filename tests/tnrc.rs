@@ -162,7 +162,7 @@ fn interference_is_an_alarm_at_its_line() {
     let program = "M3 S800 T0101\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 Z-10\nG2 X21 Z-10.5 R0.5\nG1 X30\nG1 Z-20\nG40 G0 X50\n";
     let p = gcode::parse(program).unwrap();
     let opts = expander::Options {
-        noses: tools.noses(),
+        tools: tools.facts(),
         ..Default::default()
     };
     let tp = expander::expand(&p, &expander::Machine::default(), &opts);
@@ -179,7 +179,7 @@ fn compensation_with_a_blade_is_ignored_with_a_warning() {
     let p = gcode::parse("M3 S800 T0101\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 Z-10\nG40 G0 X50\n")
         .unwrap();
     let opts = expander::Options {
-        noses: tools.noses(),
+        tools: tools.facts(),
         ..Default::default()
     };
     let tp = expander::expand(&p, &expander::Machine::default(), &opts);
@@ -206,7 +206,7 @@ fn t_word_suspends_and_the_next_move_starts_up_again() {
     let src = "M3 S800 T0101\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 X30 Z-5\nT0101\nG1 X40 Z-10\nG1 Z-20\nG40 G0 X60\n";
     let p = gcode::parse(src).unwrap();
     let opts = expander::Options {
-        noses: tools.noses(),
+        tools: tools.facts(),
         ..Default::default()
     };
     let tp = expander::expand(&p, &expander::Machine::default(), &opts);

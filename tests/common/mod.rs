@@ -55,8 +55,7 @@ pub fn pipeline(
 ) -> (expander::Toolpath, stock::Simulation) {
     let p = gcode::parse(program).expect("program parses");
     let opts = expander::Options {
-        noses: tools.noses(),
-        blades: tools.blades(),
+        tools: tools.facts(),
         start_tool: tools.numbers().first().copied(),
         ..Default::default()
     };

@@ -362,17 +362,16 @@ fn g94_expansion() {
 
 #[test]
 fn g41_g42_switch_and_offset_00_cancel() {
-    let noses = [(
+    let mut tools = toolfacts::ToolFacts::default();
+    tools.noses.insert(
         1,
-        Some(expander::tnrc::Nose {
+        Some(toolfacts::Nose {
             radius: 1.0,
             tip: 0,
         }),
-    )]
-    .into_iter()
-    .collect();
+    );
     let opts = Options {
-        noses,
+        tools,
         ..Options::default()
     };
     // G42 along Z, then G41 on the way back: the switch ends the first section (its last

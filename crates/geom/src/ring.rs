@@ -64,6 +64,23 @@ pub fn convex_hull(points: &[Pt]) -> Vec<Pt> {
     pts
 }
 
+/// The ring's finite points with repeated (closer than 1e-9 mm) neighbours and a
+/// repeated closing point dropped; `None` when fewer than three remain. Rings handed over
+/// by cycles and reports may repeat points; measures and drawings need distinct corners.
+pub fn cleaned(ring: &[Pt]) -> Option<Vec<Pt>> {
+    let mut out: Vec<Pt> = Vec::with_capacity(ring.len());
+    for &p in ring {
+        if !p.is_finite() || out.last().is_some_and(|q| q.dist(p) < 1e-9) {
+            continue;
+        }
+        out.push(p);
+    }
+    while out.len() > 1 && out[0].dist(out[out.len() - 1]) < 1e-9 {
+        out.pop();
+    }
+    (out.len() >= 3).then_some(out)
+}
+
 /// Box of the ring's points.
 pub fn bounds(ring: &[Pt]) -> Rect {
     Rect::of(ring.iter().copied())
@@ -93,6 +110,16 @@ mod tests {
         assert!((first_moment_r(&sq) - 4.0).abs() < 1e-12);
         assert!(contains(&sq, Pt::new(1.0, 1.0)));
         assert!(!contains(&sq, Pt::new(3.0, 1.0)));
+    }
+
+    #[test]
+    fn cleaning_drops_repeats_and_non_finite_points() {
+        let mut r = square(1.0);
+        r.insert(1, Pt::new(1e-12, 0.0));
+        r.insert(2, Pt::new(f64::NAN, 0.0));
+        r.push(Pt::ZERO);
+        assert_eq!(cleaned(&r), Some(square(1.0)));
+        assert_eq!(cleaned(&[Pt::ZERO, Pt::new(1.0, 0.0), Pt::ZERO]), None);
     }
 
     #[test]

@@ -3,27 +3,27 @@
 //! the leftover — findings win when room is short), stacked at the top of the right
 //! column.
 //!
-//! The leftover view is centred on the leftover's thickest place (see
-//! [`crate::leftover`]) with a window about ten times its thickness, so that a thin
+//! The leftover view is centred on the leftover's thickest place (the report's
+//! [`crate::LeftoverSpot`], measured by the simulator) with a window about ten times its thickness, so that a thin
 //! roughing allowance shows as a band; its title gives the thickness (the report's
 //! `max_undercut_mm` when there is a single leftover region) and the Z range shown.
 //!
 //! A groove view is zoomed on the groove's box with a margin and shows the blank, the
 //! final part, the leftover and gouge overlays and the groove ring dashed (no
 //! toolpath), with its principal corners labelled `P1 Z30.00 Φ50.00` (see
-//! [`crate::groove`] for the corners, the labels' places and the deviation in the
-//! title).
+//! [`crate::groove`] for the corners and the labels' places; the deviation in the title
+//! is the report's [`Groove::deviation_mm`]).
 
 use std::fmt::Write as _;
 
 use crate::doc::{marker, Doc};
+use crate::groove;
 use crate::layout::{colour, FS_SMALL, RIGHT_TOP, RIGHT_W, RIGHT_X};
 use crate::path::shapes_d;
 use crate::plot::{axes, centre_line, draw_content, draw_shapes, MIN_PX};
 use crate::report::{Groove, Report, Shape};
 use crate::scale::{Bbox, View};
 use crate::text::{chars_fitting, esc, num, truncate, width};
-use crate::{groove, leftover};
 
 /// At most this many detail views.
 const MAX_DETAILS: usize = 3;
@@ -147,7 +147,7 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
         let Some(ring) = groove::clean_ring(&g.ring) else {
             continue;
         };
-        let title = match groove::deviation(&ring, &report.final_part) {
+        let title = match g.deviation_mm.filter(|d| d.is_finite()) {
             Some(d) => format!(
                 "groove line {} (deviation ≤ {} mm)",
                 g.line,
@@ -176,8 +176,8 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
 /// the thickness there (clamped by `clampf` like the other findings), so the window is
 /// about ten thicknesses wide.
 fn leftover_finding<'a>(report: &Report, clampf: &dyn Fn(f64, f64) -> f64) -> Option<Finding<'a>> {
-    let shape = leftover::largest(report)?;
-    let spot = leftover::thickest(shape, &report.intended)?;
+    let spot = report.leftover_spot?;
+    let shape = report.leftovers.get(spot.leftover)?;
     let reported = report
         .deviation
         .as_ref()

@@ -1,37 +1,20 @@
-//! Geometry of a groove detail view: the ring cleaned up, its principal corners, how far
-//! the final part strays from it, and where the corner labels go.
+//! Geometry of a groove detail view: the ring cleaned up, its principal corners, and
+//! where the corner labels go. How far the final part strays from the groove is measured
+//! by the simulator (`stock::groove_deviation`) and handed over in the report.
 
-use crate::report::Shape;
 use crate::scale::Bbox;
-use geom::distance::point_segment;
 use geom::{ring, Pt};
 
 /// A ring vertex is a principal corner when the outline turns there by more than this.
 const CORNER_TURN_DEG: f64 = 20.0;
 /// At most this many corner labels per groove.
 pub(crate) const MAX_CORNER_LABELS: usize = 6;
-/// Cap on ring samples for the deviation.
-const MAX_SAMPLES: usize = 2000;
-/// Cap on part boundary edges considered for the deviation (beyond it: no number).
-const MAX_EDGES: usize = 400_000;
 
-/// The ring's finite points with repeated (closer than 1e-9 mm) neighbours and a
-/// repeated closing point dropped; `None` when fewer than three remain.
+/// The ring's distinct finite corners (the `geom` kernel's cleaning); `None` when fewer
+/// than three remain.
 pub(crate) fn clean_ring(ring: &[[f64; 2]]) -> Option<Vec<[f64; 2]>> {
-    let mut out: Vec<[f64; 2]> = Vec::with_capacity(ring.len());
-    for p in ring {
-        if !(p[0].is_finite() && p[1].is_finite()) {
-            continue;
-        }
-        if out.last().is_some_and(|q| dist(*q, *p) < 1e-9) {
-            continue;
-        }
-        out.push(*p);
-    }
-    while out.len() > 1 && dist(out[0], out[out.len() - 1]) < 1e-9 {
-        out.pop();
-    }
-    (out.len() >= 3).then_some(out)
+    let pts: Vec<Pt> = ring.iter().map(|&p| Pt::from(p)).collect();
+    Some(ring::cleaned(&pts)?.iter().map(|p| p.to_array()).collect())
 }
 
 /// Bounding box of a ring.
@@ -79,108 +62,6 @@ fn f2(v: f64) -> String {
     } else {
         s
     }
-}
-
-fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
-}
-
-/// Whether `p` lies inside the shapes (even-odd over all rings, each ring's test the
-/// `geom` kernel's).
-fn inside(rings: &[Vec<Pt>], p: [f64; 2]) -> bool {
-    rings.iter().filter(|r| ring::contains(r, p.into())).count() % 2 == 1
-}
-
-fn pts(ring: &[[f64; 2]]) -> Vec<Pt> {
-    ring.iter().map(|&p| Pt::from(p)).collect()
-}
-
-/// The largest distance between the groove ring and the final part's boundary, in mm;
-/// `None` when it cannot be measured (no finite part boundary near the groove, or a
-/// part too large to measure quickly).
-///
-/// Method: the ring is sampled along each edge (every 1/200 of the groove's larger
-/// size, at most 2000 samples, vertices included) and each sample's distance to the
-/// final part's boundary (edges near the groove's box) is taken; the largest is the
-/// deviation. Samples on the groove's mouth are skipped: those whose point a quarter
-/// of the groove's smaller size outside the ring (along the edge's outward normal) is
-/// not inside the final part — there the groove opens into air, and the part has no
-/// boundary to meet. So leftovers in the groove and floors or flanks cut too deep (by
-/// less than that quarter size) count; a narrow dig between samples, or one deeper than
-/// the quarter size, may not (the gouge detail views show those). Sampling makes this
-/// a close lower bound; the title rounds it up to 0.001 mm.
-pub(crate) fn deviation(ring: &[[f64; 2]], part: &[Shape]) -> Option<f64> {
-    let b = ring_box(ring);
-    if b.is_empty() {
-        return None;
-    }
-    let size = b.w().max(b.h());
-    let near = b.grow(size.max(1e-3));
-    let mut edges: Vec<([f64; 2], [f64; 2])> = Vec::new();
-    for s in part {
-        for r in std::iter::once(&s.outer).chain(s.holes.iter()) {
-            let n = r.len();
-            for i in 0..n {
-                let (a, c) = (r[i], r[(i + 1) % n]);
-                if !(a[0].is_finite() && a[1].is_finite() && c[0].is_finite() && c[1].is_finite()) {
-                    continue;
-                }
-                let mut eb = Bbox::EMPTY;
-                eb.add(a);
-                eb.add(c);
-                if eb.overlaps(&near) {
-                    edges.push((a, c));
-                }
-            }
-        }
-    }
-    if edges.is_empty() || edges.len() > MAX_EDGES {
-        return None;
-    }
-    let n = ring.len();
-    let perimeter: f64 = (0..n).map(|i| dist(ring[i], ring[(i + 1) % n])).sum();
-    let step = (size / 200.0).max(perimeter / MAX_SAMPLES as f64).max(1e-9);
-    // Outward = away from the ring's inside: right of the direction for a
-    // counter-clockwise ring, left for a clockwise one.
-    let sign = if ring::signed_area(&pts(ring)) >= 0.0 {
-        1.0
-    } else {
-        -1.0
-    };
-    let part_rings: Vec<Vec<Pt>> = part
-        .iter()
-        .flat_map(|s| std::iter::once(&s.outer).chain(s.holes.iter()))
-        .map(|r| pts(r))
-        .collect();
-    let probe = 0.25 * b.w().min(b.h()).max(1e-3);
-    let mut worst: Option<f64> = None;
-    for i in 0..n {
-        let (a, c) = (ring[i], ring[(i + 1) % n]);
-        let len = dist(a, c);
-        if len <= 0.0 {
-            continue;
-        }
-        let normal = [sign * (c[1] - a[1]) / len, -sign * (c[0] - a[0]) / len];
-        let k = (len / step).ceil().max(1.0) as usize;
-        for j in 0..=k {
-            let t = j as f64 / k as f64;
-            let p = [a[0] + t * (c[0] - a[0]), a[1] + t * (c[1] - a[1])];
-            if !inside(
-                &part_rings,
-                [p[0] + probe * normal[0], p[1] + probe * normal[1]],
-            ) {
-                continue;
-            }
-            let d = edges
-                .iter()
-                .map(|(e0, e1)| point_segment(p.into(), (*e0).into(), (*e1).into()).0)
-                .fold(f64::INFINITY, f64::min);
-            if d.is_finite() {
-                worst = Some(worst.map_or(d, |w: f64| w.max(d)));
-            }
-        }
-    }
-    worst
 }
 
 /// The deviation as shown in a title: rounded up to 0.001 mm, at least 0.001.
@@ -310,16 +191,6 @@ mod tests {
         vec![[30.0, 25.0], [20.0, 15.0], [10.0, 15.0], [-7.32, 25.0]]
     }
 
-    fn bar_minus(groove: &[[f64; 2]]) -> Vec<Shape> {
-        let mut outer = vec![[-40.0, 0.0], [40.0, 0.0], [40.0, 25.0]];
-        outer.extend(groove.iter().copied());
-        outer.push([-40.0, 25.0]);
-        vec![Shape {
-            outer,
-            holes: vec![],
-        }]
-    }
-
     #[test]
     fn trapezoid_has_four_corners_and_labels() {
         let r = trapezoid();
@@ -350,21 +221,10 @@ mod tests {
     }
 
     #[test]
-    fn deviation_of_exact_cut_leftover_and_deep_floor() {
-        let r = trapezoid();
-        let d = deviation(&r, &bar_minus(&r)).unwrap();
-        assert!(d < 1e-9, "{d}");
-        assert_eq!(shown_deviation(d), 0.001);
-        // Floor left 0.3 mm high: a leftover.
-        let high = [[30.0, 25.0], [20.3, 15.3], [9.9, 15.3], [-7.32, 25.0]];
-        let d = deviation(&r, &bar_minus(&high)).unwrap();
-        assert!((d - 0.3).abs() < 0.02, "{d}");
-        // Floor cut 0.2 mm deep: a gouge.
-        let deep = [[30.0, 25.0], [19.8, 14.8], [10.1, 14.8], [-7.32, 25.0]];
-        let d = deviation(&r, &bar_minus(&deep)).unwrap();
-        assert!((d - 0.2).abs() < 0.02, "{d}");
+    fn shown_deviation_rounds_up_to_a_micron() {
+        assert_eq!(shown_deviation(1e-12), 0.001);
         assert_eq!(shown_deviation(0.2 + 1e-12), 0.2);
-        assert!(deviation(&r, &[]).is_none());
+        assert_eq!(shown_deviation(0.2004), 0.201);
     }
 
     #[test]

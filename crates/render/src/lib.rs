@@ -25,7 +25,6 @@ mod groove;
 mod html;
 mod json;
 mod layout;
-mod leftover;
 mod marks;
 mod path;
 mod plot;

@@ -127,9 +127,12 @@ pub struct Report {
     /// Overcuts against the intended shape.
     pub gouges: Vec<Gouge>,
     /// Leftovers, drawn orange with a darker 2 px outline (areas only; no line
-    /// attribution); the largest gets a detail view after the findings and grooves, as
-    /// room allows.
+    /// attribution); the one [`Report::leftover_spot`] names gets a detail view after the
+    /// findings and grooves, as room allows.
     pub leftovers: Vec<Shape>,
+    /// The largest leftover's thickest place (measured by the simulator), where its
+    /// detail view looks; `None`: no leftover view.
+    pub leftover_spot: Option<LeftoverSpot>,
     /// Gouge areas, drawn red with a darker 2 px outline.
     pub gouge_shapes: Vec<Shape>,
     /// `None` when there is no intended shape.
@@ -170,6 +173,24 @@ pub struct Groove {
     /// the order of its corners (for the spec's trapezoid: P1, P2, P3, P4). The corner
     /// labels of the detail view are numbered in this order.
     pub ring: Vec<[f64; 2]>,
+    /// The largest distance between the ring and the final part's boundary, mm (measured
+    /// by the simulator; shown rounded up in the detail view's title); `None`: not
+    /// measured.
+    pub deviation_mm: Option<f64>,
+}
+
+/// Where the detail view of a leftover looks: its thickest place.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LeftoverSpot {
+    /// Which leftover (index into [`Report::leftovers`]).
+    pub leftover: usize,
+    /// Centre of the view, `[z, r]`.
+    pub centre: [f64; 2],
+    /// The leftover's thickness there, mm; `None` when no intended shape is known.
+    pub thickness: Option<f64>,
+    /// Where the thickness is measured, `[from, to]`, drawn as a mark; `None` when no
+    /// intended shape is known.
+    pub measure: Option<[[f64; 2]; 2]>,
 }
 
 /// The stock as it was part-way through the run.

@@ -25,6 +25,7 @@ fn write_pictures() {
     r.grooves.push(render::Groove {
         line: 11,
         ring: vec![[-20.0, 18.0], [-20.0, 14.2], [-25.0, 14.2], [-25.0, 18.0]],
+        deviation_mm: Some(0.2),
     });
     std::fs::write(dir.join("groove_findings.png"), render::png(&r).unwrap()).unwrap();
     // O0008 with its floor left 0.3 mm high (a leftover) and a chamfered mouth.
@@ -49,6 +50,13 @@ fn write_pictures() {
         [-6.0, 24.0],
         [-7.32, 25.0],
     ];
+    r.grooves[0].deviation_mm = Some(0.3);
+    r.leftover_spot = Some(render::LeftoverSpot {
+        leftover: 0,
+        centre: [15.0, 15.15],
+        thickness: Some(0.3),
+        measure: Some([[15.0, 15.3], [15.0, 15.0]]),
+    });
     std::fs::write(dir.join("o0008_leftover.png"), render::png(&r).unwrap()).unwrap();
     // A 0.25 mm roughing allowance along a stepped shaft: outlined, with a leftover inset.
     let r = common::rough_band();

@@ -72,18 +72,6 @@ fn small_toolpath_is_not_thinned() {
 }
 
 #[test]
-fn png_time_for_1e5_segments() {
-    let r = common::many_segments(100_000);
-    let t = std::time::Instant::now();
-    let png = render::png(&r).unwrap();
-    println!(
-        "png of 10^5 segments: {} bytes in {:?}",
-        png.len(),
-        t.elapsed()
-    );
-}
-
-#[test]
 fn degenerate_reports_do_not_panic() {
     let mut reports = common::degenerate_reports();
     let mut r = common::groove_bar();
@@ -144,6 +132,7 @@ fn grooves_come_after_findings_and_insets_stay_bounded() {
     let groove = render::Groove {
         line: 4,
         ring: vec![[-20.0, 18.0], [-20.0, 14.0], [-25.0, 14.0], [-25.0, 18.0]],
+        deviation_mm: Some(0.0),
     };
     // One crash, one gouge, one groove: three insets, the groove last.
     let mut r = common::groove_bar();
@@ -152,11 +141,13 @@ fn grooves_come_after_findings_and_insets_stay_bounded() {
     assert!(s.contains("detail 1: crash"));
     assert!(s.contains("detail 2: gouge"));
     assert!(s.contains("detail 3: groove line 4"), "groove is third");
-    // The final part's floor is at r 14; a ring with its floor at the intended r 14.2
-    // shows the 0.2 mm overcut in its title.
+    assert!(s.contains("groove line 4 (deviation ≤ 0.001 mm)"));
+    // The title shows the measured deviation rounded up to a micron; unmeasured, none.
     let mut r2 = r.clone();
-    r2.grooves[0].ring = vec![[-20.0, 18.0], [-20.0, 14.2], [-25.0, 14.2], [-25.0, 18.0]];
+    r2.grooves[0].deviation_mm = Some(0.2 + 1e-12);
     assert!(render::svg(&r2).contains("groove line 4 (deviation ≤ 0.2 mm)"));
+    r2.grooves[0].deviation_mm = None;
+    assert!(render::svg(&r2).contains("detail 3: groove line 4</text>"));
     // A second crash: the findings take the three places, the groove is left out.
     r.crashes.push(render::Crash {
         line: 30,
@@ -184,7 +175,11 @@ fn odd_grooves_do_not_panic() {
         vec![[1e300, 1.0], [-1e300, 2.0], [0.0, 3.0]],
     ] {
         let mut r = common::o0008_groove();
-        r.grooves = vec![render::Groove { line: 9, ring }];
+        r.grooves = vec![render::Groove {
+            line: 9,
+            ring,
+            deviation_mm: Some(f64::NAN),
+        }];
         let s = render::svg(&r);
         assert!(!s.contains("NaN") && !s.contains("inf"));
         render::png(&r).expect("renders");
@@ -242,7 +237,9 @@ fn leftover_gets_an_outline_and_an_inset() {
 #[test]
 fn leftover_inset_comes_last_and_only_with_room() {
     let mut r = common::groove_bar();
-    r.leftovers = common::rough_band().leftovers;
+    let band = common::rough_band();
+    r.leftovers = band.leftovers;
+    r.leftover_spot = band.leftover_spot;
     // Crash and gouge first, the leftover third.
     let s = render::svg(&r);
     assert!(s.contains("detail 1: crash"));

@@ -27,7 +27,10 @@ mod tools;
 pub use blank::Blank;
 pub use deviation::{deviation, Deviation, Finding, Intent};
 pub use error::StockError;
-pub use measure::{area, hausdorff, revolved_volume, symmetric_difference_area};
+pub use measure::{
+    area, groove_deviation, hausdorff, leftover_spot, revolved_volume, symmetric_difference_area,
+    LeftoverSpot,
+};
 pub use outline::Outline;
 pub use overlay::BoolOp;
 pub use profile::profile_from_toml;

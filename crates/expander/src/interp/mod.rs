@@ -23,7 +23,6 @@ use crate::{Diagnostic, Machine, Pt, Segment, Span};
 use flow::{Exit, Flow};
 use gcode::{Program, Subprogram};
 pub(crate) use modal::MotionMode;
-use std::collections::BTreeMap;
 
 /// Interpreter settings from the command line.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,14 +33,8 @@ pub struct Options {
     pub max_segments: usize,
     /// Stop with an alarm after executing this many blocks (endless loops).
     pub max_blocks: usize,
-    /// Nose radius and tip per tool offset number (`oo` of `Tttoo`) for G41/G42;
-    /// `None` marks a grooving blade, for which compensation is ignored with a warning.
-    pub noses: BTreeMap<u32, Option<Nose>>,
-    /// The nose of an offset with no entry (the documented default insert: r 0.4, tip 3).
-    pub default_nose: Nose,
-    /// The tool table's radial grooving blades by tool number: width, and whether the
-    /// blade extends toward +Z from its reference corner (G75.1 without I).
-    pub blades: BTreeMap<u32, (f64, bool)>,
+    /// The tool table's facts: noses by offset (G41/G42), blades by tool (G75.1).
+    pub tools: toolfacts::ToolFacts,
     /// The tool that cuts before the program's first T word (`--tool N`, else the tool
     /// table's first entry); `None` leaves it 0, "no tool yet".
     pub start_tool: Option<u32>,
@@ -53,12 +46,7 @@ impl Default for Options {
             block_delete: false,
             max_segments: 5_000_000,
             max_blocks: 20_000_000,
-            noses: BTreeMap::new(),
-            default_nose: Nose {
-                radius: 0.4,
-                tip: 3,
-            },
-            blades: BTreeMap::new(),
+            tools: toolfacts::ToolFacts::default(),
             start_tool: None,
         }
     }

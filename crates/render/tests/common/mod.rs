@@ -66,6 +66,7 @@ pub(crate) fn groove_bar() -> Report {
         gouges: vec![Gouge { line: 11, z: -22.5, r: 14.0, area_mm2: 1.0, depth_mm: 0.2 }],
         gouge_shapes: vec![shape(&[[-25.0, 14.0], [-20.0, 14.0], [-20.0, 14.2], [-25.0, 14.2]])],
         leftovers: vec![],
+        leftover_spot: None,
         deviation: Some(Deviation {
             overcut_area_mm2: 1.0,
             undercut_area_mm2: 0.0,
@@ -156,6 +157,7 @@ pub(crate) fn o0008_groove() -> Report {
         gouges: vec![],
         gouge_shapes: vec![],
         leftovers: vec![],
+        leftover_spot: None,
         deviation: Some(Deviation {
             overcut_area_mm2: 0.0,
             undercut_area_mm2: 0.0,
@@ -175,6 +177,8 @@ pub(crate) fn o0008_groove() -> Report {
         grooves: vec![Groove {
             line: 2,
             ring: trapezoid.to_vec(),
+            // The final part is cut exactly to the ring.
+            deviation_mm: Some(0.0),
         }],
     }
 }
@@ -238,6 +242,13 @@ pub(crate) fn rough_band() -> Report {
             mv(Rapid, 6, &[[-100.0, 46.0], [150.0, 100.0]]),
         ],
         leftovers: vec![band],
+        // As the simulator measures it: the band is thickest round the Z-30 shoulder.
+        leftover_spot: Some(LeftoverSpot {
+            leftover: 0,
+            centre: [-29.875, 30.125],
+            thickness: Some(0.25 * std::f64::consts::SQRT_2),
+            measure: Some([[-29.75, 30.25], [-30.0, 30.0]]),
+        }),
         deviation: Some(Deviation {
             overcut_area_mm2: 0.0,
             undercut_area_mm2: 30.1,

@@ -3,6 +3,7 @@
 //! and the ring the report draws.
 
 use crate::Pt;
+use geom::arc::Arc;
 
 /// How one corner of the groove is broken.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -116,25 +117,15 @@ impl Contour {
     }
 }
 
-/// Append the points of `els` from `from`, arcs chorded within `tol` (excluding `from`).
+/// Append the points of `els` from `from`, arcs chorded within `tol` (excluding `from`) by
+/// the kernel's one chording routine (`geom::arc`; the local frame is a plane like any).
 pub(super) fn chord(mut from: Uv, els: &[El], tol: f64, out: &mut Vec<Uv>) {
+    let pt = |p: Uv| Pt::new(p.u, p.v);
     for el in els {
         if let Some((c, ccw)) = el.arc {
-            let r = from.sub(c).len();
-            let t0 = (from.v - c.v).atan2(from.u - c.u);
-            let mut t1 = (el.to.v - c.v).atan2(el.to.u - c.u);
-            if ccw && t1 < t0 {
-                t1 += std::f64::consts::TAU;
-            }
-            if !ccw && t1 > t0 {
-                t1 -= std::f64::consts::TAU;
-            }
-            let step = 2.0 * (1.0 - tol.max(1e-9) / r).clamp(-1.0, 1.0).acos();
-            let n = (((t1 - t0).abs() / step.max(1e-6)).ceil() as usize).clamp(1, 10_000);
-            for i in 1..n {
-                let t = t0 + (t1 - t0) * i as f64 / n as f64;
-                out.push(uv(c.u + r * t.cos(), c.v + r * t.sin()));
-            }
+            let points = Arc::between(pt(from), pt(el.to), pt(c), ccw).flatten(tol.max(1e-9));
+            let inner = &points[1..points.len() - 1];
+            out.extend(inner.iter().map(|p| uv(p.z, p.r)));
         }
         out.push(el.to);
         from = el.to;

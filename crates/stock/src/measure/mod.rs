@@ -1,4 +1,12 @@
-//! Measures on shape sets: area, volume of revolution, symmetric difference, Hausdorff.
+//! Measures on shape sets: area, volume of revolution, symmetric difference, Hausdorff;
+//! and the measures the reports show of the findings: how far a groove strays
+//! ([`groove`]) and where the largest leftover is thickest ([`leftover`]).
+
+mod groove;
+mod leftover;
+
+pub use groove::groove_deviation;
+pub use leftover::{leftover_spot, LeftoverSpot};
 
 use crate::geom::{pts, P};
 use crate::overlay::{boolean, BoolOp};

@@ -1,0 +1,53 @@
+//! What the interpreter is told about the tool table ([`toolfacts::ToolFacts`]): the nose
+//! of every offset (G41/G42) and the radial grooving blades (G75.1 without I).
+
+use super::{AxisDir, Tool, ToolTable};
+use toolfacts::{Blade, Nose, ToolFacts};
+
+impl ToolTable {
+    /// The table's facts for the interpreter: nose radius and tip of every turning insert
+    /// by offset number (the table's `t`, as `T0101` pairs tool 01 with offset 01; other
+    /// kinds have no nose, and compensation is ignored for them with a warning), the
+    /// default nose ([`Tool::DEFAULT`]'s, the same constant), and every radial grooving blade by tool number.
+    pub fn facts(&self) -> ToolFacts {
+        let noses = self
+            .tools
+            .iter()
+            .map(|(t, tool)| (*t, nose(tool)))
+            .collect();
+        let blades = self
+            .tools
+            .iter()
+            .filter_map(|(t, tool)| match tool {
+                Tool::Grooving {
+                    width, width_dir, ..
+                } if matches!(width_dir, AxisDir::PlusZ | AxisDir::MinusZ) => Some((
+                    *t,
+                    Blade {
+                        width: *width,
+                        toward_plus_z: *width_dir == AxisDir::PlusZ,
+                    },
+                )),
+                _ => None,
+            })
+            .collect();
+        ToolFacts {
+            noses,
+            default_nose: Nose::DEFAULT,
+            blades,
+        }
+    }
+}
+
+/// A turning insert's nose; other kinds have none.
+fn nose(tool: &Tool) -> Option<Nose> {
+    match *tool {
+        Tool::Turning {
+            nose_radius, tip, ..
+        } => Some(Nose {
+            radius: nose_radius,
+            tip,
+        }),
+        _ => None,
+    }
+}

@@ -1,0 +1,160 @@
+//! Which outline cuts: a tool's own outline (the adapter onto `crate::outline`), the
+//! default for a missing entry, and the blade a grooving cycle's hint asks for.
+
+use super::{AxisDir, Insert, Tool, ToolTable};
+use crate::outline::{self, InsertBody, Outline};
+use expander::ToolHint;
+
+/// The body of an insert's shape, for its outline.
+fn body(insert: Insert) -> InsertBody {
+    match insert {
+        Insert::C | Insert::D | Insert::V | Insert::S => InsertBody::Rhombic,
+        Insert::T | Insert::W => InsertBody::Triangle,
+        Insert::R => InsertBody::Round,
+    }
+}
+
+impl Tool {
+    /// The outline relative to the reference point (see [`Outline`]).
+    pub fn outline(&self) -> Outline {
+        match *self {
+            Self::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                edge,
+            } => outline::turning(
+                body(insert),
+                insert.included_angle(),
+                nose_radius,
+                tip,
+                entering_angle,
+                edge,
+            ),
+            Self::Grooving {
+                width,
+                width_dir,
+                shank_dir,
+                reach,
+                corner_radius,
+            } => outline::grooving(
+                width,
+                width_dir.unit(),
+                shank_dir.unit(),
+                reach,
+                corner_radius,
+            ),
+            Self::Drill {
+                diameter,
+                point_angle,
+                reach,
+            } => outline::drill(diameter, point_angle, reach),
+            Self::Threading { angle, tip_flat } => outline::threading(angle, tip_flat),
+        }
+    }
+}
+
+impl ToolTable {
+    /// The outline for tool `t` (`tt` of `Tttoo`; 0 = no T word yet: the first entry).
+    /// A missing entry or an empty table gives [`Tool::DEFAULT`] plus a warning text.
+    pub fn outline(&self, t: u32) -> (Outline, Option<String>) {
+        match self.get(t) {
+            Some(tool) => (tool.outline(), None),
+            None => {
+                let why = if self.tools.is_empty() {
+                    format!("no tool table: T{t:02} is taken as the default")
+                } else {
+                    format!("T{t:02} has no entry in the tool table: using the default")
+                };
+                (
+                    Tool::DEFAULT.outline(),
+                    Some(format!("{why} ({})", Tool::DEFAULT.describe())),
+                )
+            }
+        }
+    }
+}
+
+/// A cache key for the outline of tool `t` under `hint`.
+pub(crate) fn hint_key(t: u32, hint: ToolHint) -> (u32, u8, u64) {
+    match hint {
+        ToolHint::Table => (t, 0, 0),
+        ToolHint::Grooving => (t, 1, 0),
+        ToolHint::Blade {
+            width,
+            toward_plus_z,
+            shank_plus_x,
+        } => (
+            t,
+            2 + u8::from(toward_plus_z) + 2 * u8::from(shank_plus_x),
+            width.to_bits(),
+        ),
+    }
+}
+
+impl ToolTable {
+    /// The outline that cuts tool `t` when a cycle adds `hint` (spec/simulation.md, Tools):
+    /// the table's entry; in a grooving cycle with no entry, the default 3 mm blade; for
+    /// G75.1's I, a blade of the program's width (shank, reach and corner radius from the
+    /// table's grooving entry, if any). The text is a warning when a default stands in.
+    pub fn outline_for(&self, t: u32, hint: ToolHint) -> (Outline, Option<String>) {
+        match hint {
+            ToolHint::Table => self.outline(t),
+            ToolHint::Grooving => match self.get(t) {
+                Some(tool) => (tool.outline(), None),
+                None => (
+                    Tool::DEFAULT_BLADE.outline(),
+                    Some(format!("T{t:02} has no entry in the tool table: the grooving cycle uses the default ({})", Tool::DEFAULT_BLADE.describe())),
+                ),
+            },
+            ToolHint::Blade { width, toward_plus_z, shank_plus_x } => {
+                let default_shank = if shank_plus_x { AxisDir::PlusX } else { AxisDir::MinusX };
+                let (shank_dir, reach, corner_radius) = match self.get(t) {
+                    Some(&Tool::Grooving { shank_dir, reach, corner_radius, .. }) => (shank_dir, reach, corner_radius),
+                    _ => (default_shank, 20.0, 0.0),
+                };
+                if width.is_finite() && width > 0.0 && width < 1e4 {
+                    let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
+                    let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { default_shank };
+                    let tool = Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) };
+                    (tool.outline(), None)
+                } else {
+                    let (o, _) = self.outline(t);
+                    (o, Some(format!("blade width {width} is not a positive length: T{t:02}'s outline is used")))
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn g75_1_blade_without_a_table_entry_faces_the_groove() {
+        let t = ToolTable::empty();
+        let od = ToolHint::Blade {
+            width: 4.0,
+            toward_plus_z: false,
+            shank_plus_x: true,
+        };
+        let id = ToolHint::Blade {
+            width: 4.0,
+            toward_plus_z: false,
+            shank_plus_x: false,
+        };
+        let (o, w) = t.outline_for(1, od);
+        let (lo, hi) = o.bbox().unwrap();
+        assert!(
+            w.is_none() && lo[1] >= -1e-9 && hi[1] > 10.0 && (lo[0] + 4.0).abs() < 1e-9,
+            "{lo:?} {hi:?}"
+        );
+        let (lo, hi) = t.outline_for(1, id).0.bbox().unwrap();
+        assert!(
+            hi[1] <= 1e-9 && lo[1] < -10.0,
+            "an ID blade runs toward -X: {lo:?} {hi:?}"
+        );
+    }
+}

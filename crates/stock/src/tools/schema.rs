@@ -1,0 +1,284 @@
+//! The `[[tool]]` TOML format of spec/simulation.md: serde's raw records (unknown fields
+//! refused with their line and column), then each entry validated into a [`Tool`] with
+//! errors naming the tool, the field and the line.
+
+use super::{AxisDir, Insert, Tool};
+use crate::error::{from_toml, line_col};
+use crate::StockError;
+use serde::Deserialize;
+use toml::Spanned;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawTable {
+    #[serde(default)]
+    tool: Vec<Spanned<RawTool>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawTool {
+    t: u32,
+    kind: String,
+    insert: Option<String>,
+    nose_radius: Option<f64>,
+    tip: Option<i64>,
+    entering_angle: Option<f64>,
+    edge: Option<f64>,
+    width: Option<f64>,
+    width_dir: Option<String>,
+    shank_dir: Option<String>,
+    reach: Option<f64>,
+    corner_radius: Option<f64>,
+    diameter: Option<f64>,
+    point_angle: Option<f64>,
+    angle: Option<f64>,
+    tip_flat: Option<f64>,
+}
+
+const HELP: &str = "each [[tool]] needs `t` and `kind` (turning | grooving | drill | threading) and only the fields of its kind";
+
+/// The table's entries in file order; a T number given twice is an error.
+pub(super) fn read(text: &str) -> Result<Vec<(u32, Tool)>, StockError> {
+    let raw: RawTable =
+        toml::from_str(text).map_err(|e| from_toml("tool table", text, &e, HELP))?;
+    let mut tools: Vec<(u32, Tool)> = Vec::new();
+    for entry in &raw.tool {
+        let (line, _) = line_col(text, entry.span().start);
+        let raw = entry.get_ref();
+        let tool = parse_tool(raw, line)?;
+        if tools.iter().any(|(t, _)| *t == raw.t) {
+            return Err(StockError::Tool {
+                t: raw.t,
+                field: "t",
+                message: "appears twice in the table".into(),
+                line,
+            });
+        }
+        tools.push((raw.t, tool));
+    }
+    Ok(tools)
+}
+
+fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
+    let t = raw.t;
+    let err = |field: &'static str, message: String| StockError::Tool {
+        t,
+        field,
+        message,
+        line,
+    };
+    // a positive (or non-negative) finite length or angle, with its default
+    let num = |field: &'static str,
+               v: Option<f64>,
+               default: Option<f64>,
+               min: f64,
+               max: f64,
+               zero_ok: bool| {
+        let v = match (v, default) {
+            (Some(v), _) => v,
+            (None, Some(d)) => return Ok(d),
+            (None, None) => return Err(err(field, "is required for this kind of tool".into())),
+        };
+        let ok = v.is_finite() && v <= max && if zero_ok { v >= min } else { v > min };
+        if ok {
+            Ok(v)
+        } else {
+            let bound = if zero_ok {
+                format!("at least {min}")
+            } else {
+                format!("greater than {min}")
+            };
+            Err(err(
+                field,
+                format!("= {v} must be {bound} and at most {max}"),
+            ))
+        }
+    };
+    let fields: [(&'static str, bool); 14] = [
+        ("insert", raw.insert.is_some()),
+        ("nose_radius", raw.nose_radius.is_some()),
+        ("tip", raw.tip.is_some()),
+        ("entering_angle", raw.entering_angle.is_some()),
+        ("edge", raw.edge.is_some()),
+        ("width", raw.width.is_some()),
+        ("width_dir", raw.width_dir.is_some()),
+        ("shank_dir", raw.shank_dir.is_some()),
+        ("reach", raw.reach.is_some()),
+        ("corner_radius", raw.corner_radius.is_some()),
+        ("diameter", raw.diameter.is_some()),
+        ("point_angle", raw.point_angle.is_some()),
+        ("angle", raw.angle.is_some()),
+        ("tip_flat", raw.tip_flat.is_some()),
+    ];
+    let allowed: &[&str] = match raw.kind.as_str() {
+        "turning" => &["insert", "nose_radius", "tip", "entering_angle", "edge"],
+        "grooving" => &["width", "width_dir", "shank_dir", "reach", "corner_radius"],
+        "drill" => &["diameter", "point_angle", "reach"],
+        "threading" => &["angle", "tip_flat"],
+        other => {
+            return Err(err(
+                "kind",
+                format!("= \"{other}\" is not one of turning, grooving, drill, threading"),
+            ));
+        }
+    };
+    if let Some((field, _)) = fields.iter().find(|(f, set)| *set && !allowed.contains(f)) {
+        return Err(err(field, format!("does not apply to a {} tool", raw.kind)));
+    }
+    Ok(match raw.kind.as_str() {
+        "turning" => {
+            let insert = match &raw.insert {
+                None => Insert::D,
+                Some(s) => Insert::from_letter(s).ok_or_else(|| {
+                    err(
+                        "insert",
+                        format!("= \"{s}\" is not an ISO shape letter (C, D, T, V, W, S, R)"),
+                    )
+                })?,
+            };
+            let tip = match raw.tip {
+                None => 3,
+                Some(v @ 0..=9) => v as u8,
+                Some(v) => {
+                    return Err(err(
+                        "tip",
+                        format!("= {v} is not an imaginary tip number (0-9)"),
+                    ))
+                }
+            };
+            let nose_radius = num(
+                "nose_radius",
+                raw.nose_radius,
+                Some(0.4),
+                0.0,
+                100.0,
+                insert != Insert::R,
+            )?;
+            let entering_angle = num(
+                "entering_angle",
+                raw.entering_angle,
+                Some(93.0),
+                0.0,
+                180.0,
+                false,
+            )?;
+            let edge = num("edge", raw.edge, Some(11.0), 0.0, 1000.0, false)?;
+            if insert != Insert::R && entering_angle + insert.included_angle() >= 180.0 {
+                return Err(err("entering_angle", format!("= {entering_angle}: with a {}° insert the trailing edge would point into the part", insert.included_angle())));
+            }
+            Tool::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                edge,
+            }
+        }
+        "grooving" => {
+            let dir = |field: &'static str, v: &Option<String>, d: AxisDir| match v {
+                None => Ok(d),
+                Some(s) => AxisDir::parse(s).ok_or_else(|| {
+                    err(
+                        field,
+                        format!("= \"{s}\" is not one of \"+z\", \"-z\", \"+x\", \"-x\""),
+                    )
+                }),
+            };
+            let width = num("width", raw.width, Some(3.0), 0.0, 1000.0, false)?;
+            let width_dir = dir("width_dir", &raw.width_dir, AxisDir::PlusZ)?;
+            let default_shank = if width_dir.is_z() {
+                AxisDir::PlusX
+            } else {
+                AxisDir::PlusZ
+            };
+            let shank_dir = dir("shank_dir", &raw.shank_dir, default_shank)?;
+            if width_dir.is_z() == shank_dir.is_z() {
+                return Err(err(
+                    "shank_dir",
+                    format!(
+                        "= \"{}\" must be across the width direction \"{}\"",
+                        shank_dir.text(),
+                        width_dir.text()
+                    ),
+                ));
+            }
+            let reach = num("reach", raw.reach, Some(20.0), 0.0, 10000.0, false)?;
+            let corner_radius = num(
+                "corner_radius",
+                raw.corner_radius,
+                Some(0.0),
+                0.0,
+                width / 2.0,
+                true,
+            )?;
+            Tool::Grooving {
+                width,
+                width_dir,
+                shank_dir,
+                reach,
+                corner_radius,
+            }
+        }
+        "drill" => Tool::Drill {
+            diameter: num("diameter", raw.diameter, None, 0.0, 10000.0, false)?,
+            point_angle: num(
+                "point_angle",
+                raw.point_angle,
+                Some(118.0),
+                0.0,
+                180.0,
+                false,
+            )?,
+            reach: num("reach", raw.reach, Some(60.0), 0.0, 10000.0, false)?,
+        },
+        _ => {
+            let angle = num("angle", raw.angle, Some(60.0), 0.0, 170.0, false)?;
+            Tool::Threading {
+                angle,
+                tip_flat: num("tip_flat", raw.tip_flat, Some(0.0), 0.0, 100.0, true)?,
+            }
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::ToolTable;
+    use crate::StockError;
+
+    #[test]
+    fn bad_entries_name_tool_and_field() {
+        let unknown = "[[tool]]\nt = 1\nkind = \"turning\"\nnose = 0.4\n";
+        match ToolTable::from_toml(unknown) {
+            Err(StockError::Toml { line, message, .. }) => {
+                assert_eq!(line, 4);
+                assert!(message.contains("nose"), "{message}");
+            }
+            other => panic!("{other:?}"),
+        }
+        let cases = [
+            ("kind = \"grooving\"\nwidth = -3.0", "width"),
+            ("kind = \"turning\"\ntip = 10", "tip"),
+            ("kind = \"turning\"\ninsert = \"Q\"", "insert"),
+            ("kind = \"drill\"", "diameter"),
+            ("kind = \"drill\"\ndiameter = 10.0\nwidth = 3.0", "width"),
+            (
+                "kind = \"grooving\"\nwidth_dir = \"+z\"\nshank_dir = \"-z\"",
+                "shank_dir",
+            ),
+            ("kind = \"laser\"", "kind"),
+        ];
+        for (body, field) in cases {
+            let text = format!("[[tool]]\nt = 5\n{body}\n");
+            match ToolTable::from_toml(&text) {
+                Err(StockError::Tool {
+                    t, field: f, line, ..
+                }) => {
+                    assert_eq!((t, f, line), (5, field, 1), "{body}");
+                }
+                other => panic!("{body}: {other:?}"),
+            }
+        }
+    }
+}
