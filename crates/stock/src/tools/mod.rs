@@ -17,6 +17,8 @@ pub(crate) use outline_choice::hint_key;
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ToolTable {
     tools: Vec<(u32, Tool)>,
+    /// The ISO designations an entry was given by, for the report.
+    designations: Vec<(u32, String)>,
 }
 
 impl ToolTable {
@@ -27,13 +29,21 @@ impl ToolTable {
 
     /// A table from explicit entries (T number, tool).
     pub fn from_tools(tools: Vec<(u32, Tool)>) -> Self {
-        Self { tools }
+        Self {
+            tools,
+            designations: Vec::new(),
+        }
     }
 
     /// Parses the `[[tool]]` TOML format of the simulation spec (see [`schema`]).
     pub fn from_toml(text: &str) -> Result<Self, StockError> {
+        let entries = schema::read(text)?;
         Ok(Self {
-            tools: schema::read(text)?,
+            designations: entries
+                .iter()
+                .filter_map(|(t, _, d)| d.clone().map(|d| (*t, d)))
+                .collect(),
+            tools: entries.into_iter().map(|(t, tool, _)| (t, tool)).collect(),
         })
     }
 
@@ -53,10 +63,23 @@ impl ToolTable {
         self.tools.iter().map(|(t, _)| *t).collect()
     }
 
-    /// One human line per tool, e.g. "T01 turning V 35°, r0.4, tip 3, κr 93°".
+    /// The ISO designations tool `t` was given by (`"CNMG 120408 in PCLNR 2525M12"`).
+    pub fn designation(&self, t: u32) -> Option<&str> {
+        let t = if t == 0 { *self.numbers().first()? } else { t };
+        self.designations
+            .iter()
+            .find(|(n, _)| *n == t)
+            .map(|(_, d)| d.as_str())
+    }
+
+    /// One human line per tool, e.g. "T01 turning V 35°, r0.4, tip 3, κr 93°", with the
+    /// designation when the table gave one ("… (CNMG 120408 in PCLNR 2525M12)").
     pub fn describe(&self, t: u32) -> String {
         match self.get(t) {
-            Some(tool) => format!("T{t:02} {}", tool.describe()),
+            Some(tool) => match self.designation(t) {
+                Some(d) => format!("T{t:02} {} ({d})", tool.describe()),
+                None => format!("T{t:02} {}", tool.describe()),
+            },
             None => format!("T{t:02} {} (default)", Tool::DEFAULT.describe()),
         }
     }
@@ -110,6 +133,97 @@ tip_flat = 0.0
         assert_eq!(o.bbox().unwrap(), ([0.0, 0.0], [3.0, 20.0]));
         // T0 before any T word: the first entry
         assert_eq!(t.outline(0).0, t.outline(1).0);
+    }
+
+    /// ISO designations give the outline facts; what the explicit fields would say.
+    #[test]
+    fn iso_designations_give_the_turning_facts() {
+        let t = ToolTable::from_toml(
+            "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n\
+             [[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"CCMT 09T304\"\nholder = \"S20R-SCLCR09\"\n\
+             [[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"VNMG 160404\"\nentering_angle = 93\n\
+             [[tool]]\nt = 4\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\ntip = 4\nnose_radius = 0.8\n",
+        )
+        .unwrap();
+        let turning = |n| match t.get(n) {
+            Some(&Tool::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                edge,
+            }) => (
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                (edge * 1000.0).round() / 1000.0,
+            ),
+            other => panic!("{other:?}"),
+        };
+        // C 80°, r0.8 (code 08), style L κr 95°, right-hand OD: tip 3; edge 12.896
+        assert_eq!(turning(1), (Insert::C, 0.8, 3, 95.0, 12.896));
+        // a right-hand boring bar with an L-style head: tip 2 (tnrc.md), κr 95°, r0.4, 9.672
+        assert_eq!(turning(2), (Insert::C, 0.4, 2, 95.0, 9.672));
+        // an insert alone: its shape, radius and edge, the holder's angle given explicitly
+        assert_eq!(turning(3), (Insert::V, 0.4, 3, 93.0, 16.606));
+        // an explicit tip wins (a rear post); a repeated radius that agrees is accepted
+        assert_eq!(turning(4).2, 4);
+        assert_eq!(
+            t.describe(1),
+            "T01 turning C 80°, r0.8, tip 3, κr 95° (CNMG 120408 in PCLNR 2525M12)"
+        );
+        assert_eq!(t.designation(3), Some("VNMG 160404"));
+    }
+
+    /// A wrong or inconsistent designation is an error at its tool's line naming the field.
+    #[test]
+    fn bad_designations_are_errors_at_their_line() {
+        let cases = [
+            // a C insert in a V holder
+            (
+                "insert = \"CNMG 120408\"\nholder = \"SVJBR 2525M16\"",
+                "holder",
+                "shape",
+            ),
+            // no such style letter
+            (
+                "insert = \"CNMG 120408\"\nholder = \"PCQNR 2525M12\"",
+                "holder",
+                "style",
+            ),
+            // no such nose radius code
+            ("insert = \"CNMG 120407\"", "insert", "nose"),
+            // the explicit field contradicts the designation
+            (
+                "insert = \"CNMG 120408\"\nnose_radius = 0.4",
+                "nose_radius",
+                "contradicts",
+            ),
+            // a holder without an insert designation
+            (
+                "insert = \"C\"\nholder = \"PCLNR 2525M12\"",
+                "holder",
+                "designation",
+            ),
+            // a shape latsim has no outline for
+            ("insert = \"KNUX 160404\"", "insert", "outline"),
+        ];
+        for (body, field, word) in cases {
+            let text = format!("# tools\n[[tool]]\nt = 5\nkind = \"turning\"\n{body}\n");
+            match ToolTable::from_toml(&text) {
+                Err(StockError::Tool {
+                    t,
+                    field: f,
+                    line,
+                    message,
+                }) => {
+                    assert_eq!((t, f, line), (5, field, 2), "{body}: {message}");
+                    assert!(message.to_lowercase().contains(word), "{body}: {message}");
+                }
+                other => panic!("{body}: {other:?}"),
+            }
+        }
     }
 
     #[test]

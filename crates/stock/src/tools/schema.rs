@@ -21,6 +21,7 @@ struct RawTool {
     t: u32,
     kind: String,
     insert: Option<String>,
+    holder: Option<String>,
     nose_radius: Option<f64>,
     tip: Option<i64>,
     entering_angle: Option<f64>,
@@ -38,16 +39,20 @@ struct RawTool {
 
 const HELP: &str = "each [[tool]] needs `t` and `kind` (turning | grooving | drill | threading) and only the fields of its kind";
 
+/// One entry read: its T number, the tool, and the ISO designations it was given by
+/// (`"CNMG 120408 in PCLNR 2525M12"`), if any, for the report.
+pub(super) type Entry = (u32, Tool, Option<String>);
+
 /// The table's entries in file order; a T number given twice is an error.
-pub(super) fn read(text: &str) -> Result<Vec<(u32, Tool)>, StockError> {
+pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
     let raw: RawTable =
         toml::from_str(text).map_err(|e| from_toml("tool table", text, &e, HELP))?;
-    let mut tools: Vec<(u32, Tool)> = Vec::new();
+    let mut tools: Vec<Entry> = Vec::new();
     for entry in &raw.tool {
         let (line, _) = line_col(text, entry.span().start);
         let raw = entry.get_ref();
-        let tool = parse_tool(raw, line)?;
-        if tools.iter().any(|(t, _)| *t == raw.t) {
+        let (tool, designation) = parse_tool(raw, line)?;
+        if tools.iter().any(|(t, _, _)| *t == raw.t) {
             return Err(StockError::Tool {
                 t: raw.t,
                 field: "t",
@@ -55,12 +60,82 @@ pub(super) fn read(text: &str) -> Result<Vec<(u32, Tool)>, StockError> {
                 line,
             });
         }
-        tools.push((raw.t, tool));
+        tools.push((raw.t, tool, designation));
     }
     Ok(tools)
 }
 
-fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
+/// What ISO designations (`insert = "CNMG 120408"`, `holder = "PCLNR 2525M12"`) say about a
+/// turning tool; the explicit fields may repeat a value but not contradict it.
+struct Designated {
+    insert: Insert,
+    nose_radius: f64,
+    edge: f64,
+    /// From the holder: entering angle and the usual imaginary tip for its hand, OD/ID.
+    holder: Option<(f64, u8)>,
+    text: String,
+}
+
+fn designated(raw: &RawTool) -> Result<Option<Designated>, (&'static str, String)> {
+    let Some(text) = raw
+        .insert
+        .as_deref()
+        .filter(|s| s.trim().chars().count() > 1)
+    else {
+        return match raw.holder {
+            Some(_) => Err((
+                "holder",
+                "needs the insert's ISO designation in `insert` (e.g. insert = \"CNMG 120408\")"
+                    .into(),
+            )),
+            None => Ok(None),
+        };
+    };
+    let iso = tooling_iso::Insert::parse(text).map_err(|e| ("insert", e.to_string()))?;
+    let letter = iso.shape.letter().to_string();
+    let insert = Insert::from_letter(&letter).ok_or_else(|| {
+        (
+            "insert",
+            format!(
+                "= \"{text}\": shape {letter} ({}) has no outline in latsim; give the nearest \
+                 shape letter (C, D, T, V, W, S, R) with explicit fields",
+                iso.shape.describe()
+            ),
+        )
+    })?;
+    let mut d = Designated {
+        insert,
+        nose_radius: iso.nose_radius,
+        edge: iso.edge_length,
+        holder: None,
+        text: iso.designation.clone(),
+    };
+    if let Some(h) = &raw.holder {
+        let holder = tooling_iso::Holder::parse(h).map_err(|e| ("holder", e.to_string()))?;
+        let facts =
+            tooling_iso::turning_facts(&iso, &holder).map_err(|e| ("holder", e.to_string()))?;
+        d.holder = Some((facts.entering_angle, facts.tip));
+        d.text = format!("{} in {}", iso.designation, holder.designation);
+    }
+    // an explicit field that repeats the designation is fine; one that contradicts it is not
+    for (field, given, value) in [
+        ("nose_radius", raw.nose_radius, Some(d.nose_radius)),
+        ("edge", raw.edge, Some(d.edge)),
+        ("entering_angle", raw.entering_angle, d.holder.map(|h| h.0)),
+    ] {
+        if let (Some(g), Some(v)) = (given, value) {
+            if (g - v).abs() > 1e-6 {
+                return Err((
+                    field,
+                    format!("= {g} contradicts the designation \"{}\" ({v})", d.text),
+                ));
+            }
+        }
+    }
+    Ok(Some(d))
+}
+
+fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), StockError> {
     let t = raw.t;
     let err = |field: &'static str, message: String| StockError::Tool {
         t,
@@ -95,8 +170,9 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
             ))
         }
     };
-    let fields: [(&'static str, bool); 14] = [
+    let fields: [(&'static str, bool); 15] = [
         ("insert", raw.insert.is_some()),
+        ("holder", raw.holder.is_some()),
         ("nose_radius", raw.nose_radius.is_some()),
         ("tip", raw.tip.is_some()),
         ("entering_angle", raw.entering_angle.is_some()),
@@ -112,7 +188,14 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
         ("tip_flat", raw.tip_flat.is_some()),
     ];
     let allowed: &[&str] = match raw.kind.as_str() {
-        "turning" => &["insert", "nose_radius", "tip", "entering_angle", "edge"],
+        "turning" => &[
+            "insert",
+            "holder",
+            "nose_radius",
+            "tip",
+            "entering_angle",
+            "edge",
+        ],
         "grooving" => &["width", "width_dir", "shank_dir", "reach", "corner_radius"],
         "drill" => &["diameter", "point_angle", "reach"],
         "threading" => &["angle", "tip_flat"],
@@ -126,9 +209,12 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
     if let Some((field, _)) = fields.iter().find(|(f, set)| *set && !allowed.contains(f)) {
         return Err(err(field, format!("does not apply to a {} tool", raw.kind)));
     }
-    Ok(match raw.kind.as_str() {
+    let mut designation = None;
+    let tool = match raw.kind.as_str() {
         "turning" => {
+            let iso = designated(raw).map_err(|(field, message)| err(field, message))?;
             let insert = match &raw.insert {
+                _ if iso.is_some() => iso.as_ref().map_or(Insert::D, |d| d.insert),
                 None => Insert::D,
                 Some(s) => Insert::from_letter(s).ok_or_else(|| {
                     err(
@@ -138,7 +224,8 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
                 })?,
             };
             let tip = match raw.tip {
-                None => 3,
+                // a holder's usual tip for its hand (an explicit `tip` wins: a rear post)
+                None => iso.as_ref().and_then(|d| d.holder).map_or(3, |h| h.1),
                 Some(v @ 0..=9) => v as u8,
                 Some(v) => {
                     return Err(err(
@@ -150,7 +237,7 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
             let nose_radius = num(
                 "nose_radius",
                 raw.nose_radius,
-                Some(0.4),
+                Some(iso.as_ref().map_or(0.4, |d| d.nose_radius)),
                 0.0,
                 100.0,
                 insert != Insert::R,
@@ -158,12 +245,20 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
             let entering_angle = num(
                 "entering_angle",
                 raw.entering_angle,
-                Some(93.0),
+                Some(iso.as_ref().and_then(|d| d.holder).map_or(93.0, |h| h.0)),
                 0.0,
                 180.0,
                 false,
             )?;
-            let edge = num("edge", raw.edge, Some(11.0), 0.0, 1000.0, false)?;
+            let edge = num(
+                "edge",
+                raw.edge,
+                Some(iso.as_ref().map_or(11.0, |d| d.edge)),
+                0.0,
+                1000.0,
+                false,
+            )?;
+            designation = iso.map(|d| d.text);
             if insert != Insert::R && entering_angle + insert.included_angle() >= 180.0 {
                 return Err(err("entering_angle", format!("= {entering_angle}: with a {}° insert the trailing edge would point into the part", insert.included_angle())));
             }
@@ -239,7 +334,8 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<Tool, StockError> {
                 tip_flat: num("tip_flat", raw.tip_flat, Some(0.0), 0.0, 100.0, true)?,
             }
         }
-    })
+    };
+    Ok((tool, designation))
 }
 
 #[cfg(test)]
