@@ -8,7 +8,7 @@ impl Interp<'_> {
     /// The tool table's entry for offset `offset`: `Some(None)` is a grooving blade,
     /// `None` no entry.
     pub(crate) fn nose_for(&self, offset: u32) -> Option<Option<Nose>> {
-        self.opts.noses.get(&offset).copied()
+        self.noses.get(&offset).copied()
     }
 
     /// The nose of an offset with no entry.
