@@ -212,14 +212,19 @@ fn work_offsets_from_the_profile_and_from_g10() {
 fn g10_sets_the_nose_g41_uses_and_skips_parameter_blocks() {
     let mut opts = Options::default();
     opts.noses.insert(1, Some(expander::tnrc::Nose { radius: 0.4, tip: 3 }));
-    let src = "G10 L50\nN1234 R5\nN5678 P1 R2\nG11\nG10 P10001 X0 Z0 R0.8 Q3\nG0 X20 Z2 T0101\nM3 S500 G99\nG42 G1 Z0 F0.1\nG1 Z-10\nG40 G0 X30\nM30\n";
-    let tp = expand(&gcode::parse(src).unwrap(), &Machine::for_control(Control::FanucA), &opts);
-    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
-    assert!(codes(&tp.warnings).contains(&"W-G10-L50"));
-    // With R0.8 tip 3, the compensated cut along Z runs 0.8 further out in radius than
-    // the programmed one... measured on the tip: the tip path is offset by the nose.
-    let cut = tp.segments.iter().find(|s| s.span.line == 9).unwrap();
-    assert!((cut.to.r - 10.0).abs() < 1e-9, "tip 3 along a Z cut lies on the contour: {cut:?}");
+    let prog = |g10: &str| {
+        format!("G10 L50\nN1234 R5\nN5678 P1 R2\nG11\n{g10}\nG0 X20 Z2 T0101\nM3 S500 G99\nG42 G1 Z0 F0.1\nG1 X30 Z-10\nG1 Z-20\nG40 G0 X40\nM30\n")
+    };
+    let m = Machine::for_control(Control::FanucA);
+    let run = |g10: &str| expand(&gcode::parse(&prog(g10)).unwrap(), &m, &opts);
+    let (r08, r04, table) = (run("G10 P10001 X0 Z0 R0.8 Q3"), run("G10 P10001 R0.4"), run("G18"));
+    assert!(r08.alarms.is_empty(), "{:?}", r08.alarms);
+    assert!(codes(&r08.warnings).contains(&"W-G10-L50"));
+    assert!(codes(&r08.warnings).contains(&"W-G10-OFFSET"), "X/Z lengths are not applied");
+    // The compensated corner between the cone and the cylinder moves with the nose radius:
+    // G10 R0.8 changes the path, G10 R0.4 (the table's) does not.
+    assert_ne!(ends(&r08), ends(&table));
+    assert_eq!(ends(&r04), ends(&table));
     // Without a tool entry the data is not applied, with a warning.
     let tp = run_on(Control::FanucA, "G10 P5 R0.8 Q3\nM30\n");
     assert!(tp.warnings.iter().any(|w| w.message.contains("not applied")));
