@@ -14,20 +14,37 @@ const T3: &str = "%\nO0300\nG71 ;\nG95 G90 ;\nG92 S2500 ;\nT0101 ;\nG97 S1000 M0
 /// `latsim expand --format csv` as (line, kind, Z, X) of each segment's end.
 fn path(name: &str, text: &[u8], control: &str) -> Vec<(u32, String, f64, f64)> {
     let (_dir, prog) = temp_program(name, text);
-    let out = latsim(&["expand", prog.to_str().unwrap(), "--control", control, "--format", "csv"]);
+    let out = latsim(&[
+        "expand",
+        prog.to_str().unwrap(),
+        "--control",
+        control,
+        "--format",
+        "csv",
+    ]);
     assert_eq!(out.code, 0, "{}", out.stderr);
     out.stdout
         .lines()
         .skip(1)
         .map(|l| {
             let f: Vec<&str> = l.split(',').collect();
-            (f[0].parse().unwrap(), f[2].to_string(), f[5].parse().unwrap(), f[6].parse().unwrap())
+            (
+                f[0].parse().unwrap(),
+                f[2].to_string(),
+                f[5].parse().unwrap(),
+                f[6].parse().unwrap(),
+            )
         })
         .collect()
 }
 
 /// `latsim run` with the JSON report: (exit code, report, stderr).
-fn run_json(name: &str, text: &[u8], control: &str, stock: &str) -> (i32, serde_json::Value, String) {
+fn run_json(
+    name: &str,
+    text: &[u8],
+    control: &str,
+    stock: &str,
+) -> (i32, serde_json::Value, String) {
     let (dir, prog) = temp_program(name, text);
     let json = dir.path().join("r.json");
     let out = latsim(&[
@@ -50,7 +67,10 @@ fn run_json(name: &str, text: &[u8], control: &str, stock: &str) -> (i32, serde_
 }
 
 fn expect_path(got: &[(u32, String, f64, f64)], want: &[(&str, f64, f64)]) {
-    let got: Vec<(&str, f64, f64)> = got.iter().map(|(_, k, z, x)| (k.as_str(), *z, *x)).collect();
+    let got: Vec<(&str, f64, f64)> = got
+        .iter()
+        .map(|(_, k, z, x)| (k.as_str(), *z, *x))
+        .collect();
     assert_eq!(got, want);
 }
 
@@ -116,7 +136,10 @@ fn t1_framing_under_fanuc_a() {
     assert!((area(&report) - 120.0).abs() < 0.05, "{}", area(&report));
     assert!(stock::hausdorff(&final_shapes(&report), &[section(false)]) < 0.01);
     let messages = report["warnings"].to_string();
-    assert!(messages.contains("leader skipped") && messages.contains("nested parentheses"), "{messages}");
+    assert!(
+        messages.contains("leader skipped") && messages.contains("nested parentheses"),
+        "{messages}"
+    );
 }
 
 #[test]
@@ -124,7 +147,11 @@ fn t2_system_b_under_fanuc_b_and_its_alarm_under_fanuc_a() {
     let p = path("t2.nc", T2.as_bytes(), "fanuc-b");
     let mut want = TWO_PASSES.to_vec();
     // G94 G01 Z3. is a 1 mm feed at 300 mm/min; G91 G00 X10. Z5. goes (52, 3) → (62, 8).
-    want.extend([("feed", 3.0, 52.0), ("rapid", 8.0, 62.0), ("rapid", 100.0, 100.0)]);
+    want.extend([
+        ("feed", 3.0, 52.0),
+        ("rapid", 8.0, 62.0),
+        ("rapid", 100.0, 100.0),
+    ]);
     expect_path(&p, &want);
     assert_eq!(p[9].0, 10, "the 1 mm feed is line 10");
     let (code, report, _) = run_json("t2.nc", T2.as_bytes(), "fanuc-b", "50x60");
@@ -160,7 +187,10 @@ fn t3_system_c_under_fanuc_c_and_its_alarm_under_fanuc_a() {
     // Under system A, line 3's G71 is a roughing cycle without its words.
     let (code, _, stderr) = run_json("t3.nc", T3.as_bytes(), "fanuc-a", "50x60");
     assert_eq!(code, 1);
-    assert!(stderr.contains("t3.nc:3:1") && stderr.contains("G71"), "{stderr}");
+    assert!(
+        stderr.contains("t3.nc:3:1") && stderr.contains("G71"),
+        "{stderr}"
+    );
 }
 
 #[test]
@@ -189,20 +219,54 @@ fn the_same_part_in_systems_a_b_and_c_gives_the_same_section() {
 fn bad_input_that_depends_on_the_control() {
     let cases: &[(&str, &str, i32, &str, &[&str])] = &[
         // a system-B code under system A
-        ("fanuc-a", "G21 G99\nM3 S500\nG0 X52 Z2\nG77 X46 Z-30 F0.2\nM30\n", 1, "b.nc:4:1", &["G77 is not a system A code", "--control fanuc-b"]),
+        (
+            "fanuc-a",
+            "G21 G99\nM3 S500\nG0 X52 Z2\nG77 X46 Z-30 F0.2\nM30\n",
+            1,
+            "b.nc:4:1",
+            &["G77 is not a system A code", "--control fanuc-b"],
+        ),
         // G17 then an arc
-        ("haas", "G21 G17\nM3 S500\nG0 X20 Z2\nG2 X30 Z-3 R5 F0.1\nM30\n", 1, "b.nc:4:1", &["plane not simulated"]),
+        (
+            "haas",
+            "G21 G17\nM3 S500\nG0 X20 Z2\nG2 X30 Z-3 R5 F0.1\nM30\n",
+            1,
+            "b.nc:4:1",
+            &["plane not simulated"],
+        ),
         // a C-axis word
-        ("fanuc-a", "M3 S500\nG0 X20 Z2\nG1 Z-5 C90. F0.1\nM30\n", 1, "b.nc:3:8", &["C90 is not simulated", "C axis"]),
+        (
+            "fanuc-a",
+            "M3 S500\nG0 X20 Z2\nG1 Z-5 C90. F0.1\nM30\n",
+            1,
+            "b.nc:3:8",
+            &["C90 is not simulated", "C axis"],
+        ),
         // M98 and M30 in one block
-        ("fanuc-a", "M3 S500\nG0 X20 Z2\nM98 P1 M30\n", 1, "b.nc:3:8", &["M30 cannot share a block with M98"]),
+        (
+            "fanuc-a",
+            "M3 S500\nG0 X20 Z2\nM98 P1 M30\n",
+            1,
+            "b.nc:3:8",
+            &["M30 cannot share a block with M98"],
+        ),
         // Haas R taper
-        ("haas", "G21\nM3 S500\nG0 X52 Z2\nG90 X46 Z-20 R-1 F0.2\nM30\n", 1, "b.nc:4:14", &["R is not a Haas taper word"]),
+        (
+            "haas",
+            "G21\nM3 S500\nG0 X52 Z2\nG90 X46 Z-20 R-1 F0.2\nM30\n",
+            1,
+            "b.nc:4:14",
+            &["R is not a Haas taper word"],
+        ),
     ];
     for &(control, text, code, place, says) in cases {
         let t = Instant::now();
         let (got, _, stderr) = run_json("b.nc", text.as_bytes(), control, "50x60");
-        assert!(t.elapsed() < Duration::from_secs(1), "{text}: {:?}", t.elapsed());
+        assert!(
+            t.elapsed() < Duration::from_secs(1),
+            "{text}: {:?}",
+            t.elapsed()
+        );
         assert_eq!(got, code, "{text}: {stderr}");
         assert!(stderr.contains(place), "{text}: {stderr}");
         for s in says {

@@ -55,7 +55,10 @@ fn system_a(t: i32) -> Result<i32, Foreign> {
         780 => other("the threading cycle (system A G92)", "fanuc-b"),
         790 => other("the facing cycle (system A G94)", "fanuc-b"),
         330 => other("thread cutting (system A G32)", "fanuc-b"),
-        921 => other("the workpiece coordinate preset (system A G50.3)", "fanuc-b"),
+        921 => other(
+            "the workpiece coordinate preset (system A G50.3)",
+            "fanuc-b",
+        ),
         240 => other("the facing cycle (system A G94)", "fanuc-c"),
         t => Ok(t),
     }
@@ -75,7 +78,12 @@ fn system_b(t: i32) -> Result<i32, Foreign> {
         950 => Ok(G99),
         980 => Ok(DRILL_RETURN_INITIAL),
         990 => Ok(DRILL_RETURN_R),
-        320 => Err(foreign(t, 'B', "thread cutting in system A; system B writes G33", "fanuc-a")),
+        320 => Err(foreign(
+            t,
+            'B',
+            "thread cutting in system A; system B writes G33",
+            "fanuc-a",
+        )),
         500 | 503 => Err(foreign(
             t,
             'B',
@@ -151,19 +159,30 @@ mod tests {
             (Control::Haas, 900, G90),
             (Control::Gsk980, 920, G92),
         ] {
-            assert_eq!(canonical(control, written), Ok(meant), "{control:?} {written}");
+            assert_eq!(
+                canonical(control, written),
+                Ok(meant),
+                "{control:?} {written}"
+            );
         }
     }
 
     #[test]
     fn a_code_of_another_system_names_the_control_to_try() {
         let f = canonical(Control::FanucA, 950).unwrap_err();
-        assert!(f.message.starts_with("G95 is not a system A code"), "{}", f.message);
+        assert!(
+            f.message.starts_with("G95 is not a system A code"),
+            "{}",
+            f.message
+        );
         assert!(f.help.contains("--control fanuc-b"), "{}", f.help);
         let f = canonical(Control::FanucB, 320).unwrap_err();
         assert!(f.help.contains("fanuc-a"), "{}", f.help);
         let f = canonical(Control::FanucC, 790).unwrap_err();
         assert!(f.message.contains("system C"), "{}", f.message);
-        assert!(canonical(Control::FanucC, 320).unwrap_err().message.contains("system C code"));
+        assert!(canonical(Control::FanucC, 320)
+            .unwrap_err()
+            .message
+            .contains("system C code"));
     }
 }

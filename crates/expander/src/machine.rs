@@ -238,7 +238,7 @@ impl Default for Machine {
 }
 
 impl Machine {
-    /// The built-in profile of a control: its power-on modes; the rest as the GSK980TDi.
+    /// The built-in profile of a control: its power-on modes; the rest as the `GSK980TDi`.
     pub fn for_control(control: Control) -> Self {
         Self {
             control,
@@ -405,20 +405,36 @@ impl Machine {
         for code in file.accept_m.unwrap_or_default() {
             let c = *code.get_ref();
             if c > 999 {
-                return Err(bad(code.span(), format!("accept_m: M{c} is not an M code (0 … 999)")));
+                return Err(bad(
+                    code.span(),
+                    format!("accept_m: M{c} is not an M code (0 … 999)"),
+                ));
             }
             m.accept_m.push(c);
         }
         for (key, name) in file.m_names.unwrap_or_default() {
-            let Some(c) = key.trim_start_matches(['M', 'm']).parse::<u32>().ok().filter(|&c| c <= 999) else {
-                return Err(bad(name.span(), format!("m_names: \"{key}\" is not an M code number (e.g. 68)")));
+            let Some(c) = key
+                .trim_start_matches(['M', 'm'])
+                .parse::<u32>()
+                .ok()
+                .filter(|&c| c <= 999)
+            else {
+                return Err(bad(
+                    name.span(),
+                    format!("m_names: \"{key}\" is not an M code number (e.g. 68)"),
+                ));
             };
             m.m_names.insert(c, name.into_inner());
         }
         for (key, v) in file.work_offsets.unwrap_or_default() {
             let name = key.get_ref().to_ascii_lowercase();
-            let fixed = ["g54", "g55", "g56", "g57", "g58", "g59"].iter().position(|&g| g == name);
-            let extra = name.strip_prefix('p').and_then(|n| n.parse::<u32>().ok()).filter(|n| (1..=300).contains(n));
+            let fixed = ["g54", "g55", "g56", "g57", "g58", "g59"]
+                .iter()
+                .position(|&g| g == name);
+            let extra = name
+                .strip_prefix('p')
+                .and_then(|n| n.parse::<u32>().ok())
+                .filter(|n| (1..=300).contains(n));
             match (fixed, extra) {
                 (Some(i), _) => m.work_offsets[i] = pt(&name, v)?,
                 (None, Some(n)) => {

@@ -80,10 +80,22 @@ mod tests {
 
     #[test]
     fn the_dialect_decides_what_a_builder_code_means() {
-        assert_eq!(machine_function(Control::Haas, 33).unwrap().0, "chip conveyor forward / stop");
-        assert_eq!(machine_function(Control::Gsk980, 33).unwrap().0, "lubrication on / off");
-        assert_eq!(machine_function(Control::Haas, 11).unwrap().1, Effect::ChuckOpens);
-        assert_eq!(machine_function(Control::FanucB, 23).unwrap().1, Effect::ThreadChamfer(true));
+        assert_eq!(
+            machine_function(Control::Haas, 33).unwrap().0,
+            "chip conveyor forward / stop"
+        );
+        assert_eq!(
+            machine_function(Control::Gsk980, 33).unwrap().0,
+            "lubrication on / off"
+        );
+        assert_eq!(
+            machine_function(Control::Haas, 11).unwrap().1,
+            Effect::ChuckOpens
+        );
+        assert_eq!(
+            machine_function(Control::FanucB, 23).unwrap().1,
+            Effect::ThreadChamfer(true)
+        );
         assert!(machine_function(Control::FanucA, 33).is_none());
     }
 }

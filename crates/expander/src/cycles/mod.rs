@@ -180,7 +180,10 @@ impl Cycle<'_, '_> {
                 r.span,
                 "LS-DIALECT",
                 format!("R is not a Haas taper word: {} takes {word}", name(code)),
-                format!("write {word}{} (Haas: I is the radius taper of G90/G92, K the Z taper of G94)", r.value),
+                format!(
+                    "write {word}{} (Haas: I is the radius taper of G90/G92, K the Z taper of G94)",
+                    r.value
+                ),
             ));
         }
         Ok(self.words.mm(word, self.unit))

@@ -27,7 +27,11 @@ impl Interp<'_> {
                 words: used,
                 start: self.pos,
                 // G91 (system B/C): the end points are incremental from the start point.
-                shift: if self.incremental { self.pos } else { self.shift },
+                shift: if self.incremental {
+                    self.pos
+                } else {
+                    self.shift
+                },
                 unit: self.unit(),
                 machine: self.machine,
                 retained: &mut self.retained,

@@ -12,9 +12,13 @@ use gcode::Block;
 /// Why an axis word cannot be simulated.
 fn axis_reason(letter: char) -> Option<&'static str> {
     Some(match letter {
-        'C' => "the C axis (spindle angle) turns the part for milling; a turned section has no angle",
+        'C' => {
+            "the C axis (spindle angle) turns the part for milling; a turned section has no angle"
+        }
         'H' => "H is the incremental C axis (spindle angle); a turned section has no angle",
-        'Y' => "the Y axis moves off the spindle centre line; not representable in a turned section",
+        'Y' => {
+            "the Y axis moves off the spindle centre line; not representable in a turned section"
+        }
         'B' => "the B axis (sub-spindle or tool tilt) is outside a single 2D section",
         'V' => "V is the incremental Y axis; not representable in a turned section",
         _ => return None,
@@ -38,9 +42,12 @@ impl Interp<'_> {
         }
         // G17 / G19: accepted until an arc or a cycle needs the plane (dialects.md §6.1).
         if let Some((plane, set)) = self.plane {
-            let arc = matches!(motion, MotionMode::Cw | MotionMode::Ccw) && axis && g.one_shot.is_none();
+            let arc =
+                matches!(motion, MotionMode::Cw | MotionMode::Ccw) && axis && g.one_shot.is_none();
             let cycle = g.one_shot.is_some_and(|(t, _)| crate::cycles::is_cycle(t))
-                || (matches!(motion, MotionMode::Cycle(_)) && (axis || b.has('R')) && g.one_shot.is_none());
+                || (matches!(motion, MotionMode::Cycle(_))
+                    && (axis || b.has('R'))
+                    && g.one_shot.is_none());
             if arc || cycle {
                 return Err(alarm(
                     b.span,
@@ -99,7 +106,12 @@ impl Interp<'_> {
 
     /// C, H, Y, B and V words: a clear alarm at the word, except `C0`/`H0` on a positioning
     /// block (spindle orientation), which is ignored with a warning.
-    fn axis_words(&mut self, b: &Block, motion: MotionMode, used: &mut Words) -> Result<(), Diagnostic> {
+    fn axis_words(
+        &mut self,
+        b: &Block,
+        motion: MotionMode,
+        used: &mut Words,
+    ) -> Result<(), Diagnostic> {
         for (i, w) in b.words.iter().enumerate() {
             let Some(reason) = axis_reason(w.letter) else {
                 continue;
@@ -109,7 +121,10 @@ impl Interp<'_> {
                 self.warn(
                     w.span,
                     "W-C0",
-                    format!("{}0 on a positioning block ignored (spindle orientation)", w.letter),
+                    format!(
+                        "{}0 on a positioning block ignored (spindle orientation)",
+                        w.letter
+                    ),
                     "a turned section has no spindle angle",
                 );
                 continue;

@@ -179,7 +179,11 @@ impl Interp<'_> {
                 format!(
                     "G10 L{} P must be {}",
                     l.value,
-                    if extra { "1 … 300" } else { "0 (external shift) or 1 … 6 (G54 … G59)" }
+                    if extra {
+                        "1 … 300"
+                    } else {
+                        "0 (external shift) or 1 … 6 (G54 … G59)"
+                    }
                 ),
                 "write e.g. G10 L2 P1 X0 Z-350.",
             ));
@@ -198,7 +202,10 @@ impl Interp<'_> {
             // The external shift is a shift, not a position.
             Pt::new(z.unwrap_or(old.z), x.unwrap_or(old.r))
         } else {
-            Pt::new(z.map_or(old.z, |z| zero.z + z), x.map_or(old.r, |x| zero.r + x))
+            Pt::new(
+                z.map_or(old.z, |z| zero.z + z),
+                x.map_or(old.r, |x| zero.r + x),
+            )
         };
         match (extra, n) {
             (true, n) => {

@@ -17,7 +17,7 @@ impl Interp<'_> {
             (Some(v), Some(p)) if v == 2.0 || v == 20.0 => {
                 self.set_work_offset(l.unwrap_or(g), p, used)
             }
-            (Some(v), _) if v == 50.0 => {
+            (Some(50.0), _) => {
                 self.param_mode = true;
                 self.warn(
                     g.span,
@@ -69,7 +69,10 @@ impl Interp<'_> {
         let r = used.take('R').map(|w| w.value * u);
         let c = used.take('C').map(|w| w.value * u);
         let q = used.take('Q');
-        let lengths: Vec<&Word> = ['X', 'Z', 'U', 'W'].iter().filter_map(|&l| used.take(l)).collect();
+        let lengths: Vec<&Word> = ['X', 'Z', 'U', 'W']
+            .iter()
+            .filter_map(|&l| used.take(l))
+            .collect();
         if let Some(q) = q {
             if q.has_point || !(0.0..=9.0).contains(&q.value) {
                 return Err(alarm(

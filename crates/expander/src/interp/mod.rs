@@ -303,7 +303,9 @@ impl<'m> Interp<'m> {
             });
         let suspends = matches!(g.one_shot, Some((G28 | G50 | G50_3 | G52 | G53 | G27, _)))
             || g.one_shot.is_some_and(|(t, _)| cycles::is_cycle(t))
-            || self.has_g(b, |t| codes::work_offset(t).is_some() || t == G54_1 || t == G154)
+            || self.has_g(b, |t| {
+                codes::work_offset(t).is_some() || t == G54_1 || t == G154
+            })
             || (modal_cycle && ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)));
         if suspends {
             // Suspended by G28, G50, G54–G59 and the cycles; resumed at the next move.

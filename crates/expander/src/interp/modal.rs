@@ -375,7 +375,9 @@ impl Interp<'_> {
             Some(Effect::ThreadChamfer(on)) => self.thread_chamfer = on,
             Some(Effect::None) | None => {}
         }
-        let accepted = known.is_some() || self.machine.accept_m.contains(&m) || self.machine.m_names.contains_key(&m);
+        let accepted = known.is_some()
+            || self.machine.accept_m.contains(&m)
+            || self.machine.m_names.contains_key(&m);
         if !accepted && !self.m_warned.contains(&m) {
             self.m_warned.push(m);
             self.warn(
