@@ -63,6 +63,14 @@ impl Interp<'_> {
         let x_given = b.has('X') || b.has('U');
         let z_given = b.has('Z') || b.has('W');
         let bare = !x_given && !z_given;
+        if bare {
+            self.note_once(
+                b.span,
+                "W-G28-BARE",
+                "G28 without axes: both axes return to the reference point straight from here",
+                "write G28 U0 W0 for the same move in the usual form",
+            );
+        }
         let mid = self.target(used)?.unwrap_or(self.pos);
         self.rapid(b, mid)?;
         let home = self.machine.home;

@@ -154,6 +154,14 @@ impl Interp<'_> {
             ));
         }
         let zero = self.machine.machine_zero;
+        if zero == self.machine.home {
+            self.note_once(
+                g.span,
+                "W-MACHINE-ZERO",
+                "G53: machine zero is taken as the reference point (home)",
+                "give machine_zero = [z, x] in the --machine profile if this lathe's machine zero is elsewhere",
+            );
+        }
         let to = Pt::new(
             z.map_or(self.pos.z, |w| zero.z + w.value * u),
             x.map_or(self.pos.r, |w| zero.r + w.value * u / 2.0),

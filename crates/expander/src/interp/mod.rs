@@ -165,6 +165,8 @@ pub(crate) struct Interp<'m> {
     chuck_warned: bool,
     /// M codes the control's table does not know, already warned about.
     m_warned: Vec<u32>,
+    /// Interpretations already shown once (by warning code).
+    noted: Vec<&'static str>,
     /// The work system in force, its origin (with the G10 external shift), G54–G59 and the
     /// additional offsets as G10 leaves them, the G10 external shift and the G52 shift.
     work: frame::Work,
@@ -218,6 +220,7 @@ impl<'m> Interp<'m> {
             chuck_open: false,
             chuck_warned: false,
             m_warned: vec![],
+            noted: vec![],
             work: frame::Work::Fixed(0),
             origin: Pt::default(),
             offsets: machine.work_offsets,
@@ -237,6 +240,20 @@ impl<'m> Interp<'m> {
         self.out
             .warnings
             .push(Diagnostic::new(span, code, message, help));
+    }
+
+    /// A warning shown once per run: an Interpretation that affects the run.
+    pub(crate) fn note_once(
+        &mut self,
+        span: Span,
+        code: &'static str,
+        message: impl Into<String>,
+        help: impl Into<String>,
+    ) {
+        if !self.noted.contains(&code) {
+            self.noted.push(code);
+            self.warn(span, code, message, help);
+        }
     }
 
     fn unit(&self) -> f64 {
