@@ -39,6 +39,23 @@ pub(crate) fn canonical(control: Control, tenths: i32) -> Result<i32, Foreign> {
     }
 }
 
+/// How the control writes the canonical code `canonical`, when it writes it differently
+/// (system B `G77` for G90): cycle alarms are worded in the program's own codes.
+pub(crate) fn written(control: Control, canonical: i32) -> Option<i32> {
+    let w = match (control.system(), canonical) {
+        (GCodeSystem::B, G90) => 770,
+        (GCodeSystem::B, G92) => 780,
+        (GCodeSystem::B, G94) => 790,
+        (GCodeSystem::C, G90) => 200,
+        (GCodeSystem::C, G92) => 210,
+        (GCodeSystem::C, G94) => 240,
+        (GCodeSystem::C, G70..=G76) if canonical % 10 == 0 => canonical + 20,
+        (GCodeSystem::B | GCodeSystem::C, G32) => 330,
+        _ => return None,
+    };
+    Some(w)
+}
+
 fn system_a(t: i32) -> Result<i32, Foreign> {
     let other = |what: &str, control: &str| {
         Err(foreign(
@@ -184,5 +201,16 @@ mod tests {
             .unwrap_err()
             .message
             .contains("system C code"));
+    }
+
+    #[test]
+    fn written_inverts_canonical() {
+        for control in Control::ALL {
+            for canon in [G32, G70, G71, G72, G73, G74, G75, G76, G90, G92, G94] {
+                if let Some(w) = written(control, canon) {
+                    assert_eq!(canonical(control, w), Ok(canon), "{control:?} {w}");
+                }
+            }
+        }
     }
 }

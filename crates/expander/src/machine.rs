@@ -16,6 +16,7 @@
 //! machine_zero = [150.0, 250.0] # machine zero (G53 X0 Z0) [z, x] in G54 coordinates;
 //!                           # default: the reference point `home`
 //! uw_incremental = true     # system B/C: U/W outside cycles are incremental axes (false: error)
+//! power_on_incremental = false # system B/C: G91 at power-on (parameter 3402 bit 3)
 //! accept_m = [50, 51]       # M codes this machine knows beyond its control's table
 //! m_names = { 68 = "chuck clamp" } # names for them in the report
 //! [work_offsets]            # G55..G59 origins relative to G54, [z, x];
@@ -223,6 +224,8 @@ pub struct Machine {
     /// System B/C: U and W outside cycles are incremental axes (`true`, with one warning per
     /// program: it depends on the builder, dialects.md §2.2) or an error (`false`).
     pub uw_incremental: bool,
+    /// System B/C: G91 (incremental) at power-on instead of G90 (parameter 3402 bit 3).
+    pub power_on_incremental: bool,
     /// Additional work offsets G54.1 P<n> / Haas G154 P<n>, origins in the G54 frame (z, r).
     pub extra_offsets: std::collections::BTreeMap<u32, Pt>,
     /// M codes this machine knows beyond its control's table (profile `accept_m`).
@@ -256,6 +259,7 @@ impl Machine {
             rapid_cut_tol: 0.1,
             machine_zero: Pt::new(150.0, 125.0),
             uw_incremental: true,
+            power_on_incremental: false,
             extra_offsets: Default::default(),
             accept_m: vec![],
             m_names: Default::default(),
@@ -282,6 +286,7 @@ struct File {
     rapid_cut_tol: Option<Spanned<f64>>,
     machine_zero: Option<Spanned<[f64; 2]>>,
     uw_incremental: Option<bool>,
+    power_on_incremental: Option<bool>,
     accept_m: Option<Vec<Spanned<u32>>>,
     m_names: Option<std::collections::BTreeMap<String, Spanned<String>>>,
     work_offsets: Option<std::collections::BTreeMap<Spanned<String>, Spanned<[f64; 2]>>>,
@@ -401,6 +406,9 @@ impl Machine {
         }
         if let Some(v) = file.uw_incremental {
             m.uw_incremental = v;
+        }
+        if let Some(v) = file.power_on_incremental {
+            m.power_on_incremental = v;
         }
         for code in file.accept_m.unwrap_or_default() {
             let c = *code.get_ref();

@@ -363,3 +363,14 @@ fn haas_units_and_short_t() {
         "GSK: offset 01 of tool 00"
     );
 }
+
+#[test]
+fn cycle_alarms_speak_the_program_s_codes_and_g91_can_be_the_power_on_mode() {
+    // R +8 against an X travel of -5 (radius): the G90 taper alarm, worded as G77.
+    let tp = run_on(Control::FanucB, "G0 X40 Z2\nG77 X30 Z-10 R8 F0.2\n");
+    let a = the_alarm(&tp);
+    assert!(a.message.starts_with("G77 taper"), "{}", a.message);
+    let m = Machine::from_toml("control = \"fanuc-b\"\npower_on_incremental = true").unwrap();
+    let tp = run_with(&m, "G0 X-10 Z-5\nG90 G0 X40 Z2\nM30\n");
+    assert_eq!(ends(&tp), [(145.0, 240.0), (2.0, 40.0)]);
+}

@@ -211,7 +211,8 @@ impl<'m> Interp<'m> {
             section: None,
             comp_warned: vec![],
             noses: opts.noses.clone(),
-            incremental: false,
+            incremental: machine.power_on_incremental
+                && machine.control.system() != crate::GCodeSystem::A,
             uw_warned: false,
             drill_return_r: false,
             thread_chamfer: false,
@@ -240,6 +241,17 @@ impl<'m> Interp<'m> {
         self.out
             .warnings
             .push(Diagnostic::new(span, code, message, help));
+    }
+
+    /// A cycle's alarm in the program's own codes: the cycles name themselves by their
+    /// system-A code (`G90`), a system-B program wrote `G77`.
+    fn in_written_terms(&self, mut e: Diagnostic, canonical: i32) -> Diagnostic {
+        if let Some(w) = crate::dialect::written(self.machine.control, canonical) {
+            e.message = e
+                .message
+                .replacen(&codes::g_name(canonical), &codes::g_name(w), 1);
+        }
+        e
     }
 
     /// A warning shown once per run: an Interpretation that affects the run.
@@ -338,7 +350,11 @@ impl<'m> Interp<'m> {
             Some((G53, w)) => self.g53(b, &mut used, w)?,
             Some((G27, w)) => self.g27(b, &mut used, w)?,
             Some((G10, w)) => self.g10(&mut used, w)?,
-            Some((t, w)) => flow = self.cycle(t, Some(w), sub, index, &mut used)?,
+            Some((t, w)) => {
+                flow = self
+                    .cycle(t, Some(w), sub, index, &mut used)
+                    .map_err(|e| self.in_written_terms(e, t))?
+            }
             None => {
                 if let Some((m, _)) = g.motion {
                     self.motion = m;
@@ -346,7 +362,9 @@ impl<'m> Interp<'m> {
                 if let MotionMode::Cycle(t) = self.motion {
                     if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
                         let w = g.motion.map(|(_, w)| w);
-                        flow = self.cycle(t, w, sub, index, &mut used)?;
+                        flow = self
+                            .cycle(t, w, sub, index, &mut used)
+                            .map_err(|e| self.in_written_terms(e, t))?;
                     }
                 } else {
                     self.start_compensation(b)?;
