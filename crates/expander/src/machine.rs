@@ -17,6 +17,8 @@
 //!                           # default: the reference point `home`
 //! uw_incremental = true     # system B/C: U/W outside cycles are incremental axes (false: error)
 //! power_on_incremental = false # system B/C: G91 at power-on (parameter 3402 bit 3)
+//! short_t = "offset"        # a one- or two-digit T: "offset" (T1 = T0001; gsk980 default) or
+//!                           # "tool" (T1 = T0101; FANUC and Haas default)
 //! accept_m = [50, 51]       # M codes this machine knows beyond its control's table
 //! m_names = { 68 = "chuck clamp" } # names for them in the report
 //! [work_offsets]            # G55..G59 origins relative to G54, [z, x];
@@ -113,6 +115,16 @@ impl Control {
             _ => FeedMode::G99,
         }
     }
+}
+
+/// How a one- or two-digit T word is read (spec/dialects.md §3.7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ShortT {
+    /// `T1` is offset 01 of tool 00 (`T0001`).
+    Offset,
+    /// `T1` is tool 1 with offset 1 (`T0101`).
+    Tool,
 }
 
 /// Input units at power-on (before any G20/G21).
@@ -226,6 +238,8 @@ pub struct Machine {
     pub uw_incremental: bool,
     /// System B/C: G91 (incremental) at power-on instead of G90 (parameter 3402 bit 3).
     pub power_on_incremental: bool,
+    /// How a one- or two-digit T word is read.
+    pub short_t: ShortT,
     /// Additional work offsets G54.1 P<n> / Haas G154 P<n>, origins in the G54 frame (z, r).
     pub extra_offsets: std::collections::BTreeMap<u32, Pt>,
     /// M codes this machine knows beyond its control's table (profile `accept_m`).
@@ -260,6 +274,11 @@ impl Machine {
             machine_zero: Pt::new(150.0, 125.0),
             uw_incremental: true,
             power_on_incremental: false,
+            short_t: if control == Control::Gsk980 {
+                ShortT::Offset
+            } else {
+                ShortT::Tool
+            },
             extra_offsets: Default::default(),
             accept_m: vec![],
             m_names: Default::default(),
@@ -287,6 +306,7 @@ struct File {
     machine_zero: Option<Spanned<[f64; 2]>>,
     uw_incremental: Option<bool>,
     power_on_incremental: Option<bool>,
+    short_t: Option<ShortT>,
     accept_m: Option<Vec<Spanned<u32>>>,
     m_names: Option<std::collections::BTreeMap<String, Spanned<String>>>,
     work_offsets: Option<std::collections::BTreeMap<Spanned<String>, Spanned<[f64; 2]>>>,
@@ -409,6 +429,9 @@ impl Machine {
         }
         if let Some(v) = file.power_on_incremental {
             m.power_on_incremental = v;
+        }
+        if let Some(v) = file.short_t {
+            m.short_t = v;
         }
         for code in file.accept_m.unwrap_or_default() {
             let c = *code.get_ref();

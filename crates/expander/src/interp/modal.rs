@@ -246,15 +246,15 @@ impl Interp<'_> {
     }
 
     /// Tool and offset of `T<v>`: `Tttoo`. A one- or two-digit T is ambiguous across
-    /// controls (spec/dialects.md §3.7). **Interpretation:** on the seeds' GSK it is offset
-    /// `oo` of tool 00 (`T1` = `T0001`, as before); on FANUC and Haas (`short_t = "tool"`,
-    /// the spec's default) it is tool `v` with offset `v` (`T1` = `T0101`). Warned either way.
+    /// controls (spec/dialects.md §3.7), so the profile's `short_t` decides. **Interpretation**
+    /// of the defaults: on the seeds' GSK `"offset"` (`T1` = `T0001`, as before); on FANUC
+    /// and Haas the spec's `"tool"` (`T1` = `T0101`). Warned either way.
     fn tool_and_offset(&mut self, v: u32, t: &Word) -> (u32, u32) {
         let (tool, offset) = (v / 100, v % 100);
         if tool != 0 || offset == 0 {
             return (tool, offset);
         }
-        if self.machine.control == crate::Control::Gsk980 {
+        if self.machine.short_t == crate::ShortT::Offset {
             self.warn(
                 t.span,
                 "LS-T-WORD",
