@@ -8,25 +8,56 @@
 
 use super::{alarm, Interp};
 use crate::words::{whole_in, Words};
-use crate::{Diagnostic, Pt};
+use crate::{Diagnostic, Machine, Pt};
 use gcode::{Block, Word};
+use std::collections::BTreeMap;
+
+/// The work frames as the program leaves them.
+pub(crate) struct Frames {
+    /// The work system in force.
+    work: Work,
+    /// Its origin in the G54 frame, with the external shift.
+    origin: Pt,
+    /// G54–G59 origins, as the profile gives them and G10 L2 changes them.
+    offsets: [Pt; 6],
+    /// G54.1 P / G154 P origins, from the profile and G10 L20.
+    extra: BTreeMap<u32, Pt>,
+    /// The external work shift (G10 P0 / L2 P0).
+    ext_shift: Pt,
+    /// The G52 local shift.
+    local: Pt,
+}
+
+impl Frames {
+    /// The profile's offsets, G54 in force.
+    pub(crate) fn new(machine: &Machine) -> Self {
+        Self {
+            work: Work::Fixed(0),
+            origin: Pt::default(),
+            offsets: machine.work_offsets,
+            extra: machine.extra_offsets.clone(),
+            ext_shift: Pt::default(),
+            local: Pt::default(),
+        }
+    }
+}
 
 impl Interp<'_> {
     /// G54–G59: the work system `i` (0 = G54), with the G52 local shift kept.
     pub(super) fn select_work_offset(&mut self, i: usize) {
-        self.work = Work::Fixed(i);
-        self.origin = self.offsets[i] + self.ext_shift;
-        self.shift = self.origin + self.local;
+        self.frames.work = Work::Fixed(i);
+        self.frames.origin = self.frames.offsets[i] + self.frames.ext_shift;
+        self.shift = self.frames.origin + self.frames.local;
     }
 
     /// The work system in force again after its offset changed (G10).
     fn reselect_work(&mut self) {
-        let o = match self.work {
-            Work::Fixed(i) => self.offsets[i],
-            Work::Extra(n) => self.extra.get(&n).copied().unwrap_or_default(),
+        let o = match self.frames.work {
+            Work::Fixed(i) => self.frames.offsets[i],
+            Work::Extra(n) => self.frames.extra.get(&n).copied().unwrap_or_default(),
         };
-        self.origin = o + self.ext_shift;
-        self.shift = self.origin + self.local;
+        self.frames.origin = o + self.frames.ext_shift;
+        self.shift = self.frames.origin + self.frames.local;
     }
 
     /// `G54.1 P<n>` (FANUC), `G154 P<n>` (Haas), `G54 P<n>`: an additional work offset
@@ -53,7 +84,7 @@ impl Interp<'_> {
             ));
         }
         let n = p.value as u32;
-        let Some(&o) = self.extra.get(&n) else {
+        let Some(&o) = self.frames.extra.get(&n) else {
             return Err(alarm(
                 p.span,
                 "LS-WORK-OFFSET",
@@ -61,9 +92,9 @@ impl Interp<'_> {
                 format!("add p{n} = [z, x] under [work_offsets] in the --machine profile, or set it with G10 L20 P{n}"),
             ));
         };
-        self.work = Work::Extra(n);
-        self.origin = o + self.ext_shift;
-        self.shift = self.origin + self.local;
+        self.frames.work = Work::Extra(n);
+        self.frames.origin = o + self.frames.ext_shift;
+        self.shift = self.frames.origin + self.frames.local;
         Ok(())
     }
 
@@ -81,15 +112,18 @@ impl Interp<'_> {
                 "write G52 X… Z… for the local shift, G52 X0 Z0 to cancel it",
             ));
         }
-        self.local = Pt::new(z.unwrap_or(self.local.z), x.unwrap_or(self.local.r));
-        self.shift = self.origin + self.local;
+        self.frames.local = Pt::new(
+            z.unwrap_or(self.frames.local.z),
+            x.unwrap_or(self.frames.local.r),
+        );
+        self.shift = self.frames.origin + self.frames.local;
         self.warn(
             b.span,
             "W-G52",
             format!(
                 "G52 local shift ΔX {:.3} ΔZ {:.3} (diameter, mm): later words are read in the shifted frame; the section stays in the first frame",
-                2.0 * self.local.r,
-                self.local.z
+                2.0 * self.frames.local.r,
+                self.frames.local.z
             ),
             "on a Haas the meaning of G52 depends on Setting 33; latsim applies it like a work offset shift",
         );
@@ -121,12 +155,12 @@ impl Interp<'_> {
                 ));
             }
         }
-        self.local = Pt::default();
+        self.frames.local = Pt::default();
         if x.is_some() {
-            self.shift.r = self.origin.r;
+            self.shift.r = self.frames.origin.r;
         }
         if z.is_some() {
-            self.shift.z = self.origin.z;
+            self.shift.z = self.frames.origin.z;
         }
         Ok(())
     }
@@ -202,9 +236,9 @@ impl Interp<'_> {
         let z = used.take('Z').map(|w| w.value * u);
         let zero = self.machine.machine_zero;
         let old = match (extra, n) {
-            (true, n) => self.extra.get(&n).copied().unwrap_or(zero),
-            (false, 0) => self.ext_shift,
-            (false, n) => self.offsets[n as usize - 1],
+            (true, n) => self.frames.extra.get(&n).copied().unwrap_or(zero),
+            (false, 0) => self.frames.ext_shift,
+            (false, n) => self.frames.offsets[n as usize - 1],
         };
         let new = if !extra && n == 0 {
             // The external shift is a shift, not a position.
@@ -217,10 +251,10 @@ impl Interp<'_> {
         };
         match (extra, n) {
             (true, n) => {
-                self.extra.insert(n, new);
+                self.frames.extra.insert(n, new);
             }
-            (false, 0) => self.ext_shift = new,
-            (false, n) => self.offsets[n as usize - 1] = new,
+            (false, 0) => self.frames.ext_shift = new,
+            (false, n) => self.frames.offsets[n as usize - 1] = new,
         }
         let name = match (extra, n) {
             (true, n) => format!("additional work offset P{n}"),
@@ -237,7 +271,7 @@ impl Interp<'_> {
             ),
             "the section stays in the profile's G54 frame; work offsets are machine coordinates from the profile's machine_zero",
         );
-        let active = match self.work {
+        let active = match self.frames.work {
             Work::Fixed(i) => !extra && (n == 0 || n as usize == i + 1),
             Work::Extra(m) => (extra && m == n) || (!extra && n == 0),
         };
@@ -248,9 +282,9 @@ impl Interp<'_> {
     }
 }
 
-/// The work system in force.
+/// A work system.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Work {
+enum Work {
     /// G54 … G59 (0 … 5).
     Fixed(usize),
     /// G54.1 P<n> / G154 P<n>.

@@ -167,14 +167,8 @@ pub(crate) struct Interp<'m> {
     m_warned: Vec<u32>,
     /// Interpretations already shown once (by warning code).
     noted: Vec<&'static str>,
-    /// The work system in force, its origin (with the G10 external shift), G54–G59 and the
-    /// additional offsets as G10 leaves them, the G10 external shift and the G52 shift.
-    work: frame::Work,
-    origin: Pt,
-    offsets: [Pt; 6],
-    extra: BTreeMap<u32, Pt>,
-    ext_shift: Pt,
-    local: Pt,
+    /// Work offsets and shifts (G54–G59, G54.1/G154, G10, G52).
+    frames: frame::Frames,
 }
 
 /// A controller alarm.
@@ -222,12 +216,7 @@ impl<'m> Interp<'m> {
             chuck_warned: false,
             m_warned: vec![],
             noted: vec![],
-            work: frame::Work::Fixed(0),
-            origin: Pt::default(),
-            offsets: machine.work_offsets,
-            extra: machine.extra_offsets.clone(),
-            ext_shift: Pt::default(),
-            local: Pt::default(),
+            frames: frame::Frames::new(machine),
         }
     }
 
