@@ -95,9 +95,21 @@ impl Interp<'_> {
         self.rapid(b, to)
     }
 
-    /// G50: the current position gets the given work coordinates; G50 S is handled with S.
+    /// G50 (B/C: G92): the current position gets the given work coordinates; G50 S is
+    /// handled with S. On a Haas the meaning of `G50 X Z` depends on Setting 33; latsim
+    /// reads it as FANUC does (dialects.md §3.6), warned once.
     pub(super) fn g50(&mut self, used: &mut Words) -> Result<(), Diagnostic> {
         let u = self.unit();
+        if self.machine.control == crate::Control::Haas
+            && ['X', 'Z', 'U', 'W'].iter().any(|&l| used.has(l))
+        {
+            self.note_once(
+                used.span(),
+                "W-HAAS-G50",
+                "G50 X/Z read as a FANUC coordinate setting: on a Haas its meaning depends on Setting 33",
+                "check Setting 33 (FANUC / YASNAC / HAAS coordinate style) on the machine",
+            );
+        }
         if let Some(x) = used.take('X') {
             self.shift.r = self.pos.r - x.value * u / 2.0;
         }
