@@ -51,7 +51,20 @@ fn unknown_g_code_is_an_alarm_at_its_word() {
 
 #[test]
 fn unknown_m_code() {
-    case("m.nc", b"G0 X50 Z5 M47\n", 1, &["m.nc:1:11", "M47"]);
+    // An M code the control's table does not know is a machine function: accepted, with a
+    // warning at its word (spec/dialects.md §6.6, issue 11); M98 with M30 is an error.
+    case(
+        "m.nc",
+        b"G0 X50 Z5 M47\n",
+        0,
+        &["m.nc:1:11", "M47 is not in the gsk980 M-code table"],
+    );
+    case(
+        "m2.nc",
+        b"G0 X50 Z5\nM98 P1 M30\n",
+        1,
+        &["m2.nc:2:8", "M30 cannot share a block with M98"],
+    );
 }
 
 #[test]

@@ -79,3 +79,61 @@ pub(crate) fn g_name(t: i32) -> String {
         format!("G{}.{}", t / 10, t % 10)
     }
 }
+
+/// G10 data setting (offsets; `G10 L50` parameter input until G11).
+pub(crate) const G10: i32 = 100;
+/// G11 end of parameter input.
+pub(crate) const G11: i32 = 110;
+/// G17 XY plane (live tooling).
+pub(crate) const G17: i32 = 170;
+/// G18 ZX plane, the lathe's own.
+pub(crate) const G18: i32 = 180;
+/// G19 YZ plane (live tooling).
+pub(crate) const G19: i32 = 190;
+/// G27 reference position return check.
+pub(crate) const G27: i32 = 270;
+/// G50.3 workpiece coordinate preset (system B/C G92.1).
+pub(crate) const G50_3: i32 = 503;
+/// G52 local coordinate system.
+pub(crate) const G52: i32 = 520;
+/// G53 machine coordinates for one block.
+pub(crate) const G53: i32 = 530;
+/// G54.1 P… additional work offsets (FANUC).
+pub(crate) const G54_1: i32 = 541;
+/// G80 drilling cycle cancel.
+pub(crate) const G80: i32 = 800;
+/// G154 P… additional work offsets (Haas).
+pub(crate) const G154: i32 = 1540;
+
+/// Codes every real program carries that change nothing a 2D section shows (spec/dialects.md
+/// §6.1, §3.6): exact stop and cutting modes, look-ahead, stroke check, smoothing, the bar
+/// feeder, polar interpolation off. Accepted, no effect; `words` are the letters they take.
+pub(crate) fn no_effect(t: i32) -> Option<&'static [char]> {
+    match t {
+        // G61 exact stop, G62 corner override, G63 tapping mode, G64 cutting mode, G09 exact
+        // stop one block, G08 / G05.1 look-ahead, G22 / G23 stroke check, G13.1 / G113 polar
+        // interpolation off (a safe-start line).
+        610 | 620 | 630 | 640 | 90 | 80 | 51 | 220 | 230 | 131 | 1130 => Some(&[]),
+        // Haas G103 [P] look-ahead limit, G187 [P] [E] smoothness.
+        1030 => Some(&['P']),
+        1870 => Some(&['P', 'E']),
+        // Haas G105 servo bar feeder command: its words drive the bar, not the tool.
+        1050 => Some(&['I', 'J', 'K', 'P', 'Q', 'R']),
+        _ => None,
+    }
+}
+
+/// Codes that move something a turned section cannot show: the reason they are not
+/// simulated (spec/dialects.md §6.1, §3.6).
+pub(crate) fn not_simulated(t: i32) -> Option<&'static str> {
+    Some(match t {
+        71 | 1070 => "cylindrical interpolation mills the cylinder surface; not representable in a turned section",
+        121 | 1120 => "polar coordinate interpolation mills with the C axis; not representable in a turned section",
+        310 => "probing moves (skip function) are not simulated",
+        680 | 690 => "mirror image for double turrets / balance cutting is not simulated",
+        870 | 880 | 890 => "a radial (side) hole is not axisymmetric; not representable in a turned section",
+        2500 | 2510 | 502 | 512 => "polygon turning is not axisymmetric; not representable in a turned section",
+        140 | 150 => "sub-spindle work is outside a single 2D section",
+        _ => return None,
+    })
+}

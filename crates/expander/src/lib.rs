@@ -11,8 +11,10 @@ mod alarm;
 pub mod arc;
 mod codes;
 mod cycles;
+mod dialect;
 mod interp;
 mod machine;
+mod mcodes;
 pub mod timing;
 pub mod tnrc;
 pub mod toolpath;
@@ -23,7 +25,8 @@ pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
 pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
 pub use machine::{
-    Control, FeedMode, GCodeSystem, Increment, Machine, PqUnits, ProfileError, RapidPath, Units,
+    Control, FeedMode, GCodeSystem, Increment, Machine, PqUnits, ProfileError, RapidPath, ShortT,
+    Units,
 };
 pub use toolpath::{
     Arc, Feed, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,

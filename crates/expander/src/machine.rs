@@ -13,8 +13,16 @@
 //! home = [150.0, 250.0]     # reference point [z, x] in G54 coordinates (x = diameter)
 //! max_rpm = 4000.0          # spindle limit used for G96 when no G50 S clamp is given
 //! power_on_feed = 0.0       # F in force before the program gives one (0: none, PS011)
-//! [work_offsets]            # G55..G59 origins relative to G54, [z, x]
-//! g55 = [-50.0, 0.0]
+//! machine_zero = [150.0, 250.0] # machine zero (G53 X0 Z0) [z, x] in G54 coordinates;
+//!                           # default: the reference point `home`
+//! uw_incremental = true     # system B/C: U/W outside cycles are incremental axes (false: error)
+//! power_on_incremental = false # system B/C: G91 at power-on (parameter 3402 bit 3)
+//! short_t = "offset"        # a one- or two-digit T: "offset" (T1 = T0001; gsk980 default) or
+//!                           # "tool" (T1 = T0101; FANUC and Haas default)
+//! accept_m = [50, 51]       # M codes this machine knows beyond its control's table
+//! m_names = { 68 = "chuck clamp" } # names for them in the report
+//! [work_offsets]            # G55..G59 origins relative to G54, [z, x];
+//! g55 = [-50.0, 0.0]        # p1 … p300: G54.1 P1… / Haas G154 P1…
 //! ```
 
 use crate::Pt;
@@ -107,6 +115,16 @@ impl Control {
             _ => FeedMode::G99,
         }
     }
+}
+
+/// How a one- or two-digit T word is read (spec/dialects.md §3.7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ShortT {
+    /// `T1` is offset 01 of tool 00 (`T0001`).
+    Offset,
+    /// `T1` is tool 1 with offset 1 (`T0101`).
+    Tool,
 }
 
 /// Input units at power-on (before any G20/G21).
@@ -211,6 +229,23 @@ pub struct Machine {
     /// move) exceeds this, mm; below it is a rapid scrape, a warning (spec/simulation.md,
     /// "Rapids that cut").
     pub rapid_cut_tol: f64,
+    /// Machine zero in the G54 frame, (z, r): where `G53 X0 Z0` goes (spec/dialects.md §6.4).
+    /// **Interpretation:** the reference point `home` unless the profile says otherwise
+    /// (on FANUC and Haas lathes the reference position is usually machine zero).
+    pub machine_zero: Pt,
+    /// System B/C: U and W outside cycles are incremental axes (`true`, with one warning per
+    /// program: it depends on the builder, dialects.md §2.2) or an error (`false`).
+    pub uw_incremental: bool,
+    /// System B/C: G91 (incremental) at power-on instead of G90 (parameter 3402 bit 3).
+    pub power_on_incremental: bool,
+    /// How a one- or two-digit T word is read.
+    pub short_t: ShortT,
+    /// Additional work offsets G54.1 P<n> / Haas G154 P<n>, origins in the G54 frame (z, r).
+    pub extra_offsets: std::collections::BTreeMap<u32, Pt>,
+    /// M codes this machine knows beyond its control's table (profile `accept_m`).
+    pub accept_m: Vec<u32>,
+    /// Names of M codes for the report (profile `m_names`).
+    pub m_names: std::collections::BTreeMap<u32, String>,
 }
 
 impl Default for Machine {
@@ -220,7 +255,7 @@ impl Default for Machine {
 }
 
 impl Machine {
-    /// The built-in profile of a control: its power-on modes; the rest as the GSK980TDi.
+    /// The built-in profile of a control: its power-on modes; the rest as the `GSK980TDi`.
     pub fn for_control(control: Control) -> Self {
         Self {
             control,
@@ -236,6 +271,17 @@ impl Machine {
             work_offsets: [Pt::default(); 6],
             power_on_feed: 0.0,
             rapid_cut_tol: 0.1,
+            machine_zero: Pt::new(150.0, 125.0),
+            uw_incremental: true,
+            power_on_incremental: false,
+            short_t: if control == Control::Gsk980 {
+                ShortT::Offset
+            } else {
+                ShortT::Tool
+            },
+            extra_offsets: Default::default(),
+            accept_m: vec![],
+            m_names: Default::default(),
         }
     }
 }
@@ -257,18 +303,13 @@ struct File {
     max_rpm: Option<Spanned<f64>>,
     power_on_feed: Option<Spanned<f64>>,
     rapid_cut_tol: Option<Spanned<f64>>,
-    work_offsets: Option<Offsets>,
-}
-
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Offsets {
-    g54: Option<Spanned<[f64; 2]>>,
-    g55: Option<Spanned<[f64; 2]>>,
-    g56: Option<Spanned<[f64; 2]>>,
-    g57: Option<Spanned<[f64; 2]>>,
-    g58: Option<Spanned<[f64; 2]>>,
-    g59: Option<Spanned<[f64; 2]>>,
+    machine_zero: Option<Spanned<[f64; 2]>>,
+    uw_incremental: Option<bool>,
+    power_on_incremental: Option<bool>,
+    short_t: Option<ShortT>,
+    accept_m: Option<Vec<Spanned<u32>>>,
+    m_names: Option<std::collections::BTreeMap<String, Spanned<String>>>,
+    work_offsets: Option<std::collections::BTreeMap<Spanned<String>, Spanned<[f64; 2]>>>,
 }
 
 /// Largest coordinate a profile may give, mm: no lathe travels 10 m.
@@ -379,20 +420,62 @@ impl Machine {
         if let Some(h) = file.home {
             m.home = pt("home", h)?;
         }
-        if let Some(o) = file.work_offsets {
-            for (i, (name, v)) in [
-                ("g54", o.g54),
-                ("g55", o.g55),
-                ("g56", o.g56),
-                ("g57", o.g57),
-                ("g58", o.g58),
-                ("g59", o.g59),
-            ]
-            .into_iter()
-            .enumerate()
-            {
-                if let Some(v) = v {
-                    m.work_offsets[i] = pt(name, v)?;
+        m.machine_zero = m.home;
+        if let Some(z) = file.machine_zero {
+            m.machine_zero = pt("machine_zero", z)?;
+        }
+        if let Some(v) = file.uw_incremental {
+            m.uw_incremental = v;
+        }
+        if let Some(v) = file.power_on_incremental {
+            m.power_on_incremental = v;
+        }
+        if let Some(v) = file.short_t {
+            m.short_t = v;
+        }
+        for code in file.accept_m.unwrap_or_default() {
+            let c = *code.get_ref();
+            if c > 999 {
+                return Err(bad(
+                    code.span(),
+                    format!("accept_m: M{c} is not an M code (0 … 999)"),
+                ));
+            }
+            m.accept_m.push(c);
+        }
+        for (key, name) in file.m_names.unwrap_or_default() {
+            let Some(c) = key
+                .trim_start_matches(['M', 'm'])
+                .parse::<u32>()
+                .ok()
+                .filter(|&c| c <= 999)
+            else {
+                return Err(bad(
+                    name.span(),
+                    format!("m_names: \"{key}\" is not an M code number (e.g. 68)"),
+                ));
+            };
+            m.m_names.insert(c, name.into_inner());
+        }
+        for (key, v) in file.work_offsets.unwrap_or_default() {
+            let name = key.get_ref().to_ascii_lowercase();
+            let fixed = ["g54", "g55", "g56", "g57", "g58", "g59"]
+                .iter()
+                .position(|&g| g == name);
+            let extra = name
+                .strip_prefix('p')
+                .and_then(|n| n.parse::<u32>().ok())
+                .filter(|n| (1..=300).contains(n));
+            match (fixed, extra) {
+                (Some(i), _) => m.work_offsets[i] = pt(&name, v)?,
+                (None, Some(n)) => {
+                    m.extra_offsets.insert(n, pt(&name, v)?);
+                }
+                _ => {
+                    return Err(bad(
+                        key.span(),
+                        format!("work_offsets: unknown key `{name}` (g54 … g59, or p1 … p300 for G54.1 P / G154 P)"),
+                    ))
                 }
             }
         }

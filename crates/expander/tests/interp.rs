@@ -147,7 +147,10 @@ fn per_axis_rapids_make_a_dog_leg() {
 fn dwell_counts_time() {
     let tp = run("G04 P1500\nG04 X2.5\nG4 U1\n");
     assert!((tp.dwell_s - 5.0).abs() < 1e-9);
-    assert_eq!(run("G04 P1.5\n").alarms[0].code, "LS-VALUE");
+    // P with a decimal point: seconds (Haas; elsewhere an Interpretation, warned).
+    let tp = run("G04 P1.5\n");
+    assert!(tp.alarms.is_empty() && (tp.dwell_s - 1.5).abs() < 1e-9);
+    assert_eq!(tp.warnings[0].code, "W-G04-P");
 }
 
 #[test]

@@ -153,7 +153,7 @@ impl Cycle<'_, '_> {
             .filter(|t| t.code == code && self.g.is_none());
         let x = self.x_target()?;
         let z = self.z_target()?;
-        let r = self.words.mm('R', self.unit);
+        let r = self.taper(code)?;
         let end = Pt::new(
             z.or(prev.map(|p| p.end.z)).unwrap_or(self.start.z),
             x.or(prev.map(|p| p.end.r)).unwrap_or(self.start.r),
@@ -165,6 +165,28 @@ impl Cycle<'_, '_> {
         };
         self.retained.turn = Some(words);
         Ok(words)
+    }
+
+    /// The taper word of G90/G92/G94 in mm: `R` (FANUC 0i and later, GSK); on Haas `I`
+    /// (G90/G92, radius) and `K` (G94), and `R` there is an alarm naming them
+    /// (spec/dialects.md §3.5). Same sign convention: start minus end.
+    fn taper(&mut self, code: i32) -> Result<Option<f64>, Diagnostic> {
+        if self.machine.control != crate::Control::Haas {
+            return Ok(self.words.mm('R', self.unit));
+        }
+        let word = if code == G94 { 'K' } else { 'I' };
+        if let Some(r) = self.words.take('R') {
+            return Err(Diagnostic::new(
+                r.span,
+                "LS-DIALECT",
+                format!("R is not a Haas taper word: {} takes {word}", name(code)),
+                format!(
+                    "write {word}{} (Haas: I is the radius taper of G90/G92, K the Z taper of G94)",
+                    r.value
+                ),
+            ));
+        }
+        Ok(self.words.mm(word, self.unit))
     }
 
     /// Where alarms about the cycle as a whole point: its G word, or the block.

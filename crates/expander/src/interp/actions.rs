@@ -1,4 +1,4 @@
-//! The one-shot G codes that do not move along a path of their own: G04 dwell, G28
+//! The one-shot G codes that do not move along a path of their own: G04 dwell, G27/G28
 //! reference return and G50 coordinate setting.
 
 use super::{alarm, Interp};
@@ -11,17 +11,21 @@ impl Interp<'_> {
         let p = used.take('P');
         let x = used.take('X').or_else(|| used.take('U'));
         let seconds = match (p, x) {
-            (Some(p), None) => {
-                if p.has_point {
-                    return Err(alarm(
+            (Some(p), None) if p.has_point => {
+                // Haas: `G04 P1.5` is 1.5 s (dialects.md §3.1). **Interpretation** on the
+                // other controls, where P takes no decimal point: the author meant seconds
+                // too (a FANUC alarms or reads milliseconds), warned.
+                if self.machine.control != crate::Control::Haas {
+                    self.warn(
                         p.span,
-                        "LS-VALUE",
-                        "G04 P is in milliseconds and takes no decimal point",
-                        "write G04 P1500 for 1.5 s, or G04 X1.5",
-                    ));
+                        "W-G04-P",
+                        format!("G04 P{} with a decimal point read as {} s (Haas style)", p.value, p.value),
+                        "on a FANUC, P is milliseconds without a decimal point: write G04 X… for seconds",
+                    );
                 }
-                p.value / 1000.0
+                p.value
             }
+            (Some(p), None) => p.value / 1000.0,
             (None, Some(x)) => x.value,
             (None, None) => {
                 return Err(alarm(
@@ -53,29 +57,59 @@ impl Interp<'_> {
     }
 
     /// G28: rapid to the intermediate point, then the named axes to the reference point.
-    pub(super) fn g28(&mut self, b: &Block, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
+    /// A bare `G28` returns both axes. **Interpretation:** straight from where the tool is
+    /// (the intermediate point is the current position), as `G28 U0 W0`.
+    pub(super) fn g28(&mut self, b: &Block, used: &mut Words, _g: &Word) -> Result<(), Diagnostic> {
         let x_given = b.has('X') || b.has('U');
         let z_given = b.has('Z') || b.has('W');
-        let Some(mid) = self.target(used)? else {
-            return Err(alarm(
-                g.span,
-                "LS-VALUE",
-                "G28 without an axis",
-                "write e.g. G28 U0 W0 to return both axes through the current position",
-            ));
-        };
+        let bare = !x_given && !z_given;
+        if bare {
+            self.note_once(
+                b.span,
+                "W-G28-BARE",
+                "G28 without axes: both axes return to the reference point straight from here",
+                "write G28 U0 W0 for the same move in the usual form",
+            );
+        }
+        let mid = self.target(used)?.unwrap_or(self.pos);
         self.rapid(b, mid)?;
         let home = self.machine.home;
         let to = Pt::new(
-            if z_given { home.z } else { mid.z },
-            if x_given { home.r } else { mid.r },
+            if z_given || bare { home.z } else { mid.z },
+            if x_given || bare { home.r } else { mid.r },
         );
         self.rapid(b, to)
     }
 
-    /// G50: the current position gets the given work coordinates; G50 S is handled with S.
+    /// G27 X(U) Z(W): reference position return check. The check needs the real machine;
+    /// the move is a rapid to the point (dialects.md §6.1).
+    pub(super) fn g27(&mut self, b: &Block, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
+        let Some(to) = self.target(used)? else {
+            return Err(alarm(
+                g.span,
+                "LS-VALUE",
+                "G27 without an axis",
+                "write G27 X… Z… (the reference position to check)",
+            ));
+        };
+        self.rapid(b, to)
+    }
+
+    /// G50 (B/C: G92): the current position gets the given work coordinates; G50 S is
+    /// handled with S. On a Haas the meaning of `G50 X Z` depends on Setting 33; latsim
+    /// reads it as FANUC does (dialects.md §3.6), warned once.
     pub(super) fn g50(&mut self, used: &mut Words) -> Result<(), Diagnostic> {
         let u = self.unit();
+        if self.machine.control == crate::Control::Haas
+            && ['X', 'Z', 'U', 'W'].iter().any(|&l| used.has(l))
+        {
+            self.note_once(
+                used.span(),
+                "W-HAAS-G50",
+                "G50 X/Z read as a FANUC coordinate setting: on a Haas its meaning depends on Setting 33",
+                "check Setting 33 (FANUC / YASNAC / HAAS coordinate style) on the machine",
+            );
+        }
         if let Some(x) = used.take('X') {
             self.shift.r = self.pos.r - x.value * u / 2.0;
         }

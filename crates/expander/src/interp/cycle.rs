@@ -26,7 +26,12 @@ impl Interp<'_> {
                 g,
                 words: used,
                 start: self.pos,
-                shift: self.shift,
+                // G91 (system B/C): the end points are incremental from the start point.
+                shift: if self.incremental {
+                    self.pos
+                } else {
+                    self.shift
+                },
                 unit: self.unit(),
                 machine: self.machine,
                 retained: &mut self.retained,

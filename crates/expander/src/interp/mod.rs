@@ -10,12 +10,15 @@
 
 mod actions;
 mod cycle;
+mod dialect_words;
 mod flow;
+mod frame;
+mod g10;
 mod modal;
 mod motion;
 mod tool_facts;
 
-use crate::codes::{self, G04, G20, G21, G28, G40, G50, G75_1};
+use crate::codes::{self, *};
 use crate::cycles::{self, g75_1, Retained};
 use crate::tnrc::{Nose, Side};
 use crate::words::Words;
@@ -80,6 +83,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
         it.warn(note.span, "W-ANNOTATION", note.message.clone(), "");
     }
     if let Some(main) = program.main() {
+        it.warn_assumed_units(program, main);
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
         let mut result = it.run(program, 0, 0, 0);
         it.flush_compensation();
@@ -130,6 +134,29 @@ pub(crate) struct Interp<'m> {
     pub(crate) section: Option<(Side, Nose, Vec<Segment>)>,
     /// Offsets already warned about (blade, no entry).
     pub(crate) comp_warned: Vec<u32>,
+    /// Nose radius and tip per offset: the tool table's, as G10 changes them.
+    pub(crate) noses: std::collections::BTreeMap<u32, Option<Nose>>,
+    /// System B/C G91: X and Z are incremental.
+    incremental: bool,
+    /// System B/C: U/W outside a cycle already warned about.
+    uw_warned: bool,
+    /// System B/C G99: drilling cycles return to the R point (G98: the initial level).
+    pub(crate) drill_return_r: bool,
+    /// M23/M24: thread pull-out chamfer on (modal; the thread cycles read it).
+    pub(crate) thread_chamfer: bool,
+    /// G17/G19 in force (a live-tooling plane) and where it was set; G18 clears it.
+    plane: Option<(i32, Span)>,
+    /// Inside `G10 L50 … G11`: parameter blocks, skipped.
+    param_mode: bool,
+    /// The chuck is open (Haas M11, FANUC builders' M69, GSK M13); warned once per opening.
+    chuck_open: bool,
+    chuck_warned: bool,
+    /// M codes the control's table does not know, already warned about.
+    m_warned: Vec<u32>,
+    /// Interpretations already shown once (by warning code).
+    noted: Vec<&'static str>,
+    /// Work offsets and shifts (G54–G59, G54.1/G154, G10, G52).
+    frames: frame::Frames,
 }
 
 /// A controller alarm.
@@ -165,6 +192,24 @@ impl<'m> Interp<'m> {
             offset: 0,
             section: None,
             comp_warned: vec![],
+            noses: opts
+                .tools
+                .noses
+                .iter()
+                .map(|(&k, n)| (k, n.map(tool_facts::nose)))
+                .collect(),
+            incremental: machine.power_on_incremental
+                && machine.control.system() != crate::GCodeSystem::A,
+            uw_warned: false,
+            drill_return_r: false,
+            thread_chamfer: false,
+            plane: None,
+            param_mode: false,
+            chuck_open: false,
+            chuck_warned: false,
+            m_warned: vec![],
+            noted: vec![],
+            frames: frame::Frames::new(machine),
         }
     }
 
@@ -180,11 +225,55 @@ impl<'m> Interp<'m> {
             .push(Diagnostic::new(span, code, message, help));
     }
 
+    /// A cycle's alarm in the program's own codes: the cycles name themselves by their
+    /// system-A code (`G90`), a system-B program wrote `G77`.
+    fn in_written_terms(&self, mut e: Diagnostic, canonical: i32) -> Diagnostic {
+        if let Some(w) = crate::dialect::written(self.machine.control, canonical) {
+            e.message = e
+                .message
+                .replacen(&codes::g_name(canonical), &codes::g_name(w), 1);
+        }
+        e
+    }
+
+    /// A warning shown once per run: an Interpretation that affects the run.
+    pub(crate) fn note_once(
+        &mut self,
+        span: Span,
+        code: &'static str,
+        message: impl Into<String>,
+        help: impl Into<String>,
+    ) {
+        if !self.noted.contains(&code) {
+            self.noted.push(code);
+            self.warn(span, code, message, help);
+        }
+    }
+
     fn unit(&self) -> f64 {
         if self.inch {
             25.4
         } else {
             1.0
+        }
+    }
+
+    /// Haas: a program that states neither G20 nor G21 runs in the profile's power-on units;
+    /// US machines are usually inch, so say which was assumed (dialects.md §3.1).
+    fn warn_assumed_units(&mut self, program: &Program, main: &Subprogram) {
+        let states = program
+            .programs
+            .iter()
+            .flat_map(|p| &p.blocks)
+            .any(|b| self.has_g(b, |t| t == G20 || t == G21));
+        if self.machine.control == crate::Control::Haas && !states {
+            let unit = if self.inch { "inch" } else { "mm" };
+            self.warn(
+                main.blocks.first().map_or(main.span, |b| b.span),
+                "W-HAAS-UNITS",
+                format!("no G20/G21: assumed {unit} (the profile's power_on_units)"),
+                "state G20 (inch) or G21 (mm) at the top: a Haas runs in its Setting 9 units",
+            );
         }
     }
 
@@ -200,13 +289,19 @@ impl<'m> Interp<'m> {
     /// Execute one block: its modal words, its one action, then its flow words.
     fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
         let b = &sub.blocks[index];
+        if self.param_mode {
+            // G10 L50 … G11: parameter data, not a program.
+            self.param_mode = !self.has_g(b, |t| t == G11);
+            return Ok(Flow::Next);
+        }
         let mut used = Words::new(b);
-        let inch = modal::has_g(b, |t| t == G20) || (self.inch && !modal::has_g(b, |t| t == G21));
+        let inch = self.has_g(b, |t| t == G20) || (self.inch && !self.has_g(b, |t| t == G21));
         used.check_domain(if inch { 25.4 } else { 1.0 })?;
-        if self.retained.g75_1.is_some() && !modal::has_g(b, |t| t == G75_1) {
+        if self.retained.g75_1.is_some() && !self.has_g(b, |t| t == G75_1) {
             return Err(self.g75_1_unfinished(b.span));
         }
         let g = self.g_codes(b, &mut used)?;
+        self.dialect_checks(b, &g, &mut used)?;
         let cancels = matches!(g.comp, Some((G40, _)));
         let deferred_offset =
             self.feed_speed_tool(&mut used, g.one_shot.map(|(t, _)| t), cancels)?;
@@ -217,9 +312,11 @@ impl<'m> Interp<'m> {
             .map_or(matches!(self.motion, MotionMode::Cycle(_)), |(m, _)| {
                 matches!(m, MotionMode::Cycle(_))
             });
-        let suspends = matches!(g.one_shot, Some((G28 | G50, _)))
+        let suspends = matches!(g.one_shot, Some((G28 | G50 | G50_3 | G52 | G53 | G27, _)))
             || g.one_shot.is_some_and(|(t, _)| cycles::is_cycle(t))
-            || modal::has_g(b, |t| codes::work_offset(t).is_some())
+            || self.has_g(b, |t| {
+                codes::work_offset(t).is_some() || t == G54_1 || t == G154
+            })
             || (modal_cycle && ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)));
         if suspends {
             // Suspended by G28, G50, G54–G59 and the cycles; resumed at the next move.
@@ -230,7 +327,16 @@ impl<'m> Interp<'m> {
             Some((G04, w)) => self.dwell(&mut used, w)?,
             Some((G28, w)) => self.g28(b, &mut used, w)?,
             Some((G50, _)) => self.g50(&mut used)?,
-            Some((t, w)) => flow = self.cycle(t, Some(w), sub, index, &mut used)?,
+            Some((G50_3, w)) => self.preset(w, &mut used)?,
+            Some((G52, _)) => self.g52(b, &mut used)?,
+            Some((G53, w)) => self.g53(b, &mut used, w)?,
+            Some((G27, w)) => self.g27(b, &mut used, w)?,
+            Some((G10, w)) => self.g10(&mut used, w)?,
+            Some((t, w)) => {
+                flow = self
+                    .cycle(t, Some(w), sub, index, &mut used)
+                    .map_err(|e| self.in_written_terms(e, t))?
+            }
             None => {
                 if let Some((m, _)) = g.motion {
                     self.motion = m;
@@ -238,7 +344,9 @@ impl<'m> Interp<'m> {
                 if let MotionMode::Cycle(t) = self.motion {
                     if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
                         let w = g.motion.map(|(_, w)| w);
-                        flow = self.cycle(t, w, sub, index, &mut used)?;
+                        flow = self
+                            .cycle(t, w, sub, index, &mut used)
+                            .map_err(|e| self.in_written_terms(e, t))?;
                     }
                 } else {
                     self.start_compensation(b)?;

@@ -4,7 +4,7 @@
 use super::{alarm, Interp};
 use crate::codes::{self, *};
 use crate::words::{whole_in, Words};
-use crate::{cycles, Diagnostic};
+use crate::{cycles, dialect, Diagnostic};
 use gcode::{Block, Word};
 
 /// The motion mode in force (group 01).
@@ -32,16 +32,15 @@ fn g_name(w: &Word) -> String {
     codes::g_name(w.code_tenths().unwrap_or(0))
 }
 
-/// Whether the block has a G code with these tenths.
-pub(super) fn has_g(b: &Block, pred: impl Fn(i32) -> bool) -> bool {
-    b.words
-        .iter()
-        .any(|w| w.letter == 'G' && w.code_tenths().is_some_and(&pred))
+/// The one-shot codes: they act once, after the block's modes, instead of a motion.
+fn is_one_shot(t: i32) -> bool {
+    matches!(t, G04 | G10 | G27 | G28 | G50 | G50_3 | G52 | G53) || cycles::is_cycle(t)
 }
 
 impl Interp<'_> {
-    /// Read the block's G codes: set the plain modes (G20/G21, G54–G59, G96–G99), check
-    /// the groups, and hand back the codes that act later in the block.
+    /// Read the block's G codes in the control's system (translated to their canonical
+    /// meaning by `crate::dialect`): set the plain modes (G20/G21, G54–G59, G96–G99,
+    /// G90/G91 of B/C, G17–G19), check the groups, and hand back the codes that act later.
     pub(super) fn g_codes<'b>(
         &mut self,
         b: &'b Block,
@@ -53,14 +52,21 @@ impl Interp<'_> {
                 continue;
             }
             used.mark(i);
-            let Some(t) = w.code_tenths() else {
+            let t = self.canonical(w)?;
+            if let Some(reason) = codes::not_simulated(t) {
                 return Err(alarm(
                     w.span,
-                    "PS010",
-                    format!("G{} is not a G code", w.value),
-                    "G codes are G00 … G99 (and G75.1)",
+                    "LS-NOT-SIMULATED",
+                    format!("{} is not simulated: {reason}", g_name(w)),
+                    "latsim simulates one turned 2D section; run this part of the program on a simulator for live tooling",
                 ));
-            };
+            }
+            if let Some(letters) = codes::no_effect(t) {
+                for &l in letters {
+                    used.take(l);
+                }
+                continue;
+            }
             let mut set_motion = |m: MotionMode| {
                 if let Some((_, first)) = g.motion {
                     return Err(alarm(
@@ -84,7 +90,7 @@ impl Interp<'_> {
                 G03 => set_motion(MotionMode::Ccw)?,
                 G32 => set_motion(MotionMode::Thread)?,
                 t if cycles::is_modal(t) => set_motion(MotionMode::Cycle(t))?,
-                t if t == G04 || t == G28 || t == G50 || cycles::is_cycle(t) => {
+                t if is_one_shot(t) => {
                     if let Some((_, first)) = g.one_shot {
                         return Err(alarm(
                             w.span,
@@ -108,19 +114,37 @@ impl Interp<'_> {
                     }
                     g.comp = Some((t, w));
                 }
+                G54 if b.has('P') => self.select_extra_offset(w, used)?,
+                G54_1 | G154 => self.select_extra_offset(w, used)?,
                 t if codes::work_offset(t).is_some() => {
-                    self.shift = self.machine.work_offsets[codes::work_offset(t).unwrap()];
+                    self.select_work_offset(codes::work_offset(t).unwrap_or(0));
                 }
                 G96 => self.css = true,
                 G97 => self.css = false,
                 G98 => self.per_rev = false,
                 G99 => self.per_rev = true,
+                dialect::ABSOLUTE => self.incremental = false,
+                dialect::INCREMENTAL => self.incremental = true,
+                dialect::DRILL_RETURN_INITIAL => self.drill_return_r = false,
+                dialect::DRILL_RETURN_R => self.drill_return_r = true,
+                G18 => self.plane = None,
+                G17 | G19 => self.plane = Some((t, w.span)),
+                // G80 cancels a drilling cycle; none is modal here, so it only confirms.
+                G80 => {}
+                G11 => {
+                    return Err(alarm(
+                        w.span,
+                        "PS010",
+                        "G11 ends parameter input, but no G10 L50 started it",
+                        "remove the G11, or start the parameter blocks with G10 L50",
+                    ))
+                }
                 _ => {
                     return Err(alarm(
                         w.span,
                         "PS010",
                         format!("{} is not a G code this lathe knows", g_name(w)),
-                        "see spec/language.md for the supported codes",
+                        "see spec/language.md and spec/dialects.md §6.1 for the supported codes",
                     ))
                 }
             }
@@ -134,6 +158,31 @@ impl Interp<'_> {
             ));
         }
         Ok(g)
+    }
+
+    /// The canonical meaning of a G word under the control (`crate::dialect`), or the alarm
+    /// naming the control whose code it is.
+    pub(super) fn canonical(&self, w: &Word) -> Result<i32, Diagnostic> {
+        let Some(t) = w.code_tenths() else {
+            return Err(alarm(
+                w.span,
+                "PS010",
+                format!("G{} is not a G code", w.value),
+                "G codes are G00 … G99 (and G75.1)",
+            ));
+        };
+        dialect::canonical(self.machine.control, t)
+            .map_err(|f| alarm(w.span, "LS-DIALECT", f.message, f.help))
+    }
+
+    /// Whether the block has a G code whose canonical meaning satisfies `pred`.
+    pub(super) fn has_g(&self, b: &Block, pred: impl Fn(i32) -> bool) -> bool {
+        b.words.iter().any(|w| {
+            w.letter == 'G'
+                && w.code_tenths()
+                    .and_then(|t| dialect::canonical(self.machine.control, t).ok())
+                    .is_some_and(&pred)
+        })
     }
 
     /// F, S and T: the feed, the spindle speed (or the G50 S clamp) and the tool/offset.
@@ -180,7 +229,7 @@ impl Interp<'_> {
                 ));
             }
             let v = t.value as u32;
-            let (tool, offset) = (v / 100, v % 100);
+            let (tool, offset) = self.tool_and_offset(v, t);
             // A T word suspends compensation; offset 00 cancels it (spec/tnrc.md). In a G40
             // block the block's own move is the cancel move, made with the offset in force:
             // the new offset takes effect after it (a `G00 G40 X… Z… T0` return must not turn
@@ -191,17 +240,37 @@ impl Interp<'_> {
                 self.flush_compensation();
                 self.offset = offset;
             }
-            if tool == 0 && offset != 0 {
-                self.warn(
-                    t.span,
-                    "LS-T-WORD",
-                    format!("T{v} read as tool 00 with offset {offset:02}"),
-                    format!("write T{offset:02}{offset:02} for tool {offset} with offset {offset}"),
-                );
-            }
             self.select_tool(tool);
         }
         Ok(deferred)
+    }
+
+    /// Tool and offset of `T<v>`: `Tttoo`. A one- or two-digit T is ambiguous across
+    /// controls (spec/dialects.md §3.7), so the profile's `short_t` decides. **Interpretation**
+    /// of the defaults: on the seeds' GSK `"offset"` (`T1` = `T0001`, as before); on FANUC
+    /// and Haas the spec's `"tool"` (`T1` = `T0101`). Warned either way.
+    fn tool_and_offset(&mut self, v: u32, t: &Word) -> (u32, u32) {
+        let (tool, offset) = (v / 100, v % 100);
+        if tool != 0 || offset == 0 {
+            return (tool, offset);
+        }
+        if self.machine.short_t == crate::ShortT::Offset {
+            self.warn(
+                t.span,
+                "LS-T-WORD",
+                format!("T{v} read as tool 00 with offset {offset:02}"),
+                format!("write T{offset:02}{offset:02} for tool {offset} with offset {offset}"),
+            );
+            (0, offset)
+        } else {
+            self.warn(
+                t.span,
+                "LS-T-WORD",
+                format!("T{v} read as tool {offset} with offset {offset} (short T: `short_t = \"tool\"`)"),
+                format!("write T{offset:02}{offset:02}; on some FANUC parameter settings T{v} is an offset number only"),
+            );
+            (offset, offset)
+        }
     }
 
     /// The S value in force for a programmed S: under G96 in inch, feet/min become m/min.
@@ -223,25 +292,51 @@ impl Interp<'_> {
         }
     }
 
-    /// The M codes that act before the motion (M03/M04, M08, M00/M01); the ones that act
-    /// after it (M02/M30, M05/M09, M98/M99) are handed back in order.
+    /// The M codes of the block, in order (up to three, FANUC's parameter maximum): the
+    /// ones that act before the motion (M03/M04, M08, M00/M01 and the machine functions of
+    /// the control's table, `crate::mcodes`) act here; the ones that act after it
+    /// (M02/M30, M05/M09, M98/M99) are handed back in order. An M code neither the table
+    /// nor the profile's `accept_m` knows is accepted as a machine function, warned once.
     pub(super) fn m_codes_before<'b>(
         &mut self,
         b: &'b Block,
         used: &mut Words,
     ) -> Result<Vec<(u32, &'b Word)>, Diagnostic> {
         let mut after = vec![];
+        let mut seen: Vec<&Word> = vec![];
         for (i, w) in b.words.iter().enumerate() {
             if w.letter != 'M' {
                 continue;
             }
             used.mark(i);
-            if w.has_point || w.value < 0.0 || w.value.fract() != 0.0 {
+            if w.has_point || w.value < 0.0 || w.value.fract() != 0.0 || w.value > 9999.0 {
                 return Err(alarm(
                     w.span,
                     "PS010",
                     format!("M{} is not an M code", w.value),
                     "M codes are whole numbers",
+                ));
+            }
+            seen.push(w);
+            let flow = |m: f64| matches!(m as u32, 2 | 30 | 98 | 99);
+            if seen.len() > 1 && seen.iter().any(|w| flow(w.value)) {
+                let other = seen[0];
+                return Err(alarm(
+                    w.span,
+                    "PS010",
+                    format!(
+                        "M{:02} cannot share a block with M{:02}",
+                        w.value as u32, other.value as u32
+                    ),
+                    "M00 M01 M02 M30 M98 M99 stand alone; put the other M code in a block of its own",
+                ));
+            }
+            if seen.len() > 3 {
+                return Err(alarm(
+                    w.span,
+                    "PS010",
+                    "more than three M codes in one block",
+                    "a FANUC block holds at most three M codes; split the block",
                 ));
             }
             match w.value as u32 {
@@ -251,17 +346,50 @@ impl Interp<'_> {
                 }
                 8 | 0 | 1 => {}
                 m @ (2 | 30 | 5 | 9 | 98 | 99) => after.push((m, w)),
-                m => {
+                97 => {
                     return Err(alarm(
                         w.span,
-                        "LS-UNKNOWN-M",
-                        format!("M{m:02} is not an M code this lathe knows"),
-                        "supported: M00 M01 M02 M03 M04 M05 M08 M09 M30 M98 M99",
+                        "LS-NOT-IMPLEMENTED",
+                        "M97 (Haas local subprogram call) is not implemented yet in this version of latsim",
+                        "call the subprogram with M98 P<program number>",
                     ))
                 }
+                m => self.machine_function(m, w),
             }
         }
         Ok(after)
+    }
+
+    /// A machine function: its effect on what the simulation warns about, and the one
+    /// warning for a code the control's table does not know.
+    fn machine_function(&mut self, m: u32, w: &Word) {
+        use crate::mcodes::Effect;
+        let known = crate::mcodes::machine_function(self.machine.control, m);
+        match known.map(|k| k.1) {
+            Some(Effect::SpindleStops) => self.spindle_on = false,
+            Some(Effect::ChuckOpens) => {
+                self.chuck_open = true;
+                self.chuck_warned = false;
+            }
+            Some(Effect::ChuckCloses) => self.chuck_open = false,
+            Some(Effect::ThreadChamfer(on)) => self.thread_chamfer = on,
+            Some(Effect::None) | None => {}
+        }
+        let accepted = known.is_some()
+            || self.machine.accept_m.contains(&m)
+            || self.machine.m_names.contains_key(&m);
+        if !accepted && !self.m_warned.contains(&m) {
+            self.m_warned.push(m);
+            self.warn(
+                w.span,
+                "W-M-UNKNOWN",
+                format!(
+                    "M{m:02} is not in the {} M-code table: accepted as a machine function that does not move the tool",
+                    self.machine.control.key()
+                ),
+                format!("if M{m:02} moves the tool, latsim cannot show it; list it in the machine profile's accept_m to silence this"),
+            );
+        }
     }
 
     /// Put a G70 shape's S, T and G96–G99 in force (the T word changes the tool that cuts;

@@ -9,11 +9,14 @@ use crate::{Arc, Diagnostic, Feed, Motion, Pt, RapidPath, Segment, Span, Spindle
 use gcode::Block;
 
 impl Interp<'_> {
-    /// The target of X/U Z/W in the G54 frame; `None` when no axis word is given.
-    pub(super) fn target(&self, used: &mut Words) -> Result<Option<Pt>, Diagnostic> {
+    /// The target of X/U Z/W in the G54 frame; `None` when no axis word is given. In
+    /// system B/C, X and Z follow G90/G91, and U/W are incremental axes as the profile's
+    /// `uw_incremental` allows (warned once: it depends on the builder, dialects.md §2.2).
+    pub(super) fn target(&mut self, used: &mut Words) -> Result<Option<Pt>, Diagnostic> {
         let u = self.unit();
         let mut p = self.pos;
         let mut any = false;
+        let system_b = self.machine.control.system() != crate::GCodeSystem::A;
         for (abs, inc, radius_div) in [('X', 'U', 2.0), ('Z', 'W', 1.0)] {
             let a = used.take(abs);
             let i = used.take(inc);
@@ -25,6 +28,9 @@ impl Interp<'_> {
                     format!("give the end point either absolute ({abs}) or incremental ({inc})"),
                 ));
             }
+            if let (Some(i), true) = (i, system_b) {
+                self.uw_outside_cycle(i)?;
+            }
             let axis = if abs == 'X' { &mut p.r } else { &mut p.z };
             let shift = if abs == 'X' {
                 self.shift.r
@@ -32,7 +38,11 @@ impl Interp<'_> {
                 self.shift.z
             };
             if let Some(a) = a {
-                *axis = a.value * u / radius_div + shift;
+                if self.incremental {
+                    *axis += a.value * u / radius_div;
+                } else {
+                    *axis = a.value * u / radius_div + shift;
+                }
                 any = true;
             }
             if let Some(i) = i {
@@ -41,6 +51,28 @@ impl Interp<'_> {
             }
         }
         Ok(any.then_some(p))
+    }
+
+    /// System B/C: U or W outside a cycle.
+    fn uw_outside_cycle(&mut self, w: &gcode::Word) -> Result<(), Diagnostic> {
+        if !self.machine.uw_incremental {
+            return Err(alarm(
+                w.span,
+                "LS-DIALECT",
+                format!("{} is not an axis on this machine in system B/C (uw_incremental = false)", w.letter),
+                "write G91 X…/Z… for an incremental move, or set uw_incremental = true in the machine profile",
+            ));
+        }
+        if !self.uw_warned {
+            self.uw_warned = true;
+            self.warn(
+                w.span,
+                "W-UW-SYSTEM-B",
+                "U/W as incremental axes depend on the machine in system B/C: read as incremental X/Z",
+                "if this machine rejects U/W, set uw_incremental = false in the machine profile",
+            );
+        }
+        Ok(())
     }
 
     pub(super) fn feed_for(&mut self, span: Span, motion: Motion) -> Result<Feed, Diagnostic> {
@@ -54,6 +86,15 @@ impl Interp<'_> {
                 "LS-SPINDLE-STOPPED",
                 "cutting with the spindle stopped (no M03/M04 in force)",
                 "start the spindle with M03 or M04 before cutting; a real tool would break",
+            );
+        }
+        if self.chuck_open && !self.chuck_warned {
+            self.chuck_warned = true;
+            self.warn(
+                span,
+                "LS-CHUCK-OPEN",
+                "cutting with the chuck unclamped",
+                "clamp the chuck (Haas M10, GSK M12, FANUC builders M68) before cutting",
             );
         }
         if self.feed <= 0.0 {

@@ -9,7 +9,7 @@ impl Interp<'_> {
     /// The tool table's entry for offset `offset`: `Some(None)` is a tool without a nose,
     /// `None` no entry.
     pub(crate) fn nose_for(&self, offset: u32) -> Option<Option<Nose>> {
-        self.opts.tools.noses.get(&offset).map(|n| n.map(nose))
+        self.noses.get(&offset).copied()
     }
 
     /// The nose of an offset with no entry.
@@ -25,7 +25,7 @@ impl Interp<'_> {
 }
 
 /// The compensation's nose (which knows its tip vector) from the table's facts.
-fn nose(n: toolfacts::Nose) -> Nose {
+pub(super) fn nose(n: toolfacts::Nose) -> Nose {
     Nose {
         radius: n.radius,
         tip: n.tip,

@@ -1,0 +1,292 @@
+//! The work frame the program's words are read in: work offsets (G54–G59, G54.1 P / Haas
+//! G154 P), the local shift G52, the preset G50.3 (B/C G92.1), machine coordinates G53
+//! and the offsets a program writes itself with G10 (spec/dialects.md §6.3, §6.4).
+//!
+//! Segments stay in the G54 frame of the profile (the one the stock is given in); these
+//! codes only move the origin later words are read from, and each shift that changes the
+//! frame is shown as a warning.
+
+use super::{alarm, Interp};
+use crate::words::{whole_in, Words};
+use crate::{Diagnostic, Machine, Pt};
+use gcode::{Block, Word};
+use std::collections::BTreeMap;
+
+/// The work frames as the program leaves them.
+pub(crate) struct Frames {
+    /// The work system in force.
+    work: Work,
+    /// Its origin in the G54 frame, with the external shift.
+    origin: Pt,
+    /// G54–G59 origins, as the profile gives them and G10 L2 changes them.
+    offsets: [Pt; 6],
+    /// G54.1 P / G154 P origins, from the profile and G10 L20.
+    extra: BTreeMap<u32, Pt>,
+    /// The external work shift (G10 P0 / L2 P0).
+    ext_shift: Pt,
+    /// The G52 local shift.
+    local: Pt,
+}
+
+impl Frames {
+    /// The profile's offsets, G54 in force.
+    pub(crate) fn new(machine: &Machine) -> Self {
+        Self {
+            work: Work::Fixed(0),
+            origin: Pt::default(),
+            offsets: machine.work_offsets,
+            extra: machine.extra_offsets.clone(),
+            ext_shift: Pt::default(),
+            local: Pt::default(),
+        }
+    }
+}
+
+impl Interp<'_> {
+    /// G54–G59: the work system `i` (0 = G54), with the G52 local shift kept.
+    pub(super) fn select_work_offset(&mut self, i: usize) {
+        self.frames.work = Work::Fixed(i);
+        self.frames.origin = self.frames.offsets[i] + self.frames.ext_shift;
+        self.shift = self.frames.origin + self.frames.local;
+    }
+
+    /// The work system in force again after its offset changed (G10).
+    fn reselect_work(&mut self) {
+        let o = match self.frames.work {
+            Work::Fixed(i) => self.frames.offsets[i],
+            Work::Extra(n) => self.frames.extra.get(&n).copied().unwrap_or_default(),
+        };
+        self.frames.origin = o + self.frames.ext_shift;
+        self.shift = self.frames.origin + self.frames.local;
+    }
+
+    /// `G54.1 P<n>` (FANUC), `G154 P<n>` (Haas), `G54 P<n>`: an additional work offset
+    /// from the profile's `[work_offsets] p<n>`; a missing one is an alarm at P.
+    pub(super) fn select_extra_offset(
+        &mut self,
+        g: &Word,
+        used: &mut Words,
+    ) -> Result<(), Diagnostic> {
+        let Some(p) = used.take('P') else {
+            return Err(alarm(
+                g.span,
+                "LS-VALUE",
+                "an additional work offset needs P (its number)",
+                "write e.g. G54.1 P1 (FANUC) or G154 P1 (Haas)",
+            ));
+        };
+        if !whole_in(p, 1.0, 300.0) {
+            return Err(alarm(
+                p.span,
+                "LS-VALUE",
+                "P must be an additional work offset number 1 … 300",
+                "write e.g. P1",
+            ));
+        }
+        let n = p.value as u32;
+        let Some(&o) = self.frames.extra.get(&n) else {
+            return Err(alarm(
+                p.span,
+                "LS-WORK-OFFSET",
+                format!("additional work offset P{n} is not in the machine profile"),
+                format!("add p{n} = [z, x] under [work_offsets] in the --machine profile, or set it with G10 L20 P{n}"),
+            ));
+        };
+        self.frames.work = Work::Extra(n);
+        self.frames.origin = o + self.frames.ext_shift;
+        self.shift = self.frames.origin + self.frames.local;
+        Ok(())
+    }
+
+    /// G52 X Z: a local shift of the work frame (G52 X0 Z0 cancels). **Interpretation**
+    /// (Haas: Setting 33 dependent): applied like a work offset shift, warned.
+    pub(super) fn g52(&mut self, b: &Block, used: &mut Words) -> Result<(), Diagnostic> {
+        let u = self.unit();
+        let x = used.take('X').map(|w| w.value * u / 2.0);
+        let z = used.take('Z').map(|w| w.value * u);
+        if x.is_none() && z.is_none() {
+            return Err(alarm(
+                b.span,
+                "LS-VALUE",
+                "G52 without X or Z",
+                "write G52 X… Z… for the local shift, G52 X0 Z0 to cancel it",
+            ));
+        }
+        self.frames.local = Pt::new(
+            z.unwrap_or(self.frames.local.z),
+            x.unwrap_or(self.frames.local.r),
+        );
+        self.shift = self.frames.origin + self.frames.local;
+        self.warn(
+            b.span,
+            "W-G52",
+            format!(
+                "G52 local shift ΔX {:.3} ΔZ {:.3} (diameter, mm): later words are read in the shifted frame; the section stays in the first frame",
+                2.0 * self.frames.local.r,
+                self.frames.local.z
+            ),
+            "on a Haas the meaning of G52 depends on Setting 33; latsim applies it like a work offset shift",
+        );
+        Ok(())
+    }
+
+    /// G50.3 (system A) / G92.1 (B, C) X0 Z0: the named axes go back to the selected work
+    /// system, cancelling the G50/G92 and G52 shifts. **Interpretation:** only the zero
+    /// form is accepted (the form programs use; other values need the control's preset
+    /// parameters).
+    pub(super) fn preset(&mut self, g: &Word, used: &mut Words) -> Result<(), Diagnostic> {
+        let x = used.take('X').or_else(|| used.take('U'));
+        let z = used.take('Z').or_else(|| used.take('W'));
+        if x.is_none() && z.is_none() {
+            return Err(alarm(
+                g.span,
+                "LS-VALUE",
+                "workpiece coordinate preset without an axis",
+                "write e.g. G92.1 X0 Z0 (G50.3 X0 Z0 in system A)",
+            ));
+        }
+        for w in [x, z].into_iter().flatten() {
+            if w.value != 0.0 {
+                return Err(alarm(
+                    w.span,
+                    "LS-VALUE",
+                    "the workpiece coordinate preset takes 0 for each axis",
+                    "write X0 Z0",
+                ));
+            }
+        }
+        self.frames.local = Pt::default();
+        if x.is_some() {
+            self.shift.r = self.frames.origin.r;
+        }
+        if z.is_some() {
+            self.shift.z = self.frames.origin.z;
+        }
+        Ok(())
+    }
+
+    /// G53 X Z: a rapid to that machine position (from the profile's `machine_zero`); it
+    /// never cuts, so if its sweep meets stock that is a crash.
+    pub(super) fn g53(&mut self, b: &Block, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
+        if let Some(w) = used.take('U').or_else(|| used.take('W')) {
+            return Err(alarm(
+                w.span,
+                "LS-VALUE",
+                "G53 takes machine coordinates X and Z, not increments",
+                "write G53 X… Z…",
+            ));
+        }
+        let u = self.unit();
+        let x = used.take('X');
+        let z = used.take('Z');
+        if x.is_none() && z.is_none() {
+            return Err(alarm(
+                g.span,
+                "LS-VALUE",
+                "G53 without an axis",
+                "write e.g. G53 X0 (X to machine zero) or G53 X0 Z0",
+            ));
+        }
+        let zero = self.machine.machine_zero;
+        if zero == self.machine.home {
+            self.note_once(
+                g.span,
+                "W-MACHINE-ZERO",
+                "G53: machine zero is taken as the reference point (home)",
+                "give machine_zero = [z, x] in the --machine profile if this lathe's machine zero is elsewhere",
+            );
+        }
+        let to = Pt::new(
+            z.map_or(self.pos.z, |w| zero.z + w.value * u),
+            x.map_or(self.pos.r, |w| zero.r + w.value * u / 2.0),
+        );
+        self.rapid(b, to)
+    }
+
+    /// G10 L2 P1–6 X Z / G10 L20 P<n> X Z: work offset n set from the program (machine
+    /// coordinates of the work zero, measured from the profile's `machine_zero`), for the
+    /// rest of the run; the active system moves at once.
+    pub(super) fn set_work_offset(
+        &mut self,
+        l: &Word,
+        p: &Word,
+        used: &mut Words,
+    ) -> Result<(), Diagnostic> {
+        let extra = l.value == 20.0;
+        let range = if extra { 1.0..=300.0 } else { 0.0..=6.0 };
+        if p.has_point || !range.contains(&p.value) {
+            return Err(alarm(
+                p.span,
+                "LS-VALUE",
+                format!(
+                    "G10 L{} P must be {}",
+                    l.value,
+                    if extra {
+                        "1 … 300"
+                    } else {
+                        "0 (external shift) or 1 … 6 (G54 … G59)"
+                    }
+                ),
+                "write e.g. G10 L2 P1 X0 Z-350.",
+            ));
+        }
+        let n = p.value as u32;
+        let u = self.unit();
+        let x = used.take('X').map(|w| w.value * u / 2.0);
+        let z = used.take('Z').map(|w| w.value * u);
+        let zero = self.machine.machine_zero;
+        let old = match (extra, n) {
+            (true, n) => self.frames.extra.get(&n).copied().unwrap_or(zero),
+            (false, 0) => self.frames.ext_shift,
+            (false, n) => self.frames.offsets[n as usize - 1],
+        };
+        let new = if !extra && n == 0 {
+            // The external shift is a shift, not a position.
+            Pt::new(z.unwrap_or(old.z), x.unwrap_or(old.r))
+        } else {
+            Pt::new(
+                z.map_or(old.z, |z| zero.z + z),
+                x.map_or(old.r, |x| zero.r + x),
+            )
+        };
+        match (extra, n) {
+            (true, n) => {
+                self.frames.extra.insert(n, new);
+            }
+            (false, 0) => self.frames.ext_shift = new,
+            (false, n) => self.frames.offsets[n as usize - 1] = new,
+        }
+        let name = match (extra, n) {
+            (true, n) => format!("additional work offset P{n}"),
+            (false, 0) => "the external work shift".to_string(),
+            (false, n) => format!("G{}", 53 + n),
+        };
+        self.warn(
+            l.span,
+            "W-G10-WORK",
+            format!(
+                "G10 sets {name}: its origin moves by ΔX {:.3} ΔZ {:.3} (diameter, mm) for the rest of the run",
+                2.0 * (new.r - old.r),
+                new.z - old.z
+            ),
+            "the section stays in the profile's G54 frame; work offsets are machine coordinates from the profile's machine_zero",
+        );
+        let active = match self.frames.work {
+            Work::Fixed(i) => !extra && (n == 0 || n as usize == i + 1),
+            Work::Extra(m) => (extra && m == n) || (!extra && n == 0),
+        };
+        if active {
+            self.reselect_work();
+        }
+        Ok(())
+    }
+}
+
+/// A work system.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Work {
+    /// G54 … G59 (0 … 5).
+    Fixed(usize),
+    /// G54.1 P<n> / G154 P<n>.
+    Extra(u32),
+}
