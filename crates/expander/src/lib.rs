@@ -23,7 +23,8 @@ pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
 pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
 pub use machine::{
-    Control, FeedMode, GCodeSystem, Increment, Machine, PqUnits, ProfileError, RapidPath, Units,
+    Control, DrillReturn, FeedMode, GCodeSystem, HaasSettings, Increment, Machine, PqUnits,
+    ProfileError, RapidPath, Units,
 };
 pub use toolpath::{
     Arc, Feed, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,

@@ -125,6 +125,8 @@ pub(crate) struct Cycle<'a, 'b> {
     /// The active tool when the tool table says it is a radial grooving blade: its width
     /// and whether it extends toward +Z from its reference corner (G75.1 without I).
     pub(crate) tool_blade: Option<(f64, bool)>,
+    /// The thread pull-out chamfer is on (Haas M23, the power-on state; M24 turns it off).
+    pub(crate) thread_chamfer: bool,
 }
 
 /// What a cycle made.
@@ -141,6 +143,9 @@ pub(crate) struct Output {
     /// G70: run the moves as one compensation section, on the shape's side (`Some(None)`:
     /// the side in force at G70, if any); `None`: never compensated (the other cycles).
     pub(crate) comp: Option<Option<crate::tnrc::Side>>,
+    /// The lead of the cycle's thread moves, mm (G76 reads F or E itself); `None`: the F in
+    /// force.
+    pub(crate) lead: Option<f64>,
 }
 
 impl Cycle<'_, '_> {

@@ -33,6 +33,7 @@ impl Interp<'_> {
                 program: sub,
                 index,
                 tool_blade,
+                thread_chamfer: self.thread_chamfer,
             };
             cycles::run(&mut c)?
         };
@@ -71,7 +72,7 @@ impl Interp<'_> {
             if m.to.dist(self.pos) >= 1e-12 {
                 // a threading move's lead is the F in force (G92: F is the lead)
                 let lead = if m.motion == Motion::Thread {
-                    self.feed * self.unit()
+                    out.lead.unwrap_or(self.feed * self.unit())
                 } else {
                     0.0
                 };

@@ -142,6 +142,9 @@ pub(crate) struct Interp<'m> {
     pub(crate) section: Option<(Side, Nose, Vec<Segment>)>,
     /// Offsets already warned about (blade, no entry).
     pub(crate) comp_warned: Vec<u32>,
+    /// Haas M23 (on, the power-on state, **Interpretation**) / M24 (off): the thread
+    /// pull-out chamfer of G76 (spec/dialects.md §3.5).
+    pub(crate) thread_chamfer: bool,
 }
 
 /// A controller alarm.
@@ -177,6 +180,7 @@ impl<'m> Interp<'m> {
             offset: 0,
             section: None,
             comp_warned: vec![],
+            thread_chamfer: true,
         }
     }
 

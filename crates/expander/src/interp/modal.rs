@@ -250,6 +250,9 @@ impl Interp<'_> {
                     self.spindle_warned = false;
                 }
                 8 | 0 | 1 => {}
+                23 | 24 if self.machine.control == crate::Control::Haas => {
+                    self.thread_chamfer = w.value as u32 == 23;
+                }
                 m @ (2 | 30 | 5 | 9 | 98 | 99) => after.push((m, w)),
                 m => {
                     return Err(alarm(
