@@ -12,6 +12,7 @@ pub mod arc;
 mod codes;
 mod cycles;
 mod interp;
+mod library;
 mod machine;
 pub mod timing;
 pub mod tnrc;
@@ -22,6 +23,7 @@ pub use alarm::Diagnostic;
 pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
 pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
+pub use library::{Library, LibraryRef};
 pub use machine::{
     Control, DrillReturn, FeedMode, GCodeSystem, HaasSettings, Increment, Machine, PqUnits,
     ProfileError, RapidPath, Units,

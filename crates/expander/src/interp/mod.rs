@@ -45,6 +45,8 @@ pub struct Options {
     /// The tool that cuts before the program's first T word (`--tool N`, else the tool
     /// table's first entry); `None` leaves it 0, "no tool yet".
     pub start_tool: Option<u32>,
+    /// Where `M98 P`/`G65 P` find programs the file does not hold (`--lib`).
+    pub library: Option<crate::LibraryRef>,
 }
 
 impl Default for Options {
@@ -60,6 +62,7 @@ impl Default for Options {
             },
             blades: BTreeMap::new(),
             start_tool: None,
+            library: None,
         }
     }
 }
@@ -107,7 +110,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
         }
         match result {
             Ok(Exit::End) => {}
-            Ok(Exit::Return(_)) => unreachable!("M99 in the main program is an alarm"),
+            Ok(Exit::Return(_)) => unreachable!("M99 in the main program ends it or is an alarm"),
             Err(alarm) => it.out.alarms.push(alarm),
         }
     }

@@ -254,6 +254,7 @@ impl Interp<'_> {
                     self.thread_chamfer = w.value as u32 == 23;
                 }
                 m @ (2 | 30 | 5 | 9 | 98 | 99) => after.push((m, w)),
+                97 if self.machine.control == crate::Control::Haas => after.push((97, w)),
                 m => {
                     return Err(alarm(
                         w.span,
