@@ -34,10 +34,12 @@ impl Interp<'_> {
                 index,
                 tool_blade,
                 thread_chamfer: self.thread_chamfer,
+                drill_return: self.drill_return,
             };
             cycles::run(&mut c)?
         };
         self.out.warnings.extend(out.warnings);
+        self.out.dwell_s += out.dwell_s;
         for (kind, points) in out.intended {
             // G73 then G70 on one shape hand it over twice: keep it once.
             if !self

@@ -148,6 +148,8 @@ pub(crate) struct Interp<'m> {
     /// Haas M23 (on, the power-on state, **Interpretation**) / M24 (off): the thread
     /// pull-out chamfer of G76 (spec/dialects.md §3.5).
     pub(crate) thread_chamfer: bool,
+    /// Return level of the drilling cycles (the profile's; G98/G99 in systems B/C set it).
+    pub(crate) drill_return: crate::DrillReturn,
 }
 
 /// A controller alarm.
@@ -184,6 +186,7 @@ impl<'m> Interp<'m> {
             section: None,
             comp_warned: vec![],
             thread_chamfer: true,
+            drill_return: machine.drill_return,
         }
     }
 
@@ -253,8 +256,18 @@ impl<'m> Interp<'m> {
             None => {
                 if let Some((m, _)) = g.motion {
                     self.motion = m;
+                    // a group-01 code ends a drilling cycle
+                    self.retained.drill = None;
                 }
-                if let MotionMode::Cycle(t) = self.motion {
+                let drill = self.retained.drill.map(|d| d.code);
+                if let Some(t) = drill.filter(|_| {
+                    ['X', 'Z', 'U', 'W', 'R', 'Q', 'P']
+                        .iter()
+                        .any(|&l| b.has(l))
+                }) {
+                    // the drilling cycle in force repeats with the block's words
+                    flow = self.cycle(t, None, sub, index, &mut used)?;
+                } else if let MotionMode::Cycle(t) = self.motion {
                     if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
                         let w = g.motion.map(|(_, w)| w);
                         flow = self.cycle(t, w, sub, index, &mut used)?;

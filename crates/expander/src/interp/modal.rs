@@ -95,6 +95,8 @@ impl Interp<'_> {
                     }
                     g.one_shot = Some((t, w));
                 }
+                G18 => {}
+                G80 => self.retained.drill = None,
                 G20 => self.inch = true,
                 G21 => self.inch = false,
                 G40 | G41 | G42 => {
