@@ -454,3 +454,83 @@ fn haas_m98_and_m99_p() {
     let z: Vec<f64> = tp.segments.iter().map(|s| end(s).0).collect();
     assert_eq!(z, [0.0, -1.0, -3.0, -4.0, -6.0, -6.0]);
 }
+
+/// Haas G73 one block: I = total X relief (radius), D = 3 passes: the shape moved by 2, 1
+/// and 0 mm radius (X44, X42, X40 along Z−20).
+#[test]
+fn haas_g73_one_block() {
+    let text = "G21 G99 T0101\nG00 X52. Z2.\nG73 P10 Q20 U0. W0. I2. K0. D3 F0.2\nN10 G00 X40.\nG01 Z-20.\nN20 X52.\nM30\n";
+    let p = gcode::parse(text).unwrap();
+    let tp = expander::expand(&p, &haas(), &Default::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let cuts: Vec<(f64, f64)> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == Motion::Feed && s.span.line == 5)
+        .map(end)
+        .collect();
+    assert_eq!(cuts, [(-20.0, 44.0), (-20.0, 42.0), (-20.0, 40.0)]);
+    // the two-block relief block is not Haas's
+    let p = gcode::parse("G00 X52. Z2.\nG73 U2. W0. R3\nM30\n").unwrap();
+    let tp = expander::expand(&p, &haas(), &Default::default());
+    assert_eq!(tp.alarms[0].code, "LS-ONE-BLOCK-FORM");
+}
+
+/// Haas G71 I/K (**Interpretation**): the layers stop at the shape moved by (U/2 + I, W + K),
+/// the final pass follows the shape moved by (U/2, W).
+#[test]
+fn haas_g71_i_k_rough_allowance() {
+    let text = T4.replace("D2. F0.25", "D2. I0.5 K0.2 F0.25");
+    let p = gcode::parse(&text).unwrap();
+    let tp = expander::expand(&p, &haas(), &Default::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let g71: Vec<&Segment> = tp.segments.iter().filter(|s| s.span.line == 8).collect();
+    let layer_ends: Vec<(f64, f64)> = g71
+        .iter()
+        .filter(|s| s.motion == Motion::Feed && (s.from.r - s.to.r).abs() < 1e-9)
+        .map(|s| end(s))
+        .collect();
+    assert_eq!(
+        layer_ends,
+        [
+            (-44.7, 48.0),
+            (-44.7, 44.0),
+            (-28.2, 40.0),
+            (-24.2, 36.0),
+            (-20.2, 32.0),
+            (-19.7, 31.5)
+        ]
+    );
+    let pass: Vec<(f64, f64)> = tp
+        .segments
+        .iter()
+        .filter(|s| s.span.line == 10 || s.span.line == 11)
+        .take(2)
+        .map(end)
+        .collect();
+    assert_eq!(pass, [(-19.9, 30.5), (-29.9, 40.5)]);
+}
+
+/// FANUC with the FS15 tape format (`fs15_format = true`) reads the one-block G71 and G76.
+#[test]
+fn fs15_format_admits_the_one_block_forms() {
+    let mut m = Machine::for_control(Control::FanucA);
+    let text = "G21 G99 T0101\nG00 X52. Z2.\nG71 P10 Q20 U0.5 W0.1 D2. F0.25\nN10 G00 X30.\nG01 Z-20.\nN20 X52.\nT0404\nG00 X22. Z5.\nG76 X17.835 Z-20. K1.082 D0.35 A60 F1.5\nM30\n";
+    let p = gcode::parse(text).unwrap();
+    let tp = expander::expand(&p, &m, &Default::default());
+    assert_eq!(tp.alarms[0].code, "LS-ONE-BLOCK-FORM");
+    assert_eq!(tp.alarms[0].span.line, 3);
+    m.fs15_format = true;
+    let tp = expander::expand(&p, &m, &Default::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert!(tp.segments.iter().any(|s| s.motion == Motion::Thread));
+}
+
+/// Haas G04 P with a decimal point is seconds, without one milliseconds.
+#[test]
+fn haas_dwell_p_in_seconds() {
+    let p = gcode::parse("G04 P1.5\nG04 P500\nM30\n").unwrap();
+    let tp = expander::expand(&p, &haas(), &Default::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert!((tp.dwell_s - 2.0).abs() < 1e-12);
+}

@@ -177,7 +177,11 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
             format!(
                 "{name}: the retract e = {e} mm is larger than the peck {in_word} = {in_step} mm"
             ),
-            format!("make R(e) in the {name} R block smaller than {in_word}, or the pecks larger"),
+            if haas {
+                format!("make haas.peck_retract in the machine profile smaller than {in_word}, or the pecks larger")
+            } else {
+                format!("make R(e) in the {name} R block smaller than {in_word}, or the pecks larger")
+            },
         ));
     }
     if escape < 0.0 {

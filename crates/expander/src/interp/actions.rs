@@ -7,10 +7,13 @@ use crate::{Diagnostic, Pt};
 use gcode::{Block, Word};
 
 impl Interp<'_> {
+    /// G04 P (ms) or X/U (s); Haas `P1.5` (with a point) is seconds (spec/dialects.md §3.1).
     pub(super) fn dwell(&mut self, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
         let p = used.take('P');
         let x = used.take('X').or_else(|| used.take('U'));
+        let haas = self.machine.control == crate::Control::Haas;
         let seconds = match (p, x) {
+            (Some(p), None) if haas && p.has_point => p.value,
             (Some(p), None) => {
                 if p.has_point {
                     return Err(alarm(
