@@ -74,7 +74,7 @@ fn t4_haas_one_block_g71_and_g70() {
     let pass: Vec<(f64, f64)> = tp
         .segments
         .iter()
-        .skip_while(|s| s.span.line == 8 || s.span.line < 8)
+        .skip_while(|s| s.span.line <= 8)
         .take(6)
         .map(end)
         .collect();
@@ -148,7 +148,7 @@ fn passes(tp: &expander::Toolpath) -> Vec<(f64, f64)> {
     tp.segments
         .iter()
         .filter(|s| s.motion == Motion::Thread)
-        .map(|s| end(s))
+        .map(end)
         .zip(
             tp.segments
                 .iter()

@@ -284,7 +284,7 @@ impl Default for Machine {
 }
 
 impl Machine {
-    /// The built-in profile of a control: its power-on modes; the rest as the GSK980TDi.
+    /// The built-in profile of a control: its power-on modes; the rest as the `GSK980TDi`.
     pub fn for_control(control: Control) -> Self {
         Self {
             control,

@@ -151,7 +151,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         },
     };
     // peck
-    let q = if c.code == G83 || (haas && c.code == G83) {
+    let q = if c.code == G83 {
         let q = if haas {
             c.words.mm('Q', c.unit)
         } else {

@@ -206,7 +206,7 @@ fn one_block(c: &mut Cycle, g72: bool) -> Result<Removal, Diagnostic> {
     let haas = c.machine.control == Control::Haas;
     let d = c.words.take('D').expect("the caller checked D");
     let dd = d.value * c.unit;
-    if !(dd > 0.0) {
+    if dd.is_nan() || dd <= 0.0 {
         return Err(Diagnostic::new(
             d.span,
             "PS062",
