@@ -443,6 +443,40 @@ fn subprograms_over_files() {
     assert_eq!(out.code, 2, "{}", out.stderr);
 }
 
+/// A gouge made by a subprogram from `--lib` names that file and its line on the terminal.
+#[test]
+fn a_gouge_in_a_library_subprogram_names_its_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let lib = dir.path().join("lib");
+    std::fs::create_dir(&lib).unwrap();
+    std::fs::write(
+        lib.join("O1001.nc"),
+        "O1001\nG00 X42. Z-10.\nG01 X30. F0.1\nG00 X52.\nM99\n",
+    )
+    .unwrap();
+    let main = dir.path().join("main.nc");
+    std::fs::write(&main, "O0100\nG21 G99 T0101 M03 S800\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0 W0 F0.25\nN10 G00 X40.\nG01 Z-30. F0.1\nN20 X52.\nG70 P10 Q20\nM98 P1001\nG00 X100. Z100.\nM30\n").unwrap();
+    let json = dir.path().join("r.json");
+    let out = latsim(&[
+        "run",
+        main.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        "50x60",
+        "--lib",
+        lib.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert!(
+        out.stderr.contains("O1001.nc:3: gouge: 5.0000 mm deep"),
+        "{}",
+        out.stderr
+    );
+}
+
 /// Haas M98 P is the program number and L the repeats; Haas M99 P branches within the
 /// program (it does not return to the caller).
 #[test]
