@@ -568,3 +568,37 @@ fn haas_dwell_p_in_seconds() {
     assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
     assert!((tp.dwell_s - 2.0).abs() < 1e-12);
 }
+
+/// A drilling cycle is modal: a later block with Z repeats it with the retained R, Q and
+/// initial level; a block with only M98 P does not; G80 (or G00) ends it.
+#[test]
+fn drilling_is_modal_until_g80() {
+    let text = "O0001\nG21 G99 T0303\nG00 X0. Z5.\nG85 Z-10. R-3. F0.1\nZ-20.\nM98 P2\nG80\nZ-30.\nM30\nO0002\nM99\n";
+    let p = gcode::parse(text).unwrap();
+    let tp = expander::expand(
+        &p,
+        &Machine::for_control(Control::FanucA),
+        &Default::default(),
+    );
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let z: Vec<(u32, f64)> = tp
+        .segments
+        .iter()
+        .skip(1)
+        .map(|s| (s.span.line, s.to.z))
+        .collect();
+    assert_eq!(
+        z,
+        [
+            (4, 2.0),
+            (4, -10.0),
+            (4, 2.0),
+            (4, 5.0),
+            (5, 2.0),
+            (5, -20.0),
+            (5, 2.0),
+            (5, 5.0),
+            (8, -30.0)
+        ]
+    );
+}

@@ -26,7 +26,7 @@
 //! - P: dwell; FANUC milliseconds (no decimal point); Haas `P1.5` seconds, `P1500` ms.
 //! - K: repeats; the hole is drilled K times (K > 1 with an incremental W is an alarm: a
 //!   second hole would be off the axis of the first one's depth).
-//! - The cycle is modal until G80 or a group-01 code; a later block with only Z/R/Q/P/F/X
+//! - The cycle is modal until G80 or a group-01 code; a later block with X/Z/U/W/R/Q
 //!   repeats it with the retained words (`Retained::drill`).
 //! - G84 sweeps the drill outline of the tool table (the tap's major diameter); the thread
 //!   form is not drawn (a note says so).

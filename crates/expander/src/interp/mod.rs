@@ -260,11 +260,9 @@ impl<'m> Interp<'m> {
                     self.retained.drill = None;
                 }
                 let drill = self.retained.drill.map(|d| d.code);
-                if let Some(t) = drill.filter(|_| {
-                    ['X', 'Z', 'U', 'W', 'R', 'Q', 'P']
-                        .iter()
-                        .any(|&l| b.has(l))
-                }) {
+                if let Some(t) =
+                    drill.filter(|_| ['X', 'Z', 'U', 'W', 'R', 'Q'].iter().any(|&l| b.has(l)))
+                {
                     // the drilling cycle in force repeats with the block's words
                     flow = self.cycle(t, None, sub, index, &mut used)?;
                 } else if let MotionMode::Cycle(t) = self.motion {
