@@ -543,6 +543,11 @@ fn haas_g71_i_k_rough_allowance() {
         .map(end)
         .collect();
     assert_eq!(pass, [(-19.9, 30.5), (-29.9, 40.5)]);
+    // the report states the offsets used
+    assert!(tp
+        .warnings
+        .iter()
+        .any(|w| w.code == "LS-HAAS-IK" && w.message.contains("X+1.5000 (diameter) Z+0.3000")));
 }
 
 /// FANUC with the FS15 tape format (`fs15_format = true`) reads the one-block G71 and G76.

@@ -46,6 +46,8 @@ const EPS: f64 = 1e-9;
 /// The words of one stock removal: depth of cut, retract, the allowance the layers stop
 /// at and the one the final pass follows (`(z, r)`, r a radius), and the form's rules.
 struct Removal {
+    /// A note for the report (the Haas I/K reading), if any.
+    note: Option<String>,
     dd: f64,
     e: f64,
     layers_off: Pt,
@@ -135,6 +137,9 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         warnings: vec![],
         ..Output::default()
     };
+    if let Some(note) = removal.note {
+        out.warnings.push(c.alarm("LS-HAAS-IK", note, ""));
+    }
     out.intended.push((
         crate::IntendedKind::FinishingContour,
         shape.intended_path(0.001),
@@ -185,6 +190,7 @@ fn two_block(c: &mut Cycle, g72: bool) -> Result<Removal, Diagnostic> {
     };
     let off = Pt::new(dw, du);
     Ok(Removal {
+        note: None,
         dd,
         e,
         layers_off: off,
@@ -246,7 +252,18 @@ fn one_block(c: &mut Cycle, g72: bool) -> Result<Removal, Diagnostic> {
         let retained = if g72 { c.retained.g72 } else { c.retained.g71 };
         retained.map_or(0.0, |r| r.1)
     };
+    let note = (i != 0.0 || k != 0.0).then(|| {
+        format!(
+            "{}: the layers stop at the shape moved by X{:+.4} (diameter) Z{:+.4} (U + 2I, W + K); the final pass follows it moved by X{:+.4} Z{:+.4} (U, W) — Interpretation of the Haas rough allowance I/K",
+            code_name(g72),
+            2.0 * (du + i),
+            dw + k,
+            2.0 * du,
+            dw
+        )
+    });
     Ok(Removal {
+        note,
         dd,
         e,
         layers_off: Pt::new(dw + k, du + i),

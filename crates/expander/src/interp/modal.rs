@@ -257,6 +257,17 @@ impl Interp<'_> {
                 }
                 m @ (2 | 30 | 5 | 9 | 98 | 99) => after.push((m, w)),
                 97 if self.machine.control == crate::Control::Haas => after.push((97, w)),
+                97 => {
+                    return Err(alarm(
+                        w.span,
+                        "LS-UNKNOWN-M",
+                        format!(
+                            "M97 (local subprogram call) is the Haas form: run with --control haas (this control is {})",
+                            self.machine.control.key()
+                        ),
+                        "call a subprogram with M98 P<program number> under this control",
+                    ))
+                }
                 m => {
                     return Err(alarm(
                         w.span,
