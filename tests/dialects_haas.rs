@@ -607,3 +607,35 @@ fn drilling_is_modal_until_g80() {
         ]
     );
 }
+
+/// Haas G74 one block as peck drilling on one line: K4. mm pecks with the 0.5 mm retract of
+/// `haas.peck_retract`, then back to the start; P/Q are not Haas G74 words.
+#[test]
+fn haas_g74_peck_drilling_in_mm() {
+    let p = gcode::parse("G21 G99\nG00 X0. Z2.\nG74 Z-10. K4. F0.1\nM30\n").unwrap();
+    let tp = expander::expand(&p, &haas(), &Default::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let z: Vec<(Motion, f64)> = tp
+        .segments
+        .iter()
+        .filter(|s| s.span.line == 3)
+        .map(|s| (s.motion, s.to.z))
+        .collect();
+    assert_eq!(
+        z,
+        [
+            (Motion::Feed, -2.0),
+            (Motion::Rapid, -1.5),
+            (Motion::Feed, -6.0),
+            (Motion::Rapid, -5.5),
+            (Motion::Feed, -10.0),
+            (Motion::Rapid, 2.0)
+        ]
+    );
+    let p = gcode::parse("G21 G99\nG00 X0. Z2.\nG74 Z-10. Q4000 F0.1\nM30\n").unwrap();
+    let tp = expander::expand(&p, &haas(), &Default::default());
+    assert_eq!(
+        (tp.alarms[0].code, tp.alarms[0].span.column),
+        ("LS-ONE-BLOCK-FORM", 11)
+    );
+}
