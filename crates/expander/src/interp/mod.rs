@@ -13,6 +13,7 @@ mod cycle;
 mod flow;
 mod modal;
 mod motion;
+mod reach;
 mod tool_facts;
 
 use crate::codes::{self, G04, G20, G21, G28, G40, G50, G75_1};
@@ -96,6 +97,14 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
     }
     if let Some(main) = program.main() {
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
+        if let Some(b) = reach::unreachable_tail(main) {
+            it.warn(
+                b.span,
+                "LS-UNREACHABLE",
+                "the blocks after M30/M02 are not in an O program and nothing calls them (M97, GOTO): unreachable",
+                "start them with an O number to make a subprogram, call them with M97 P<N>, or delete them",
+            );
+        }
         let mut result = it.run(program, 0, 0, 0);
         it.flush_compensation();
         if result.is_ok() && it.retained.g75_1.is_some() {
