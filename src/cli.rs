@@ -38,6 +38,10 @@ pub(crate) struct ProgramArgs {
     /// Least input increment, overriding the machine profile.
     #[arg(long, value_enum, value_name = "SYSTEM")]
     pub(crate) increment: Option<IncrementArg>,
+    /// A folder of subprograms (repeatable): `M98 P1234` / `G65 P1234` find `O1234`,
+    /// `O1234.nc` (any NC extension) or the file whose first program number is 1234.
+    #[arg(long = "lib", value_name = "DIR")]
+    pub(crate) lib: Vec<PathBuf>,
     /// Skip blocks that start with '/'.
     #[arg(long)]
     pub(crate) block_delete: bool,

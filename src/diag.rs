@@ -12,6 +12,7 @@ use miette::{
 use std::cell::Cell;
 
 /// A program file's name and text, for showing source lines.
+#[derive(Clone)]
 pub(crate) struct Source {
     pub(crate) name: String,
     pub(crate) text: String,

@@ -3,8 +3,10 @@
 
 use crate::cli::{IncrementArg, ProgramArgs, RunArgs};
 use crate::diag::{self, Source};
+use crate::library::Folders;
 use expander::{Increment, Machine, Options, Toolpath};
 use std::path::Path;
+use std::sync::Arc;
 
 /// Largest input file read (a million-move program is ~20 MB). Larger files are refused
 /// before they are read, so memory stays bounded whatever is given.
@@ -13,6 +15,8 @@ const MAX_PROGRAM_BYTES: u64 = 64 * 1024 * 1024;
 /// A read, parsed and expanded program.
 pub(crate) struct Loaded {
     pub(crate) source: Source,
+    /// The `--lib` folders, which know the files of the subprograms read from them.
+    pub(crate) library: Option<Arc<Folders>>,
     pub(crate) machine: Machine,
     pub(crate) toolpath: Toolpath,
     pub(crate) blocks: usize,
@@ -133,46 +137,69 @@ pub(crate) fn load_program(
         );
         return Err(());
     }
+    let library = if args.lib.is_empty() {
+        None
+    } else {
+        match Folders::scan(&args.lib, source.text.len()) {
+            Ok(f) => Some(Arc::new(f)),
+            Err(e) => {
+                diag::print_plain(&e, "give --lib the folder that holds the subprogram files");
+                return Err(());
+            }
+        }
+    };
     let opts = Options {
         block_delete: args.block_delete,
         tools: tools.facts(),
+        library: library
+            .clone()
+            .map(|l| expander::LibraryRef(l as Arc<dyn expander::Library>)),
         start_tool: start_tool.or_else(|| tools.numbers().first().copied()),
         ..Options::default()
     };
     let toolpath = expander::expand(&program, &machine, &opts);
     Ok(Loaded {
         source,
+        library,
         machine,
         toolpath,
         blocks,
     })
 }
 
+impl Loaded {
+    /// The file a span's byte offset lies in (the main file or a `--lib` file), with the
+    /// offset within it.
+    pub(crate) fn source_at(&self, offset: usize) -> (std::borrow::Cow<'_, Source>, usize) {
+        match self.library.as_ref().and_then(|l| l.place(offset)) {
+            Some((src, local)) => (std::borrow::Cow::Owned(src), local),
+            None => (std::borrow::Cow::Borrowed(&self.source), offset),
+        }
+    }
+
+    /// `file:line` of a span, for terminal lines (the file a subprogram came from).
+    pub(crate) fn place(&self, span: expander::Span) -> String {
+        let (src, _) = self.source_at(span.offset);
+        format!("{}:{}", src.name, span.line)
+    }
+
+    fn print(&self, d: &expander::Diagnostic, warning: bool) {
+        let (src, offset) = self.source_at(d.span.offset);
+        diag::print_at(
+            &src, offset, d.span.len, d.code, &d.message, &d.help, warning,
+        );
+    }
+}
+
 /// Print the interpreter's alarms (always) and warnings (unless quiet).
 pub(crate) fn print_diagnostics(loaded: &Loaded, quiet: bool) {
     for a in &loaded.toolpath.alarms {
-        diag::print_at(
-            &loaded.source,
-            a.span.offset,
-            a.span.len,
-            a.code,
-            &a.message,
-            &a.help,
-            false,
-        );
+        loaded.print(a, false);
     }
     if !quiet {
         const SHOWN: usize = 10;
         for w in loaded.toolpath.warnings.iter().take(SHOWN) {
-            diag::print_at(
-                &loaded.source,
-                w.span.offset,
-                w.span.len,
-                w.code,
-                &w.message,
-                &w.help,
-                true,
-            );
+            loaded.print(w, true);
         }
         if loaded.toolpath.warnings.len() > SHOWN {
             eprintln!(

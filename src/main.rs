@@ -9,6 +9,7 @@ mod cli;
 mod diag;
 mod expand_cmd;
 mod input;
+mod library;
 mod report;
 mod run;
 mod write;

@@ -11,12 +11,18 @@ fn shape(s: &stock::Shape) -> Shape {
     }
 }
 
-fn diagnostic(d: &expander::Diagnostic) -> Diagnostic {
+/// A diagnostic for the report; one raised in a `--lib` file names that file first (the
+/// report's line and column are that file's).
+fn diagnostic(loaded: &Loaded, d: &expander::Diagnostic) -> Diagnostic {
+    let message = match loaded.library.as_ref().and_then(|l| l.place(d.span.offset)) {
+        Some((src, _)) => format!("in {}: {}", src.name, d.message),
+        None => d.message.clone(),
+    };
     Diagnostic {
         line: d.span.line,
         column: d.span.column,
         code: d.code.to_string(),
-        message: d.message.clone(),
+        message,
     }
 }
 
@@ -79,7 +85,7 @@ pub(crate) fn build(
         .filter(|c| c.depth <= cut_tol)
         .map(cut)
         .collect();
-    let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(diagnostic).collect();
+    let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(|d| diagnostic(loaded, d)).collect();
     warnings.extend(rapid_cuts.iter().map(|c| Diagnostic {
         line: c.line,
         column: c.column,
@@ -123,7 +129,7 @@ pub(crate) fn build(
         toolpath: tp.segments.iter().map(path_line).collect(),
         crashes,
         rapid_cuts,
-        alarms: tp.alarms.iter().map(diagnostic).collect(),
+        alarms: tp.alarms.iter().map(|d| diagnostic(loaded, d)).collect(),
         warnings,
         tools: {
             let times = expander::timing::per_tool(&tp.segments, &loaded.machine);

@@ -69,7 +69,7 @@ fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
 /// Program files to run: the files given, and the program files inside the folders given
 /// (by extension: nc cnc tap ngc iso txt gcode), sorted.
 fn program_files(paths: &[PathBuf]) -> Vec<PathBuf> {
-    const EXT: [&str; 7] = ["nc", "cnc", "tap", "ngc", "iso", "txt", "gcode"];
+    const EXT: [&str; 7] = crate::library::NC_EXTENSIONS;
     let mut out = vec![];
     for p in paths {
         if p.is_dir() {
@@ -313,7 +313,31 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     }
 
     if !batch {
-        print_findings(&loaded.source.name, &report);
+        let cut_tol = loaded.machine.rapid_cut_tol;
+        let crash_at: Vec<String> = sim
+            .crashes
+            .iter()
+            .filter(|c| c.depth > cut_tol)
+            .map(|c| loaded.place(segments[c.segment].span))
+            .collect();
+        let gouge_at: Vec<String> = deviation
+            .as_ref()
+            .map(|d| {
+                d.gouges
+                    .iter()
+                    .map(|g| {
+                        g.segments
+                            .first()
+                            .and_then(|&i| segments.get(i))
+                            .map_or_else(
+                                || format!("{}:0", loaded.source.name),
+                                |s| loaded.place(s.span),
+                            )
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        print_findings(&loaded.source.name, &crash_at, &gouge_at, &report);
     }
     let verdict = report.verdict();
     println!(
@@ -339,12 +363,12 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
 /// their own cap).
 const MAX_PRINTED: usize = 20;
 
-/// Crashes and gouges on the terminal, `file:line` first, at most [`MAX_PRINTED`] of each.
-fn print_findings(name: &str, report: &render::Report) {
-    for c in report.crashes.iter().take(MAX_PRINTED) {
+/// Crashes and gouges on the terminal, `file:line` first (the file a subprogram came from:
+/// `crash_at`, `gouge_at`), at most [`MAX_PRINTED`] of each.
+fn print_findings(name: &str, crash_at: &[String], gouge_at: &[String], report: &render::Report) {
+    for (c, at) in report.crashes.iter().zip(crash_at).take(MAX_PRINTED) {
         eprintln!(
-            "{name}:{}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² of stock",
-            c.line,
+            "{at}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² of stock",
             c.column,
             c.z,
             2.0 * c.r,
@@ -352,10 +376,9 @@ fn print_findings(name: &str, report: &render::Report) {
             c.area_mm2
         );
     }
-    for g in report.gouges.iter().take(MAX_PRINTED) {
+    for (g, at) in report.gouges.iter().zip(gouge_at).take(MAX_PRINTED) {
         eprintln!(
-            "{name}:{}: gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
-            g.line,
+            "{at}: gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
             g.depth_mm,
             g.area_mm2,
             g.z,

@@ -25,7 +25,7 @@ const CODES: &[&str] = &[
     "G96", "G97", "G98", "G99", "M03", "M05", "M30", "M98", "M99", "T0101", "T0202", "N10", "N20",
     "O0001", "/", "(c)", ";", "\n", "G77", "G91", "G95", "G92.1", "G24", "G53", "G10 L2",
     "G10 L50", "G11", "G154", "G54.1", "G17", "G18", "G80", "G52", "G27", "G112", "M41", "M77",
-    "M19", "M23",
+    "M19", "M23", "G81", "G83", "G84", "G85", "M24", "M97",
 ];
 const WORDS: &[&str] = &[
     "X", "Z", "U", "W", "R", "I", "K", "P", "Q", "F", "S", "H", "D", "A", "B", "L", "V", "J", "E",
@@ -67,7 +67,12 @@ fn random_programs_never_panic() {
         ..Default::default()
     };
     let (mut parsed, mut simulated) = (0, 0);
-    for _ in 0..3000 {
+    // every other program under the Haas control (one-block cycles, M97, Haas drilling)
+    let machines = [
+        expander::Machine::default(),
+        expander::Machine::for_control(expander::Control::Haas),
+    ];
+    for k in 0..3000 {
         let text = random_program(&mut rng);
         let Ok(p) = gcode::parse(&text) else { continue };
         parsed += 1;
@@ -75,7 +80,7 @@ fn random_programs_never_panic() {
         for control in expander::Control::ALL {
             expander::expand(&p, &expander::Machine::for_control(control), &opts);
         }
-        let tp = expander::expand(&p, &expander::Machine::default(), &opts);
+        let tp = expander::expand(&p, &machines[k % 2], &opts);
         if tp.segments.len() <= 2000 {
             let sim = stock::simulate(
                 &blank,
@@ -124,4 +129,68 @@ fn hostile_files_through_the_cli() {
         assert!((0..=2).contains(&out.code), "case {k}: exit {}", out.code);
         assert!(!out.stderr.contains("panicked"), "case {k}: {}", out.stderr);
     }
+}
+
+/// Haas forms on hostile input: a local subprogram calling itself, a microscopic peck, a
+/// branch to itself, microscopic layers and steps: an alarm (exit 1), fast; a library
+/// folder that is a file: exit 2.
+#[test]
+fn hostile_haas_files_through_the_cli() {
+    let cases: &[&[u8]] = &[
+        b"G21
+M97 P1
+M30
+N1 M97 P1
+M99
+",
+        b"G21 G99
+G00 X0 Z5
+G83 Z-3000. R2. Q0.0001 F0.1
+M30
+",
+        b"G21
+N5 G00 W0
+M99 P5
+",
+        b"G21
+G00 X52 Z2
+G71 P1 Q2 D0.00001 F0.2
+N1 G00 X10
+N2 Z-10
+M30
+",
+        b"G21
+G00 X42 Z-5
+G75 X30 Z-1000 I0.001 K0.001 F0.1
+M30
+",
+    ];
+    for (k, bytes) in cases.iter().enumerate() {
+        let (dir, prog) = common::temp_program(&format!("haas{k}.nc"), bytes);
+        let t = std::time::Instant::now();
+        let out = common::latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--control",
+            "haas",
+            "--stock",
+            "40x40",
+            "--out",
+            dir.path().to_str().unwrap(),
+            "--quiet",
+        ]);
+        assert_eq!(out.code, 1, "case {k}: {}", out.stderr);
+        assert!(!out.stderr.contains("panicked"), "case {k}: {}", out.stderr);
+        assert!(t.elapsed().as_secs() < 20, "case {k}: {:?}", t.elapsed());
+    }
+    let (_dir, prog) = common::temp_program(
+        "lib.nc",
+        b"M98 P1234
+M30
+",
+    );
+    let p = prog.to_str().unwrap();
+    let out = common::latsim(&["check", p, "--control", "haas", "--lib", p]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(!out.stderr.contains("panicked"), "{}", out.stderr);
 }

@@ -35,8 +35,9 @@ fn seed_003_annotation_is_read_as_a_note() {
     assert_eq!(p.notes[0].span.line, 8);
 }
 
-/// The one-block G76 (Haas / FANUC 10/11/15) is recognised and reported at its word under
-/// the default control, not skipped.
+/// The one-block G76 (Haas / FANUC 10/11/15) is recognised and reported at its K word (the
+/// word that makes it the one-block form) under the default control, naming the control to
+/// use, not skipped.
 #[test]
 fn one_block_g76_is_an_alarm_at_its_word() {
     let p = gcode::parse("M3 S300\nG0 X30 Z5\n  G76 X27.4 Z-20 K1.3 D300 F2\n").unwrap();
@@ -44,7 +45,8 @@ fn one_block_g76_is_an_alarm_at_its_word() {
     let a = tp.alarms.first().expect("an alarm");
     assert_eq!(
         (a.span.line, a.span.column, a.code),
-        (3, 3, "LS-G76-ONE-BLOCK"),
+        (3, 18, "LS-ONE-BLOCK-FORM"),
         "{a}"
     );
+    assert!(a.message.contains("--control haas"), "{a}");
 }

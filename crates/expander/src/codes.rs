@@ -11,6 +11,8 @@ pub(crate) const G02: i32 = 20;
 pub(crate) const G03: i32 = 30;
 /// G04 dwell.
 pub(crate) const G04: i32 = 40;
+/// G18 ZX plane, the lathe's plane (accepted, no effect).
+pub(crate) const G18: i32 = 180;
 /// G20 inch input.
 pub(crate) const G20: i32 = 200;
 /// G21 metric input.
@@ -47,6 +49,16 @@ pub(crate) const G75: i32 = 750;
 pub(crate) const G75_1: i32 = 751;
 /// G76 multiple threading cycle (recognised, not run yet).
 pub(crate) const G76: i32 = 760;
+/// G81 Haas drilling cycle.
+pub(crate) const G81: i32 = 810;
+/// G82 Haas drilling cycle with dwell.
+pub(crate) const G82: i32 = 820;
+/// G83 face peck drilling (FANUC), Haas peck drilling.
+pub(crate) const G83: i32 = 830;
+/// G84 face tapping.
+pub(crate) const G84: i32 = 840;
+/// G85 face boring (FANUC).
+pub(crate) const G85: i32 = 850;
 /// G90 turning cycle.
 pub(crate) const G90: i32 = 900;
 /// G92 threading cycle.
@@ -86,8 +98,6 @@ pub(crate) const G10: i32 = 100;
 pub(crate) const G11: i32 = 110;
 /// G17 XY plane (live tooling).
 pub(crate) const G17: i32 = 170;
-/// G18 ZX plane, the lathe's own.
-pub(crate) const G18: i32 = 180;
 /// G19 YZ plane (live tooling).
 pub(crate) const G19: i32 = 190;
 /// G27 reference position return check.

@@ -13,6 +13,7 @@ mod codes;
 mod cycles;
 mod dialect;
 mod interp;
+mod library;
 mod machine;
 mod mcodes;
 pub mod timing;
@@ -24,9 +25,10 @@ pub use alarm::Diagnostic;
 pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
 pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
+pub use library::{Library, LibraryRef};
 pub use machine::{
-    Control, FeedMode, GCodeSystem, Increment, Machine, PqUnits, ProfileError, RapidPath, ShortT,
-    Units,
+    Control, DrillReturn, FeedMode, GCodeSystem, HaasSettings, Increment, Machine, PqUnits,
+    ProfileError, RapidPath, ShortT, Units,
 };
 pub use toolpath::{
     Arc, Feed, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,

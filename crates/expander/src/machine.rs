@@ -21,6 +21,17 @@
 //!                           # "tool" (T1 = T0101; FANUC and Haas default)
 //! accept_m = [50, 51]       # M codes this machine knows beyond its control's table
 //! m_names = { 68 = "chuck clamp" } # names for them in the report
+//! fs15_format = false       # FANUC: read the FS15 one-block G71/G72/G76 (parameter No. 0001 FCV)
+//! g83_full_retract = false  # G83 peck: true full retract to R, false high-speed (No. 5101 RTR)
+//! drill_clearance = 1.0     # G83 clearance δ before the next peck, mm (No. 5114)
+//! drill_return = "initial"  # "initial" | "r_point": G83–G85 return level (system A, Haas)
+//! [haas]                    # Haas settings (spec/dialects.md §3)
+//! setting73 = 0.5           # G71/G72 retract between layers, mm (radius)
+//! setting86 = 0.0           # G76 thread finish allowance, mm (radius)
+//! setting99 = 0.025         # G76 minimum cut, mm (radius)
+//! setting95 = 1.0           # G76/G92 chamfer (M23) size, leads
+//! setting96 = 45.0          # G76/G92 chamfer angle, degrees from Z
+//! peck_retract = 0.5        # G74/G75 chip-break retract, mm
 //! [work_offsets]            # G55..G59 origins relative to G54, [z, x];
 //! g55 = [-50.0, 0.0]        # p1 … p300: G54.1 P1… / Haas G154 P1…
 //! ```
@@ -197,6 +208,49 @@ pub enum PqUnits {
     Mm,
 }
 
+/// Where a drilling cycle (G83–G85, Haas G81–G84) returns after the hole (spec/dialects.md
+/// §6.2): system A and Haas have no G98/G99 return codes, so the profile says.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DrillReturn {
+    /// The Z where the cycle was read (the default, **Interpretation**).
+    #[default]
+    Initial,
+    /// The R point.
+    RPoint,
+}
+
+/// The Haas settings the simulation uses (`[haas]`, spec/dialects.md §3). The defaults are
+/// **Interpretations** (the machine's own settings decide).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HaasSettings {
+    /// Setting 73, canned cycle retraction: the G71/G72 45° retract between layers, mm.
+    pub setting73: f64,
+    /// Setting 86, thread finish allowance: G76 d, mm (radius).
+    pub setting86: f64,
+    /// Setting 99, thread minimum cut: G76 Δdmin, mm (radius).
+    pub setting99: f64,
+    /// Setting 95, thread chamfer size under M23, in leads.
+    pub setting95: f64,
+    /// Setting 96, thread chamfer angle, degrees from the Z axis.
+    pub setting96: f64,
+    /// The G74/G75 chip-break retract (a setting on Haas, not a word), mm.
+    pub peck_retract: f64,
+}
+
+impl Default for HaasSettings {
+    fn default() -> Self {
+        Self {
+            setting73: 0.5,
+            setting86: 0.0,
+            setting99: 0.025,
+            setting95: 1.0,
+            setting96: 45.0,
+            peck_retract: 0.5,
+        }
+    }
+}
+
 /// A lathe's settings. `Machine::default()` is a GSK980TDi-like lathe.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Machine {
@@ -246,6 +300,16 @@ pub struct Machine {
     pub accept_m: Vec<u32>,
     /// Names of M codes for the report (profile `m_names`).
     pub m_names: std::collections::BTreeMap<u32, String>,
+    /// FANUC with the FS15 tape format (parameter No. 0001 FCV): one-block G71/G72/G76.
+    pub fs15_format: bool,
+    /// G83 pecks retract fully to the R point (else high-speed: back by the clearance).
+    pub g83_full_retract: bool,
+    /// G83 clearance δ above the previous depth before the next peck, mm.
+    pub drill_clearance: f64,
+    /// Return level of the drilling cycles where no G98/G99 says it.
+    pub drill_return: DrillReturn,
+    /// Haas settings.
+    pub haas: HaasSettings,
 }
 
 impl Default for Machine {
@@ -282,7 +346,23 @@ impl Machine {
             extra_offsets: Default::default(),
             accept_m: vec![],
             m_names: Default::default(),
+            fs15_format: false,
+            g83_full_retract: false,
+            drill_clearance: 1.0,
+            drill_return: DrillReturn::Initial,
+            haas: HaasSettings::default(),
         }
+    }
+
+    /// Whether the control reads the one-block G71/G72/G76 (Haas, or FANUC with the FS15
+    /// format; spec/dialects.md §3.2, §4.5).
+    pub fn one_block_cycles(&self) -> bool {
+        self.control == Control::Haas
+            || (self.fs15_format
+                && matches!(
+                    self.control,
+                    Control::FanucA | Control::FanucB | Control::FanucC
+                ))
     }
 }
 
@@ -310,6 +390,22 @@ struct File {
     accept_m: Option<Vec<Spanned<u32>>>,
     m_names: Option<std::collections::BTreeMap<String, Spanned<String>>>,
     work_offsets: Option<std::collections::BTreeMap<Spanned<String>, Spanned<[f64; 2]>>>,
+    fs15_format: Option<bool>,
+    g83_full_retract: Option<bool>,
+    drill_clearance: Option<Spanned<f64>>,
+    drill_return: Option<DrillReturn>,
+    haas: Option<HaasFile>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct HaasFile {
+    setting73: Option<Spanned<f64>>,
+    setting86: Option<Spanned<f64>>,
+    setting99: Option<Spanned<f64>>,
+    setting95: Option<Spanned<f64>>,
+    setting96: Option<Spanned<f64>>,
+    peck_retract: Option<Spanned<f64>>,
 }
 
 /// Largest coordinate a profile may give, mm: no lathe travels 10 m.
@@ -419,6 +515,46 @@ impl Machine {
         }
         if let Some(h) = file.home {
             m.home = pt("home", h)?;
+        }
+        m.fs15_format = file.fs15_format.unwrap_or(m.fs15_format);
+        m.g83_full_retract = file.g83_full_retract.unwrap_or(m.g83_full_retract);
+        m.drill_return = file.drill_return.unwrap_or(m.drill_return);
+        // Lengths in mm within [lo, 100 mm], angles within (0°, 90°): a setting beyond is a
+        // typo, refused at its value.
+        let within = |name: &str, v: Option<Spanned<f64>>, lo: f64, hi: f64, slot: &mut f64| {
+            if let Some(v) = v {
+                let x = *v.get_ref();
+                if !(x.is_finite() && x >= lo && x <= hi) {
+                    return Err(bad(
+                        v.span(),
+                        format!("{name} must be within {lo} … {hi}, got {x}"),
+                    ));
+                }
+                *slot = x;
+            }
+            Ok(())
+        };
+        within(
+            "drill_clearance",
+            file.drill_clearance,
+            0.0,
+            100.0,
+            &mut m.drill_clearance,
+        )?;
+        if let Some(h) = file.haas {
+            let s = &mut m.haas;
+            within("haas.setting73", h.setting73, 0.0, 100.0, &mut s.setting73)?;
+            within("haas.setting86", h.setting86, 0.0, 100.0, &mut s.setting86)?;
+            within("haas.setting99", h.setting99, 0.0, 100.0, &mut s.setting99)?;
+            within("haas.setting95", h.setting95, 0.0, 99.0, &mut s.setting95)?;
+            within("haas.setting96", h.setting96, 1.0, 89.0, &mut s.setting96)?;
+            within(
+                "haas.peck_retract",
+                h.peck_retract,
+                0.0,
+                100.0,
+                &mut s.peck_retract,
+            )?;
         }
         m.machine_zero = m.home;
         if let Some(z) = file.machine_zero {
@@ -563,5 +699,29 @@ mod tests {
         assert_eq!(e.line, 2);
         assert!(Machine::from_toml("max_rpm = 1e9").is_err());
         assert!(Machine::from_toml("home = [9999.0, -9999.0]").is_ok());
+    }
+
+    #[test]
+    fn haas_and_drilling_keys() {
+        let m = Machine::from_toml(
+            "control = \"haas\"\ng83_full_retract = true\ndrill_return = \"r_point\"\n[haas]\nsetting73 = 0.2\nsetting86 = 0.02",
+        )
+        .unwrap();
+        assert_eq!(m.haas.setting73, 0.2);
+        assert_eq!(m.haas.setting86, 0.02);
+        assert_eq!(m.haas.setting99, 0.025);
+        assert!(m.g83_full_retract && m.one_block_cycles());
+        assert_eq!(m.drill_return, DrillReturn::RPoint);
+        let e = Machine::from_toml("[haas]\nsetting96 = 90.0").unwrap_err();
+        assert_eq!((e.line, e.column), (2, 13));
+        assert!(e.message.contains("haas.setting96"), "{}", e.message);
+        assert!(Machine::from_toml("[haas]\nsetting72 = 1.0").is_err());
+        assert!(Machine::from_toml("drill_clearance = -1.0").is_err());
+        assert!(!Machine::for_control(Control::FanucA).one_block_cycles());
+        assert!(
+            Machine::from_toml("control = \"fanuc-a\"\nfs15_format = true")
+                .unwrap()
+                .one_block_cycles()
+        );
     }
 }

@@ -258,10 +258,17 @@ fn g74_g75_alarm_rules() {
         ),
         // a word the format does not define
         (
-            "G0 X42 Z-28\nG75 X32 P1500 K3 F0.1\n",
+            "G0 X42 Z-28\nG75 X32 P1500 J3 F0.1\n",
             2,
             "LS-WORD-UNUSED",
-            "address K",
+            "address J",
+        ),
+        // K is the Haas one-block word: an alarm naming the control
+        (
+            "G0 X42 Z-28\nG75 X32 P1500 K3 F0.1\n",
+            2,
+            "LS-ONE-BLOCK-FORM",
+            "--control haas",
         ),
     ] {
         let tp = run(src);

@@ -92,6 +92,28 @@ impl Program {
     pub fn find(&self, number: u32) -> Option<&Subprogram> {
         self.programs.iter().find(|p| p.number == Some(number))
     }
+    /// Move every span's byte offset by `by` (lines and columns stay): a caller that reads
+    /// several files (subprograms in `--lib` folders) gives each file a byte range of its own
+    /// and finds the file of a span by its offset.
+    pub fn shift_spans(&mut self, by: usize) {
+        let shift = |s: &mut Span| s.offset += by;
+        for p in &mut self.programs {
+            shift(&mut p.span);
+            for b in &mut p.blocks {
+                shift(&mut b.span);
+                if let Some(s) = &mut b.seq_span {
+                    shift(s);
+                }
+                for w in &mut b.words {
+                    shift(&mut w.span);
+                }
+            }
+        }
+        for n in &mut self.notes {
+            shift(&mut n.span);
+        }
+    }
+
     /// Number of blocks in all programs.
     pub fn block_count(&self) -> usize {
         self.programs.iter().map(|p| p.blocks.len()).sum()

@@ -34,7 +34,7 @@
 
 use super::contour::{self, FinishingShape};
 use super::{passes, Cycle, Move, Output};
-use crate::{Diagnostic, Pt, Span};
+use crate::{Control, Diagnostic, Pt, Span};
 
 /// Most layers one cycle may cut (a microscopic Δd is an error, not a hang).
 const MAX_LAYERS: f64 = 200_000.0;
@@ -43,46 +43,78 @@ const SAGITTA: f64 = 1e-4;
 /// Geometric tolerance, mm.
 const EPS: f64 = 1e-9;
 
+/// The words of one stock removal: depth of cut, retract, the allowance the layers stop
+/// at and the one the final pass follows (`(z, r)`, r a radius), and the form's rules.
+struct Removal {
+    /// A note for the report (the Haas I/K reading), if any.
+    note: Option<String>,
+    dd: f64,
+    e: f64,
+    layers_off: Pt,
+    final_off: Pt,
+    /// Haas: a last layer at the deepest point of the moved shape (dialects.md §7 T4).
+    last_layer_at_shape: bool,
+    /// Haas `R1`: type II whatever the ns block gives.
+    force_type2: bool,
+}
+
 /// Expand one G71 or G72 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     let g72 = c.code == 720;
+    let haas = c.machine.control == Control::Haas;
     if !c.words.has('P') && !c.words.has('Q') {
+        if haas || c.words.has('D') {
+            return Err(one_block_only(c));
+        }
         return depth_block(c, g72);
     }
-    let shape = contour::read(c)?;
-    let du = c.words.mm('U', c.unit).unwrap_or(0.0) / 2.0; // Δu/2: radius
-    let dw = c.words.mm('W', c.unit).unwrap_or(0.0);
-    let retained = if g72 { c.retained.g72 } else { c.retained.g71 };
-    let Some((dd, e)) = retained else {
+    let removal = if let Some(d) = c.words.block.get('D') {
+        if !c.machine.one_block_cycles() {
+            return Err(Diagnostic::new(
+                d.span,
+                "LS-ONE-BLOCK-FORM",
+                format!(
+                    "{} with D in one block is the Haas/FS15 form: run with --control haas (this control is {})",
+                    code_name(g72),
+                    c.machine.control.key()
+                ),
+                format!(
+                    "under {} write the two-block form {}, or run with --control haas (or fs15_format = true in the machine profile)",
+                    c.machine.control.key(),
+                    if g72 { "G72 W(Δd) R(e); G72 P Q U W F" } else { "G71 U(Δd) R(e); G71 P Q U W F" }
+                ),
+            ));
+        }
+        one_block(c, g72)?
+    } else if haas {
         return Err(c.alarm(
             "PS062",
-            format!("no depth of cut for {}", super::name(c.code)),
-            if g72 {
-                "write G72 W(Δd) R(e) before the G72 P Q block"
-            } else {
-                "write G71 U(Δd) R(e) before the G71 P Q block"
-            },
+            format!("Haas {} without D (depth of cut)", code_name(g72)),
+            "give the depth of each layer as D (mm); Setting 72, the machine's default depth, is not simulated",
         ));
+    } else {
+        two_block(c, g72)?
     };
-    let frame = Frame::new(c, &shape, g72)?;
-    let poly = Poly::new(&shape, &frame, Pt::new(dw, du))?;
-    let levels = poly.v_max / dd;
+    let shape = contour::read(c)?;
+    let frame = Frame::new(c, &shape, g72, removal.force_type2)?;
+    let poly = Poly::new(&shape, &frame, removal.layers_off)?;
+    let levels = poly.v_max / removal.dd;
     if levels > MAX_LAYERS {
         return Err(c.alarm(
             "LS-TOO-MANY-LAYERS",
-            format!("depth of cut {dd} mm makes {levels:.0} layers"),
+            format!("depth of cut {} mm makes {levels:.0} layers", removal.dd),
             "give a larger depth of cut Δd",
         ));
     }
     let mut r = Rough {
         poly: &poly,
-        dd,
-        e,
+        dd: removal.dd,
+        e: removal.e,
         ns_rapid: shape.elements[0].rapid,
         cur: (0.0, 0.0),
         out: vec![],
     };
-    r.layers();
+    r.layers(removal.last_layer_at_shape);
     let mut moves: Vec<Move> = r
         .out
         .iter()
@@ -97,8 +129,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         })
         .collect();
     // 4. the final pass along the moved shape, then back to A
-    let off = Pt::new(dw, du);
-    moves.extend(passes::moved(&shape, off));
+    moves.extend(passes::moved(&shape, removal.final_off));
     moves.push(Move::rapid(shape.start));
     let mut out = Output {
         moves,
@@ -106,11 +137,140 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         warnings: vec![],
         ..Output::default()
     };
+    if let Some(note) = removal.note {
+        out.warnings.push(c.alarm("LS-HAAS-IK", note, ""));
+    }
     out.intended.push((
         crate::IntendedKind::FinishingContour,
         shape.intended_path(0.001),
     ));
     Ok(out)
+}
+
+fn code_name(g72: bool) -> &'static str {
+    if g72 {
+        "G72"
+    } else {
+        "G71"
+    }
+}
+
+/// The alarm for a first block (`G71 U R`) under a control that has only the one-block form.
+fn one_block_only(c: &Cycle) -> Diagnostic {
+    let g72 = c.code == 720;
+    c.alarm(
+        "LS-ONE-BLOCK-FORM",
+        format!(
+            "{} needs P and Q: {} reads the one-block form",
+            code_name(g72),
+            c.machine.control.title()
+        ),
+        format!(
+            "write {} P(ns) Q(nf) U(Δu) W(Δw) D(depth) F in one block",
+            code_name(g72)
+        ),
+    )
+}
+
+/// FANUC/GSK second block `P Q U W F`: Δd and e from the retained first block.
+fn two_block(c: &mut Cycle, g72: bool) -> Result<Removal, Diagnostic> {
+    let du = c.words.mm('U', c.unit).unwrap_or(0.0) / 2.0; // Δu/2: radius
+    let dw = c.words.mm('W', c.unit).unwrap_or(0.0);
+    let retained = if g72 { c.retained.g72 } else { c.retained.g71 };
+    let Some((dd, e)) = retained else {
+        return Err(c.alarm(
+            "PS062",
+            format!("no depth of cut for {}", super::name(c.code)),
+            if g72 {
+                "write G72 W(Δd) R(e) before the G72 P Q block"
+            } else {
+                "write G71 U(Δd) R(e) before the G71 P Q block"
+            },
+        ));
+    };
+    let off = Pt::new(dw, du);
+    Ok(Removal {
+        note: None,
+        dd,
+        e,
+        layers_off: off,
+        final_off: off,
+        last_layer_at_shape: false,
+        force_type2: false,
+    })
+}
+
+/// Haas (and FANUC FS15) one block `P Q U W D [I K] F S T [R1]` (spec/dialects.md §3.2):
+/// D is the depth of each layer in mm (calculator type, G72: along Z); the retract is Haas
+/// Setting 73 (`haas.setting73`), under FS15 the retained `G71 R(e)` (else 0).
+///
+/// **Interpretation** of I/K (Haas calls them only a "rough pass allowance"): the layers
+/// stop at the shape moved by (U/2 + I, W + K) (I a radius); the final pass follows the
+/// shape moved by (U/2, W). With I = K = 0 this is the FANUC G71, plus (Haas) a last layer
+/// at the moved shape's deepest point before the final pass (dialects.md §7 T4).
+fn one_block(c: &mut Cycle, g72: bool) -> Result<Removal, Diagnostic> {
+    let haas = c.machine.control == Control::Haas;
+    let d = c.words.take('D').expect("the caller checked D");
+    let dd = d.value * c.unit;
+    if dd.is_nan() || dd <= 0.0 {
+        return Err(Diagnostic::new(
+            d.span,
+            "PS062",
+            format!("depth of cut D{} must be positive", d.value),
+            "give the depth of each layer as a positive D in mm, e.g. D2.",
+        ));
+    }
+    let du = c.words.mm('U', c.unit).unwrap_or(0.0) / 2.0;
+    let dw = c.words.mm('W', c.unit).unwrap_or(0.0);
+    let (i, k) = if haas {
+        (
+            c.words.mm('I', c.unit).unwrap_or(0.0),
+            c.words.mm('K', c.unit).unwrap_or(0.0),
+        )
+    } else {
+        (0.0, 0.0)
+    };
+    let force_type2 = match c.words.take('R') {
+        Some(r) if haas && r.value == 1.0 && !r.has_point => true,
+        Some(r) => {
+            return Err(Diagnostic::new(
+                r.span,
+                "LS-WORD-UNUSED",
+                format!(
+                    "R{} has no meaning in a one-block {}",
+                    r.value,
+                    code_name(g72)
+                ),
+                "Haas reads only R1 here (type II, YASNAC mode); the retract is Setting 73",
+            ))
+        }
+        None => false,
+    };
+    let e = if haas {
+        c.machine.haas.setting73
+    } else {
+        let retained = if g72 { c.retained.g72 } else { c.retained.g71 };
+        retained.map_or(0.0, |r| r.1)
+    };
+    let note = (i != 0.0 || k != 0.0).then(|| {
+        format!(
+            "{}: the layers stop at the shape moved by X{:+.4} (diameter) Z{:+.4} (U + 2I, W + K); the final pass follows it moved by X{:+.4} Z{:+.4} (U, W) — Interpretation of the Haas rough allowance I/K",
+            code_name(g72),
+            2.0 * (du + i),
+            dw + k,
+            2.0 * du,
+            dw
+        )
+    });
+    Ok(Removal {
+        note,
+        dd,
+        e,
+        layers_off: Pt::new(dw + k, du + i),
+        final_off: Pt::new(dw, du),
+        last_layer_at_shape: haas,
+        force_type2,
+    })
 }
 
 /// The first block: store Δd and e (each keeps its retained value when omitted).
@@ -166,9 +326,15 @@ struct Frame {
 }
 
 impl Frame {
-    fn new(c: &Cycle, shape: &FinishingShape, g72: bool) -> Result<Self, Diagnostic> {
+    fn new(
+        c: &Cycle,
+        shape: &FinishingShape,
+        g72: bool,
+        force_type2: bool,
+    ) -> Result<Self, Diagnostic> {
         let (a, b, end) = (shape.start, shape.b(), shape.c());
         let (x, z) = shape.ns_moves;
+        let (x, z) = if force_type2 { (true, true) } else { (x, z) };
         let (infeed, along) = if g72 { (z, x) } else { (x, z) };
         let (ax, other) = if g72 { ("Z", "X") } else { ("X", "Z") };
         if !infeed {
@@ -421,12 +587,17 @@ impl Rough<'_> {
         }
     }
 
-    /// Steps 1–3 and the return to A.
-    fn layers(&mut self) {
+    /// Steps 1–3 and the return to A; `last_at_shape`: one more layer at the deepest point
+    /// of the moved shape (Haas).
+    fn layers(&mut self, last_at_shape: bool) {
         let n = ((self.poly.v_max - EPS) / self.dd).ceil() as usize;
-        for i in 1..n {
-            let c = i as f64 * self.dd;
-            let prev = c - self.dd;
+        let mut levels: Vec<f64> = (1..n).map(|i| i as f64 * self.dd).collect();
+        if last_at_shape && self.poly.v_max > EPS {
+            levels.push(self.poly.v_max);
+        }
+        let mut prev = 0.0;
+        for (i, &c) in levels.iter().enumerate() {
+            let i = i + 1;
             let stretches = self.poly.stretches(c);
             for (k, &(start, end)) in stretches.iter().enumerate() {
                 match start {
@@ -463,8 +634,9 @@ impl Rough<'_> {
                     self.go(false, ((u_end - self.e).max(0.0), c - self.e), None);
                 }
             }
+            prev = c;
         }
-        self.travel(0.0, n.saturating_sub(1));
+        self.travel(0.0, levels.len());
         self.go(true, (0.0, 0.0), None);
     }
 

@@ -13,15 +13,42 @@
 //! Every element of a pass after its first is fed (seed: "bn→cn 切削進給"), also a G00
 //! written inside the shape. The rough passes carry the span of the shape block they
 //! copy; the rapids between passes carry the G73 block's.
+//!
+//! Haas one block (spec/dialects.md §3.3): `G73 P Q U W I K D F S T`: I the total X relief
+//! (radius, signed), K the total Z relief, D the number of passes; the same pass law with
+//! Δi = I, Δk = K, d = D. The two-block form is not Haas's (an alarm under `haas`), and the
+//! one-block form is an alarm under the other controls.
 
 use super::contour::{self, FinishingShape};
 use super::{passes, Cycle, Move, Output};
-use crate::{Diagnostic, Pt};
+use crate::{Control, Diagnostic, Pt};
 
 /// Expand one G73 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
+    let haas = c.machine.control == Control::Haas;
+    if let Some(d) = c.words.block.get('D').filter(|_| !haas) {
+        return Err(Diagnostic::new(
+            d.span,
+            "LS-ONE-BLOCK-FORM",
+            format!(
+                "G73 with D in one block is the Haas form: run with --control haas (this control is {})",
+                c.machine.control.key()
+            ),
+            "write the two-block form G73 U(Δi) W(Δk) R(d); G73 P Q U W F, or run with --control haas",
+        ));
+    }
     if !c.words.has('P') && !c.words.has('Q') {
+        if haas {
+            return Err(c.alarm(
+                "LS-ONE-BLOCK-FORM",
+                "G73 needs P and Q: the Haas lathe reads the one-block form",
+                "write G73 P(ns) Q(nf) U(Δu) W(Δw) I(X relief) K(Z relief) D(passes) F in one block",
+            ));
+        }
         return relief_block(c);
+    }
+    if haas {
+        return haas_block(c);
     }
     let shape = contour::read(c)?;
     let du = c.words.mm('U', c.unit).unwrap_or(0.0) / 2.0; // Δu/2: radius
@@ -40,6 +67,45 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     };
     out.moves = rough_passes(&shape, (di, dk, d), (du, dw));
     out.resume_at = shape.resume_at(c.index);
+    out.intended.push((
+        crate::IntendedKind::FinishingContour,
+        shape.intended_path(0.001),
+    ));
+    Ok(out)
+}
+
+/// Haas `G73 P Q U W I K D F`: everything in the one block.
+fn haas_block(c: &mut Cycle) -> Result<Output, Diagnostic> {
+    let d = match c.words.take('D') {
+        Some(w) if !w.has_point && (1.0..=9999.0).contains(&w.value) && w.value.fract() == 0.0 => {
+            w.value as u32
+        }
+        Some(w) => {
+            return Err(Diagnostic::new(
+                w.span,
+                "PS062",
+                format!("G73 D{} is not a number of passes 1 … 9999", w.value),
+                "Haas G73 D counts the rough passes: a whole number without a decimal point",
+            ))
+        }
+        None => {
+            return Err(c.alarm(
+                "PS062",
+                "Haas G73 without D (number of passes)",
+                "give the number of rough passes as D, e.g. D4",
+            ))
+        }
+    };
+    let di = c.words.mm('I', c.unit).unwrap_or(0.0);
+    let dk = c.words.mm('K', c.unit).unwrap_or(0.0);
+    let du = c.words.mm('U', c.unit).unwrap_or(0.0) / 2.0;
+    let dw = c.words.mm('W', c.unit).unwrap_or(0.0);
+    let shape = contour::read(c)?;
+    let mut out = Output {
+        moves: rough_passes(&shape, (di, dk, d), (du, dw)),
+        resume_at: shape.resume_at(c.index),
+        ..Output::default()
+    };
     out.intended.push((
         crate::IntendedKind::FinishingContour,
         shape.intended_path(0.001),

@@ -16,6 +16,12 @@
 //! - A block with any of X U Z W P Q is the cycle block; one with only R is the retract block.
 //! - A cycle with no infeed travel (G75 without X/U or with U0; G74 without Z/W) cuts nothing
 //!   and is an alarm rather than a silent no-op.
+//!
+//! Haas one block (spec/dialects.md §3.4): `G7x X(U) Z(W) I K D F`, the same motion with
+//! I ≙ P(Δi) and K ≙ Q(Δk) in mm (calculator type, not increments), D ≙ R(Δd) the escape,
+//! and the chip-break retract e from the profile (`haas.peck_retract`, Haas has no
+//! `G7x R(e)` block). P/Q under `haas` and I/K under the other controls are alarms naming
+//! the form.
 
 use super::{Cycle, Move, Output, MAX_MOVES};
 use crate::{Diagnostic, Pt, ToolHint};
@@ -24,10 +30,36 @@ use crate::{Diagnostic, Pt, ToolHint};
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     let g74 = c.code == 740;
     let name = if g74 { "G74" } else { "G75" };
-    let is_cycle_block = ['X', 'U', 'Z', 'W', 'P', 'Q']
+    let haas = c.machine.control == crate::Control::Haas;
+    let foreign = if haas {
+        ['P', 'Q', 'R']
+    } else {
+        ['I', 'K', 'D']
+    };
+    if let Some(w) = foreign.iter().find_map(|&l| c.words.block.get(l)) {
+        return Err(Diagnostic::new(
+            w.span,
+            "LS-ONE-BLOCK-FORM",
+            if haas {
+                format!("{} is not a Haas {name} word", w.letter)
+            } else {
+                format!(
+                    "{name} with {} is the Haas one-block form: run with --control haas (this control is {})",
+                    w.letter,
+                    c.machine.control.key()
+                )
+            },
+            if haas {
+                format!("Haas writes {name} X(U) Z(W) I K D F with I, K, D in mm; the retract is haas.peck_retract")
+            } else {
+                format!("write {name} R(e); {name} X(U) Z(W) P(Δi) Q(Δk) R(Δd) F")
+            },
+        ));
+    }
+    let is_cycle_block = ['X', 'U', 'Z', 'W', 'P', 'Q', 'I', 'K']
         .iter()
         .any(|&l| c.words.has(l));
-    if !is_cycle_block {
+    if !is_cycle_block && !haas {
         // The retract block `G7x R(e);`: e is retained for the following cycle blocks.
         let Some(e) = c.words.mm('R', c.unit) else {
             return Err(c.alarm(
@@ -51,10 +83,22 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     let x = c.x_target()?;
     let z = c.z_target()?;
     let pq = c.machine.pq_mm();
-    let p = c.words.increments('P', pq)?;
-    let q = c.words.increments('Q', pq)?;
-    let escape = c.words.mm('R', c.unit).unwrap_or(0.0);
-    let e = c.retained.peck_retract.unwrap_or(0.0);
+    let (p, q, escape, e) = if haas {
+        (
+            c.words.mm('I', c.unit),
+            c.words.mm('K', c.unit),
+            c.words.mm('D', c.unit).unwrap_or(0.0),
+            c.machine.haas.peck_retract,
+        )
+    } else {
+        (
+            c.words.increments('P', pq)?,
+            c.words.increments('Q', pq)?,
+            c.words.mm('R', c.unit).unwrap_or(0.0),
+            c.retained.peck_retract.unwrap_or(0.0),
+        )
+    };
+    let (p_word, q_word) = if haas { ('I', 'K') } else { ('P', 'Q') };
     let a = c.start;
     let end = Pt::new(z.unwrap_or(a.z), x.unwrap_or(a.r));
 
@@ -65,7 +109,11 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     let (d1, s1) = split(end);
     // G75: infeed Δi (P) along X, shift Δk (Q) along Z; G74: infeed Δk (Q), shift Δi (P).
     let (in_step, shift_step) = if g74 { (q, p) } else { (p, q) };
-    let (in_word, shift_word) = if g74 { ('Q', 'P') } else { ('P', 'Q') };
+    let (in_word, shift_word) = if g74 {
+        (q_word, p_word)
+    } else {
+        (p_word, q_word)
+    };
     let (in_axis, shift_axis) = if g74 { ("Z", "X") } else { ("X", "Z") };
     let in_travel = (d1 - d0).abs();
     let shift_travel = (s1 - s0).abs();
@@ -129,7 +177,11 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
             format!(
                 "{name}: the retract e = {e} mm is larger than the peck {in_word} = {in_step} mm"
             ),
-            format!("make R(e) in the {name} R block smaller than {in_word}, or the pecks larger"),
+            if haas {
+                format!("make haas.peck_retract in the machine profile smaller than {in_word}, or the pecks larger")
+            } else {
+                format!("make R(e) in the {name} R block smaller than {in_word}, or the pecks larger")
+            },
         ));
     }
     if escape < 0.0 {

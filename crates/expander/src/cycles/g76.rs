@@ -45,7 +45,6 @@ const EPS: f64 = 1e-9;
 pub(crate) enum DepthLaw {
     /// Constant cutting amount: hₙ = Δd·√n (FANUC two-block, P1/P2).
     ConstantAmount,
-    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// Constant depth of cut: hₙ = n·Δd (P3/P4).
     ConstantDepth,
 }
@@ -55,7 +54,6 @@ pub(crate) enum DepthLaw {
 pub(crate) enum Edges {
     /// One flank: every pass start lies on the line at a/2 through the final root point.
     One,
-    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// Alternating flanks: the shift flips side pass by pass (+ then −).
     Alternating,
 }
@@ -111,8 +109,8 @@ pub(crate) struct Sources {
 }
 
 impl Sources {
-    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// Letters of the FANUC two-block form, no spans.
+    #[cfg_attr(not(test), allow(dead_code))] // the planner's tests build two-block sources
     pub(crate) const fn two_block() -> Self {
         Self {
             m: At::letter('P'),
@@ -228,7 +226,6 @@ impl Default for FirstBlock {
     }
 }
 
-#[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
 /// Which one-block dialect is read (messages and unit of K/D).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Flavor {
@@ -238,7 +235,6 @@ pub(crate) enum Flavor {
     Fs15,
 }
 
-#[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
 /// What a one-block G76 takes from the machine rather than from words.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct OneBlockConfig {
@@ -262,7 +258,6 @@ pub(crate) struct OneBlockConfig {
 }
 
 impl OneBlockConfig {
-    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// Haas: settings 86 (finish allowance), 99 (minimum cut), 95/96 (chamfer, only when
     /// `m23` — M23 in force), one pass at full depth.
     pub(crate) const fn haas(
@@ -284,7 +279,6 @@ impl OneBlockConfig {
         }
     }
     /// FANUC FS15 format: the parameters the two-block first block would set.
-    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control (issue 11)
     pub(crate) fn fs15(first: &FirstBlock, chamfer_angle: f64) -> Self {
         Self {
             flavor: Flavor::Fs15,
@@ -334,7 +328,6 @@ pub(crate) enum G76ErrorKind {
         /// The one-block form (0–120) rather than the two-block list.
         one_block: bool,
     },
-    #[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
     /// One-block P not 1–4.
     InfeedType {
         /// The value written.
@@ -775,7 +768,6 @@ pub(crate) fn read_second<'w>(
     })
 }
 
-#[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
 /// Read the one-block form `G76 X(U) Z(W) K D [I] [A] [P] [Q] F(E)` (Haas §3.5, FS15 §4.5).
 /// `end`, `f_in_force`, `unit` as for [`read_second`]; the rest comes from `cfg`.
 pub(crate) fn read_one_block<'w>(
@@ -966,44 +958,93 @@ fn estimate(p: &G76Params, target: f64) -> f64 {
     by_dd.min(by_min).ceil() + f64::from(p.m)
 }
 
-/// Run a G76 block in the interpreter (FANUC/GSK two-block form): the first block only
+/// Run a G76 block in the interpreter. FANUC/GSK two-block form: the first block only
 /// stores m r a, Δdmin and d (retained as the control keeps them); the second cuts the
-/// passes from the cycle's start point. The one-block form (Haas, FANUC 10/11/15) is read
-/// by [`read_one_block`] but is a dialect's: under the GSK/FANUC-A default it is an alarm
-/// naming the control to use.
+/// passes from the cycle's start point. One-block form (Haas §3.5; FANUC FS15 §4.5 with
+/// `fs15_format = true`): the settings come from the profile (Haas settings 86, 99, 95/96
+/// under M23) or, for FS15, from the retained first-block values. Each form under a
+/// control that does not read it is an alarm naming the control.
 pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
     let g_span = c.g.map_or(c.words.span(), |w| w.span);
     let block = c.words.block;
     let pq_mm = c.machine.pq_mm();
     let unit = c.unit;
     let first = c.retained.g76.unwrap_or_default();
-    match classify(|l| block.get(l)).map_err(|e| e.diagnostic(g_span))? {
+    let haas = c.machine.control == crate::Control::Haas;
+    let form = classify(|l| block.get(l)).map_err(|e| e.diagnostic(g_span))?;
+    if haas && form != Form::OneBlock {
+        return Err(c.alarm(
+            "LS-ONE-BLOCK-FORM",
+            "the two-block G76 (P m r a, Q, R / X Z R P Q F) is the FANUC form; the Haas lathe reads G76 in one block (its Q is the start angle)",
+            "write G76 X(U) Z(W) K(height) D(first depth) [I] [A] [P1-4] F in one block",
+        ));
+    }
+    let end = |c: &mut super::Cycle| -> Result<Pt, Diagnostic> {
+        Ok(Pt::new(
+            c.z_target()?.unwrap_or(c.start.z),
+            c.x_target()?.unwrap_or(c.start.r),
+        ))
+    };
+    let params = match form {
         Form::First => {
             let f = read_first(|l| c.words.take(l), &first, pq_mm, unit)
                 .map_err(|e| e.diagnostic(g_span))?;
             c.retained.g76 = Some(f);
-            Ok(super::Output::default())
+            return Ok(super::Output::default());
         }
         Form::Second => {
-            let end = Pt::new(
-                c.z_target()?.unwrap_or(c.start.z),
-                c.x_target()?.unwrap_or(c.start.r),
-            );
+            let end = end(c)?;
             // the chamfer angle of parameter No. 5131: 45°
-            let params = read_second(|l| c.words.take(l), &first, end, None, pq_mm, unit, 45.0)
-                .map_err(|e| e.diagnostic(g_span))?;
-            let moves = moves(c.start, &params).map_err(|e| e.diagnostic(g_span))?;
-            Ok(super::Output {
-                moves,
-                ..super::Output::default()
-            })
+            read_second(|l| c.words.take(l), &first, end, None, pq_mm, unit, 45.0)
+                .map_err(|e| e.diagnostic(g_span))?
         }
-        Form::OneBlock => Err(c.alarm(
-            "LS-G76-ONE-BLOCK",
-            "the one-block G76 (K, D words) is the Haas / FANUC 10/11/15 format",
-            "write the two-block form G76 P(m)(r)(a) Q R / G76 X Z R P Q F, or run the program with the control that reads it (--control haas, issue 11)",
-        )),
+        Form::OneBlock if !c.machine.one_block_cycles() => {
+            let w = block.get('K').or_else(|| block.get('D'));
+            return Err(Diagnostic::new(
+                w.map_or(g_span, |w| w.span),
+                "LS-ONE-BLOCK-FORM",
+                format!(
+                    "G76 with K and D in one block is the Haas/FS15 form: run with --control haas (this control is {})",
+                    c.machine.control.key()
+                ),
+                "write the two-block form G76 P(m)(r)(a) Q R / G76 X Z R P Q F, or run with --control haas (FANUC with the FS15 format: fs15_format = true)",
+            ));
+        }
+        Form::OneBlock => {
+            let h = c.machine.haas;
+            let cfg = if haas {
+                OneBlockConfig::haas(
+                    h.setting86,
+                    h.setting99,
+                    c.thread_chamfer,
+                    h.setting95,
+                    h.setting96,
+                )
+            } else {
+                OneBlockConfig::fs15(&first, 45.0)
+            };
+            let end = end(c)?;
+            read_one_block(|l| c.words.take(l), end, None, unit, &cfg)
+                .map_err(|e| e.diagnostic(g_span))?
+        }
+    };
+    let moves = moves(c.start, &params).map_err(|e| e.diagnostic(g_span))?;
+    let mut out = super::Output {
+        moves,
+        lead: Some(params.lead),
+        ..super::Output::default()
+    };
+    if first_depth_exceeds_height(&params) {
+        out.warnings.push(c.alarm(
+            "LS-G76-DEPTH",
+            format!(
+                "the first depth {:.4} mm is larger than the thread height {:.4} mm: one rough pass at the height less d",
+                params.dd, params.k
+            ),
+            "check the first depth and the height (swapped?)",
+        ));
     }
+    Ok(out)
 }
 
 /// A thread move to `to`.
@@ -1081,7 +1122,6 @@ pub(crate) fn moves(start: Pt, p: &G76Params) -> Result<Vec<Move>, G76Error> {
     Ok(out)
 }
 
-#[cfg_attr(not(test), allow(dead_code))] // the one-block form waits for --control haas (issue 11)
 /// Advice that does not stop the program: a first depth larger than the whole thread height
 /// (P and Q of the second block swapped?). The pass law caps it at k − d (§4.2).
 pub(crate) fn first_depth_exceeds_height(p: &G76Params) -> bool {

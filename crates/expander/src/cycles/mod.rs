@@ -8,6 +8,7 @@ use crate::{Arc, Diagnostic, IntendedKind, Machine, Motion, Pt, Span, ToolHint};
 use gcode::{Subprogram, Word};
 
 pub(crate) mod contour;
+pub(crate) mod drill;
 mod g70;
 mod g71_g72;
 mod g73;
@@ -83,6 +84,8 @@ pub(crate) struct Retained {
     pub(crate) g73: Option<(f64, f64, u32)>,
     /// G76 first block: m r a, Δdmin, d.
     pub(crate) g76: Option<g76::FirstBlock>,
+    /// The drilling cycle in force (modal until G80 or a group-01 code) and its words.
+    pub(crate) drill: Option<drill::DrillWords>,
 }
 
 /// The most moves one G74/G75/G75.1 block may expand to; more is an alarm (a P1 Q1 typo
@@ -125,6 +128,10 @@ pub(crate) struct Cycle<'a, 'b> {
     /// The active tool when the tool table says it is a radial grooving blade: its width
     /// and whether it extends toward +Z from its reference corner (G75.1 without I).
     pub(crate) tool_blade: Option<(f64, bool)>,
+    /// The thread pull-out chamfer is on (Haas M23, the power-on state; M24 turns it off).
+    pub(crate) thread_chamfer: bool,
+    /// Where a drilling cycle returns (G98/G99 in systems B/C; the profile elsewhere).
+    pub(crate) drill_return: crate::DrillReturn,
 }
 
 /// What a cycle made.
@@ -141,6 +148,11 @@ pub(crate) struct Output {
     /// G70: run the moves as one compensation section, on the shape's side (`Some(None)`:
     /// the side in force at G70, if any); `None`: never compensated (the other cycles).
     pub(crate) comp: Option<Option<crate::tnrc::Side>>,
+    /// The lead of the cycle's thread moves, mm (G76 reads F or E itself); `None`: the F in
+    /// force.
+    pub(crate) lead: Option<f64>,
+    /// Dwell the cycle makes (drilling P), s.
+    pub(crate) dwell_s: f64,
 }
 
 impl Cycle<'_, '_> {
@@ -250,6 +262,7 @@ pub(crate) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         G71 | G72 => g71_g72::run(c),
         G73 => g73::run(c),
         G76 => g76::run(c),
+        t if drill::is_drill(t) => drill::run(c),
         _ => Err(not_implemented(c)),
     }
 }
@@ -277,6 +290,11 @@ pub(crate) fn name(tenths: i32) -> &'static str {
         G90 => "G90 (axial turning cycle)",
         G92 => "G92 (threading cycle)",
         G94 => "G94 (face turning cycle)",
+        G81 => "G81 (drilling cycle)",
+        G82 => "G82 (drilling cycle with dwell)",
+        G83 => "G83 (peck drilling cycle)",
+        G84 => "G84 (tapping cycle)",
+        G85 => "G85 (boring cycle)",
         _ => "this cycle",
     }
 }
@@ -286,7 +304,7 @@ pub(crate) fn is_cycle(tenths: i32) -> bool {
     matches!(
         tenths,
         G70 | G71 | G72 | G73 | G74 | G75 | G75_1 | G76 | G90 | G92 | G94
-    )
+    ) || drill::is_drill(tenths)
 }
 
 /// Whether a cycle is modal (group 01): later blocks with only coordinates repeat it.

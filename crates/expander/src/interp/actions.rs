@@ -7,15 +7,17 @@ use crate::{Diagnostic, Pt};
 use gcode::{Block, Word};
 
 impl Interp<'_> {
+    /// G04 P (ms) or X/U (s); Haas `P1.5` (with a point) is seconds (spec/dialects.md §3.1).
     pub(super) fn dwell(&mut self, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
         let p = used.take('P');
         let x = used.take('X').or_else(|| used.take('U'));
+        let haas = self.machine.control == crate::Control::Haas;
         let seconds = match (p, x) {
             (Some(p), None) if p.has_point => {
                 // Haas: `G04 P1.5` is 1.5 s (dialects.md §3.1). **Interpretation** on the
                 // other controls, where P takes no decimal point: the author meant seconds
                 // too (a FANUC alarms or reads milliseconds), warned.
-                if self.machine.control != crate::Control::Haas {
+                if !haas {
                     self.warn(
                         p.span,
                         "W-G04-P",

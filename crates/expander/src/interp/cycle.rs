@@ -38,10 +38,13 @@ impl Interp<'_> {
                 program: sub,
                 index,
                 tool_blade,
+                thread_chamfer: self.thread_chamfer,
+                drill_return: self.drill_return,
             };
             cycles::run(&mut c)?
         };
         self.out.warnings.extend(out.warnings);
+        self.out.dwell_s += out.dwell_s;
         for (kind, points) in out.intended {
             // G73 then G70 on one shape hand it over twice: keep it once.
             if !self
@@ -76,7 +79,7 @@ impl Interp<'_> {
             if m.to.dist(self.pos) >= 1e-12 {
                 // a threading move's lead is the F in force (G92: F is the lead)
                 let lead = if m.motion == Motion::Thread {
-                    self.feed * self.unit()
+                    out.lead.unwrap_or(self.feed * self.unit())
                 } else {
                     0.0
                 };

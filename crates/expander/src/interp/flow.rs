@@ -1,13 +1,35 @@
-//! Program flow: running an O program block by block, subprogram calls (M98), returns
-//! (M99) and the program end (M02/M30). GOTO, WHILE and macro calls belong here too.
+//! Program flow: running an O program block by block, subprogram calls (M98; Haas M97
+//! local calls), returns (M99) and the program end (M02/M30). GOTO, WHILE and macro calls
+//! belong here too.
+//!
+//! The control decides what the words mean (spec/dialects.md §3.6, §5.8):
+//! - `M98 P…`: FANUC/GSK pack the repeat count and the number (`P30010` = 3 × O0010,
+//!   `L` overrides the count); Haas P is the program number (5 digits), `L` the repeats.
+//! - A called program is looked for in the file, then in the `--lib` folders
+//!   ([`crate::Library`]); nowhere is alarm PS078 at the call.
+//! - `M97 P n [L k]` (Haas): call the blocks from `N n` of the same program until M99.
+//! - `M99 P n`: FANUC returns to `N n` of the caller; Haas branches to `N n` of the program
+//!   it is in and does not return. M99 in a Haas main program loops to its start: run once,
+//!   then stop with a warning.
 
 use super::{alarm, Interp};
 use crate::words::{whole_in, Words};
-use crate::{Diagnostic, Span};
-use gcode::{Program, Word};
+use crate::{Control, Diagnostic, Span};
+use gcode::{Block, Program, Word};
+use std::sync::Arc;
 
 /// FANUC's subprogram nesting limit.
 const MAX_NESTING: u32 = 4;
+/// Haas nests subprogram calls up to 9 levels (S15; **Interpretation** for M97/M98).
+const MAX_NESTING_HAAS: u32 = 9;
+
+/// What a call runs.
+pub(super) enum Callee {
+    /// An O program by number (M98, G65).
+    Program(u32),
+    /// The blocks from this N number of the calling program (Haas M97).
+    Local(u32),
+}
 
 /// How an O program was left.
 pub(super) enum Exit {
@@ -20,7 +42,7 @@ pub(super) enum Flow {
     Next,
     End,
     Call {
-        number: u32,
+        callee: Callee,
         times: u32,
         span: Span,
     },
@@ -30,6 +52,46 @@ pub(super) enum Flow {
     },
     /// Continue at this block index (G70–G73 skip their finishing shape).
     Jump(usize),
+    /// Continue at the block numbered `seq` of this program (Haas `M99 P`).
+    Branch {
+        seq: u32,
+        span: Span,
+    },
+}
+
+/// Where a call goes: program index and first block in this file, or a library program.
+enum Target {
+    Here(usize, usize),
+    Library(Arc<Program>, usize),
+}
+
+/// The index of the one block numbered `seq` (an alarm at `span` when absent or written
+/// twice: a jump to a duplicated N is ambiguous, spec/dialects.md §1).
+fn seq_index(blocks: &[Block], seq: u32, span: Span, what: &str) -> Result<usize, Diagnostic> {
+    let mut hits = blocks
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| b.seq == Some(seq));
+    let Some((i, first)) = hits.next() else {
+        return Err(alarm(
+            span,
+            "PS078",
+            format!("{what} N{seq}, which this program does not have"),
+            format!("give the block to go to the sequence number N{seq}"),
+        ));
+    };
+    if let Some((_, second)) = hits.next() {
+        return Err(alarm(
+            span,
+            "LS-N-TWICE",
+            format!(
+                "{what} N{seq}, which is written twice (lines {} and {})",
+                first.span.line, second.span.line
+            ),
+            "give each block that is a jump target a sequence number of its own",
+        ));
+    }
+    Ok(i)
 }
 
 impl Interp<'_> {
@@ -66,6 +128,15 @@ impl Interp<'_> {
                 Flow::Jump(j) => i = j,
                 Flow::End => return Ok(Exit::End),
                 Flow::Return { seq, span } => {
+                    if depth == 0 && self.machine.control == Control::Haas {
+                        self.warn(
+                            span,
+                            "LS-M99-MAIN",
+                            "M99 in the main program loops to its start on a Haas: simulated once",
+                            "end the main program with M30 to run it once",
+                        );
+                        return Ok(Exit::End);
+                    }
                     if depth == 0 {
                         return Err(alarm(
                             span,
@@ -77,51 +148,41 @@ impl Interp<'_> {
                     return Ok(Exit::Return(seq));
                 }
                 Flow::Call {
-                    number,
+                    callee,
                     times,
                     span,
                 } => {
-                    let Some(sub) = program
-                        .programs
-                        .iter()
-                        .position(|p| p.number == Some(number))
-                    else {
-                        return Err(alarm(
-                            span,
-                            "PS078",
-                            format!("subprogram O{number:04} not found in this file"),
-                            "add the subprogram after M30 in the same file, starting with its O number",
-                        ));
+                    let limit = if self.machine.control == Control::Haas {
+                        MAX_NESTING_HAAS
+                    } else {
+                        MAX_NESTING
                     };
-                    if depth + 1 > MAX_NESTING {
+                    if depth + 1 > limit {
                         return Err(alarm(
                             span,
                             "PS077",
-                            format!("subprogram calls nested deeper than {MAX_NESTING} levels (a subprogram calling itself?)"),
-                            "remove the recursive M98 call or flatten the nesting",
+                            format!("subprogram calls nested deeper than {limit} levels (a subprogram calling itself?)"),
+                            "remove the recursive call or flatten the nesting",
                         ));
                     }
+                    let target = self.callee(program, index, &callee, span)?;
+                    let (called, sub, from) = match &target {
+                        Target::Here(sub, from) => (program, *sub, *from),
+                        Target::Library(p, sub) => (&**p, *sub, 0),
+                    };
                     for _ in 0..times {
-                        match self.run(program, sub, 0, depth + 1)? {
+                        match self.run(called, sub, from, depth + 1)? {
                             Exit::End => return Ok(Exit::End),
                             Exit::Return(None) => {}
                             Exit::Return(Some(seq)) => {
-                                let Some(target) = blocks.iter().position(|x| x.seq == Some(seq))
-                                else {
-                                    return Err(alarm(
-                                        span,
-                                        "PS078",
-                                        format!("M99 P{seq} returns to N{seq}, which the calling program does not have"),
-                                        "give the block to return to that sequence number",
-                                    ));
-                                };
-                                i = target;
+                                i = seq_index(blocks, seq, span, "returns to")?;
                                 continue 'blocks;
                             }
                         }
                     }
                     i += 1;
                 }
+                Flow::Branch { seq, span } => i = seq_index(blocks, seq, span, "branches to")?,
             }
         }
         let span = blocks.last().map(|b| b.span).unwrap_or_default();
@@ -144,7 +205,64 @@ impl Interp<'_> {
         }
     }
 
-    /// The M codes that act after the motion: M05, M09, the program end, M98 and M99.
+    /// The program or block a call runs: in this file, else in the `--lib` folders.
+    fn callee(
+        &self,
+        program: &Program,
+        index: usize,
+        callee: &Callee,
+        span: Span,
+    ) -> Result<Target, Diagnostic> {
+        let number = match *callee {
+            Callee::Local(seq) => {
+                let blocks = &program.programs[index].blocks;
+                let from = seq_index(blocks, seq, span, "M97 calls")?;
+                return Ok(Target::Here(index, from));
+            }
+            Callee::Program(n) => n,
+        };
+        if let Some(sub) = program
+            .programs
+            .iter()
+            .position(|p| p.number == Some(number))
+        {
+            return Ok(Target::Here(sub, 0));
+        }
+        let help = "add the subprogram after M30 in the same file, or give the folder that holds it with --lib DIR";
+        let Some(lib) = &self.opts.library else {
+            return Err(alarm(
+                span,
+                "PS078",
+                format!("subprogram O{number:04} not found in this file"),
+                help,
+            ));
+        };
+        match lib.0.find(number) {
+            Ok(Some(p)) => match p.programs.iter().position(|s| s.number == Some(number)) {
+                Some(sub) => Ok(Target::Library(p, sub)),
+                None => Err(alarm(
+                    span,
+                    "PS078",
+                    format!("the library file for O{number:04} does not hold that program"),
+                    help,
+                )),
+            },
+            Ok(None) => Err(alarm(
+                span,
+                "PS078",
+                format!("subprogram O{number:04} not found in this file nor in the --lib folders"),
+                help,
+            )),
+            Err(why) => Err(alarm(
+                span,
+                "PS078",
+                format!("subprogram O{number:04}: {why}"),
+                "fix the library file",
+            )),
+        }
+    }
+
+    /// The M codes that act after the motion: M05, M09, the program end, M97, M98 and M99.
     pub(super) fn m_codes_after(
         &mut self,
         after: &[(u32, &Word)],
@@ -156,8 +274,9 @@ impl Interp<'_> {
                 5 => self.spindle_on = false,
                 9 => {}
                 2 | 30 => flow = Flow::End,
-                98 => flow = m98(w, used)?,
-                99 => flow = m99(w, used)?,
+                97 => flow = m97(w, used)?,
+                98 => flow = m98(w, used, self.machine.control == Control::Haas)?,
+                99 => flow = m99(w, used, self.machine.control == Control::Haas)?,
                 _ => {}
             }
         }
@@ -165,8 +284,8 @@ impl Interp<'_> {
     }
 }
 
-/// M98 P[count]number [L count]: the call.
-fn m98(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
+/// M98 P[count]number [L count] (FANUC/GSK), M98 P number [L count] (Haas): the call.
+fn m98(w: &Word, used: &mut Words, haas: bool) -> Result<Flow, Diagnostic> {
     let p = used.take('P').ok_or_else(|| {
         alarm(
             w.span,
@@ -175,40 +294,80 @@ fn m98(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
             "write M98 P<program number>, e.g. M98 P1234",
         )
     })?;
-    if !whole_in(p, 1.0, 99_999_999.0) {
+    let max = if haas { 99_999.0 } else { 99_999_999.0 };
+    if !whole_in(p, 1.0, max) {
         return Err(alarm(
             p.span,
             "PS078",
             "M98 P needs a program number",
-            "P is [repeat count (4 digits)] + program number (4 digits), e.g. P30010",
+            if haas {
+                "Haas: P is the program number (1 … 99999), L the repeat count, e.g. M98 P1001 L3"
+            } else {
+                "P is [repeat count (4 digits)] + program number (4 digits), e.g. P30010"
+            },
         ));
     }
     let v = p.value as u32;
-    let (mut times, number) = if v > 9999 {
+    let (mut times, number) = if v > 9999 && !haas {
         (v / 10000, v % 10000)
     } else {
         (1, v)
     };
-    if let Some(l) = used.take('L') {
-        if !whole_in(l, 1.0, 9999.0) {
-            return Err(alarm(
-                l.span,
-                "LS-VALUE",
-                "L must be a repeat count 1 … 9999",
-                "write e.g. L3",
-            ));
-        }
-        times = l.value as u32;
+    if let Some(l) = repeats(used)? {
+        times = l;
     }
     Ok(Flow::Call {
-        number,
+        callee: Callee::Program(number),
         times: times.max(1),
         span: w.span,
     })
 }
 
-/// M99 [P sequence]: the return, to the block after the call or to N<P>.
-fn m99(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
+/// L: a repeat count 1 … 9999.
+fn repeats(used: &mut Words) -> Result<Option<u32>, Diagnostic> {
+    let Some(l) = used.take('L') else {
+        return Ok(None);
+    };
+    if !whole_in(l, 1.0, 9999.0) {
+        return Err(alarm(
+            l.span,
+            "LS-VALUE",
+            "L must be a repeat count 1 … 9999",
+            "write e.g. L3",
+        ));
+    }
+    Ok(Some(l.value as u32))
+}
+
+/// Haas M97 P(N number) [L count]: call the blocks from N<P> of this program until M99.
+fn m97(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
+    let p = used.take('P').ok_or_else(|| {
+        alarm(
+            w.span,
+            "PS078",
+            "M97 without P",
+            "write M97 P<sequence number>, e.g. M97 P100 to call N100",
+        )
+    })?;
+    if !whole_in(p, 1.0, 99_999_999.0) {
+        return Err(alarm(
+            p.span,
+            "PS078",
+            "M97 P needs a sequence number",
+            "write e.g. M97 P100 to call the local subprogram at N100",
+        ));
+    }
+    let times = repeats(used)?.unwrap_or(1);
+    Ok(Flow::Call {
+        callee: Callee::Local(p.value as u32),
+        times,
+        span: w.span,
+    })
+}
+
+/// M99 [P sequence]: the return, to the block after the call or (FANUC) to N<P> of the
+/// caller; Haas M99 P branches to N<P> of this program.
+fn m99(w: &Word, used: &mut Words, haas: bool) -> Result<Flow, Diagnostic> {
     let seq = match used.take('P') {
         Some(p) if p.has_point || p.value < 0.0 => {
             return Err(alarm(
@@ -221,5 +380,8 @@ fn m99(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
         Some(p) => Some(p.value as u32),
         None => None,
     };
-    Ok(Flow::Return { seq, span: w.span })
+    Ok(match seq {
+        Some(seq) if haas => Flow::Branch { seq, span: w.span },
+        seq => Flow::Return { seq, span: w.span },
+    })
 }

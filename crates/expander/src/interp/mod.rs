@@ -16,6 +16,7 @@ mod frame;
 mod g10;
 mod modal;
 mod motion;
+mod reach;
 mod tool_facts;
 
 use crate::codes::{self, *};
@@ -41,6 +42,8 @@ pub struct Options {
     /// The tool that cuts before the program's first T word (`--tool N`, else the tool
     /// table's first entry); `None` leaves it 0, "no tool yet".
     pub start_tool: Option<u32>,
+    /// Where `M98 P`/`G65 P` find programs the file does not hold (`--lib`).
+    pub library: Option<crate::LibraryRef>,
 }
 
 impl Default for Options {
@@ -51,6 +54,7 @@ impl Default for Options {
             max_blocks: 20_000_000,
             tools: toolfacts::ToolFacts::default(),
             start_tool: None,
+            library: None,
         }
     }
 }
@@ -85,6 +89,14 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
     if let Some(main) = program.main() {
         it.warn_assumed_units(program, main);
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
+        if let Some(b) = reach::unreachable_tail(main) {
+            it.warn(
+                b.span,
+                "LS-UNREACHABLE",
+                "the blocks after M30/M02 are not in an O program and nothing calls them (M97, GOTO): unreachable",
+                "start them with an O number to make a subprogram, call them with M97 P<N>, or delete them",
+            );
+        }
         let mut result = it.run(program, 0, 0, 0);
         it.flush_compensation();
         if result.is_ok() && it.retained.g75_1.is_some() {
@@ -99,7 +111,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
         }
         match result {
             Ok(Exit::End) => {}
-            Ok(Exit::Return(_)) => unreachable!("M99 in the main program is an alarm"),
+            Ok(Exit::Return(_)) => unreachable!("M99 in the main program ends it or is an alarm"),
             Err(alarm) => it.out.alarms.push(alarm),
         }
     }
@@ -140,10 +152,6 @@ pub(crate) struct Interp<'m> {
     incremental: bool,
     /// System B/C: U/W outside a cycle already warned about.
     uw_warned: bool,
-    /// System B/C G99: drilling cycles return to the R point (G98: the initial level).
-    pub(crate) drill_return_r: bool,
-    /// M23/M24: thread pull-out chamfer on (modal; the thread cycles read it).
-    pub(crate) thread_chamfer: bool,
     /// G17/G19 in force (a live-tooling plane) and where it was set; G18 clears it.
     plane: Option<(i32, Span)>,
     /// Inside `G10 L50 … G11`: parameter blocks, skipped.
@@ -157,6 +165,11 @@ pub(crate) struct Interp<'m> {
     noted: Vec<&'static str>,
     /// Work offsets and shifts (G54–G59, G54.1/G154, G10, G52).
     frames: frame::Frames,
+    /// Haas M23 (on, the power-on state, **Interpretation**) / M24 (off): the thread
+    /// pull-out chamfer of G76 (spec/dialects.md §3.5).
+    pub(crate) thread_chamfer: bool,
+    /// Return level of the drilling cycles (the profile's; G98/G99 in systems B/C set it).
+    pub(crate) drill_return: crate::DrillReturn,
 }
 
 /// A controller alarm.
@@ -201,8 +214,6 @@ impl<'m> Interp<'m> {
             incremental: machine.power_on_incremental
                 && machine.control.system() != crate::GCodeSystem::A,
             uw_warned: false,
-            drill_return_r: false,
-            thread_chamfer: false,
             plane: None,
             param_mode: false,
             chuck_open: false,
@@ -210,6 +221,8 @@ impl<'m> Interp<'m> {
             m_warned: vec![],
             noted: vec![],
             frames: frame::Frames::new(machine),
+            thread_chamfer: true,
+            drill_return: machine.drill_return,
         }
     }
 
@@ -340,8 +353,16 @@ impl<'m> Interp<'m> {
             None => {
                 if let Some((m, _)) = g.motion {
                     self.motion = m;
+                    // a group-01 code ends a drilling cycle
+                    self.retained.drill = None;
                 }
-                if let MotionMode::Cycle(t) = self.motion {
+                let drill = self.retained.drill.map(|d| d.code);
+                if let Some(t) =
+                    drill.filter(|_| ['X', 'Z', 'U', 'W', 'R', 'Q'].iter().any(|&l| b.has(l)))
+                {
+                    // the drilling cycle in force repeats with the block's words
+                    flow = self.cycle(t, None, sub, index, &mut used)?;
+                } else if let MotionMode::Cycle(t) = self.motion {
                     if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
                         let w = g.motion.map(|(_, w)| w);
                         flow = self

@@ -125,12 +125,11 @@ impl Interp<'_> {
                 G99 => self.per_rev = true,
                 dialect::ABSOLUTE => self.incremental = false,
                 dialect::INCREMENTAL => self.incremental = true,
-                dialect::DRILL_RETURN_INITIAL => self.drill_return_r = false,
-                dialect::DRILL_RETURN_R => self.drill_return_r = true,
+                dialect::DRILL_RETURN_INITIAL => self.drill_return = crate::DrillReturn::Initial,
+                dialect::DRILL_RETURN_R => self.drill_return = crate::DrillReturn::RPoint,
                 G18 => self.plane = None,
                 G17 | G19 => self.plane = Some((t, w.span)),
-                // G80 cancels a drilling cycle; none is modal here, so it only confirms.
-                G80 => {}
+                G80 => self.retained.drill = None,
                 G11 => {
                     return Err(alarm(
                         w.span,
@@ -345,13 +344,20 @@ impl Interp<'_> {
                     self.spindle_warned = false;
                 }
                 8 | 0 | 1 => {}
+                23 | 24 if self.machine.control == crate::Control::Haas => {
+                    self.thread_chamfer = w.value as u32 == 23;
+                }
                 m @ (2 | 30 | 5 | 9 | 98 | 99) => after.push((m, w)),
+                97 if self.machine.control == crate::Control::Haas => after.push((97, w)),
                 97 => {
                     return Err(alarm(
                         w.span,
-                        "LS-NOT-IMPLEMENTED",
-                        "M97 (Haas local subprogram call) is not implemented yet in this version of latsim",
-                        "call the subprogram with M98 P<program number>",
+                        "LS-UNKNOWN-M",
+                        format!(
+                            "M97 (local subprogram call) is the Haas form: run with --control haas (this control is {})",
+                            self.machine.control.key()
+                        ),
+                        "call a subprogram with M98 P<program number> under this control",
                     ))
                 }
                 m => self.machine_function(m, w),

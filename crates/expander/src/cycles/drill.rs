@@ -1,0 +1,296 @@
+//! Drilling cycles on the spindle axis (spec/dialects.md §6.2): FANUC G83 (drill / peck),
+//! G84 (tap), G85 (bore); Haas G81 (drill), G82 (drill with dwell), G83 (peck), G84 (tap).
+//!
+//! ```text
+//! FANUC:  G83 X(U)0 Z(W) R Q P F K ;   G84 / G85 X(U)0 Z(W) R P F K ;
+//! Haas:   G81 / G82 / G83 / G84 X0 Z R [Q] [P] F ;
+//! ```
+//! From the initial point I (the Z where the cycle is first read, X0):
+//! 1. rapid to the R point;
+//! 2. G81/G82/G83 without Q: feed to Z. G83 with Q, **peck** (`g83_full_retract = true`):
+//!    feed Q, rapid back to R, rapid down to δ short of the depth reached, feed on Q … (the
+//!    last feed lands on Z). **High-speed peck** (the default): feed Q, rapid back δ, feed
+//!    on. δ = `drill_clearance`. G84/G85: feed to Z;
+//! 3. dwell P at the bottom;
+//! 4. G84/G85: feed back to R (the tap reverses; the bore is fed out);
+//! 5. rapid to the return level: the initial level, or the R point (`drill_return`, set by
+//!    G98/G99 in systems B/C).
+//!
+//! Words (**Interpretations** where §6.2 says so):
+//! - X must be 0 (on the axis), absent when the tool is already on it; C/H (C axis) are
+//!   alarms: an off-axis hole is not axisymmetric.
+//! - Z absolute bottom; W the distance from the R point to the bottom (FANUC [S28]).
+//! - FANUC R: signed distance from the initial level to the R point (system A); Haas R: the
+//!   R plane's absolute Z.
+//! - FANUC Q: peck depth in least input increments, no decimal point; Haas Q in mm.
+//! - P: dwell; FANUC milliseconds (no decimal point); Haas `P1.5` seconds, `P1500` ms.
+//! - K: repeats; the hole is drilled K times (K > 1 with an incremental W is an alarm: a
+//!   second hole would be off the axis of the first one's depth).
+//! - The cycle is modal until G80 or a group-01 code; a later block with X/Z/U/W/R/Q
+//!   repeats it with the retained words (`Retained::drill`).
+//! - G84 sweeps the drill outline of the tool table (the tap's major diameter); the thread
+//!   form is not drawn (a note says so).
+
+use super::{Cycle, Move, Output, MAX_MOVES};
+use crate::codes::{G81, G82, G83, G84, G85};
+use crate::{Control, Diagnostic, DrillReturn, Pt};
+
+/// The words a drilling cycle retains between its blocks.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct DrillWords {
+    /// The cycle in force (tenths).
+    pub(crate) code: i32,
+    /// The initial level: the Z where the cycle was first read, G54 frame.
+    pub(crate) initial: f64,
+    /// The R point, G54 frame Z.
+    pub(crate) r: f64,
+    /// The hole bottom, G54 frame Z.
+    pub(crate) bottom: f64,
+    /// Peck depth, mm (0: one feed).
+    pub(crate) q: f64,
+    /// Dwell at the bottom, s.
+    pub(crate) dwell: f64,
+}
+
+/// Whether a G code (tenths) is a drilling cycle of the spindle axis.
+pub(crate) fn is_drill(t: i32) -> bool {
+    matches!(t, G81 | G82 | G83 | G84 | G85)
+}
+
+/// Expand one drilling block (the first of the cycle, or a modal repeat).
+pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
+    let haas = c.machine.control == Control::Haas;
+    let name = crate::codes::g_name(c.code);
+    let accepted = if haas {
+        matches!(c.code, G81 | G82 | G83 | G84)
+    } else {
+        matches!(c.code, G83 | G84 | G85)
+    };
+    if !accepted {
+        return Err(c.alarm(
+            "LS-DRILL-CODE",
+            if haas {
+                format!("{name} is not a Haas lathe drilling cycle on the spindle axis")
+            } else {
+                format!("{name} is the Haas drilling code; this control is {}", c.machine.control.key())
+            },
+            if haas {
+                "Haas drills on the axis with G81 (drill), G82 (dwell), G83 (peck), G84 (tap)"
+            } else {
+                "FANUC lathes drill on the axis with G83 (drill/peck), G84 (tap), G85 (bore); or run with --control haas"
+            },
+        ));
+    }
+    for letter in ['C', 'H'] {
+        if let Some(w) = c.words.block.get(letter) {
+            return Err(Diagnostic::new(
+                w.span,
+                "LS-OFF-AXIS",
+                format!("{letter} indexes the C axis: an off-axis hole is not axisymmetric"),
+                "latsim simulates holes on the spindle axis only (X0, no C)",
+            ));
+        }
+    }
+    let prev = c
+        .retained
+        .drill
+        .filter(|d| d.code == c.code || c.g.is_none());
+    // X: on the axis only
+    let x_word = c.words.block.get('X').or_else(|| c.words.block.get('U'));
+    let x = c.x_target()?.unwrap_or(c.start.r);
+    if x.abs() > 1e-6 {
+        return Err(Diagnostic::new(
+            x_word.map_or(c.span(), |w| w.span),
+            "LS-OFF-AXIS",
+            format!(
+                "{name} at X{:.3}: a hole off the spindle axis is not axisymmetric",
+                2.0 * x
+            ),
+            "drill on the axis: position at X0 before the cycle (or give X0)",
+        ));
+    }
+    let initial = prev.map_or(c.start.z, |p| p.initial);
+    // R point
+    let r = match c.words.take('R') {
+        Some(w) if haas => w.value * c.unit + c.shift.z,
+        Some(w) => initial + w.value * c.unit,
+        None => match prev {
+            Some(p) => p.r,
+            None if haas => {
+                return Err(c.alarm(
+                    "LS-DRILL-R",
+                    format!("{name} without R (the R plane)"),
+                    "give the R plane's Z, e.g. R2.",
+                ))
+            }
+            None => initial,
+        },
+    };
+    // bottom
+    let w_word = c.words.block.get('W');
+    let bottom = match (c.words.take('Z'), c.words.take('W')) {
+        (Some(z), None) => z.value * c.unit + c.shift.z,
+        (None, Some(w)) => r + w.value * c.unit,
+        (Some(_), Some(w)) => {
+            return Err(Diagnostic::new(
+                w.span,
+                "LS-AXIS-TWICE",
+                "Z and W both given",
+                "give the hole bottom either absolute (Z) or from the R point (W)",
+            ))
+        }
+        (None, None) => match prev {
+            Some(p) => p.bottom,
+            None => {
+                return Err(c.alarm(
+                    "LS-DRILL-Z",
+                    format!("{name} without the hole bottom Z"),
+                    "give the depth of the hole as Z (absolute) or W (from the R point)",
+                ))
+            }
+        },
+    };
+    // peck
+    let q = if c.code == G83 {
+        let q = if haas {
+            c.words.mm('Q', c.unit)
+        } else {
+            c.words.increments('Q', c.machine.increment.mm())?
+        };
+        match q {
+            Some(q) if q <= 0.0 => {
+                return Err(c.alarm(
+                    "LS-DRILL-Q",
+                    format!("{name}: the peck depth Q must be positive"),
+                    "give the depth of each peck, or leave Q out to drill in one feed",
+                ))
+            }
+            Some(q) => q,
+            None => prev.map_or(0.0, |p| p.q),
+        }
+    } else {
+        0.0
+    };
+    // dwell
+    let dwell = match c.words.take('P') {
+        Some(p) if haas && p.has_point => p.value,
+        Some(p) if p.has_point => {
+            return Err(Diagnostic::new(
+                p.span,
+                "LS-VALUE",
+                format!("{name} P is the dwell in milliseconds and takes no decimal point"),
+                "write e.g. P500 for 0.5 s",
+            ))
+        }
+        Some(p) if p.value < 0.0 => {
+            return Err(Diagnostic::new(
+                p.span,
+                "LS-VALUE",
+                "a negative dwell",
+                "give the dwell at the bottom in milliseconds",
+            ))
+        }
+        Some(p) => p.value / 1000.0,
+        None => prev.map_or(0.0, |p| p.dwell),
+    };
+    let k_word = if haas { None } else { c.words.take('K') };
+    let times = match k_word {
+        None => 1,
+        Some(k) if !k.has_point && (1.0..=9999.0).contains(&k.value) => k.value as u32,
+        Some(k) => {
+            return Err(Diagnostic::new(
+                k.span,
+                "LS-VALUE",
+                "K must be a repeat count 1 … 9999",
+                "write e.g. K2",
+            ))
+        }
+    };
+    if times > 1 {
+        if let Some(w) = w_word {
+            return Err(Diagnostic::new(
+                w.span,
+                "LS-DRILL-K",
+                "K repeats with an incremental W would drill each repeat deeper along the axis",
+                "repeat a hole on the axis with an absolute Z (the same hole), or write each hole",
+            ));
+        }
+    }
+    let dir = (bottom - r).signum();
+    if (bottom - r).abs() < 1e-9 || (r - initial) * dir < -1e-9 {
+        return Err(c.alarm(
+            "LS-DRILL-LEVELS",
+            format!(
+                "{name}: the R point Z{r:.3} must lie between the initial level Z{initial:.3} and the bottom Z{bottom:.3}"
+            ),
+            "the tool goes from the initial level to R by rapid, then feeds from R to the bottom",
+        ));
+    }
+    let pecks = if q > 0.0 {
+        ((bottom - r).abs() / q - 1e-9).ceil().max(1.0)
+    } else {
+        1.0
+    };
+    if pecks * 3.0 * f64::from(times) > MAX_MOVES as f64 {
+        return Err(c.alarm(
+            "LS-CYCLE-TOO-LONG",
+            format!("{name} would make {pecks:.0} pecks"),
+            "Q is in least input increments: Q8000 is 8 mm at IS-B",
+        ));
+    }
+    let words = DrillWords {
+        code: c.code,
+        initial,
+        r,
+        bottom,
+        q,
+        dwell,
+    };
+    c.retained.drill = Some(words);
+    let ret = match c.drill_return {
+        DrillReturn::Initial => initial,
+        DrillReturn::RPoint => r,
+    };
+    let at = |z: f64| Pt::new(z, 0.0);
+    let delta = c.machine.drill_clearance;
+    let mut moves = vec![];
+    let mut out = Output::default();
+    for _ in 0..times {
+        moves.push(Move::rapid(at(r))); // 1. to the R point
+        if q > 0.0 {
+            let n = pecks as usize;
+            for i in 1..=n {
+                let depth = if i == n {
+                    bottom
+                } else {
+                    r + dir * q * i as f64
+                };
+                moves.push(Move::feed(at(depth))); // 2. one peck
+                if i < n {
+                    if c.machine.g83_full_retract {
+                        moves.push(Move::rapid(at(r)));
+                        moves.push(Move::rapid(at(depth - dir * delta)));
+                    } else {
+                        moves.push(Move::rapid(at(depth - dir * delta)));
+                    }
+                }
+            }
+        } else {
+            moves.push(Move::feed(at(bottom))); // 2. one feed
+        }
+        out.dwell_s += dwell; // 3.
+        if matches!(c.code, G84 | G85) {
+            moves.push(Move::feed(at(r))); // 4. tap reversed / bore fed out
+        }
+        moves.push(Move::rapid(at(ret))); // 5.
+    }
+    if c.code == G84 && c.g.is_some() {
+        out.warnings.push(c.alarm(
+            "LS-TAP",
+            "G84 taps with the drill outline of the tool table (the tap's major diameter); the thread form is not drawn",
+            "",
+        ));
+    }
+    out.moves = moves;
+    Ok(out)
+}
