@@ -5,8 +5,13 @@ use crate::input::{self, Loaded};
 use expander::IntendedKind;
 use stock::Intent;
 
-/// The intents: `--target F`, else the shapes the program defines for itself.
-pub(crate) fn intents(args: &RunArgs, loaded: &Loaded) -> Result<Vec<Intent>, ()> {
+/// The intents: `--target F`, else the shapes the program defines for itself, each read
+/// against the stock when its cycle began (`stock_at(k)`: the stock after `k` moves).
+pub(crate) fn intents(
+    args: &RunArgs,
+    loaded: &Loaded,
+    stock_at: &dyn Fn(usize) -> Vec<stock::Shape>,
+) -> Result<Vec<Intent>, ()> {
     if let Some(path) = &args.target {
         let text = input::read_text(path, "target")?;
         let part = stock::profile_from_toml(&text, 0.001)
@@ -23,7 +28,7 @@ pub(crate) fn intents(args: &RunArgs, loaded: &Loaded) -> Result<Vec<Intent>, ()
             let pts: Vec<[f64; 2]> = i.points.iter().map(|p| [p.z, p.r]).collect();
             match i.kind {
                 IntendedKind::Groove => Some(Intent::groove(&pts)),
-                IntendedKind::FinishingContour => Intent::finishing(&pts),
+                IntendedKind::FinishingContour => Intent::finishing(&pts, &stock_at(i.after_move)),
                 IntendedKind::Compensated { part_on_left } => {
                     Intent::compensated(&pts, part_on_left)
                 }
@@ -52,4 +57,15 @@ fn overcut_later(all: &[expander::Intended], k: usize, i: &expander::Intended) -
         let (a, b) = span(later);
         later.kind == (IntendedKind::Compensated { part_on_left }) && a < hi - 1e-6 && b > lo + 1e-6
     })
+}
+
+/// The move counts after which [`intents`] wants the stock (to take them in the removal pass).
+pub(crate) fn stock_marks(loaded: &Loaded) -> Vec<usize> {
+    loaded
+        .toolpath
+        .intended
+        .iter()
+        .filter(|i| i.kind == IntendedKind::FinishingContour)
+        .map(|i| i.after_move)
+        .collect()
 }

@@ -143,3 +143,18 @@ fn a_blade_rapiding_into_the_bar_is_a_crash_with_its_depth() {
     assert!((depth - 3.0).abs() < 0.01, "{depth}");
     assert!((crashes[0]["area_mm2"].as_f64().unwrap() - 1.5).abs() < 0.01);
 }
+
+/// Item 3: a finishing shape's lead-in in front of the face is no part. A Φ40 bar with its
+/// face at Z1 is faced to Z0 (G94), then a G71/G70 shape `N10 G00 X20` (at Z2), `G01 Z0`,
+/// `Z-20`, `X30`, `Z-35`, `N20 X41`: the facing was a "2.0 mm deep gouge" (the slab in
+/// front of Z0 under the lead-in counted as part). Hand: removed = face 20 × 1 + Φ20 stretch
+/// (20 − 10) × 20 + Φ30 stretch (20 − 15) × 15 = 295 mm²; no gouge.
+#[test]
+fn a_lead_in_in_front_of_the_face_is_no_part() {
+    let text = "G99 M03 S600 T0101\nG00 X42 Z2\nG94 X-2 Z0 F0.15\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20\nG01 Z0 F0.12\nZ-20\nX30\nZ-35\nN20 X41\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let (code, r) = run_json("leadin.nc", text, &["--stock", "40x60", "--stock-z", "1"]);
+    assert_eq!(code, 0, "{r}");
+    assert_eq!(r["gouges"].as_array().unwrap().len(), 0, "{}", r["gouges"]);
+    let removed = r["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - 295.0).abs() < 1.0, "{removed}");
+}

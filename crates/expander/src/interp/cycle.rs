@@ -49,6 +49,7 @@ impl Interp<'_> {
                     kind,
                     points,
                     span: b.span,
+                    after_move: self.out.segments.len(),
                 });
             }
         }

@@ -109,6 +109,7 @@ impl Interp<'_> {
                         },
                         points,
                         span: first.span,
+                        after_move: self.out.segments.len(),
                     });
                 }
             }
