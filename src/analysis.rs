@@ -25,12 +25,19 @@ pub(crate) fn intents(
         .filter(|(k, i)| !overcut_later(intended, *k, i))
         .map(|(_, i)| i)
         .filter_map(|i| {
-            let pts: Vec<[f64; 2]> = i.points.iter().map(|p| [p.z, p.r]).collect();
+            // a shape programmed below the axis (a rear post) is seen mirrored in the
+            // section, where its sides swap
+            let below = i.points.iter().map(|p| p.r).sum::<f64>() < 0.0;
+            let pts: Vec<[f64; 2]> = i
+                .points
+                .iter()
+                .map(|p| [p.z, if below { -p.r } else { p.r }])
+                .collect();
             match i.kind {
                 IntendedKind::Groove => Some(Intent::groove(&pts)),
                 IntendedKind::FinishingContour => Intent::finishing(&pts, &stock_at(i.after_move)),
                 IntendedKind::Compensated { part_on_left } => {
-                    Intent::compensated(&pts, part_on_left)
+                    Intent::compensated(&pts, part_on_left != below)
                 }
             }
         })

@@ -307,8 +307,9 @@ pub fn deviation(
     let left = boolean(&final_zone, &part, BoolOp::Difference);
     out.gouges = findings(gone, &part, tol);
     out.leftovers = findings(left, &part, tol);
+    let rear = crate::section::rear_tools(segments);
     for g in &mut out.gouges {
-        g.segments = sweeping(&g.shape, segments, tools, chord_tol);
+        g.segments = sweeping(&g.shape, segments, tools, &rear, chord_tol);
     }
     out
 }
@@ -394,56 +395,76 @@ fn deepest(shape: &Shape, boundary: &EdgeIndex) -> (f64, [f64; 2]) {
 }
 
 /// Indices of the segments whose tool sweep overlaps `region` by more than a sliver.
-fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: f64) -> Vec<usize> {
+/// Moves past the axis are folded into the section as the removal folds them
+/// ([`crate::section`]); `rear` are the rear-post tools (their outline mirrored).
+fn sweeping(
+    region: &Shape,
+    segments: &[Segment],
+    tools: &ToolTable,
+    rear: &[u32],
+    chord_tol: f64,
+) -> Vec<usize> {
     let bb = Rect::of(pts(&region.outer));
     let mut out = vec![];
-    let mut cache: Vec<((u32, u8, u64), Outline)> = vec![];
+    let mut cache: Vec<(((u32, u8, u64), bool), Outline)> = vec![];
     for (i, seg) in segments.iter().enumerate() {
-        let outline = outline_cached(&mut cache, tools, seg);
-        let Some((lo, hi)) = outline.bbox() else {
-            continue;
-        };
-        let (sz0, sz1) = (seg.from.z.min(seg.to.z), seg.from.z.max(seg.to.z));
-        let (sr0, sr1) = (seg.from.r.min(seg.to.r), seg.from.r.max(seg.to.r));
-        // arcs may bulge beyond their end points by up to their radius
-        let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
-        if sz1 + hi[0] + bulge < bb.min.z
-            || sz0 + lo[0] - bulge > bb.max.z
-            || sr1 + hi[1] + bulge < bb.min.r
-            || sr0 + lo[1] - bulge > bb.max.r
-        {
-            continue;
-        }
-        let pts = seg.polyline(chord_tol);
-        let mut sweep: Vec<Shape> = vec![];
-        for w in pts.windows(2) {
-            let d = [w[1].z - w[0].z, w[1].r - w[0].r];
-            for part in &outline.parts {
-                let at: Vec<P> = part
-                    .iter()
-                    .map(|p| [p[0] + w[0].z, p[1] + w[0].r])
-                    .collect();
-                let ring = if d[0] == 0.0 && d[1] == 0.0 {
-                    convex_hull(&at)
-                } else {
-                    sweep_convex(&at, d)
-                };
-                sweep.push(Shape {
-                    outer: ring,
-                    holes: vec![],
-                });
-            }
-        }
-        let overlap = area(&boolean(
-            &sweep,
-            std::slice::from_ref(region),
-            BoolOp::Intersection,
-        ));
-        if overlap > 1e-9 {
+        let outline = outline_cached(&mut cache, tools, seg, rear.contains(&seg.tool));
+        if sweeps_over(region, &bb, seg, &outline, chord_tol) {
             out.push(i);
         }
     }
     out
+}
+
+/// Whether the tool sweep of `seg`, folded into the section, overlaps `region` (box `bb`).
+fn sweeps_over(
+    region: &Shape,
+    bb: &Rect,
+    seg: &Segment,
+    outline: &Outline,
+    chord_tol: f64,
+) -> bool {
+    let Some((lo, hi)) = outline.bbox() else {
+        return false;
+    };
+    let (sz0, sz1) = (seg.from.z.min(seg.to.z), seg.from.z.max(seg.to.z));
+    let (sr0, sr1) = (seg.from.r.min(seg.to.r), seg.from.r.max(seg.to.r));
+    // arcs may bulge beyond their end points by up to their radius
+    let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
+    // (a sweep reaching below the axis is folded: only its Z range is known beforehand)
+    let folded = sr0 + lo[1] - bulge < 0.0;
+    if sz1 + hi[0] + bulge < bb.min.z
+        || sz0 + lo[0] - bulge > bb.max.z
+        || (!folded && (sr1 + hi[1] + bulge < bb.min.r || sr0 + lo[1] - bulge > bb.max.r))
+    {
+        return false;
+    }
+    let pts = seg.polyline(chord_tol);
+    let mut sweep: Vec<Shape> = vec![];
+    for w in pts.windows(2) {
+        let d = [w[1].z - w[0].z, w[1].r - w[0].r];
+        for part in &outline.parts {
+            let at: Vec<P> = part
+                .iter()
+                .map(|p| [p[0] + w[0].z, p[1] + w[0].r])
+                .collect();
+            let ring = if d[0] == 0.0 && d[1] == 0.0 {
+                convex_hull(&at)
+            } else {
+                sweep_convex(&at, d)
+            };
+            sweep.extend(crate::section::fold(&ring).into_iter().map(|outer| Shape {
+                outer,
+                holes: vec![],
+            }));
+        }
+    }
+    let overlap = area(&boolean(
+        &sweep,
+        std::slice::from_ref(region),
+        BoolOp::Intersection,
+    ));
+    overlap > 1e-9
 }
 
 /// Box of a ring as (least, greatest) corner.
@@ -452,17 +473,20 @@ fn bbox(ring: &[P]) -> (P, P) {
     (r.min.into(), r.max.into())
 }
 
-/// The outline that cuts `seg`, as the removal resolves it (tool number and hint).
+/// The outline that cuts `seg`, as the removal resolves it (tool number and hint; mirrored
+/// about the axis when `flip`).
 fn outline_cached(
-    cache: &mut Vec<((u32, u8, u64), Outline)>,
+    cache: &mut Vec<(((u32, u8, u64), bool), Outline)>,
     tools: &ToolTable,
     seg: &Segment,
+    flip: bool,
 ) -> Outline {
-    let key = crate::tools::hint_key(seg.tool, seg.hint);
+    let key = (crate::tools::hint_key(seg.tool, seg.hint), flip);
     if let Some((_, o)) = cache.iter().find(|(k, _)| *k == key) {
         return o.clone();
     }
     let o = tools.outline_for(seg.tool, seg.hint).0;
+    let o = if flip { o.mirrored() } else { o };
     cache.push((key, o.clone()));
     o
 }
