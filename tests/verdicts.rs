@@ -229,13 +229,55 @@ fn compensation_on_a_rear_post_mirrors_the_front() {
     }
     // Hand: Φ40 bar (r20) over Z0..-20 to the contour r10 at Z0, the taper to r15 at Z-10,
     // r15 to Z-20: removed = 20·20 − (0.5·(10 + 15)·10 + 15·10) = 400 − 275 = 125 mm², less
-    // what the r1 nose cannot reach where the taper meets the lead-in along r10 (its centre
-    // turns at Z0.235 on r11: a sliver of 0.2155 mm² reported as a leftover, 0.29 deep).
+    // the fillet the r1 nose leaves in the inside corner at Z-20, 1² (1 − π/4) = 0.2146 mm²
+    // (reported as a leftover).
     let hand = 125.0;
     for r in [&front, &rear] {
         let removed = r["removed_area_mm2"].as_f64().unwrap();
         let left = r["deviation"]["undercut_area_mm2"].as_f64().unwrap();
-        assert!((removed + left - hand).abs() < 0.01, "{removed} + {left} vs {hand}");
+        assert!(
+            (removed + left - hand).abs() < 0.01,
+            "{removed} + {left} vs {hand}"
+        );
     }
     assert_eq!(front["final"], rear["final"]);
+}
+
+/// Item 11: a G70 shape that writes G42 in its second block (`N10 G00 X10` / `G42 G01 Z0` /
+/// `G03 X30 Z-10 R10` …) starts the compensation there, as the same blocks outside the cycle
+/// do: the start-up `G42 G01 Z0` ends with the r1 nose tangent to the dome at its start
+/// (tip at Z0 X8), not at the intersection of the offsets (Z-0.0455 X10), which left a
+/// 0.045 mm sliver. Hand: the part is the same as the plain program's; the only deviation
+/// is the nose fillet in the inside corner at Z-20, 1² (1 − π/4) = 0.2146 mm².
+#[test]
+fn g70_starts_compensation_where_the_shape_writes_it() {
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"V\"\nnose_radius = 1.0\ntip = 3\nentering_angle = 93\n";
+    let dir = tempfile::tempdir().unwrap();
+    let table = dir.path().join("t.toml");
+    std::fs::write(&table, tools).unwrap();
+    let shape = "G00 X10\nG42 G01 Z0 F0.1\nG03 X30 Z-10 R10\nG01 Z-20\n";
+    let g70 = format!(
+        "G99 M03 S800 T0101\nG00 X42 Z2\nG70 P10 Q20\nN10 {shape}N20 X42\nG00 X100 Z100\nM30\n"
+    );
+    let plain =
+        format!("G99 M03 S800 T0101\nG00 X42 Z2\n{shape}X42\nG40 G00 X42 Z2\nG00 X100 Z100\nM30\n");
+    let args = ["--stock", "40x30", "--tools", table.to_str().unwrap()];
+    let (code_a, a) = run_json("g70.nc", &g70, &args);
+    let (code_b, b) = run_json("plain.nc", &plain, &args);
+    assert_eq!((code_a, code_b), (0, 0), "{a}\n{b}");
+    assert_eq!(a["final"], b["final"]);
+    let fillet = 1.0 - std::f64::consts::FRAC_PI_4;
+    for r in [&a, &b] {
+        assert_eq!(r["gouges"].as_array().unwrap().len(), 0, "{r}");
+        let left = r["deviation"]["undercut_area_mm2"].as_f64().unwrap();
+        assert!((left - fillet).abs() < 0.002, "{left} vs {fillet}");
+    }
+    // the start-up ends with the nose centre on the dome's normal at its start (Z0, r5):
+    // without a tool table the default r0.4 nose, centre (Z0.4, r5), tip at Z0 r4.6
+    let tp = expand(&g70);
+    let dome = tp.segments.iter().find(|s| s.arc.is_some()).unwrap();
+    assert!(
+        dome.from.dist(expander::Pt::new(0.0, 4.6)) < 1e-9,
+        "{dome:?}"
+    );
 }

@@ -141,6 +141,9 @@ pub(crate) struct Output {
     /// G70: run the moves as one compensation section, on the shape's side (`Some(None)`:
     /// the side in force at G70, if any); `None`: never compensated (the other cycles).
     pub(crate) comp: Option<Option<crate::tnrc::Side>>,
+    /// G70: the move that starts the compensation (the block that wrote G41/G42; 0: the
+    /// first move).
+    pub(crate) comp_from: usize,
 }
 
 impl Cycle<'_, '_> {

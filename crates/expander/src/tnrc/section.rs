@@ -98,9 +98,9 @@ impl Interp<'_> {
                 for seg in chain {
                     points.extend(seg.polyline(0.001).into_iter().skip(1));
                 }
+                // (a G70 shape that writes G41/G42 after its ns block hands over more)
                 let known = self.out.intended.iter().any(|i| {
-                    i.kind == crate::IntendedKind::FinishingContour
-                        && i.points.get(1..) == Some(&points[..])
+                    i.kind == crate::IntendedKind::FinishingContour && i.points.ends_with(&points)
                 });
                 if !known {
                     self.out.intended.push(crate::Intended {
