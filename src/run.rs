@@ -261,7 +261,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
             .find(|(at, _)| *at == k)
             .map_or_else(|| blank.shapes.clone(), |(_, s)| s.clone())
     };
-    let Ok(intents) = crate::analysis::intents(args, &loaded, &stock_at) else {
+    let Ok(intents) = crate::analysis::intents(args, &loaded, &tools, &stock_at) else {
         return EXIT_UNUSABLE;
     };
     // the HTML player shows only its own marks

@@ -281,3 +281,59 @@ fn g70_starts_compensation_where_the_shape_writes_it() {
         "{dome:?}"
     );
 }
+
+/// Item 5: an inch program (G20) gets no gouge on the axis (it got "10.1600 mm deep,
+/// 0.0004 mm² at X-0.000"). The corpus job `clean-inch-g20`: a Φ2.0 in bar, G71/G70 to
+/// Φ1.0 × 0.75 in and Φ1.5 × 0.75 in. Hand (mm): (25.4 − 12.7) × 19.05 + (25.4 − 19.05) ×
+/// 19.05 = 362.9025 mm², less the two r0.4 fillets of the finishing nose, 2 × 0.4² (1 − π/4)
+/// = 0.0687: 362.834 mm².
+#[test]
+fn an_inch_program_does_not_gouge_on_the_axis() {
+    let prog = asset("corpus/gsk980/clean-inch-g20.nc");
+    let tools = asset("corpus/tools/shop.toml");
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("r.json");
+    let out = latsim(&[
+        "run",
+        prog.to_str().unwrap(),
+        "--stock",
+        "50.8x76.2",
+        "--tools",
+        tools.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    let r: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(out.code, 0, "{r}");
+    assert_eq!(r["gouges"].as_array().unwrap().len(), 0, "{}", r["gouges"]);
+    let hand = 19.05 * (12.7 + 6.35) - 2.0 * 0.16 * (1.0 - std::f64::consts::FRAC_PI_4);
+    let removed = r["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - hand).abs() < 0.01, "{removed} vs {hand}");
+}
+
+/// Item 6: thread teeth are not gouges. Φ24 finished by G71/G70 over Z0..-30 on a Φ30
+/// bar, then an M24×2 thread by G92 to X21.4 over Z4..-24: the grooves were gouges of the
+/// G70 shape (12 of them, 1.3 mm deep). Hand: OD (15 − 12) × 30 = 90 less the r0.8 fillet
+/// at Z-30, 0.64 (1 − π/4) = 0.1373; thread h = (24 − 21.4) / 2 = 1.3, a groove h² tan 30° =
+/// 0.9757 mm², stamped every 2 mm from Z4: 12 whole grooves (Z-2 … -24) and half of the one
+/// at Z0: 12.5 × 0.9757 = 12.196; total 102.059 mm²; no gouge.
+#[test]
+fn thread_teeth_are_not_gouges() {
+    let text = "G40 G97 G99 G21\nT0101\nM03 S800\nG00 X32 Z2\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X24\nG01 Z0 F0.1\nZ-30\nN20 X32\nG70 P10 Q20\nG00 X100 Z100\nT0404\nM03 S400\nG00 X26 Z4\nG92 X23.2 Z-24 F2\nX22.6\nX22.1\nX21.7\nX21.5\nX21.4\nG00 X100 Z100\nM30\n";
+    let tools = asset("corpus/tools/shop.toml");
+    let (code, r) = run_json(
+        "thread.nc",
+        text,
+        &["--stock", "30x50", "--tools", tools.to_str().unwrap()],
+    );
+    assert_eq!(code, 0, "{r}");
+    assert_eq!(r["gouges"].as_array().unwrap().len(), 0, "{}", r["gouges"]);
+    let groove = 1.3f64.powi(2) * 30f64.to_radians().tan();
+    let hand = 90.0 - 0.64 * (1.0 - std::f64::consts::FRAC_PI_4) + 12.5 * groove;
+    let removed = r["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - hand).abs() < 0.005, "{removed} vs {hand}");
+    // the shape is still checked outside the thread: the fillet at Z-30 is its leftover
+    let left = r["deviation"]["undercut_area_mm2"].as_f64().unwrap();
+    assert!((left - 0.1373).abs() < 0.002, "{left}");
+}
