@@ -337,3 +337,54 @@ fn thread_teeth_are_not_gouges() {
     let left = r["deviation"]["undercut_area_mm2"].as_f64().unwrap();
     assert!((left - 0.1373).abs() < 0.002, "{left}");
 }
+
+/// Item 12: a threading tool is not "a grooving blade" in warnings: G42 with a threading
+/// tool's offset is ignored with a warning that names it.
+#[test]
+fn a_threading_tool_is_named_as_one() {
+    let tools = stock::ToolTable::from_toml(
+        "[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\n\n[[tool]]\nt = 5\nkind = \"grooving\"\nwidth = 3.0\n",
+    )
+    .unwrap();
+    let opts = expander::Options {
+        noses: tools.noses(),
+        ..Default::default()
+    };
+    let warning = |t: &str| {
+        let p = gcode::parse(&format!(
+            "M3 S800 {t}\nG0 X40 Z2\nG42 G1 X20 Z0 F100\nG1 Z-10\nG40 G0 X50\n"
+        ))
+        .unwrap();
+        let tp = expander::expand(&p, &expander::Machine::default(), &opts);
+        tp.warnings
+            .into_iter()
+            .find(|w| w.code == "LS-TNRC-BLADE")
+            .unwrap()
+            .message
+    };
+    let thread = warning("T0404");
+    assert!(
+        thread.contains("threading tool") && !thread.contains("blade"),
+        "{thread}"
+    );
+    assert!(warning("T0505").contains("grooving blade"));
+}
+
+/// Item 12: G75 with P (Δi) larger than the X travel |U/2| is an alarm at the cycle block,
+/// as the control gives it (seed 002 §6 ③, FANUC: "Δi值大于U/2 … 将会出现程序报警"), not one
+/// peck: from X42 to X32 the travel is 5 mm, P6000 asks 6 mm.
+#[test]
+fn g75_with_a_peck_deeper_than_the_travel_is_an_alarm() {
+    let tp =
+        expand("G99 M3 S500 T0505\nG0 X42 Z-28\nG75 R0.3\nG75 X32 Z-31 P6000 Q2000 F0.1\nM30\n");
+    assert_eq!(tp.alarms.len(), 1, "{:?}", tp.alarms);
+    let a = &tp.alarms[0];
+    assert_eq!((&*a.code, a.span.line), ("LS-G75-STEP", 4));
+    assert!(
+        a.message.contains("larger than the X travel 5.0000"),
+        "{}",
+        a.message
+    );
+    // nothing of the cycle was cut
+    assert!(tp.segments.iter().all(|s| s.span.line != 4));
+}

@@ -364,7 +364,7 @@ fn g94_expansion() {
 fn g41_g42_switch_and_offset_00_cancel() {
     let noses = [(
         1,
-        Some(expander::tnrc::Nose {
+        Ok(expander::tnrc::Nose {
             radius: 1.0,
             tip: 0,
         }),

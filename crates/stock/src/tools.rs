@@ -643,18 +643,22 @@ impl ToolTable {
     /// Nose radius and tip of every turning insert, by offset number (the table's `t`, as
     /// `T0101` pairs tool 01 with offset 01), for G41/G42; other kinds are `None`, for
     /// which compensation is ignored with a warning.
-    pub fn noses(&self) -> std::collections::BTreeMap<u32, Option<expander::tnrc::Nose>> {
+    pub fn noses(
+        &self,
+    ) -> std::collections::BTreeMap<u32, Result<expander::tnrc::Nose, &'static str>> {
         self.tools
             .iter()
             .map(|(t, tool)| {
                 let nose = match tool {
                     Tool::Turning {
                         nose_radius, tip, ..
-                    } => Some(expander::tnrc::Nose {
+                    } => Ok(expander::tnrc::Nose {
                         radius: *nose_radius,
                         tip: *tip,
                     }),
-                    _ => None,
+                    Tool::Grooving { .. } => Err("grooving blade"),
+                    Tool::Drill { .. } => Err("drill"),
+                    Tool::Threading { .. } => Err("threading tool"),
                 };
                 (*t, nose)
             })

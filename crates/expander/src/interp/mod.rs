@@ -34,9 +34,10 @@ pub struct Options {
     pub max_segments: usize,
     /// Stop with an alarm after executing this many blocks (endless loops).
     pub max_blocks: usize,
-    /// Nose radius and tip per tool offset number (`oo` of `Tttoo`) for G41/G42;
-    /// `None` marks a grooving blade, for which compensation is ignored with a warning.
-    pub noses: BTreeMap<u32, Option<Nose>>,
+    /// Nose radius and tip per tool offset number (`oo` of `Tttoo`) for G41/G42; `Err`
+    /// names a tool without a nose ("grooving blade", "drill", "threading tool"), for which
+    /// compensation is ignored with a warning.
+    pub noses: BTreeMap<u32, Result<Nose, &'static str>>,
     /// The nose of an offset with no entry (the documented default insert: r 0.4, tip 3).
     pub default_nose: Nose,
     /// The tool table's radial grooving blades by tool number: width, and whether the

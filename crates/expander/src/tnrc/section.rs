@@ -49,18 +49,18 @@ impl Interp<'_> {
     }
 
     /// The nose of the offset in force: from the tool table, or the default with a warning;
-    /// `None` for offset 00 or a grooving blade (compensation ignored, with a warning).
+    /// `None` for offset 00 or a tool without a nose (compensation ignored, with a warning).
     pub(crate) fn nose_for_offset(&mut self, span: Span) -> Option<Nose> {
         let offset = self.offset;
         if offset == 0 {
             return None;
         }
         Some(match self.nose_for(offset) {
-            Some(Some(n)) => n,
-            Some(None) => {
+            Some(Ok(n)) => n,
+            Some(Err(kind)) => {
                 if !self.comp_warned.contains(&offset) {
                     self.comp_warned.push(offset);
-                    self.warn(span, "LS-TNRC-BLADE", format!("G41/G42 ignored: offset {offset:02} is a grooving blade"), "compensation applies to pointed inserts; program the blade's corner directly");
+                    self.warn(span, "LS-TNRC-BLADE", format!("G41/G42 ignored: offset {offset:02} is a {kind}, not a turning insert"), "compensation applies to turning inserts with a nose radius; program the tool's reference point directly");
                 }
                 return None;
             }
