@@ -379,7 +379,7 @@ fn g75_with_a_peck_deeper_than_the_travel_is_an_alarm() {
         expand("G99 M3 S500 T0505\nG0 X42 Z-28\nG75 R0.3\nG75 X32 Z-31 P6000 Q2000 F0.1\nM30\n");
     assert_eq!(tp.alarms.len(), 1, "{:?}", tp.alarms);
     let a = &tp.alarms[0];
-    assert_eq!((&*a.code, a.span.line), ("LS-G75-STEP", 4));
+    assert_eq!((a.code, a.span.line), ("LS-G75-STEP", 4));
     assert!(
         a.message.contains("larger than the X travel 5.0000"),
         "{}",

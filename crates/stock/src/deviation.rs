@@ -406,7 +406,7 @@ fn sweeping(
 ) -> Vec<usize> {
     let bb = Rect::of(pts(&region.outer));
     let mut out = vec![];
-    let mut cache: Vec<(((u32, u8, u64), bool), Outline)> = vec![];
+    let mut cache: OutlineCache = vec![];
     for (i, seg) in segments.iter().enumerate() {
         let outline = outline_cached(&mut cache, tools, seg, rear.contains(&seg.tool));
         if sweeps_over(region, &bb, seg, &outline, chord_tol) {
@@ -473,10 +473,13 @@ fn bbox(ring: &[P]) -> (P, P) {
     (r.min.into(), r.max.into())
 }
 
+/// Outlines by (tool and hint key, mirrored).
+type OutlineCache = Vec<(((u32, u8, u64), bool), Outline)>;
+
 /// The outline that cuts `seg`, as the removal resolves it (tool number and hint; mirrored
 /// about the axis when `flip`).
 fn outline_cached(
-    cache: &mut Vec<(((u32, u8, u64), bool), Outline)>,
+    cache: &mut OutlineCache,
     tools: &ToolTable,
     seg: &Segment,
     flip: bool,
