@@ -107,7 +107,7 @@ fn own_or_target(
                 IntendedKind::Groove => Some(Intent::groove(&pts)),
                 IntendedKind::FinishingContour => Intent::finishing(&pts, &stock_at(i.after_move)),
                 IntendedKind::Compensated { part_on_left } => {
-                    Intent::compensated(&pts, part_on_left != below)
+                    Intent::compensated(&pts, part_on_left != below, &stock_at(i.after_move))
                 }
             }
         })
@@ -142,7 +142,7 @@ pub(crate) fn stock_marks(loaded: &Loaded) -> Vec<usize> {
         .toolpath
         .intended
         .iter()
-        .filter(|i| i.kind == IntendedKind::FinishingContour)
+        .filter(|i| i.kind != IntendedKind::Groove)
         .map(|i| i.after_move)
         .collect()
 }

@@ -388,3 +388,34 @@ fn g75_with_a_peck_deeper_than_the_travel_is_an_alarm() {
     // nothing of the cycle was cut
     assert!(tp.segments.iter().all(|s| s.span.line != 4));
 }
+
+/// Item 3 under G41/G42: a compensated contour's lead-in `G01 Z0` from Z2 at Φ20 runs in
+/// front of a face the G94 made at Z0 (blank face Z1): no part. It was a 1 mm deep, 10 mm²
+/// gouge. Hand: face slab 20 × 1 = 20, the contour Φ20 → taper to Φ30 at Z-10 → Φ30 to
+/// Z-20 on a Φ40 bar 20·20 − (0.5·(10 + 15)·10 + 15·10) = 125, less the r1 fillet in the
+/// inside corner at Z-20, 1 − π/4 = 0.2146: 144.785 mm²; no gouge.
+#[test]
+fn a_compensated_lead_in_in_front_of_the_face_is_no_part() {
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"V\"\nnose_radius = 1.0\ntip = 3\nentering_angle = 93\n";
+    let dir = tempfile::tempdir().unwrap();
+    let table = dir.path().join("t.toml");
+    std::fs::write(&table, tools).unwrap();
+    let text = "G99 M03 S800 T0101\nG00 X44 Z2\nG94 X-2 Z0 F0.1\nG00 X50 Z5\nG00 G42 X20 Z2\nG01 Z0 F0.1\nX30 Z-10\nZ-20\nX42\nG00 G40 X50 Z5\nM30\n";
+    let (code, r) = run_json(
+        "comp-leadin.nc",
+        text,
+        &[
+            "--stock",
+            "40x40",
+            "--stock-z",
+            "1",
+            "--tools",
+            table.to_str().unwrap(),
+        ],
+    );
+    assert_eq!(code, 0, "{r}");
+    assert_eq!(r["gouges"].as_array().unwrap().len(), 0, "{}", r["gouges"]);
+    let hand = 20.0 + 125.0 - (1.0 - std::f64::consts::FRAC_PI_4);
+    let removed = r["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - hand).abs() < 0.01, "{removed} vs {hand}");
+}

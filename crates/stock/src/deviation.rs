@@ -111,8 +111,9 @@ impl Intent {
     /// tool (`part_on_left` of the direction of travel for G42). The region is closed
     /// toward the side the path's normals on the part side point to on average (below for
     /// OD turning, above for ID boring, left for facing); the comparison is limited to the
-    /// path's Z span (its X span when closed along Z).
-    pub fn compensated(path: &[[f64; 2]], part_on_left: bool) -> Option<Self> {
+    /// path's Z span (its X span when closed along Z). As for a finishing shape, approach
+    /// and retract along an OD or ID contour are no part (`stock`: when the contour began).
+    pub fn compensated(path: &[[f64; 2]], part_on_left: bool, stock: &[Shape]) -> Option<Self> {
         let mut n = [0.0, 0.0];
         for w in path.windows(2) {
             let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
@@ -131,7 +132,11 @@ impl Intent {
         } else {
             Toward::PlusZ
         };
-        Self::open_path(path, toward)
+        let path = match toward {
+            Toward::MinusR | Toward::PlusR => profile_only(path, toward == Toward::MinusR, stock),
+            _ => path.to_vec(),
+        };
+        Self::open_path(&path, toward)
     }
 
     /// The part bounded by an open path and closed far away `toward` one side.
