@@ -10,8 +10,83 @@ use stock::Intent;
 /// with `--dxf` stays within 0.0005 mm of the true arcs.
 const TARGET_CHORD_TOL: f64 = 0.0001;
 
-/// The intents: `--target F`, else the shapes the program defines for itself.
-pub(crate) fn intents(args: &RunArgs, loaded: &Loaded) -> Result<Vec<Intent>, ()> {
+/// The intents: `--target F`, else the shapes the program defines for itself, each read
+/// against the stock when its cycle began (`stock_at(k)`: the stock after `k` moves). What
+/// the thread moves cut between their deepest pass and the top of the tool's flanks is the
+/// thread's own business (spec/simulation.md: "its teeth are cut to this form"): no other
+/// intent speaks there.
+pub(crate) fn intents(
+    args: &RunArgs,
+    loaded: &Loaded,
+    tools: &stock::ToolTable,
+    stock_at: &dyn Fn(usize) -> Vec<stock::Shape>,
+) -> Result<Vec<Intent>, ()> {
+    let mut intents = own_or_target(args, loaded, stock_at)?;
+    let bands = thread_bands(&loaded.toolpath.segments, tools);
+    if !bands.is_empty() {
+        for i in &mut intents {
+            i.zone = stock::boolean(&i.zone, &bands, stock::BoolOp::Difference);
+        }
+    }
+    Ok(intents)
+}
+
+/// Where thread moves cut their teeth: above each pass (below, for a tool whose body lies
+/// below its tip) up to the height where the tool's flanks reach their full width, over
+/// the pass's Z span grown by that width. A pass below the axis is seen mirrored.
+fn thread_bands(segments: &[expander::Segment], tools: &stock::ToolTable) -> Vec<stock::Shape> {
+    const FAR: f64 = 1e5;
+    let mut bands = vec![];
+    for s in segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+    {
+        let outline = tools.outline_for(s.tool, s.hint).0;
+        let Some((lo, hi)) = outline.bbox() else {
+            continue;
+        };
+        let up = hi[1] >= -lo[1];
+        let w = lo[0].abs().max(hi[0].abs());
+        // the flank height: the least |r| at which the outline is as wide as it gets
+        let h = outline
+            .parts
+            .iter()
+            .flatten()
+            .filter(|p| p[0].abs() >= w - 1e-9)
+            .map(|p| p[1].abs())
+            .fold(FAR, f64::min);
+        let h = if up { h } else { -h };
+        let (a, b) = if s.from.z <= s.to.z {
+            (s.from, s.to)
+        } else {
+            (s.to, s.from)
+        };
+        let (ra, rb) = if a.r + b.r < 0.0 {
+            (-a.r, -b.r)
+        } else {
+            (a.r, b.r)
+        };
+        bands.push(stock::Shape {
+            outer: vec![
+                [a.z - w, ra],
+                [b.z + w, rb],
+                [b.z + w, rb + h],
+                [a.z - w, ra + h],
+            ],
+            holes: vec![],
+        });
+    }
+    if bands.is_empty() {
+        return bands;
+    }
+    stock::boolean(&bands, &[], stock::BoolOp::Union)
+}
+
+fn own_or_target(
+    args: &RunArgs,
+    loaded: &Loaded,
+    stock_at: &dyn Fn(usize) -> Vec<stock::Shape>,
+) -> Result<Vec<Intent>, ()> {
     if let Some(path) = &args.target {
         if crate::cad::is_dxf(path) {
             let rings = crate::cad::read_rings(path, args.dxf_x, crate::cad::Role::Target)?;
@@ -30,12 +105,19 @@ pub(crate) fn intents(args: &RunArgs, loaded: &Loaded) -> Result<Vec<Intent>, ()
         .filter(|(k, i)| !overcut_later(intended, *k, i))
         .map(|(_, i)| i)
         .filter_map(|i| {
-            let pts: Vec<[f64; 2]> = i.points.iter().map(|p| [p.z, p.r]).collect();
+            // a shape programmed below the axis (a rear post) is seen mirrored in the
+            // section, where its sides swap
+            let below = i.points.iter().map(|p| p.r).sum::<f64>() < 0.0;
+            let pts: Vec<[f64; 2]> = i
+                .points
+                .iter()
+                .map(|p| [p.z, if below { -p.r } else { p.r }])
+                .collect();
             match i.kind {
                 IntendedKind::Groove => Some(Intent::groove(&pts)),
-                IntendedKind::FinishingContour => Intent::finishing(&pts),
+                IntendedKind::FinishingContour => Intent::finishing(&pts, &stock_at(i.after_move)),
                 IntendedKind::Compensated { part_on_left } => {
-                    Intent::compensated(&pts, part_on_left)
+                    Intent::compensated(&pts, part_on_left != below, &stock_at(i.after_move))
                 }
             }
         })
@@ -62,4 +144,15 @@ fn overcut_later(all: &[expander::Intended], k: usize, i: &expander::Intended) -
         let (a, b) = span(later);
         later.kind == (IntendedKind::Compensated { part_on_left }) && a < hi - 1e-6 && b > lo + 1e-6
     })
+}
+
+/// The move counts after which [`intents`] wants the stock (to take them in the removal pass).
+pub(crate) fn stock_marks(loaded: &Loaded) -> Vec<usize> {
+    loaded
+        .toolpath
+        .intended
+        .iter()
+        .filter(|i| i.kind != IntendedKind::Groove)
+        .map(|i| i.after_move)
+        .collect()
 }

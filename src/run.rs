@@ -237,12 +237,17 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
             b.set_position(done as u64);
         }
     };
-    let sim = stock::simulate(
+    let marks = crate::report::snapshot_marks(segments.len());
+    let mut snapshot_after = marks.clone();
+    snapshot_after.extend(crate::analysis::stock_marks(&loaded));
+    snapshot_after.sort_unstable();
+    snapshot_after.dedup();
+    let mut sim = stock::simulate(
         &blank,
         &tools,
         segments,
         &stock::SimOptions {
-            snapshot_after: crate::report::snapshot_marks(segments.len()),
+            snapshot_after,
             ..stock::SimOptions::default()
         },
         &mut tick,
@@ -255,9 +260,20 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         || loaded.source.name.clone(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let Ok(intents) = crate::analysis::intents(args, &loaded) else {
+    let stock_at = |k: usize| -> Vec<stock::Shape> {
+        if k >= segments.len() {
+            return sim.final_shapes.clone();
+        }
+        sim.snapshots
+            .iter()
+            .find(|(at, _)| *at == k)
+            .map_or_else(|| blank.shapes.clone(), |(_, s)| s.clone())
+    };
+    let Ok(intents) = crate::analysis::intents(args, &loaded, &tools, &stock_at) else {
         return EXIT_UNUSABLE;
     };
+    // the HTML player shows only its own marks
+    sim.snapshots.retain(|(k, _)| marks.contains(k));
     let deviation = (!intents.is_empty()).then(|| {
         stock::deviation(
             &blank.shapes,

@@ -82,6 +82,9 @@ pub struct Intended {
     pub points: Vec<Pt>,
     /// The cycle block.
     pub span: Span,
+    /// How many segments were made before the shape's first move: the stock it works on is
+    /// the stock after them (a lead-in in front of that stock is no part of the shape).
+    pub after_move: usize,
 }
 
 /// Which outline cuts a segment, beyond the tool number.

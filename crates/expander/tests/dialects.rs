@@ -254,7 +254,7 @@ fn g10_sets_the_nose_g41_uses_and_skips_parameter_blocks() {
     let mut opts = Options::default();
     opts.tools.noses.insert(
         1,
-        Some(toolfacts::Nose {
+        Ok(toolfacts::Nose {
             radius: 0.4,
             tip: 3,
         }),

@@ -368,7 +368,7 @@ fn g41_g42_switch_and_offset_00_cancel() {
     let mut tools = toolfacts::ToolFacts::default();
     tools.noses.insert(
         1,
-        Some(toolfacts::Nose {
+        Ok(toolfacts::Nose {
             radius: 1.0,
             tip: 0,
         }),

@@ -82,7 +82,13 @@ impl Intent {
     /// B..C. The part lies on the side away from A (spec): below the shape when A is above
     /// it (OD), above it when A is below (ID), left of it when A is to its right (facing).
     /// The comparison is limited to the shape's Z span (its X span for facing).
-    pub fn finishing(path: &[[f64; 2]]) -> Option<Self> {
+    ///
+    /// Only the profile bounds the part (spec, "The intended shape"); `stock` is the stock
+    /// when the cycle began. For an OD or ID shape, leading moves along Z that run in front
+    /// of that stock (a lead-in `G00 X20` at Z2, `G01 Z0` to a faced front) are dropped; a
+    /// diameter reached straight from the approach starts where the stock starts; trailing
+    /// moves off the last diameter that end beyond the stock are dropped.
+    pub fn finishing(path: &[[f64; 2]], stock: &[Shape]) -> Option<Self> {
         let (a, shape) = path.split_first()?;
         let (lo, hi) = bbox(shape);
         let toward = if a[1] >= hi[1] - 1e-9 {
@@ -94,15 +100,20 @@ impl Intent {
         } else {
             return None;
         };
-        Self::open_path(shape, toward)
+        let shape = match toward {
+            Toward::MinusR | Toward::PlusR => profile_only(shape, toward == Toward::MinusR, stock),
+            _ => shape.to_vec(),
+        };
+        Self::open_path(&shape, toward)
     }
 
     /// A contour cut under G41/G42: the part lies on the side of the path away from the
     /// tool (`part_on_left` of the direction of travel for G42). The region is closed
     /// toward the side the path's normals on the part side point to on average (below for
     /// OD turning, above for ID boring, left for facing); the comparison is limited to the
-    /// path's Z span (its X span when closed along Z).
-    pub fn compensated(path: &[[f64; 2]], part_on_left: bool) -> Option<Self> {
+    /// path's Z span (its X span when closed along Z). As for a finishing shape, approach
+    /// and retract along an OD or ID contour are no part (`stock`: when the contour began).
+    pub fn compensated(path: &[[f64; 2]], part_on_left: bool, stock: &[Shape]) -> Option<Self> {
         let mut n = [0.0, 0.0];
         for w in path.windows(2) {
             let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
@@ -121,7 +132,11 @@ impl Intent {
         } else {
             Toward::PlusZ
         };
-        Self::open_path(path, toward)
+        let path = match toward {
+            Toward::MinusR | Toward::PlusR => profile_only(path, toward == Toward::MinusR, stock),
+            _ => path.to_vec(),
+        };
+        Self::open_path(&path, toward)
     }
 
     /// The part bounded by an open path and closed far away `toward` one side.
@@ -158,6 +173,65 @@ impl Intent {
             outline: vec![(shape.to_vec(), false)],
         })
     }
+}
+
+/// The profile of an OD (`od`) or ID turning shape without its approach and retract
+/// (see [`Intent::finishing`]): the stock under a leading Z move (above it, ID) is what
+/// the shape would claim there; none means the move runs in front of the stock.
+fn profile_only(shape: &[P], od: bool, stock: &[Shape]) -> Vec<P> {
+    const EPS: f64 = 1e-6;
+    let along_z = |a: P, b: P| (a[1] - b[1]).abs() <= EPS && (a[0] - b[0]).abs() > EPS;
+    // the stock on the part side of a line of radius r between z0 and z1
+    let under = |z0: f64, z1: f64, r: f64| {
+        let slab = if od {
+            rect(z0.min(z1), z0.max(z1), -FAR, r)
+        } else {
+            rect(z0.min(z1), z0.max(z1), r, FAR)
+        };
+        boolean(stock, &[slab], BoolOp::Intersection)
+    };
+    let mut s = shape.to_vec();
+    let mut dropped = false;
+    while s.len() > 2 && along_z(s[0], s[1]) {
+        let material = under(s[0][0], s[1][0], s[0][1]);
+        if area(&material) > EPS * (s[1][0] - s[0][0]).abs().max(1.0) {
+            if !dropped {
+                // straight from the approach: the diameter starts at the stock's front
+                let toward_minus_z = s[1][0] < s[0][0];
+                let (mlo, mhi) = bbox(
+                    &material
+                        .iter()
+                        .flat_map(|m| m.outer.clone())
+                        .collect::<Vec<_>>(),
+                );
+                let front = if toward_minus_z { mhi[0] } else { mlo[0] };
+                if (front - s[0][0]) * (s[1][0] - s[0][0]) > 0.0 {
+                    s[0][0] = front;
+                }
+            }
+            break;
+        }
+        s.remove(0);
+        dropped = true;
+    }
+    // trailing moves away from the part that end beyond the stock
+    let all: Vec<P> = stock.iter().flat_map(|m| m.outer.clone()).collect();
+    if !all.is_empty() {
+        let (slo, shi) = bbox(&all);
+        while s.len() > 2 {
+            let (p, q) = (s[s.len() - 2], s[s.len() - 1]);
+            let off = if od {
+                q[1] > p[1] + EPS && q[1] >= shi[1] - EPS
+            } else {
+                q[1] < p[1] - EPS && q[1] <= slo[1] + EPS
+            };
+            if !off {
+                break;
+            }
+            s.pop();
+        }
+    }
+    s
 }
 
 /// One connected region where the part differs from the intent.
@@ -238,8 +312,9 @@ pub fn deviation(
     let left = boolean(&final_zone, &part, BoolOp::Difference);
     out.gouges = findings(gone, &part, tol);
     out.leftovers = findings(left, &part, tol);
+    let rear = crate::section::rear_tools(segments);
     for g in &mut out.gouges {
-        g.segments = sweeping(&g.shape, segments, tools, chord_tol);
+        g.segments = sweeping(&g.shape, segments, tools, &rear, chord_tol);
     }
     out
 }
@@ -325,56 +400,76 @@ fn deepest(shape: &Shape, boundary: &EdgeIndex) -> (f64, [f64; 2]) {
 }
 
 /// Indices of the segments whose tool sweep overlaps `region` by more than a sliver.
-fn sweeping(region: &Shape, segments: &[Segment], tools: &ToolTable, chord_tol: f64) -> Vec<usize> {
+/// Moves past the axis are folded into the section as the removal folds them
+/// ([`crate::section`]); `rear` are the rear-post tools (their outline mirrored).
+fn sweeping(
+    region: &Shape,
+    segments: &[Segment],
+    tools: &ToolTable,
+    rear: &[u32],
+    chord_tol: f64,
+) -> Vec<usize> {
     let bb = Rect::of(pts(&region.outer));
     let mut out = vec![];
-    let mut cache: Vec<((u32, u8, u64), Outline)> = vec![];
+    let mut cache: OutlineCache = vec![];
     for (i, seg) in segments.iter().enumerate() {
-        let outline = outline_cached(&mut cache, tools, seg);
-        let Some((lo, hi)) = outline.bbox() else {
-            continue;
-        };
-        let (sz0, sz1) = (seg.from.z.min(seg.to.z), seg.from.z.max(seg.to.z));
-        let (sr0, sr1) = (seg.from.r.min(seg.to.r), seg.from.r.max(seg.to.r));
-        // arcs may bulge beyond their end points by up to their radius
-        let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
-        if sz1 + hi[0] + bulge < bb.min.z
-            || sz0 + lo[0] - bulge > bb.max.z
-            || sr1 + hi[1] + bulge < bb.min.r
-            || sr0 + lo[1] - bulge > bb.max.r
-        {
-            continue;
-        }
-        let pts = seg.polyline(chord_tol);
-        let mut sweep: Vec<Shape> = vec![];
-        for w in pts.windows(2) {
-            let d = [w[1].z - w[0].z, w[1].r - w[0].r];
-            for part in &outline.parts {
-                let at: Vec<P> = part
-                    .iter()
-                    .map(|p| [p[0] + w[0].z, p[1] + w[0].r])
-                    .collect();
-                let ring = if d[0] == 0.0 && d[1] == 0.0 {
-                    convex_hull(&at)
-                } else {
-                    sweep_convex(&at, d)
-                };
-                sweep.push(Shape {
-                    outer: ring,
-                    holes: vec![],
-                });
-            }
-        }
-        let overlap = area(&boolean(
-            &sweep,
-            std::slice::from_ref(region),
-            BoolOp::Intersection,
-        ));
-        if overlap > 1e-9 {
+        let outline = outline_cached(&mut cache, tools, seg, rear.contains(&seg.tool));
+        if sweeps_over(region, &bb, seg, &outline, chord_tol) {
             out.push(i);
         }
     }
     out
+}
+
+/// Whether the tool sweep of `seg`, folded into the section, overlaps `region` (box `bb`).
+fn sweeps_over(
+    region: &Shape,
+    bb: &Rect,
+    seg: &Segment,
+    outline: &Outline,
+    chord_tol: f64,
+) -> bool {
+    let Some((lo, hi)) = outline.bbox() else {
+        return false;
+    };
+    let (sz0, sz1) = (seg.from.z.min(seg.to.z), seg.from.z.max(seg.to.z));
+    let (sr0, sr1) = (seg.from.r.min(seg.to.r), seg.from.r.max(seg.to.r));
+    // arcs may bulge beyond their end points by up to their radius
+    let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
+    // (a sweep reaching below the axis is folded: only its Z range is known beforehand)
+    let folded = sr0 + lo[1] - bulge < 0.0;
+    if sz1 + hi[0] + bulge < bb.min.z
+        || sz0 + lo[0] - bulge > bb.max.z
+        || (!folded && (sr1 + hi[1] + bulge < bb.min.r || sr0 + lo[1] - bulge > bb.max.r))
+    {
+        return false;
+    }
+    let pts = seg.polyline(chord_tol);
+    let mut sweep: Vec<Shape> = vec![];
+    for w in pts.windows(2) {
+        let d = [w[1].z - w[0].z, w[1].r - w[0].r];
+        for part in &outline.parts {
+            let at: Vec<P> = part
+                .iter()
+                .map(|p| [p[0] + w[0].z, p[1] + w[0].r])
+                .collect();
+            let ring = if d[0] == 0.0 && d[1] == 0.0 {
+                convex_hull(&at)
+            } else {
+                sweep_convex(&at, d)
+            };
+            sweep.extend(crate::section::fold(&ring).into_iter().map(|outer| Shape {
+                outer,
+                holes: vec![],
+            }));
+        }
+    }
+    let overlap = area(&boolean(
+        &sweep,
+        std::slice::from_ref(region),
+        BoolOp::Intersection,
+    ));
+    overlap > 1e-9
 }
 
 /// Box of a ring as (least, greatest) corner.
@@ -383,17 +478,23 @@ fn bbox(ring: &[P]) -> (P, P) {
     (r.min.into(), r.max.into())
 }
 
-/// The outline that cuts `seg`, as the removal resolves it (tool number and hint).
+/// Outlines by (tool and hint key, mirrored).
+type OutlineCache = Vec<(((u32, u8, u64), bool), Outline)>;
+
+/// The outline that cuts `seg`, as the removal resolves it (tool number and hint; mirrored
+/// about the axis when `flip`).
 fn outline_cached(
-    cache: &mut Vec<((u32, u8, u64), Outline)>,
+    cache: &mut OutlineCache,
     tools: &ToolTable,
     seg: &Segment,
+    flip: bool,
 ) -> Outline {
-    let key = crate::tools::hint_key(seg.tool, seg.hint);
+    let key = (crate::tools::hint_key(seg.tool, seg.hint), flip);
     if let Some((_, o)) = cache.iter().find(|(k, _)| *k == key) {
         return o.clone();
     }
     let o = tools.outline_for(seg.tool, seg.hint).0;
+    let o = if flip { o.mirrored() } else { o };
     cache.push((key, o.clone()));
     o
 }
@@ -467,14 +568,17 @@ mod tests {
     #[test]
     fn finishing_shape_sides() {
         // OD: A above; the part is below the shape within its Z span
-        let od =
-            Intent::finishing(&[[5.0, 30.0], [0.0, 10.0], [-10.0, 10.0], [-10.0, 20.0]]).unwrap();
         let blank = [rect(-50.0, 0.0, 0.0, 25.0)];
+        let od = Intent::finishing(
+            &[[5.0, 30.0], [0.0, 10.0], [-10.0, 10.0], [-10.0, 20.0]],
+            &blank,
+        )
+        .unwrap();
         let kept = boolean(&blank, &od.part, BoolOp::Intersection);
         let kept = boolean(&kept, &od.zone, BoolOp::Intersection);
         assert!((area(&kept) - 100.0).abs() < 1e-6, "{}", area(&kept));
         // ID: A below
-        let id = Intent::finishing(&[[5.0, 5.0], [0.0, 12.0], [-10.0, 12.0]]).unwrap();
+        let id = Intent::finishing(&[[5.0, 5.0], [0.0, 12.0], [-10.0, 12.0]], &blank).unwrap();
         let kept = boolean(&blank, &id.part, BoolOp::Intersection);
         let kept = boolean(&kept, &id.zone, BoolOp::Intersection);
         assert!((area(&kept) - 130.0).abs() < 1e-6, "{}", area(&kept));
@@ -505,5 +609,115 @@ mod tests {
             0.001,
         );
         assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
+    }
+
+    fn zone_z(i: &Intent) -> (f64, f64) {
+        let (lo, hi) = bbox(&i.zone[0].outer);
+        (lo[0], hi[0])
+    }
+
+    /// Issue 13 item 3: `N10 G00 X20` at Z2, `G01 Z0`, `Z-20`, `X30`, `Z-35`, `N20 X41` on a
+    /// Φ40 blank whose face at Z1 was faced to Z0 before the cycle. The lead-in Z2 → Z0 runs
+    /// in front of that stock: no part of the shape, which starts at Z0 (the profile's
+    /// vertex). On the unfaced blank the lead-in runs through 1 mm of stock and claims it:
+    /// facing it away afterwards is a gouge of 10 × 1 = 10 mm², 1 mm deep.
+    #[test]
+    fn a_lead_in_in_front_of_the_stock_is_no_part() {
+        let path = [
+            [2.0, 21.0],
+            [2.0, 10.0],
+            [0.0, 10.0],
+            [-20.0, 10.0],
+            [-20.0, 15.0],
+            [-35.0, 15.0],
+            [-35.0, 20.5],
+        ];
+        let blank = [rect(-60.0, 1.0, 0.0, 20.0)];
+        let faced = [rect(-60.0, 0.0, 0.0, 20.0)];
+        let finished = boolean(
+            &[
+                rect(-60.0, -35.0, 0.0, 20.0),
+                rect(-35.0, -20.0, 0.0, 15.0),
+                rect(-20.0, 0.0, 0.0, 10.0),
+            ],
+            &[],
+            BoolOp::Union,
+        );
+        let run = |stock: &[Shape]| {
+            let i = Intent::finishing(&path, stock).unwrap();
+            let z = zone_z(&i);
+            let d = deviation(
+                &blank,
+                &finished,
+                &[i],
+                0.01,
+                &[],
+                &ToolTable::empty(),
+                0.001,
+            );
+            (z, d)
+        };
+        let (z, d) = run(&faced);
+        assert_eq!(z, (-35.0, 0.0));
+        assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
+        let (z, d) = run(&blank);
+        assert_eq!(z, (-35.0, 1.0));
+        assert_eq!(d.gouges.len(), 1, "{d:?}");
+        assert!((d.gouges[0].area - 10.0).abs() < 1e-6, "{:?}", d.gouges[0]);
+        assert!((d.gouges[0].depth - 1.0).abs() < 1e-6, "{:?}", d.gouges[0]);
+    }
+
+    /// Item 3: a diameter reached straight from the approach (`G00 X20` at Z2, `G01 Z-20`)
+    /// starts where the stock started (faced to Z0: no gouge in the faced slab); a retract
+    /// off the last diameter (`X44 Z-36.5` from Φ30 at Z-35 on a Φ40 bar) is no part, so the
+    /// corner it would cut off is no leftover.
+    #[test]
+    fn approach_and_retract_are_no_part() {
+        let blank = [rect(-60.0, 1.0, 0.0, 20.0)];
+        let faced = [rect(-60.0, 0.0, 0.0, 20.0)];
+        let path = [
+            [2.0, 23.0],
+            [2.0, 10.0],
+            [-20.0, 10.0],
+            [-20.0, 15.0],
+            [-35.0, 15.0],
+            [-36.5, 22.0],
+        ];
+        let i = Intent::finishing(&path, &faced).unwrap();
+        assert_eq!(zone_z(&i), (-35.0, 0.0));
+        let finished = boolean(
+            &[
+                rect(-60.0, -35.0, 0.0, 20.0),
+                rect(-35.0, -20.0, 0.0, 15.0),
+                rect(-20.0, 0.0, 0.0, 10.0),
+            ],
+            &[],
+            BoolOp::Union,
+        );
+        let d = deviation(
+            &blank,
+            &finished,
+            &[i],
+            0.01,
+            &[],
+            &ToolTable::empty(),
+            0.001,
+        );
+        assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
+        // on the unfaced blank the Φ20 diameter starts at the blank's face Z1
+        let i = Intent::finishing(&path, &blank).unwrap();
+        assert_eq!(zone_z(&i), (-35.0, 1.0));
+        // a face gouged 1 mm too deep before a shape that marks its face (`G01 Z0`, `Z-20`)
+        // is still found: the lead-in is dropped, the profile keeps its vertex at Z0
+        let deep = [rect(-60.0, -1.0, 0.0, 20.0)];
+        let marked = [
+            [2.0, 21.0],
+            [2.0, 10.0],
+            [0.0, 10.0],
+            [-20.0, 10.0],
+            [-20.0, 15.0],
+        ];
+        let i = Intent::finishing(&marked, &deep).unwrap();
+        assert_eq!(zone_z(&i), (-20.0, 0.0));
     }
 }

@@ -20,6 +20,7 @@ mod outline;
 mod overlay;
 mod profile;
 mod removal;
+mod section;
 mod snapshot;
 mod sweep;
 mod tools;
@@ -35,6 +36,7 @@ pub use outline::Outline;
 pub use overlay::BoolOp;
 pub use profile::profile_from_toml;
 pub use removal::{simulate, Crash, SimOptions, Simulation, CRASH_MIN_AREA};
+pub use section::rear_tools;
 pub use tools::{AxisDir, Insert, Tool, ToolTable};
 
 /// A polygon with holes in (z, r): `outer` counter-clockwise, `holes` clockwise; rings are

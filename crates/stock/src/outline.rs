@@ -45,6 +45,11 @@ impl Outline {
             .fold(0.0, f64::max)
     }
 
+    /// The outline mirrored about the axis (r -> -r): the same tool on the other side.
+    pub fn mirrored(&self) -> Self {
+        self.map(|p| [p[0], -p[1]])
+    }
+
     fn map(&self, f: impl Fn(P) -> P) -> Self {
         Self {
             parts: self

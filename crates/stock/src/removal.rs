@@ -618,6 +618,7 @@ pub fn simulate(
         0.0
     };
     let mut builder = SweepBuilder::new(&grid, clip, tools, tol, merge_tol);
+    builder.set_rear(crate::section::rear_tools(segments));
     let mut fragments: Vec<Fragment> = Vec::new();
     let mut snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), &stock);
     let mut done = 0;

@@ -117,6 +117,8 @@ impl Sweeps {
 struct Run {
     tool: u32,
     hint: ToolHint,
+    /// The outline is the table's mirror (see [`crate::section`]).
+    flip: bool,
     a: P,
     b: P,
     last: usize,
@@ -226,8 +228,12 @@ pub(crate) struct SweepBuilder<'a> {
     /// Largest deviation of a merged chain of feeds from the programmed points, mm (0: only
     /// exact merging).
     merge_tol: f64,
-    outlines: HashMap<(u32, u8, u64), Outline>,
+    outlines: HashMap<((u32, u8, u64), bool), Outline>,
     run: Option<Run>,
+    /// Tools on a rear post (they work at negative X).
+    rear: Vec<u32>,
+    /// The segment being pushed runs below the axis.
+    below: bool,
     scratch: Vec<P>,
     /// (first segment index, message) for skipped moves and defaulted tools.
     pub(crate) warnings: Vec<(usize, String)>,
@@ -254,28 +260,43 @@ impl<'a> SweepBuilder<'a> {
             merge_tol: merge_tol.clamp(0.0, chord_tol),
             outlines: HashMap::new(),
             run: None,
+            rear: Vec::new(),
+            below: false,
             scratch: Vec::new(),
             warnings: Vec::new(),
             out: Sweeps::default(),
         }
     }
 
-    /// The outline of tool `t` under `hint`, warning once per tool (and hint) when defaulted.
-    fn outline(&mut self, t: u32, hint: ToolHint, idx: usize) -> Outline {
-        let key = crate::tools::hint_key(t, hint);
+    /// Tools on a rear post ([`crate::section::rear_tools`]).
+    pub(crate) fn set_rear(&mut self, rear: Vec<u32>) {
+        self.rear = rear;
+    }
+
+    /// The outline of tool `t` under `hint` (mirrored about the axis when `flip`), warning
+    /// once per tool (and hint) when defaulted.
+    fn outline(&mut self, t: u32, hint: ToolHint, flip: bool, idx: usize) -> Outline {
+        let key = (crate::tools::hint_key(t, hint), flip);
         if let Some(o) = self.outlines.get(&key) {
             return o.clone();
         }
         let (o, warning) = self.tools.outline_for(t, hint);
         if let Some(w) = warning {
-            self.warnings.push((idx, w));
+            if !self.outlines.keys().any(|k| k.0 == key.0) {
+                self.warnings.push((idx, w));
+            }
         }
+        let o = if flip { o.mirrored() } else { o };
         self.outlines.insert(key, o.clone());
         o
     }
 
-    /// Adds segment number `idx`.
+    /// Adds segment number `idx`, swept where it was programmed and folded about the axis
+    /// ([`crate::section`]).
     pub(crate) fn push(&mut self, idx: usize, seg: &Segment) {
+        let flip = self.rear.contains(&seg.tool);
+        // a rapid measured in the section: mirrored when it runs below the axis
+        self.below = seg.from.r + seg.to.r < 0.0;
         let finite = |v: f64| v.is_finite() && v.abs() < 1e12;
         let arc_ok = seg
             .arc
@@ -304,7 +325,7 @@ impl<'a> SweepBuilder<'a> {
         if (seg.arc.is_none() || arc_as_chord) && seg.motion != Motion::Thread {
             let merge_tol = self.merge_tol;
             if let Some(run) = &mut self.run {
-                if run.tool == seg.tool && run.hint == seg.hint {
+                if run.tool == seg.tool && run.hint == seg.hint && run.flip == flip {
                     match seg.motion {
                         Motion::Feed
                             if (run.mid.is_empty() && run.try_extend(p, q))
@@ -322,13 +343,14 @@ impl<'a> SweepBuilder<'a> {
             }
             self.flush_run();
             if seg.motion == Motion::Feed {
-                let outline = self.outline(seg.tool, seg.hint, idx);
+                let outline = self.outline(seg.tool, seg.hint, flip, idx);
                 let max_len = outline
                     .bbox()
                     .map_or(0.0, |(lo, hi)| (hi[0] - lo[0]).max(hi[1] - lo[1]));
                 self.run = Some(Run {
                     tool: seg.tool,
                     hint: seg.hint,
+                    flip,
                     a: p,
                     b: q,
                     last: idx,
@@ -340,7 +362,7 @@ impl<'a> SweepBuilder<'a> {
         } else {
             self.flush_run();
         }
-        let outline = self.outline(seg.tool, seg.hint, idx);
+        let outline = self.outline(seg.tool, seg.hint, flip, idx);
         let rapid = seg.motion == Motion::Rapid;
         if seg.motion == Motion::Thread {
             if let Some(stamps) = self.thread_stamps(idx, seg) {
@@ -414,7 +436,7 @@ impl<'a> SweepBuilder<'a> {
     /// Ends the current merged run, emitting its sweep.
     pub(crate) fn flush_run(&mut self) {
         if let Some(run) = self.run.take() {
-            let outline = self.outline(run.tool, run.hint, run.last);
+            let outline = self.outline(run.tool, run.hint, run.flip, run.last);
             self.emit_path(run.last, false, &outline, &[run.a, run.b]);
         }
     }
@@ -499,7 +521,19 @@ impl<'a> SweepBuilder<'a> {
         self.add(ring, false);
     }
 
+    /// Adds a polygon folded into the section (its part below the axis mirrored; the
+    /// clipping keeps a ring's winding numbers, so chain rings fold like hulls).
     fn add(&mut self, poly: &[P], convex: bool) {
+        if poly.iter().any(|p| p[1] < 0.0) {
+            for part in crate::section::fold(poly) {
+                self.add_section_poly(&part, convex);
+            }
+        } else {
+            self.add_section_poly(poly, convex);
+        }
+    }
+
+    fn add_section_poly(&mut self, poly: &[P], convex: bool) {
         let quick = Rect::of(pts(poly));
         let inside = self.clip.contains(quick.min) && self.clip.contains(quick.max);
         let clipped;
@@ -531,6 +565,12 @@ impl<'a> SweepBuilder<'a> {
         if last == first {
             return; // wholly outside the envelope: air
         }
+        // a rapid's contact point and normal as the section sees them
+        let (start, dir) = if rapid && self.below {
+            ([start[0], -start[1]], [dir[0], -dir[1]])
+        } else {
+            (start, dir)
+        };
         let mut bbox = IBox::EMPTY;
         let mut perimeter = 0.0;
         for r in &self.out.polys[first as usize..last as usize] {

@@ -36,10 +36,11 @@ pub struct Blade {
 /// What the tool table tells the interpreter.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ToolFacts {
-    /// The nose by offset number (`oo` of `Tttoo`); `None` for a tool with no nose (a
-    /// blade, a drill, a threading insert), for which compensation is ignored with a
-    /// warning. An offset with no entry uses [`ToolFacts::default_nose`].
-    pub noses: BTreeMap<u32, Option<Nose>>,
+    /// The nose by offset number (`oo` of `Tttoo`); `Err` names a tool with no nose
+    /// ("grooving blade", "drill", "threading tool"), for which compensation is ignored
+    /// with a warning that says what it is. An offset with no entry uses
+    /// [`ToolFacts::default_nose`].
+    pub noses: BTreeMap<u32, Result<Nose, &'static str>>,
     /// The nose of an offset with no entry.
     pub default_nose: Nose,
     /// The radial grooving blades by tool number (`tt` of `Tttoo`).

@@ -95,6 +95,9 @@ pub struct FinishingShape {
     /// G41/G42 written inside the shape: G70 runs it compensated on that side (roughing
     /// ignores it, spec/tnrc.md).
     pub comp: Option<Side>,
+    /// The element whose block wrote G41/G42 first: G70's start-up move (the elements before
+    /// it run uncompensated, as the same blocks outside the cycle would); 0 for the ns block.
+    pub comp_from: usize,
     /// Index of the nf block.
     pub(crate) nf_index: usize,
     /// Warnings about words G70 cannot apply yet (S, T, G96–G99) and G41/G42.
@@ -224,6 +227,7 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
         ns_moves: (false, false),
         ns_span: blocks[0].span,
         comp: None,
+        comp_from: 0,
     };
     for (k, b) in blocks.iter().enumerate() {
         r.block(b, k == 0)?;
@@ -247,6 +251,7 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
         nf_index: i1,
         notes: r.notes,
         comp: r.comp,
+        comp_from: r.comp_from,
     })
 }
 
@@ -264,6 +269,7 @@ struct Reader {
     ns_moves: (bool, bool),
     ns_span: Span,
     comp: Option<Side>,
+    comp_from: usize,
 }
 
 /// The alarm for a code not allowed inside a finishing shape.
@@ -290,11 +296,11 @@ impl Reader {
                         400 => {}
                         960 | 970 => self.modes.css = Some(t == 960),
                         980 | 990 => self.modes.per_rev = Some(t == 990),
-                        410 | 420 => {
-                            self.comp =
-                                self.comp
-                                    .or(Some(if t == 410 { Side::Left } else { Side::Right }))
+                        410 | 420 if self.comp.is_none() => {
+                            self.comp = Some(if t == 410 { Side::Left } else { Side::Right });
+                            self.comp_from = self.elements.len();
                         }
+                        410 | 420 => {}
                         _ => return Err(forbidden(w, format!("G{}", w.value))),
                     }
                 }

@@ -25,6 +25,11 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         resume_at: shape.resume_at(c.index),
         warnings: std::mem::take(&mut shape.notes),
         comp: Some(shape.comp),
+        comp_from: if shape.comp.is_some() {
+            shape.comp_from
+        } else {
+            0
+        },
         ..Output::default()
     };
     out.intended.push((

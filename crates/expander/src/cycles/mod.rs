@@ -153,6 +153,9 @@ pub(crate) struct Output {
     pub(crate) lead: Option<f64>,
     /// Dwell the cycle makes (drilling P), s.
     pub(crate) dwell_s: f64,
+    /// G70: the move that starts the compensation (the block that wrote G41/G42; 0: the
+    /// first move).
+    pub(crate) comp_from: usize,
 }
 
 impl Cycle<'_, '_> {

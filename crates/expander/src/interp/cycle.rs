@@ -57,18 +57,22 @@ impl Interp<'_> {
                     kind,
                     points,
                     span: b.span,
+                    after_move: self.out.segments.len(),
                 });
             }
         }
-        // G70 runs its pass as one compensation section (start-up A → B, cancel back to A).
+        // G70 runs its pass as one compensation section (start-up A → B, or the move of the
+        // block that wrote G41/G42 inside the shape; cancel back to A).
         let side = out.comp.and_then(|shape_side| shape_side.or(self.comp));
-        if let Some(side) = side {
-            if let Some(nose) = self.nose_for_offset(b.span) {
-                self.section = Some((side, nose, vec![]));
-            }
-        }
         let feed = self.feed;
-        for m in out.moves {
+        for (k, m) in out.moves.into_iter().enumerate() {
+            if k == out.comp_from {
+                if let Some(side) = side {
+                    if let Some(nose) = self.nose_for_offset(b.span) {
+                        self.section = Some((side, nose, vec![]));
+                    }
+                }
+            }
             if let Some(f) = m.feed {
                 self.feed = f;
             }

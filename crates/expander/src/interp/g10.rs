@@ -95,7 +95,7 @@ impl Interp<'_> {
             return Ok(());
         }
         match self.noses.get(&n).copied() {
-            Some(Some(nose)) => {
+            Some(Ok(nose)) => {
                 let radius = match (r, geometry) {
                     (Some(r), true) => r,
                     (Some(r), false) => nose.radius + r,
@@ -110,7 +110,7 @@ impl Interp<'_> {
                     ));
                 }
                 let tip = q.map_or(nose.tip, |q| q.value as u8);
-                self.noses.insert(n, Some(Nose { radius, tip }));
+                self.noses.insert(n, Ok(Nose { radius, tip }));
             }
             _ => self.warn(
                 p.span,

@@ -147,7 +147,7 @@ pub(crate) struct Interp<'m> {
     /// Offsets already warned about (blade, no entry).
     pub(crate) comp_warned: Vec<u32>,
     /// Nose radius and tip per offset: the tool table's, as G10 changes them.
-    pub(crate) noses: std::collections::BTreeMap<u32, Option<Nose>>,
+    pub(crate) noses: std::collections::BTreeMap<u32, Result<Nose, &'static str>>,
     /// System B/C G91: X and Z are incremental.
     incremental: bool,
     /// System B/C: U/W outside a cycle already warned about.

@@ -6,9 +6,9 @@ use super::Interp;
 use crate::tnrc::Nose;
 
 impl Interp<'_> {
-    /// The tool table's entry for offset `offset`: `Some(None)` is a tool without a nose,
-    /// `None` no entry.
-    pub(crate) fn nose_for(&self, offset: u32) -> Option<Option<Nose>> {
+    /// The tool table's entry for offset `offset`: `Some(Err(kind))` is a tool without a
+    /// nose, `None` no entry.
+    pub(crate) fn nose_for(&self, offset: u32) -> Option<Result<Nose, &'static str>> {
         self.noses.get(&offset).copied()
     }
 

@@ -200,11 +200,15 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
         out.segments.extend_from_slice(section);
         return out;
     }
-    let tip = nose.tip_vector();
     let first = &section[0];
     let last = section.len() - 1;
     // Elements 1..last are compensated; 0 is the start-up, `last` the cancel.
     let body = &section[1..last];
+    // A contour below the axis is cut from a rear post, where the tip number reads the same
+    // as on the front (spec/tnrc.md): in program X the tip vector is its mirror.
+    let rear = body.iter().map(|s| s.from.r + s.to.r).sum::<f64>() < 0.0;
+    let tip = nose.tip_vector();
+    let tip = if rear { Pt::new(tip.z, -tip.r) } else { tip };
     let with_tip = |p: Pt| p + tip;
 
     if body.is_empty() {

@@ -49,18 +49,18 @@ impl Interp<'_> {
     }
 
     /// The nose of the offset in force: from the tool table, or the default with a warning;
-    /// `None` for offset 00 or a grooving blade (compensation ignored, with a warning).
+    /// `None` for offset 00 or a tool without a nose (compensation ignored, with a warning).
     pub(crate) fn nose_for_offset(&mut self, span: Span) -> Option<Nose> {
         let offset = self.offset;
         if offset == 0 {
             return None;
         }
         Some(match self.nose_for(offset) {
-            Some(Some(n)) => n,
-            Some(None) => {
+            Some(Ok(n)) => n,
+            Some(Err(kind)) => {
                 if !self.comp_warned.contains(&offset) {
                     self.comp_warned.push(offset);
-                    self.warn(span, "LS-TNRC-BLADE", format!("G41/G42 ignored: offset {offset:02} is a grooving blade"), "compensation applies to pointed inserts; program the blade's corner directly");
+                    self.warn(span, "LS-TNRC-BLADE", format!("G41/G42 ignored: offset {offset:02} is a {kind}, not a turning insert"), "compensation applies to turning inserts with a nose radius; program the tool's reference point directly");
                 }
                 return None;
             }
@@ -98,9 +98,9 @@ impl Interp<'_> {
                 for seg in chain {
                     points.extend(seg.polyline(0.001).into_iter().skip(1));
                 }
+                // (a G70 shape that writes G41/G42 after its ns block hands over more)
                 let known = self.out.intended.iter().any(|i| {
-                    i.kind == crate::IntendedKind::FinishingContour
-                        && i.points.get(1..) == Some(&points[..])
+                    i.kind == crate::IntendedKind::FinishingContour && i.points.ends_with(&points)
                 });
                 if !known {
                     self.out.intended.push(crate::Intended {
@@ -109,6 +109,7 @@ impl Interp<'_> {
                         },
                         points,
                         span: first.span,
+                        after_move: self.out.segments.len(),
                     });
                 }
             }

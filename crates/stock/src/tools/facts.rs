@@ -39,15 +39,17 @@ impl ToolTable {
     }
 }
 
-/// A turning insert's nose; other kinds have none.
-fn nose(tool: &Tool) -> Option<Nose> {
+/// A turning insert's nose; other kinds have none, and say what they are.
+fn nose(tool: &Tool) -> Result<Nose, &'static str> {
     match *tool {
         Tool::Turning {
             nose_radius, tip, ..
-        } => Some(Nose {
+        } => Ok(Nose {
             radius: nose_radius,
             tip,
         }),
-        _ => None,
+        Tool::Grooving { .. } => Err("grooving blade"),
+        Tool::Drill { .. } => Err("drill"),
+        Tool::Threading { .. } => Err("threading tool"),
     }
 }
