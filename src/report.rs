@@ -240,8 +240,8 @@ pub(crate) fn add_deviation(
         stock::leftover_spot(&leftovers, &intended).map(|s| render::LeftoverSpot {
             leftover: s.leftover,
             centre: s.centre,
-            thickness: s.thickness,
-            measure: s.measure,
+            thickness: s.thickest.map(|t| t.2),
+            measure: s.thickest.map(|(from, to, _)| [from, to]),
         });
     report.leftovers = leftovers.iter().map(shape).collect();
     report.deviation = Some(render::Deviation {

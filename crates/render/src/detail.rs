@@ -99,6 +99,11 @@ fn groove_window(ring: &[[f64; 2]]) -> Bbox {
     b.grow(m)
 }
 
+/// Where a finding is, in program words: `line 14 at Z-46.667 X36`.
+fn place(line: u32, z: f64, r: f64) -> String {
+    format!("line {line} at Z{} X{}", num(z, 3), num(2.0 * r, 3))
+}
+
 fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     // A detail wider than a sixth of the main view shows nothing the main view doesn't.
     let max_half = (main.mm.h().min(main.mm.w()) / 6.0).max(0.05);
@@ -112,12 +117,7 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     let mut out = Vec::new();
     for c in &report.crashes {
         out.push(Finding {
-            title: format!(
-                "crash, line {} at Z{} X{}",
-                c.line,
-                num(c.z, 3),
-                num(2.0 * c.r, 3)
-            ),
+            title: format!("crash, {}", place(c.line, c.z, c.r)),
             z: c.z,
             r: c.r,
             half: clampf(2.5 * c.area_mm2.abs().sqrt(), 1.0),
@@ -127,10 +127,8 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     for g in &report.gouges {
         out.push(Finding {
             title: format!(
-                "gouge, line {} at Z{} X{}, depth {} mm",
-                g.line,
-                num(g.z, 3),
-                num(2.0 * g.r, 3),
+                "gouge, {}, depth {} mm",
+                place(g.line, g.z, g.r),
                 num(g.depth_mm, 3)
             ),
             z: g.z,
