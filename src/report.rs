@@ -172,11 +172,9 @@ const MAX_LISTED: usize = 1_000;
 pub(crate) fn add_deviation(
     report: &mut Report,
     loaded: &Loaded,
-    blank: &stock::Blank,
     intents: &[stock::Intent],
     deviation: Option<&stock::Deviation>,
 ) {
-    let _ = blank;
     // Closed rings as they are; an open path is drawn out and back.
     let intended: Vec<stock::Shape> = intents
         .iter()

@@ -30,7 +30,7 @@ impl ToolTable {
         Self { tools }
     }
 
-    /// Parses the `[[tool]]` TOML format of the simulation spec (see [`schema`]).
+    /// Parses the `[[tool]]` TOML format of the simulation spec.
     pub fn from_toml(text: &str) -> Result<Self, StockError> {
         Ok(Self {
             tools: schema::read(text)?,
