@@ -279,19 +279,6 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
     top
 }
 
-/// A filled dot of radius `r` px.
-fn dot(doc: &mut Doc, p: [f64; 2], r: f64, fill: &str) {
-    doc.leaf(
-        "circle",
-        &[
-            ("cx", num(p[0], 2)),
-            ("cy", num(p[1], 2)),
-            ("r", num(r, 2)),
-            ("fill", fill.into()),
-        ],
-    );
-}
-
 /// The leftover's thickness where it is greatest: a dark line across the band from its
 /// farthest point to the intended edge, with a dot at each end.
 fn thickness_mark(doc: &mut Doc, v: &View, m: [[f64; 2]; 2]) {
@@ -299,7 +286,7 @@ fn thickness_mark(doc: &mut Doc, v: &View, m: [[f64; 2]; 2]) {
     doc.open("g", &[("class", "leftover-spot".into())]);
     doc.line(a, b, colour::INK, 1.5, "");
     for p in [a, b] {
-        dot(doc, p, 2.5, colour::INK);
+        doc.circle(p, 2.5, colour::INK, "none", 0.0);
     }
     doc.close();
 }
@@ -351,12 +338,8 @@ fn groove_ring(doc: &mut Doc, v: &View, line: u32, ring: &[[f64; 2]]) {
     );
     doc.close();
     for &i in &groove::corners(ring) {
-        dot(
-            doc,
-            [v.x(ring[i][0]), v.y(ring[i][1])],
-            3.0,
-            colour::INTENDED,
-        );
+        let p = [v.x(ring[i][0]), v.y(ring[i][1])];
+        doc.circle(p, 3.0, colour::INTENDED, "none", 0.0);
     }
 }
 
@@ -390,20 +373,8 @@ fn corner_labels(doc: &mut Doc, v: &View, ring: &[[f64; 2]]) {
     doc.open("g", &[("class", "corner-labels".into())]);
     for (label, b) in labels.iter().zip(boxes) {
         let Some(b) = b else { continue };
-        doc.leaf(
-            "rect",
-            &[
-                ("x", num(b[0], 2)),
-                ("y", num(b[1], 2)),
-                ("width", num(b[2] - b[0], 2)),
-                ("height", num(b[3] - b[1], 2)),
-                ("rx", "2".into()),
-                ("fill", "#ffffff".into()),
-                ("fill-opacity", "0.88".into()),
-                ("stroke", colour::INTENDED.into()),
-                ("stroke-width", "0.8".into()),
-            ],
-        );
+        let r = [b[0], b[1], b[2] - b[0], b[3] - b[1]];
+        doc.label_box(r, 2.0, 0.88, colour::INTENDED, 0.8);
         doc.text(
             (b[0] + b[2]) / 2.0,
             b[3] - 4.0,

@@ -130,18 +130,13 @@ impl Doc {
 
     /// A px-space rectangle.
     pub(crate) fn rect(&mut self, r: [f64; 4], fill: &str, stroke: &str, w: f64) {
-        self.leaf(
-            "rect",
-            &[
-                ("x", num(r[0], 2)),
-                ("y", num(r[1], 2)),
-                ("width", num(r[2].max(0.0), 2)),
-                ("height", num(r[3].max(0.0), 2)),
-                ("fill", fill.into()),
-                ("stroke", stroke.into()),
-                ("stroke-width", num(w, 2)),
-            ],
-        );
+        let mut attrs = box_attrs(r);
+        attrs.extend([
+            ("fill", fill.into()),
+            ("stroke", stroke.into()),
+            ("stroke-width", num(w, 2)),
+        ]);
+        self.leaf("rect", &attrs);
     }
 
     /// A px-space circle.
@@ -159,19 +154,24 @@ impl Doc {
         );
     }
 
+    /// A white, slightly see-through box with rounded corners `rx` under a label.
+    pub(crate) fn label_box(&mut self, r: [f64; 4], rx: f64, opacity: f64, stroke: &str, w: f64) {
+        let mut attrs = box_attrs(r);
+        attrs.extend([
+            ("rx", num(rx, 2)),
+            ("fill", "#ffffff".into()),
+            ("fill-opacity", num(opacity, 2)),
+            ("stroke", stroke.into()),
+            ("stroke-width", num(w, 2)),
+        ]);
+        self.leaf("rect", &attrs);
+    }
+
     /// Define a rectangular clip path (in its own `defs`).
     pub(crate) fn clip(&mut self, id: &str, r: [f64; 4]) {
         self.open("defs", &[]);
         self.open("clipPath", &[("id", id.into())]);
-        self.leaf(
-            "rect",
-            &[
-                ("x", num(r[0], 2)),
-                ("y", num(r[1], 2)),
-                ("width", num(r[2], 2)),
-                ("height", num(r[3], 2)),
-            ],
-        );
+        self.leaf("rect", &box_attrs(r));
         self.close();
         self.close();
     }
@@ -204,6 +204,16 @@ impl Doc {
         }
         self.leaf("path", &attrs);
     }
+}
+
+/// The place and size of a px box `[x, y, w, h]` (a negative size is drawn as none).
+fn box_attrs(r: [f64; 4]) -> Vec<(&'static str, String)> {
+    vec![
+        ("x", num(r[0], 2)),
+        ("y", num(r[1], 2)),
+        ("width", num(r[2].max(0.0), 2)),
+        ("height", num(r[3].max(0.0), 2)),
+    ]
 }
 
 /// A crash marker: a filled circle with a white cross.

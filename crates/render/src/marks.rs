@@ -5,7 +5,7 @@ use crate::doc::{marker, Doc};
 use crate::layout::{colour, FS_TEXT};
 use crate::report::Report;
 use crate::scale::View;
-use crate::text::{num, width};
+use crate::text::width;
 
 /// At most this many labelled markers of each kind (the title block lists the rest).
 const MAX_LABELS: usize = 6;
@@ -98,20 +98,7 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
             1.3,
             "",
         );
-        doc.leaf(
-            "rect",
-            &[
-                ("x", num(r[0], 2)),
-                ("y", num(r[1], 2)),
-                ("width", num(r[2], 2)),
-                ("height", num(r[3], 2)),
-                ("rx", "3".into()),
-                ("fill", "#ffffff".into()),
-                ("fill-opacity", "0.9".into()),
-                ("stroke", c.into()),
-                ("stroke-width", "1".into()),
-            ],
-        );
+        doc.label_box(r, 3.0, 0.9, c, 1.0);
         doc.text(r[0] + 5.0, r[1] + h - 7.0, FS_TEXT, "start", c, &label);
     }
     doc.close();
