@@ -183,11 +183,9 @@ const MAX_LISTED: usize = 1_000;
 pub(crate) fn add_deviation(
     report: &mut Report,
     loaded: &Loaded,
-    blank: &stock::Blank,
     intents: &[stock::Intent],
     deviation: Option<&stock::Deviation>,
 ) {
-    let _ = blank;
     // Closed rings as they are; an open path is drawn out and back.
     let intended: Vec<stock::Shape> = intents
         .iter()
@@ -251,8 +249,8 @@ pub(crate) fn add_deviation(
         stock::leftover_spot(&leftovers, &intended).map(|s| render::LeftoverSpot {
             leftover: s.leftover,
             centre: s.centre,
-            thickness: s.thickness,
-            measure: s.measure,
+            thickness: s.thickest.map(|t| t.2),
+            measure: s.thickest.map(|(from, to, _)| [from, to]),
         });
     report.leftovers = leftovers.iter().map(shape).collect();
     report.deviation = Some(render::Deviation {

@@ -286,7 +286,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         )
     });
     let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
-    crate::report::add_deviation(&mut report, &loaded, &blank, &intents, deviation.as_ref());
+    crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
     report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
 
     // Render every report first, then write them all to disk, then make them visible:

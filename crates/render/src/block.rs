@@ -2,7 +2,7 @@
 //! time, tolerance, deviation, then the alarms and warnings as `line N: message`.
 
 use crate::doc::Doc;
-use crate::layout::{colour, FS_SMALL, FS_TEXT, FS_VERDICT, RIGHT_BOTTOM, RIGHT_W, RIGHT_X};
+use crate::layout::{colour, FS_SMALL, FS_TEXT, FS_VERDICT, H, RIGHT_BOTTOM, RIGHT_W, RIGHT_X, W};
 use crate::report::{Diagnostic, Report, Verdict};
 use crate::text::{chars_fitting, duration, grouped, mm, plural, quantity, wrap};
 
@@ -153,7 +153,8 @@ fn diag_rows_wanted(list: &[Diagnostic], items: usize) -> usize {
 /// Height the title block needs (fixed rows plus a useful share of the diagnostics), so
 /// the detail views above it can give way.
 pub(crate) fn min_height(report: &Report) -> f64 {
-    let mut scratch = Doc { out: String::new() };
+    // Laid out on a scratch document that is thrown away.
+    let mut scratch = Doc::new(W, H, "");
     let mut b = Block {
         doc: &mut scratch,
         y: 0.0,
@@ -250,7 +251,7 @@ fn fixed_rows(b: &mut Block, report: &Report) {
 
 /// Draw the title block starting below `top`.
 pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
-    doc.raw("<g id=\"title-block\">\n");
+    doc.open("g", &[("id", "title-block".into())]);
     let mut b = Block { doc, y: top + 24.0 };
     fixed_rows(&mut b, report);
 
@@ -272,5 +273,5 @@ pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
         colour::WARN,
         rows.saturating_sub(used),
     );
-    b.doc.raw("</g>\n");
+    b.doc.close();
 }

@@ -14,8 +14,6 @@
 //! [`crate::groove`] for the corners and the labels' places; the deviation in the title
 //! is the report's [`Groove::deviation_mm`]).
 
-use std::fmt::Write as _;
-
 use crate::doc::{marker, Doc};
 use crate::groove;
 use crate::layout::{colour, FS_SMALL, RIGHT_TOP, RIGHT_W, RIGHT_X};
@@ -23,7 +21,7 @@ use crate::path::shapes_d;
 use crate::plot::{axes, centre_line, draw_content, draw_shapes, MIN_PX};
 use crate::report::{Groove, Report, Shape};
 use crate::scale::{Bbox, View};
-use crate::text::{chars_fitting, esc, num, truncate, width};
+use crate::text::{chars_fitting, num, truncate, width};
 
 /// At most this many detail views.
 const MAX_DETAILS: usize = 3;
@@ -99,6 +97,11 @@ fn groove_window(ring: &[[f64; 2]]) -> Bbox {
     b.grow(m)
 }
 
+/// Where a finding is, in program words: `line 14 at Z-46.667 X36`.
+fn place(line: u32, z: f64, r: f64) -> String {
+    format!("line {line} at Z{} X{}", num(z, 3), num(2.0 * r, 3))
+}
+
 fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     // A detail wider than a sixth of the main view shows nothing the main view doesn't.
     let max_half = (main.mm.h().min(main.mm.w()) / 6.0).max(0.05);
@@ -112,12 +115,7 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     let mut out = Vec::new();
     for c in &report.crashes {
         out.push(Finding {
-            title: format!(
-                "crash, line {} at Z{} X{}",
-                c.line,
-                num(c.z, 3),
-                num(2.0 * c.r, 3)
-            ),
+            title: format!("crash, {}", place(c.line, c.z, c.r)),
             z: c.z,
             r: c.r,
             half: clampf(2.5 * c.area_mm2.abs().sqrt(), 1.0),
@@ -127,10 +125,8 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     for g in &report.gouges {
         out.push(Finding {
             title: format!(
-                "gouge, line {} at Z{} X{}, depth {} mm",
-                g.line,
-                num(g.z, 3),
-                num(2.0 * g.r, 3),
+                "gouge, {}, depth {} mm",
+                place(g.line, g.z, g.r),
                 num(g.depth_mm, 3)
             ),
             z: g.z,
@@ -228,7 +224,7 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
         list.pop();
     };
     let mut top = RIGHT_TOP;
-    doc.raw("<g id=\"details\">\n");
+    doc.open("g", &[("id", "details".into())]);
     for (i, f) in list.iter().enumerate() {
         let h = f.plot_h(plot_h);
         let rect = [RIGHT_X + LABEL_ROOM, top + 10.0, PLOT_W, h];
@@ -247,12 +243,10 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
             &truncate(&title, max),
         );
         let id = format!("clip-detail-{i}");
-        doc.raw("<defs>");
         doc.clip(&id, rect);
-        doc.raw("</defs>\n");
         doc.rect(rect, "#ffffff", "none", 0.0);
         axes(doc, &v, 46.0, true);
-        let _ = writeln!(doc.out, r#"<g clip-path="url(#{id})">"#);
+        doc.open("g", &[("clip-path", format!("url(#{id})"))]);
         match &f.kind {
             Kind::Groove(g, ring) => {
                 draw_shapes(doc, report, &v, false);
@@ -270,24 +264,18 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
                         thickness_mark(doc, &v, *m);
                     }
                 } else {
-                    let _ = writeln!(
-                        doc.out,
-                        r#"<circle cx="{}" cy="{}" r="10" fill="none" stroke="{}" stroke-width="2"/>"#,
-                        num(x, 2),
-                        num(y, 2),
-                        colour::GOUGE
-                    );
+                    doc.circle([x, y], 10.0, "none", colour::GOUGE, 2.0);
                 }
             }
         }
-        doc.raw("</g>\n");
+        doc.close();
         if let Kind::Groove(_, ring) = &f.kind {
             corner_labels(doc, &v, ring);
         }
         doc.rect(rect, "none", "#2b2f36", 1.0);
         top += h + OVERHEAD;
     }
-    doc.raw("</g>\n");
+    doc.close();
     top
 }
 
@@ -295,18 +283,12 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
 /// farthest point to the intended edge, with a dot at each end.
 fn thickness_mark(doc: &mut Doc, v: &View, m: [[f64; 2]; 2]) {
     let [a, b] = m.map(|p| [v.x(p[0]), v.y(p[1])]);
-    doc.raw("<g class=\"leftover-spot\">\n");
+    doc.open("g", &[("class", "leftover-spot".into())]);
     doc.line(a, b, colour::INK, 1.5, "");
     for p in [a, b] {
-        let _ = writeln!(
-            doc.out,
-            r#"<circle cx="{}" cy="{}" r="2.5" fill="{}"/>"#,
-            num(p[0], 2),
-            num(p[1], 2),
-            colour::INK
-        );
+        doc.circle(p, 2.5, colour::INK, "none", 0.0);
     }
-    doc.raw("</g>\n");
+    doc.close();
 }
 
 /// The Z range a view shows, e.g. `Z-81.2 … Z-77.3`, with enough decimals to tell its
@@ -338,10 +320,13 @@ fn groove_ring(doc: &mut Doc, v: &View, line: u32, ring: &[[f64; 2]]) {
         outer: ring.to_vec(),
         holes: vec![],
     };
-    let _ = writeln!(
-        doc.out,
-        r#"<g class="groove" data-line="{line}" transform="{}">"#,
-        v.transform(false)
+    doc.open(
+        "g",
+        &[
+            ("class", "groove".into()),
+            ("data-line", line.to_string()),
+            ("transform", v.transform(false)),
+        ],
     );
     doc.mm_path(
         v,
@@ -351,15 +336,10 @@ fn groove_ring(doc: &mut Doc, v: &View, line: u32, ring: &[[f64; 2]]) {
         1.8,
         &[7.0, 4.0],
     );
-    doc.raw("</g>\n");
+    doc.close();
     for &i in &groove::corners(ring) {
-        let _ = writeln!(
-            doc.out,
-            r#"<circle cx="{}" cy="{}" r="3" fill="{}"/>"#,
-            num(v.x(ring[i][0]), 2),
-            num(v.y(ring[i][1]), 2),
-            colour::INTENDED
-        );
+        let p = [v.x(ring[i][0]), v.y(ring[i][1])];
+        doc.circle(p, 3.0, colour::INTENDED, "none", 0.0);
     }
 }
 
@@ -390,27 +370,19 @@ fn corner_labels(doc: &mut Doc, v: &View, ring: &[[f64; 2]]) {
         v.bottom() - 2.0,
     ];
     let boxes = groove::place_labels(&at, &size, centre, &px_ring, frame);
-    doc.raw("<g class=\"corner-labels\">\n");
+    doc.open("g", &[("class", "corner-labels".into())]);
     for (label, b) in labels.iter().zip(boxes) {
         let Some(b) = b else { continue };
-        let _ = writeln!(
-            doc.out,
-            r##"<rect x="{}" y="{}" width="{}" height="{}" rx="2" fill="#ffffff" fill-opacity="0.88" stroke="{}" stroke-width="0.8"/>"##,
-            num(b[0], 2),
-            num(b[1], 2),
-            num(b[2] - b[0], 2),
-            num(b[3] - b[1], 2),
-            colour::INTENDED
-        );
-        let _ = writeln!(
-            doc.out,
-            r#"<text x="{}" y="{}" font-size="{}" text-anchor="middle" fill="{}">{}</text>"#,
-            num((b[0] + b[2]) / 2.0, 2),
-            num(b[3] - 4.0, 2),
-            num(FS_CORNER, 1),
+        let r = [b[0], b[1], b[2] - b[0], b[3] - b[1]];
+        doc.label_box(r, 2.0, 0.88, colour::INTENDED, 0.8);
+        doc.text(
+            (b[0] + b[2]) / 2.0,
+            b[3] - 4.0,
+            FS_CORNER,
+            "middle",
             colour::INK,
-            esc(label)
+            label,
         );
     }
-    doc.raw("</g>\n");
+    doc.close();
 }

@@ -21,6 +21,7 @@ use std::fmt::Write as _;
 
 use crate::block::verdict_text;
 use crate::layout::{colour, main_window};
+use crate::path::thin_ring;
 use crate::report::{Crash, Diagnostic, Gouge, PathKind, Report, Shape, Snapshot};
 use crate::scale::Bbox;
 use crate::text::{duration, esc, grouped, mm, num, quantity};
@@ -83,22 +84,6 @@ fn dist2(a: [f64; 2], b: [f64; 2]) -> f64 {
 /// Push `[z, r]` as `z,x` (x = 2r).
 fn push_zx(out: &mut String, p: [f64; 2]) {
     let _ = write!(out, ",{},{}", c4(p[0]), c4(2.0 * p[1]));
-}
-
-/// A ring's finite points, dropping those within `md` (mm) of the previous kept one.
-fn thin_ring(pts: &[[f64; 2]], md: f64) -> Vec<[f64; 2]> {
-    let md2 = md * md;
-    let mut kept: Vec<[f64; 2]> = Vec::new();
-    for p in pts.iter().filter(|p| finite(p)) {
-        match kept.last() {
-            Some(l) if dist2(*l, *p) <= md2 => {}
-            _ => kept.push(*p),
-        }
-    }
-    while kept.len() > 3 && dist2(kept[0], kept[kept.len() - 1]) <= md2 {
-        kept.pop();
-    }
-    kept
 }
 
 /// All rings of some shapes, thinned with `md` doubled until at most `cap` points remain.

@@ -63,7 +63,7 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
         .take(MAX_LABELS)
         .chain(gouges.take(MAX_LABELS))
         .collect();
-    doc.raw("<g id=\"findings\">\n");
+    doc.open("g", &[("id", "findings".into())]);
     // Markers first, so labels can avoid all of them.
     let mut shown = Vec::new();
     for &(z, r, line, what, c) in &items {
@@ -74,10 +74,7 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
         if what == "crash" {
             marker(doc, x, y, c);
         } else {
-            doc.raw(&format!(
-                "<circle cx=\"{:.2}\" cy=\"{:.2}\" r=\"8\" fill=\"none\" stroke=\"{c}\" stroke-width=\"2\"/>\n",
-                x, y
-            ));
+            doc.circle([x, y], 8.0, "none", c, 2.0);
         }
         placed.push([x - 9.0, y - 9.0, 18.0, 18.0]);
         shown.push((x, y, line, what, c));
@@ -101,11 +98,8 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
             1.3,
             "",
         );
-        doc.raw(&format!(
-            "<rect x=\"{:.2}\" y=\"{:.2}\" width=\"{:.2}\" height=\"{:.2}\" rx=\"3\" fill=\"#ffffff\" fill-opacity=\"0.9\" stroke=\"{c}\" stroke-width=\"1\"/>\n",
-            r[0], r[1], r[2], r[3]
-        ));
+        doc.label_box(r, 3.0, 0.9, c, 1.0);
         doc.text(r[0] + 5.0, r[1] + h - 7.0, FS_TEXT, "start", c, &label);
     }
-    doc.raw("</g>\n");
+    doc.close();
 }

@@ -22,6 +22,23 @@ fn finite(p: &[f64; 2]) -> bool {
     p[0].is_finite() && p[1].is_finite()
 }
 
+/// A ring's finite points, dropping those within `md` (mm) of the previous kept one (and,
+/// as the closing edge may also be tiny, trailing ones within `md` of the first).
+pub(crate) fn thin_ring(pts: &[[f64; 2]], md: f64) -> Vec<[f64; 2]> {
+    let md2 = md * md;
+    let mut kept: Vec<[f64; 2]> = Vec::with_capacity(pts.len().min(4096));
+    for p in pts.iter().filter(|p| finite(p)) {
+        match kept.last() {
+            Some(l) if dist2(*l, *p) <= md2 => {}
+            _ => kept.push(*p),
+        }
+    }
+    while kept.len() > 3 && dist2(kept[0], kept[kept.len() - 1]) <= md2 {
+        kept.pop();
+    }
+    kept
+}
+
 fn push_pt(d: &mut String, cmd: char, p: [f64; 2], decimals: usize) {
     // Writing to a String cannot fail.
     let _ = write!(d, "{cmd}{},{}", num(p[0], decimals), num(p[1], decimals));
@@ -36,18 +53,7 @@ fn ring(d: &mut String, pts: &[[f64; 2]], min_dist: f64) {
 /// [`ring`]; with `keep_tiny`, a ring that collapses is written unthinned instead of
 /// skipped (a gouge or leftover smaller than a pixel must still show as a dot).
 fn ring_or(d: &mut String, pts: &[[f64; 2]], min_dist: f64, keep_tiny: bool) {
-    let md2 = min_dist * min_dist;
-    let mut kept: Vec<[f64; 2]> = Vec::with_capacity(pts.len().min(4096));
-    for p in pts.iter().filter(|p| finite(p)) {
-        match kept.last() {
-            Some(l) if dist2(*l, *p) <= md2 => {}
-            _ => kept.push(*p),
-        }
-    }
-    // The closing edge may also be tiny.
-    while kept.len() > 3 && dist2(kept[0], kept[kept.len() - 1]) <= md2 {
-        kept.pop();
-    }
+    let kept = thin_ring(pts, min_dist);
     if kept.len() < 3 {
         if keep_tiny {
             let all: Vec<[f64; 2]> = pts.iter().copied().filter(finite).collect();

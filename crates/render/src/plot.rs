@@ -2,8 +2,6 @@
 //! deviation outlines, and the axes and centre line around it. Used by the main view
 //! ([`crate::svg`]) and the detail views ([`crate::detail`]) alike.
 
-use std::fmt::Write as _;
-
 use crate::doc::Doc;
 use crate::layout::{self, colour, FS_TICK};
 use crate::path::{deviation_d, shapes_d, toolpath_d};
@@ -50,22 +48,21 @@ fn draw_section(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
     let blank = shapes_d(&report.stock.shapes, md);
     let part = shapes_d(&report.final_part, md);
     if mirror {
-        let _ = writeln!(
-            doc.out,
-            r#"<g id="mirror" transform="{}">"#,
-            v.transform(true)
+        doc.open(
+            "g",
+            &[("id", "mirror".into()), ("transform", v.transform(true))],
         );
         doc.mm_path(v, &blank, colour::BLANK_MIRROR, "#d5d0c4", 1.0, &[]);
         doc.mm_path(v, &part, colour::PART_MIRROR, "#b9c4d3", 1.0, &[]);
-        doc.raw("</g>\n");
+        doc.close();
     }
-    let _ = writeln!(
-        doc.out,
-        r#"<g{} transform="{}">"#,
-        // Ids must be unique: only the main view's section gets one.
-        if mirror { r#" id="section""# } else { "" },
-        v.transform(false)
-    );
+    // Ids must be unique: only the main view's section gets one.
+    let transform = ("transform", v.transform(false));
+    if mirror {
+        doc.open("g", &[("id", "section".into()), transform]);
+    } else {
+        doc.open("g", &[transform]);
+    }
     doc.mm_path(v, &blank, colour::BLANK, colour::BLANK_EDGE, 1.0, &[]);
     doc.mm_path(v, &part, colour::PART, colour::PART_EDGE, 1.3, &[]);
     doc.mm_path(
@@ -92,7 +89,7 @@ fn draw_section(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
         1.6,
         &[7.0, 4.0],
     );
-    doc.raw("</g>\n");
+    doc.close();
 }
 
 /// The outlines of leftovers and gouges, [`DEVIATION_EDGE_PX`] wide whatever the scale,
@@ -102,10 +99,12 @@ fn draw_deviation_edges(doc: &mut Doc, report: &Report, v: &View) {
         return;
     }
     let md = MIN_PX / v.s;
-    let _ = writeln!(
-        doc.out,
-        r#"<g class="deviations" transform="{}">"#,
-        v.transform(false)
+    doc.open(
+        "g",
+        &[
+            ("class", "deviations".into()),
+            ("transform", v.transform(false)),
+        ],
     );
     for (shapes, class, edge) in [
         (&report.leftovers, "leftover-edge", colour::LEFTOVER_EDGE),
@@ -115,11 +114,11 @@ fn draw_deviation_edges(doc: &mut Doc, report: &Report, v: &View) {
         if d.is_empty() {
             continue;
         }
-        let _ = writeln!(doc.out, r#"<g class="{class}">"#);
+        doc.open("g", &[("class", class.into())]);
         doc.mm_path(v, &d, "none", edge, DEVIATION_EDGE_PX, &[]);
-        doc.raw("</g>\n");
+        doc.close();
     }
-    doc.raw("</g>\n");
+    doc.close();
 }
 
 /// The toolpath layer of a view (see [`draw_content`]); returns whether it was thinned.
@@ -137,26 +136,15 @@ fn draw_toolpath(
         &v.mm.grow(v.mm.w().max(v.mm.h()) * 0.05),
         point_cap,
     );
+    let (transform, opacity) = (("transform", v.transform(false)), ("opacity", "0.9".into()));
     match toolpath_id {
-        Some(id) => {
-            let _ = writeln!(
-                doc.out,
-                r#"<g id="{id}" transform="{}" opacity="0.9">"#,
-                v.transform(false)
-            );
-        }
-        None => {
-            let _ = writeln!(
-                doc.out,
-                r#"<g transform="{}" opacity="0.9">"#,
-                v.transform(false)
-            );
-        }
+        Some(id) => doc.open("g", &[("id", id.into()), transform, opacity]),
+        None => doc.open("g", &[transform, opacity]),
     }
     doc.mm_path(v, &tp.rapid, "none", colour::RAPID, 1.1, &[5.0, 4.0]);
     doc.mm_path(v, &tp.feed, "none", colour::FEED, 1.3, &[]);
     doc.mm_path(v, &tp.thread, "none", colour::THREAD, 1.3, &[]);
-    doc.raw("</g>\n");
+    doc.close();
     tp.thinned()
 }
 
@@ -218,12 +206,6 @@ pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
 pub(crate) fn centre_line(doc: &mut Doc, v: &View) {
     let y = v.y(0.0);
     if y >= v.px[1] && y <= v.bottom() {
-        doc.line(
-            [v.px[0], y],
-            [v.right(), y],
-            "#2b2f36",
-            1.0,
-            r#"stroke-dasharray="16 4 3 4""#,
-        );
+        doc.line([v.px[0], y], [v.right(), y], "#2b2f36", 1.0, "16 4 3 4");
     }
 }

@@ -1,8 +1,6 @@
 //! The report picture as an SVG string: main half section with its mirror, toolpath layer,
 //! findings, axes, legend, detail views and the title block.
 
-use std::fmt::Write as _;
-
 use crate::doc::{marker, Doc};
 use crate::layout::{self, colour, FS_TEXT, FS_TICK, FS_TITLE, MAIN};
 use crate::plot::{axes, centre_line, draw_content};
@@ -25,15 +23,7 @@ fn tick_room(v: &View) -> f64 {
 
 /// The full report picture.
 pub(crate) fn svg(report: &Report) -> String {
-    let mut doc = Doc {
-        out: String::with_capacity(64 * 1024),
-    };
-    let _ = writeln!(
-        doc.out,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="DejaVu Sans">"#,
-        w = layout::W,
-        h = layout::H
-    );
+    let mut doc = Doc::new(layout::W, layout::H, "DejaVu Sans");
     doc.rect([0.0, 0.0, layout::W, layout::H], "#ffffff", "none", 0.0);
 
     // Title line.
@@ -63,16 +53,14 @@ pub(crate) fn svg(report: &Report) -> String {
 
     // Main view.
     let v = View::fit(layout::main_window(report), MAIN);
-    doc.raw("<defs>\n");
     doc.clip("clip-main", MAIN);
-    doc.raw("</defs>\n");
     doc.rect(MAIN, "#ffffff", "none", 0.0);
     let step_px = tick_room(&v);
     axes(&mut doc, &v, step_px, true);
-    doc.raw("<g clip-path=\"url(#clip-main)\">\n");
+    doc.open("g", &[("clip-path", "url(#clip-main)".into())]);
     let thinned = draw_content(&mut doc, report, &v, true, MAIN_POINT_CAP, Some("toolpath"));
     centre_line(&mut doc, &v);
-    doc.raw("</g>\n");
+    doc.close();
     doc.rect(MAIN, "none", "#2b2f36", 1.2);
     doc.text(
         MAIN[0] + MAIN[2] / 2.0,
@@ -82,11 +70,22 @@ pub(crate) fn svg(report: &Report) -> String {
         colour::INK,
         "Z (mm)",
     );
-    let _ = writeln!(
-        doc.out,
-        r#"<text x="0" y="0" font-size="{FS_TEXT}" text-anchor="middle" fill="{}" transform="translate(34 {}) rotate(-90)">X/2 (mm)</text>"#,
-        colour::INK,
-        num(MAIN[1] + MAIN[3] / 2.0, 2)
+    doc.text_el(
+        &[
+            ("x", "0".into()),
+            ("y", "0".into()),
+            ("font-size", num(FS_TEXT, 1)),
+            ("text-anchor", "middle".into()),
+            ("fill", colour::INK.into()),
+            (
+                "transform",
+                format!(
+                    "translate(34 {}) rotate(-90)",
+                    num(MAIN[1] + MAIN[3] / 2.0, 2)
+                ),
+            ),
+        ],
+        "X/2 (mm)",
     );
 
     marks::findings(&mut doc, report, &v);
@@ -98,8 +97,7 @@ pub(crate) fn svg(report: &Report) -> String {
         layout::RIGHT_BOTTOM - block::min_height(report),
     );
     block::title_block(&mut doc, report, used);
-    doc.raw("</svg>\n");
-    doc.out
+    doc.finish()
 }
 
 /// The legend row(s) under the main plot; only kinds present are listed, except the
@@ -142,7 +140,7 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
     let (x_start, x_end) = (40.0, MAIN[0] + MAIN[2]);
     let mut x = x_start;
     let mut y = layout::LEGEND_Y;
-    doc.raw("<g id=\"legend\">\n");
+    doc.open("g", &[("id", "legend".into())]);
     for (sw, label) in items {
         let w = 30.0 + width(label, FS_TEXT) + 22.0;
         if x + w > x_end && x > x_start {
@@ -151,14 +149,7 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
         }
         match sw {
             Sw::Fill(f, s) => doc.rect([x, y - 12.0, 22.0, 14.0], f, s, 1.0),
-            Sw::Line(c, dash) => {
-                let extra = if dash.is_empty() {
-                    String::new()
-                } else {
-                    format!(r#"stroke-dasharray="{dash}""#)
-                };
-                doc.line([x, y - 5.0], [x + 22.0, y - 5.0], c, 2.2, &extra);
-            }
+            Sw::Line(c, dash) => doc.line([x, y - 5.0], [x + 22.0, y - 5.0], c, 2.2, dash),
             Sw::Marker => marker(doc, x + 11.0, y - 5.0, colour::CRASH),
         }
         doc.text(x + 30.0, y, FS_TEXT, "start", colour::INK, label);
@@ -172,5 +163,5 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
         }
         doc.text(x, y, FS_TEXT, "start", colour::BAD, n);
     }
-    doc.raw("</g>\n");
+    doc.close();
 }

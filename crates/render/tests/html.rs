@@ -54,7 +54,8 @@ fn page_is_self_contained_with_slider_and_picture() {
     assert!(page.trim_end().ends_with("</html>"));
     assert_self_contained(&page);
     // The report picture, inline.
-    assert!(page.contains(r#"<svg xmlns="http://www.w3.org/2000/svg""#));
+    assert!(page.contains(r#"<svg font-family="DejaVu Sans""#));
+    assert!(page.contains(r#"xmlns="http://www.w3.org/2000/svg">"#));
     assert!(page.contains(r#"id="title-block""#));
     // The slider, its canvas and label.
     assert!(page.contains(r#"<input type="range" id="ls-slider" min="0" max="11""#));

@@ -503,6 +503,30 @@ fn outline_cached(
 mod tests {
     use super::*;
 
+    /// The deviation of `final_shapes` from `part` within one `zone`, at 0.01 mm, with no
+    /// moves to blame.
+    fn deviation_in(
+        blank: &[Shape],
+        final_shapes: &[Shape],
+        part: Vec<Shape>,
+        zone: Shape,
+    ) -> Deviation {
+        let intent = Intent {
+            part,
+            zone: vec![zone],
+            outline: vec![],
+        };
+        deviation(
+            blank,
+            final_shapes,
+            &[intent],
+            0.01,
+            &[],
+            &ToolTable::empty(),
+            0.001,
+        )
+    }
+
     #[test]
     fn gouge_and_leftover_with_depth() {
         let blank = [rect(-50.0, 0.0, 0.0, 20.0)];
@@ -519,20 +543,8 @@ mod tests {
             &[],
             BoolOp::Union,
         );
-        let intent = Intent {
-            part: part.clone(),
-            zone: vec![rect(-30.0, 10.0, 0.0, 30.0)],
-            outline: vec![],
-        };
-        let d = deviation(
-            &blank,
-            &final_shapes,
-            &[intent],
-            0.01,
-            &[],
-            &ToolTable::empty(),
-            0.001,
-        );
+        let zone = rect(-30.0, 10.0, 0.0, 30.0);
+        let d = deviation_in(&blank, &final_shapes, part, zone);
         assert_eq!(d.gouges.len(), 1);
         assert_eq!(d.leftovers.len(), 1);
         assert!(
@@ -594,20 +606,8 @@ mod tests {
             &[],
             BoolOp::Union,
         );
-        let intent = Intent {
-            part,
-            zone: vec![rect(-40.0, 0.0, 0.0, 30.0)],
-            outline: vec![],
-        };
-        let d = deviation(
-            &blank,
-            &final_shapes,
-            &[intent],
-            0.01,
-            &[],
-            &ToolTable::empty(),
-            0.001,
-        );
+        let zone = rect(-40.0, 0.0, 0.0, 30.0);
+        let d = deviation_in(&blank, &final_shapes, part, zone);
         assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
     }
 

@@ -273,14 +273,8 @@ impl Tile {
 
     /// Processes `list` in order; returns the index of the first item not processed when
     /// the tile grew too complex and must split first.
-    fn process(
-        &mut self,
-        sweeps: &Sweeps,
-        list: &[u32],
-        ctx: &Ctx,
-        engine: &mut Engine,
-        frags: &mut Vec<Fragment>,
-    ) -> Option<usize> {
+    fn process(&mut self, list: &[u32], ctx: &Ctx, worker: &mut Worker) -> Option<usize> {
+        let (sweeps, engine) = (ctx.sweeps, &mut *worker.engine);
         let mut trim = Trimmed::default();
         for (k, &i) in list.iter().enumerate() {
             if self.verts > MAX_TILE_VERTICES && self.pending.is_empty() && self.splittable(ctx) {
@@ -313,7 +307,7 @@ impl Tile {
                     let a = ctx.grid.area(&overlap);
                     if a > 0.0 {
                         let (dist, at) = nearest(ctx.grid, &overlap, it.start);
-                        frags.push(Fragment {
+                        worker.frags.push(Fragment {
                             seg: it.seg,
                             eps: it.eps,
                             area: a,
@@ -377,40 +371,41 @@ impl Tile {
     }
 }
 
-/// What every tile needs to know about the run.
+/// What every tile needs to know about the run and the epoch.
 struct Ctx<'a> {
     grid: &'a Grid,
     /// Tiles no smaller than this (grid units) are never split.
     min_tile: i64,
+    /// The epoch's sweeps.
+    sweeps: &'a Sweeps,
+}
+
+/// What one worker thread writes to: its boolean engine and the rapid cuts it found.
+struct Worker<'e> {
+    engine: &'e mut Engine,
+    frags: Vec<Fragment>,
 }
 
 impl Node {
-    fn process(
-        &mut self,
-        sweeps: &Sweeps,
-        list: &[u32],
-        ctx: &Ctx,
-        engine: &mut Engine,
-        frags: &mut Vec<Fragment>,
-    ) {
+    fn process(&mut self, list: &[u32], ctx: &Ctx, worker: &mut Worker) {
         match self {
             Self::Leaf(tile) => {
-                let Some(rest) = tile.process(sweeps, list, ctx, engine, frags) else {
+                let Some(rest) = tile.process(list, ctx, worker) else {
                     return;
                 };
                 let tile = std::mem::replace(tile, Tile::new(IBox::EMPTY, Vec::new()));
-                *self = tile.split(engine);
-                self.process(sweeps, &list[rest..], ctx, engine, frags);
+                *self = tile.split(worker.engine);
+                self.process(&list[rest..], ctx, worker);
             }
             Self::Split(children, rects) => {
                 for (child, rect) in children.iter_mut().zip(rects.iter()) {
                     let sub: Vec<u32> = list
                         .iter()
                         .copied()
-                        .filter(|&i| sweeps.items[i as usize].bbox.overlaps(rect))
+                        .filter(|&i| ctx.sweeps.items[i as usize].bbox.overlaps(rect))
                         .collect();
                     if !sub.is_empty() {
-                        child.process(sweeps, &sub, ctx, engine, frags);
+                        child.process(&sub, ctx, worker);
                     }
                 }
             }
@@ -605,10 +600,7 @@ pub fn simulate(
             Mutex::new(Node::Leaf(Tile::new(tile, part)))
         })
         .collect();
-    let ctx = Ctx {
-        grid: &grid,
-        min_tile: (MIN_TILE / grid.step()) as i64,
-    };
+    let min_tile = (MIN_TILE / grid.step()) as i64;
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .min(n_strips);
@@ -646,8 +638,16 @@ pub fn simulate(
             }
         }
         let next = AtomicUsize::new(0);
+        let ctx = Ctx {
+            grid: &grid,
+            min_tile,
+            sweeps: &sweeps,
+        };
         let work = |engine: &mut Engine| {
-            let mut frags = Vec::new();
+            let mut worker = Worker {
+                engine,
+                frags: Vec::new(),
+            };
             loop {
                 let k = next.fetch_add(1, Ordering::Relaxed);
                 if k >= n_strips {
@@ -658,9 +658,9 @@ pub fn simulate(
                 }
                 // a poisoned lock only means another worker panicked; its data is still whole
                 let mut strip = strips[k].lock().unwrap_or_else(|e| e.into_inner());
-                strip.process(&sweeps, &lists[k], &ctx, engine, &mut frags);
+                strip.process(&lists[k], &ctx, &mut worker);
             }
-            frags
+            worker.frags
         };
         let total: usize = lists.iter().map(Vec::len).sum();
         let mut new_frags = if threads <= 1 || total < 256 {

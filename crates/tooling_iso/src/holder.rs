@@ -170,25 +170,13 @@ impl Holder {
     /// Parses an external holder or a boring bar (spaces and case do not matter).
     pub fn parse(text: &str) -> Result<Self, IsoError> {
         let (designation, s) = crate::normalized(text);
-        if s.first().is_some_and(|c| "SAEF".contains(*c))
-            && s.get(1).is_some_and(char::is_ascii_digit)
-        {
-            return Self::parse_bar(text, designation.clone(), &s);
-        }
-        if s.len() < 12 {
-            return Err(err(
-                text,
-                format!(
-                    "is {} characters without spaces, too short (12 needed: PCLNR2525M12)",
-                    s.len()
-                ),
-            ));
-        }
-        let (clamping, shape, style, clearance, hand) = head(text, &s[0..5])?;
-        let height = two_digits(text, &s, 5, "shank height")?;
-        let width = two_digits(text, &s, 7, "shank width")?;
-        let length = length_letter(text, s[9])?;
-        let insert_size = two_digits(text, &s, 10, "insert size")?;
+        let bar = s.first().is_some_and(|c| "SAEF".contains(*c))
+            && s.get(1).is_some_and(char::is_ascii_digit);
+        let ((clamping, shape, style, clearance, hand), shank, length, insert_size) = if bar {
+            bar_parts(text, &s)?
+        } else {
+            external_parts(text, &s)?
+        };
         Ok(Self {
             designation,
             clamping,
@@ -196,44 +184,7 @@ impl Holder {
             style,
             clearance,
             hand,
-            shank: Shank::Square {
-                height: f64::from(height),
-                width: f64::from(width),
-            },
-            length,
-            insert_size,
-            suffix: s[12..]
-                .iter()
-                .collect::<String>()
-                .trim_start_matches('-')
-                .to_string(),
-        })
-    }
-
-    /// `S20R-SCLCR09`: bar type, diameter, length letter, `-`, then the head as an external
-    /// holder's five letters and the insert size.
-    fn parse_bar(text: &str, designation: String, s: &[char]) -> Result<Self, IsoError> {
-        let diameter = two_digits(text, s, 1, "bar diameter")?;
-        let length = length_letter(text, *s.get(3).unwrap_or(&' '))?;
-        if s.get(4) != Some(&'-') || s.len() < 12 {
-            return Err(err(
-                text,
-                "a boring bar reads type, diameter, length letter, '-', five letters and the insert size (S20R-SCLCR09)",
-            ));
-        }
-        let (clamping, shape, style, clearance, hand) = head(text, &s[5..10])?;
-        let insert_size = two_digits(text, s, 10, "insert size")?;
-        Ok(Self {
-            designation,
-            clamping,
-            shape,
-            style,
-            clearance,
-            hand,
-            shank: Shank::Bar {
-                diameter: f64::from(diameter),
-                kind: s[0],
-            },
+            shank,
             length,
             insert_size,
             suffix: s[12..]
@@ -267,6 +218,51 @@ fn length_letter(text: &str, c: char) -> Result<Option<f64>, IsoError> {
 }
 
 type Head = (char, Shape, Style, char, Hand);
+
+/// What a designation's first 12 characters give: head, shank, length, insert size.
+type Parts = (Head, Shank, Option<f64>, u32);
+
+/// `PCLNR2525M12`: the head's five letters, shank height and width, length letter and
+/// the insert size.
+fn external_parts(text: &str, s: &[char]) -> Result<Parts, IsoError> {
+    if s.len() < 12 {
+        return Err(err(
+            text,
+            format!(
+                "is {} characters without spaces, too short (12 needed: PCLNR2525M12)",
+                s.len()
+            ),
+        ));
+    }
+    let head = head(text, &s[0..5])?;
+    let height = two_digits(text, s, 5, "shank height")?;
+    let width = two_digits(text, s, 7, "shank width")?;
+    let shank = Shank::Square {
+        height: f64::from(height),
+        width: f64::from(width),
+    };
+    let length = length_letter(text, s[9])?;
+    Ok((head, shank, length, two_digits(text, s, 10, "insert size")?))
+}
+
+/// `S20R-SCLCR09`: bar type, diameter, length letter, `-`, then the head as an external
+/// holder's five letters and the insert size.
+fn bar_parts(text: &str, s: &[char]) -> Result<Parts, IsoError> {
+    let diameter = two_digits(text, s, 1, "bar diameter")?;
+    let length = length_letter(text, *s.get(3).unwrap_or(&' '))?;
+    if s.get(4) != Some(&'-') || s.len() < 12 {
+        return Err(err(
+            text,
+            "a boring bar reads type, diameter, length letter, '-', five letters and the insert size (S20R-SCLCR09)",
+        ));
+    }
+    let head = head(text, &s[5..10])?;
+    let shank = Shank::Bar {
+        diameter: f64::from(diameter),
+        kind: s[0],
+    };
+    Ok((head, shank, length, two_digits(text, s, 10, "insert size")?))
+}
 
 fn head(text: &str, h: &[char]) -> Result<Head, IsoError> {
     if !CLAMPS.contains(h[0]) {

@@ -42,20 +42,16 @@ pub(crate) struct Move {
 impl Move {
     /// A rapid to `to`.
     pub(crate) fn rapid(to: Pt) -> Self {
-        Self {
-            motion: Motion::Rapid,
-            to,
-            arc: None,
-            feed: None,
-            span: None,
-            hint: ToolHint::Table,
-            modes: None,
-        }
+        Self::straight(Motion::Rapid, to)
     }
     /// A straight feed to `to`.
     pub(crate) fn feed(to: Pt) -> Self {
+        Self::straight(Motion::Feed, to)
+    }
+    /// A straight move to `to`, nothing overridden.
+    fn straight(motion: Motion, to: Pt) -> Self {
         Self {
-            motion: Motion::Feed,
+            motion,
             to,
             arc: None,
             feed: None,

@@ -16,14 +16,13 @@ const MAX_EVALS: usize = 20_000_000;
 pub struct LeftoverSpot {
     /// Which leftover (index into the list measured): the largest by area.
     pub leftover: usize,
-    /// Centre of a view on it, `[z, r]`: midway between the leftover's farthest point and
-    /// the nearest intended point (or a leftover vertex when no intended shape is known).
+    /// The thickness: the leftover's boundary point farthest from the intended boundary,
+    /// the nearest intended point to it, and their distance (mm); `None` when no intended
+    /// shape is known.
+    pub thickest: Option<([f64; 2], [f64; 2], f64)>,
+    /// A point to look at, `[z, r]`: midway along the thickness, or (without an intended
+    /// shape) the leftover's vertex nearest the middle of its box.
     pub centre: [f64; 2],
-    /// The leftover's thickness there, mm (`None` when no intended shape is known).
-    pub thickness: Option<f64>,
-    /// Where the thickness is measured: from the leftover's farthest point to the nearest
-    /// intended point (`None` when no intended shape is known).
-    pub measure: Option<[[f64; 2]; 2]>,
 }
 
 /// The thickest place of the largest of `leftovers` (by area) against the `intended`
@@ -49,9 +48,8 @@ pub fn leftover_spot(leftovers: &[Shape], intended: &[Shape]) -> Option<Leftover
             .min_by(|a, b| (**a - mid).len2().total_cmp(&(**b - mid).len2()))?;
         return Some(LeftoverSpot {
             leftover: index,
+            thickest: None,
             centre: centre.to_array(),
-            thickness: None,
-            measure: None,
         });
     }
     let stride = (pts.len() * segs.len()).div_ceil(MAX_EVALS).max(1);
@@ -68,9 +66,8 @@ pub fn leftover_spot(leftovers: &[Shape], intended: &[Shape]) -> Option<Leftover
     let (p, q, d) = best?;
     Some(LeftoverSpot {
         leftover: index,
+        thickest: Some((p.to_array(), q.to_array(), d)),
         centre: [(p.z + q.z) / 2.0, (p.r + q.r) / 2.0],
-        thickness: Some(d),
-        measure: Some([p.to_array(), q.to_array()]),
     })
 }
 
@@ -177,13 +174,13 @@ mod tests {
             holes: vec![],
         };
         let s = leftover_spot(std::slice::from_ref(&band), &[intended]).unwrap();
-        let t = s.thickness.unwrap();
+        let t = s.thickest.unwrap().2;
         assert!((t - 0.25 * 2f64.sqrt()).abs() < 1e-9, "{t}");
         // Around the shoulder's outer edge (Z-30 r30), where the band turns the corner.
         assert!((s.centre[0] + 29.875).abs() < 1e-9 && (s.centre[1] - 30.125).abs() < 1e-9);
         // Without an intended shape: a vertex near the middle of the box, no thickness.
         let s = leftover_spot(&[band], &[]).unwrap();
-        assert_eq!(s.thickness, None);
+        assert_eq!(s.thickest, None);
         let c = s.centre;
         assert!(
             (-100.0..=0.0).contains(&c[0]) && (20.0..=30.25).contains(&c[1]),

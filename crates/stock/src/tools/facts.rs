@@ -19,15 +19,16 @@ impl ToolTable {
             .tools
             .iter()
             .filter_map(|(t, tool)| match tool {
-                Tool::Grooving {
-                    width, width_dir, ..
-                } if matches!(width_dir, AxisDir::PlusZ | AxisDir::MinusZ) => Some((
-                    *t,
-                    Blade {
-                        width: *width,
-                        toward_plus_z: *width_dir == AxisDir::PlusZ,
-                    },
-                )),
+                Tool::Grooving(b) if matches!(b.width_dir, AxisDir::PlusZ | AxisDir::MinusZ) => {
+                    let toward_plus_z = b.width_dir == AxisDir::PlusZ;
+                    Some((
+                        *t,
+                        Blade {
+                            width: b.width,
+                            toward_plus_z,
+                        },
+                    ))
+                }
                 _ => None,
             })
             .collect();

@@ -109,6 +109,21 @@ impl AxisDir {
     }
 }
 
+/// A grooving (parting) blade, every default filled in.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GroovingBlade {
+    /// Blade width, mm (default 3).
+    pub width: f64,
+    /// Direction the width spans from the reference corner (default +z).
+    pub width_dir: AxisDir,
+    /// Direction the blade body runs from the cutting edge (default +x, OD).
+    pub shank_dir: AxisDir,
+    /// Blade length, mm (default 20).
+    pub reach: f64,
+    /// Radius of both cutting-edge corners, mm (default 0).
+    pub corner_radius: f64,
+}
+
 /// One tool, with every default filled in.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Tool {
@@ -126,18 +141,7 @@ pub enum Tool {
         edge: f64,
     },
     /// A grooving (parting) blade.
-    Grooving {
-        /// Blade width, mm (default 3).
-        width: f64,
-        /// Direction the width spans from the reference corner (default +z).
-        width_dir: AxisDir,
-        /// Direction the blade body runs from the cutting edge (default +x, OD).
-        shank_dir: AxisDir,
-        /// Blade length, mm (default 20).
-        reach: f64,
-        /// Radius of both cutting-edge corners, mm (default 0).
-        corner_radius: f64,
-    },
+    Grooving(GroovingBlade),
     /// A drill on the spindle axis.
     Drill {
         /// Diameter, mm (required).
@@ -169,13 +173,13 @@ impl Tool {
     };
 
     /// The default G74/G75 blade: 3 mm wide, referenced at its left corner, OD, 20 mm reach.
-    pub const DEFAULT_BLADE: Self = Self::Grooving {
+    pub const DEFAULT_BLADE: Self = Self::Grooving(GroovingBlade {
         width: 3.0,
         width_dir: AxisDir::PlusZ,
         shank_dir: AxisDir::PlusX,
         reach: 20.0,
         corner_radius: 0.0,
-    };
+    });
 
     /// One human line, e.g. "turning V 35°, r0.4, tip 3, κr 93°".
     pub fn describe(&self) -> String {
@@ -202,20 +206,14 @@ impl Tool {
                 n(nose_radius),
                 n(entering_angle)
             ),
-            Self::Grooving {
-                width,
-                width_dir,
-                shank_dir,
-                reach,
-                corner_radius,
-            } => format!(
+            Self::Grooving(b) => format!(
                 "grooving {} mm, width {}, shank {}, reach {}{}",
-                n(width),
-                width_dir.text(),
-                shank_dir.text(),
-                n(reach),
-                if corner_radius > 0.0 {
-                    format!(", corners r{}", n(corner_radius))
+                n(b.width),
+                b.width_dir.text(),
+                b.shank_dir.text(),
+                n(b.reach),
+                if b.corner_radius > 0.0 {
+                    format!(", corners r{}", n(b.corner_radius))
                 } else {
                     String::new()
                 }

@@ -10,7 +10,7 @@ mod outline_choice;
 mod schema;
 
 use crate::StockError;
-pub use kinds::{AxisDir, Insert, Tool};
+pub use kinds::{AxisDir, GroovingBlade, Insert, Tool};
 pub(crate) use outline_choice::hint_key;
 
 /// The tool table: T numbers to tools, in file order.
@@ -35,7 +35,7 @@ impl ToolTable {
         }
     }
 
-    /// Parses the `[[tool]]` TOML format of the simulation spec (see [`schema`]).
+    /// Parses the `[[tool]]` TOML format of the simulation spec.
     pub fn from_toml(text: &str) -> Result<Self, StockError> {
         let entries = schema::read(text)?;
         Ok(Self {

@@ -1,7 +1,7 @@
 //! Which outline cuts: a tool's own outline (the adapter onto `crate::outline`), the
 //! default for a missing entry, and the blade a grooving cycle's hint asks for.
 
-use super::{AxisDir, Insert, Tool, ToolTable};
+use super::{AxisDir, GroovingBlade, Insert, Tool, ToolTable};
 use crate::outline::{self, InsertBody, Outline};
 use expander::ToolHint;
 
@@ -32,18 +32,12 @@ impl Tool {
                 entering_angle,
                 edge,
             ),
-            Self::Grooving {
-                width,
-                width_dir,
-                shank_dir,
-                reach,
-                corner_radius,
-            } => outline::grooving(
-                width,
-                width_dir.unit(),
-                shank_dir.unit(),
-                reach,
-                corner_radius,
+            Self::Grooving(b) => outline::grooving(
+                b.width,
+                b.width_dir.unit(),
+                b.shank_dir.unit(),
+                b.reach,
+                b.corner_radius,
             ),
             Self::Drill {
                 diameter,
@@ -111,13 +105,13 @@ impl ToolTable {
             ToolHint::Blade { width, toward_plus_z, shank_plus_x } => {
                 let default_shank = if shank_plus_x { AxisDir::PlusX } else { AxisDir::MinusX };
                 let (shank_dir, reach, corner_radius) = match self.get(t) {
-                    Some(&Tool::Grooving { shank_dir, reach, corner_radius, .. }) => (shank_dir, reach, corner_radius),
+                    Some(Tool::Grooving(b)) => (b.shank_dir, b.reach, b.corner_radius),
                     _ => (default_shank, 20.0, 0.0),
                 };
                 if width.is_finite() && width > 0.0 && width < 1e4 {
                     let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
                     let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { default_shank };
-                    let tool = Tool::Grooving { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) };
+                    let tool = Tool::Grooving(GroovingBlade { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) });
                     (tool.outline(), None)
                 } else {
                     let (o, _) = self.outline(t);

@@ -2,7 +2,7 @@
 //! refused with their line and column), then each entry validated into a [`Tool`] with
 //! errors naming the tool, the field and the line.
 
-use super::{AxisDir, Insert, Tool};
+use super::{AxisDir, GroovingBlade, Insert, Tool};
 use crate::error::{from_toml, line_col};
 use crate::StockError;
 use serde::Deserialize;
@@ -307,13 +307,13 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
                 width / 2.0,
                 true,
             )?;
-            Tool::Grooving {
+            Tool::Grooving(GroovingBlade {
                 width,
                 width_dir,
                 shank_dir,
                 reach,
                 corner_radius,
-            }
+            })
         }
         "drill" => Tool::Drill {
             diameter: num("diameter", raw.diameter, None, 0.0, 10000.0, false)?,
