@@ -146,13 +146,29 @@ fn overcut_later(all: &[expander::Intended], k: usize, i: &expander::Intended) -
     })
 }
 
-/// The move counts after which [`intents`] wants the stock (to take them in the removal pass).
+/// The move counts after which [`intents`] wants the stock (to take them in the removal
+/// pass): one per contour that stays an intent. A snapshot costs a second removal up to its
+/// count, so only programs of up to [`MAX_MOVES_FOR_MARKS`] moves get them, and at most
+/// [`MAX_STOCK_MARKS`]; other contours are read against the final part (which has at most
+/// less material than the stock of their cycle: a lead-in in front of either is dropped).
 pub(crate) fn stock_marks(loaded: &Loaded) -> Vec<usize> {
-    loaded
-        .toolpath
-        .intended
+    let intended = &loaded.toolpath.intended;
+    if loaded.toolpath.segments.len() > MAX_MOVES_FOR_MARKS {
+        return vec![];
+    }
+    let mut marks: Vec<usize> = intended
         .iter()
-        .filter(|i| i.kind != IntendedKind::Groove)
-        .map(|i| i.after_move)
-        .collect()
+        .enumerate()
+        .filter(|(k, i)| i.kind != IntendedKind::Groove && !overcut_later(intended, *k, i))
+        .map(|(_, i)| i.after_move)
+        .collect();
+    marks.sort_unstable();
+    marks.dedup();
+    marks.truncate(MAX_STOCK_MARKS);
+    marks
 }
+
+/// Most stock snapshots taken for reading intents.
+const MAX_STOCK_MARKS: usize = 64;
+/// Programs longer than this read their intents against the final part.
+const MAX_MOVES_FOR_MARKS: usize = 5_000;

@@ -264,10 +264,14 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         if k >= segments.len() {
             return sim.final_shapes.clone();
         }
+        if k == 0 {
+            return blank.shapes.clone();
+        }
+        // no snapshot taken (a long program): the final part, see analysis::stock_marks
         sim.snapshots
             .iter()
             .find(|(at, _)| *at == k)
-            .map_or_else(|| blank.shapes.clone(), |(_, s)| s.clone())
+            .map_or_else(|| sim.final_shapes.clone(), |(_, s)| s.clone())
     };
     let Ok(intents) = crate::analysis::intents(args, &loaded, &tools, &stock_at) else {
         return EXIT_UNUSABLE;
