@@ -12,6 +12,7 @@
 //! the way the author meant it — each with a note the report shows.
 
 use crate::{Block, Note, Program, Span, Subprogram, Word};
+use macro_b::{Dialect, Func, MacroError, Stmt};
 
 /// A reading error: where, what, and what to change.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -48,7 +49,20 @@ const NUMBER_HELP: &str = "a number has at most 9 digits before the point and 20
 pub struct ReadOptions {
     /// Read `F0,2` as `F0.2` (German-style posts); otherwise a decimal comma is an error.
     pub decimal_comma: bool,
+    /// Custom macro B (spec/dialects.md §5) with this control's rules: `#` variables,
+    /// `[ ]` expressions as word values and macro statements. `None`: a `#` is an error.
+    pub macros: Option<Dialect>,
 }
+
+impl From<MacroError> for ParseError {
+    fn from(e: MacroError) -> Self {
+        Self::new(e.span, e.message, e.help)
+    }
+}
+
+/// The help of a `#` read without custom macro B.
+const NO_MACRO_HELP: &str =
+    "run with --control fanuc-a (or another FANUC or Haas control) or --macro on";
 
 /// Read a whole program text.
 pub fn parse(source: &str) -> Result<Program, ParseError> {
@@ -182,6 +196,8 @@ struct Reader<'a> {
     flow_control: (usize, Span),
     /// Other unexpected control bytes dropped, and the first one's place.
     unexpected_control: (usize, Span),
+    /// The macro statement of the current block.
+    stmt: Option<Stmt>,
 }
 
 impl<'a> Reader<'a> {
@@ -209,6 +225,7 @@ impl<'a> Reader<'a> {
             delete_level: 0,
             flow_control: (0, Span::default()),
             unexpected_control: (0, Span::default()),
+            stmt: None,
         }
     }
 
@@ -439,14 +456,43 @@ impl<'a> Reader<'a> {
                     // the end of the tape: a control reads no further
                     self.skip_trailer(span);
                 }
+                c if (c == '#' || c.is_ascii_alphabetic())
+                    && self.options.macros.is_some()
+                    && self.at_statement_start()
+                    && macro_b::starts_statement(&self.src[span.offset..]) =>
+                {
+                    self.finish_word()?;
+                    self.statement(span)?;
+                }
+                '#' => {
+                    let message = if self.options.macros.is_some() {
+                        "'#' where no macro variable can stand"
+                    } else {
+                        "`#` needs custom macro B"
+                    };
+                    return Err(ParseError::new(
+                        span,
+                        message,
+                        if self.options.macros.is_some() {
+                            "a variable stands in a statement (#1 = …) or right after an address letter (X#1)"
+                        } else {
+                            NO_MACRO_HELP
+                        },
+                    ));
+                }
                 c if c.is_ascii_alphabetic() => {
                     self.finish_word()?;
-                    self.pending = Some(PendingWord {
-                        letter: c.to_ascii_uppercase(),
-                        start: span,
-                        end: span,
-                        text: String::new(),
-                    });
+                    let letter = c.to_ascii_uppercase();
+                    if self.options.macros.is_some() && self.expression_follows() {
+                        self.expression_word(letter, span)?;
+                    } else {
+                        self.pending = Some(PendingWord {
+                            letter,
+                            start: span,
+                            end: span,
+                            text: String::new(),
+                        });
+                    }
                     self.mark(span);
                 }
                 c if c.is_ascii_digit() || c == '.' || c == '+' || c == '-' => {
@@ -489,7 +535,7 @@ impl<'a> Reader<'a> {
                     } else {
                         (
                             format!("unexpected character '{c}'"),
-                            "only address letters, numbers, ';', '/', '%' and comments ( ) belong in a block (macro variables # are not supported)",
+                            "only address letters, numbers, ';', '/', '%' and comments ( ) belong in a block",
                         )
                     };
                     return Err(ParseError::new(span, what, help));
@@ -507,6 +553,136 @@ impl<'a> Reader<'a> {
     /// Nothing of the current block read yet.
     fn block_is_empty(&self) -> bool {
         self.pending.is_none() && self.words.is_empty() && self.seq.is_none() && !self.block_delete
+    }
+
+    /// Nothing but an N word (or `/`) read of the current block: a macro statement may
+    /// start here.
+    fn at_statement_start(&self) -> bool {
+        self.words.is_empty()
+            && self.stmt.is_none()
+            && self.pending.as_ref().is_none_or(|p| p.letter == 'N')
+    }
+
+    /// The text from byte `start` to the end of its block: the next newline, lone CR or
+    /// `;` outside a comment.
+    fn block_text(&self, start: usize) -> &'a str {
+        let rest = &self.src[start..];
+        let mut depth = 0usize;
+        for (i, c) in rest.char_indices() {
+            match c {
+                '(' => depth += 1,
+                ')' => depth = depth.saturating_sub(1),
+                '\n' | '\r' => return &rest[..i],
+                ';' if depth == 0 => return &rest[..i],
+                _ => {}
+            }
+        }
+        rest
+    }
+
+    /// Consume the characters up to byte `end`, extending the block; the last span.
+    fn consume_to(&mut self, end: usize) -> Option<Span> {
+        let mut last = None;
+        while self.offset() < end {
+            let (span, _) = self.next()?;
+            last = Some(span);
+        }
+        if let Some(l) = last {
+            self.block_end = l;
+        }
+        last
+    }
+
+    /// The span of the next character (a zero-length span at the end of the text).
+    fn next_span(&mut self) -> Span {
+        let offset = self.offset();
+        Span {
+            line: self.line,
+            column: self.column + 1,
+            offset,
+            len: 0,
+        }
+    }
+
+    /// A macro statement from `start` (already read) to the end of the block.
+    fn statement(&mut self, start: Span) -> Result<(), ParseError> {
+        self.mark(start);
+        let text = self.block_text(start.offset).trim_end();
+        let options = match self.options.macros {
+            Some(Dialect::Haas) => macro_b::Options::haas(),
+            _ => macro_b::Options::fanuc(),
+        };
+        let stmt = macro_b::parse_stmt(text, start, &options)?;
+        self.consume_to(start.offset + text.len());
+        self.stmt = Some(stmt);
+        Ok(())
+    }
+
+    /// Whether the value after an address letter is a macro expression: `#…`, `[…]`, a
+    /// function (`ROUND[…]`), each possibly after a sign.
+    fn expression_follows(&mut self) -> bool {
+        let at = self.offset();
+        let rest = self.block_text(at);
+        let t = rest.trim_start_matches([' ', '\t']);
+        let t = t.strip_prefix(['-', '+']).unwrap_or(t).trim_start_matches([' ', '\t']);
+        if t.starts_with(['#', '[']) {
+            return true;
+        }
+        let name: String = t
+            .chars()
+            .take_while(char::is_ascii_alphabetic)
+            .map(|c| c.to_ascii_uppercase())
+            .collect();
+        Func::from_name(&name).is_some()
+            && t[name.len()..].trim_start_matches([' ', '\t']).starts_with('[')
+    }
+
+    /// An address whose value is a macro expression (`X#1`, `Z[#2-0.5]`, `G#10`).
+    fn expression_word(&mut self, letter: char, at: Span) -> Result<(), ParseError> {
+        if matches!(letter, 'N' | 'O') {
+            return Err(ParseError::new(
+                at,
+                format!("{letter} needs a number, not a macro expression"),
+                format!("write {letter} as digits only, e.g. {letter}14"),
+            ));
+        }
+        let base = self.next_span();
+        let text = self.block_text(base.offset);
+        let (expr, used) = macro_b::parse_operand(text, base)?;
+        let end = self.consume_to(base.offset + used).unwrap_or(at);
+        self.push_word(Word {
+            letter,
+            value: 0.0,
+            has_point: true,
+            span: at.to(end),
+            expr: Some(expr),
+        })
+    }
+
+    /// Add a word to the block: one of each address, except G and M.
+    fn push_word(&mut self, word: Word) -> Result<(), ParseError> {
+        let letter = word.letter;
+        if self.stmt.is_some() {
+            return Err(ParseError::new(
+                word.span,
+                "an NC word after a macro statement",
+                "put the macro statement on a block of its own",
+            ));
+        }
+        if letter != 'G' && letter != 'M' {
+            if let Some(first) = self.words.iter().find(|w| w.letter == letter) {
+                return Err(ParseError::new(
+                    word.span,
+                    format!(
+                        "address {letter} given twice in one block (first at {})",
+                        first.span
+                    ),
+                    format!("remove one of the two {letter} words"),
+                ));
+            }
+        }
+        self.words.push(word);
+        Ok(())
     }
 
     /// Skip to the end of the line (the newline itself ends the block). Returns the last span.
@@ -675,26 +851,13 @@ impl<'a> Reader<'a> {
                     });
                 }
             }
-            letter => {
-                if letter != 'G' && letter != 'M' {
-                    if let Some(first) = self.words.iter().find(|w| w.letter == letter) {
-                        return Err(ParseError::new(
-                            span,
-                            format!(
-                                "address {letter} given twice in one block (first at {})",
-                                first.span
-                            ),
-                            format!("remove one of the two {letter} words"),
-                        ));
-                    }
-                }
-                self.words.push(Word {
-                    letter,
-                    value,
-                    has_point,
-                    span,
-                });
-            }
+            letter => self.push_word(Word {
+                letter,
+                value,
+                has_point,
+                span,
+                expr: None,
+            })?,
         }
         Ok(())
     }
@@ -706,7 +869,8 @@ impl<'a> Reader<'a> {
             let seq = self.seq.take();
             let block_delete = std::mem::replace(&mut self.block_delete, false);
             let delete_level = std::mem::replace(&mut self.delete_level, 0);
-            if !words.is_empty() || seq.is_some() {
+            let stmt = self.stmt.take();
+            if !words.is_empty() || seq.is_some() || stmt.is_some() {
                 let span = start.to(self.block_end);
                 let block = Block {
                     words,
@@ -715,6 +879,7 @@ impl<'a> Reader<'a> {
                     block_delete,
                     delete_level,
                     span,
+                    stmt,
                 };
                 self.program
                     .programs
@@ -728,6 +893,7 @@ impl<'a> Reader<'a> {
         self.seq = None;
         self.block_delete = false;
         self.delete_level = 0;
+        self.stmt = None;
         Ok(())
     }
 }

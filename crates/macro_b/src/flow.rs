@@ -8,13 +8,13 @@
 
 use std::collections::HashMap;
 
-use gcode::Span;
+use crate::span::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::eval::MacroState;
 use crate::expr::{Expr, Stmt, StmtKind};
 use crate::options::Limits;
-use crate::value::{round_half_away, Value};
+use crate::value::Value;
 use crate::vars::{Locals, System};
 
 /// What a line of a program holds.
@@ -216,6 +216,35 @@ impl<B> MacroProgram<B> {
     /// Things accepted with a warning.
     pub fn warnings(&self) -> &[Warning] {
         &self.warnings
+    }
+
+    /// The line a structured statement is paired with: `WHILE`/`DO` → its `END`, `END` →
+    /// its `WHILE`/`DO`, block-form `IF` → its `ELSE` or `ENDIF`, `ELSE` → its `ENDIF`.
+    pub fn partner(&self, line: usize) -> Option<usize> {
+        self.partner.get(line).copied().filter(|&p| p != usize::MAX)
+    }
+
+    /// The line a jump (`GOTO n`, `M99 Pn`: `what`) from line `from` goes to: block `Nn`.
+    /// A missing or duplicated number, or a target inside a loop `from` is not in, is an
+    /// error at `span`.
+    pub fn jump_target(&self, from: usize, n: u32, span: Span, what: &str) -> Result<usize> {
+        let t = self.find_seq(n, span, what)?;
+        if let Some(&(s, e)) = self
+            .loops
+            .iter()
+            .find(|&&(s, e)| s < t && t <= e && !(s <= from && from <= e))
+        {
+            return Err(MacroError::new(
+                ErrorKind::JumpIntoLoop,
+                span,
+                format!(
+                    "{what} {n} jumps into the loop of lines {}–{} from outside it",
+                    self.lines[s].span.line, self.lines[e].span.line
+                ),
+                "jump to the WHILE line or before it; jumping out of a loop or within it is allowed",
+            ));
+        }
+        Ok(t)
     }
 
     /// The line of block `Nn`; a missing or duplicated number is an error at `span`.
@@ -517,38 +546,13 @@ impl<'p, B> Flow<'p, B> {
         pi: usize,
         li: usize,
     ) -> Result<()> {
-        let v = state.required(target, "GOTO target", sys)?;
-        let n = round_half_away(v);
-        if !(1.0..=99_999_999.0).contains(&n) {
-            return Err(MacroError::new(
-                ErrorKind::SequenceMissing,
-                target.span,
-                format!("GOTO {n}: sequence numbers are 1–99999999"),
-                "jump to an N number that is written in this program",
-            ));
-        }
-        self.jump_within(pi, li, n as u32, target.span, "GOTO")
+        let n = state.sequence_number(target, "GOTO", sys)?;
+        self.jump_within(pi, li, n, target.span, "GOTO")
     }
 
     /// Jump to block `Nn` of program `pi` from its line `li`.
     fn jump_within(&mut self, pi: usize, li: usize, n: u32, span: Span, what: &str) -> Result<()> {
-        let prog = &self.programs[pi];
-        let t = prog.find_seq(n, span, what)?;
-        if let Some(&(s, e)) = prog
-            .loops
-            .iter()
-            .find(|&&(s, e)| s < t && t <= e && !(s <= li && li <= e))
-        {
-            return Err(MacroError::new(
-                ErrorKind::JumpIntoLoop,
-                span,
-                format!(
-                    "{what} {n} jumps into the loop of lines {}–{} from outside it",
-                    prog.lines[s].span.line, prog.lines[e].span.line
-                ),
-                "jump to the WHILE line or before it; jumping out of a loop or within it is allowed",
-            ));
-        }
+        let t = self.programs[pi].jump_target(li, n, span, what)?;
         if t <= li {
             self.back_jump(pi, li);
         }
