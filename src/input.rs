@@ -108,8 +108,10 @@ pub(crate) fn load_program(
         name: path.display().to_string(),
         text,
     };
+    let macros = args.macros(machine.control);
     let read = gcode::ReadOptions {
         decimal_comma: args.decimal_comma,
+        macros,
     };
     let program = gcode::parse_with(&source.text, read).map_err(|e| {
         diag::print_at(
@@ -138,6 +140,15 @@ pub(crate) fn load_program(
         noses: tools.noses(),
         blades: tools.blades(),
         start_tool: start_tool.or_else(|| tools.numbers().first().copied()),
+        max_blocks: args.max_steps,
+        macros: macros.map(|d| {
+            let mut o = match d {
+                macro_b::Dialect::Haas => macro_b::Options::haas(),
+                macro_b::Dialect::Fanuc => macro_b::Options::fanuc(),
+            };
+            o.limits.max_blocks = args.max_steps as u64;
+            o
+        }),
         ..Options::default()
     };
     let toolpath = expander::expand(&program, &machine, &opts);

@@ -62,7 +62,7 @@ impl From<MacroError> for ParseError {
 
 /// The help of a `#` read without custom macro B.
 const NO_MACRO_HELP: &str =
-    "run with --control fanuc-a (or another FANUC or Haas control) or --macro on";
+    "custom macro B is on by default for --control fanuc-a, fanuc-b, fanuc-c and haas; --macro on turns it on for gsk980";
 
 /// Read a whole program text.
 pub fn parse(source: &str) -> Result<Program, ParseError> {
@@ -468,7 +468,7 @@ impl<'a> Reader<'a> {
                     let message = if self.options.macros.is_some() {
                         "'#' where no macro variable can stand"
                     } else {
-                        "`#` needs custom macro B"
+                        "`#` needs custom macro B: run with --control fanuc-a or --macro on"
                     };
                     return Err(ParseError::new(
                         span,

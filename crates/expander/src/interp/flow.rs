@@ -1,5 +1,6 @@
 //! Program flow: running an O program block by block, subprogram calls (M98), returns
-//! (M99) and the program end (M02/M30). GOTO, WHILE and macro calls belong here too.
+//! (M99) and the program end (M02/M30). Macro B statements and G65 run through
+//! `macros.rs` (`Interp::step`).
 
 use super::{alarm, Interp};
 use crate::words::{whole_in, Words};
@@ -23,6 +24,8 @@ pub(super) enum Flow {
         number: u32,
         times: u32,
         span: Span,
+        /// A G65 call's new local level.
+        locals: Option<Box<macro_b::Locals>>,
     },
     Return {
         seq: Option<u32>,
@@ -51,17 +54,9 @@ impl Interp<'_> {
             }
             self.out.blocks += 1;
             if self.out.blocks > self.opts.max_blocks {
-                return Err(alarm(
-                    b.span,
-                    "LS-LOOP",
-                    format!(
-                        "more than {} blocks executed: the program does not end",
-                        self.opts.max_blocks
-                    ),
-                    "check M98 repeat counts and M99 jumps for an endless loop",
-                ));
+                return Err(self.budget_alarm(b.span, program));
             }
-            match self.block(&program.programs[index], i)? {
+            match self.step(program, index, i)? {
                 Flow::Next => i += 1,
                 Flow::Jump(j) => i = j,
                 Flow::End => return Ok(Exit::End),
@@ -80,6 +75,7 @@ impl Interp<'_> {
                     number,
                     times,
                     span,
+                    locals,
                 } => {
                     let Some(sub) = program
                         .programs
@@ -101,6 +97,7 @@ impl Interp<'_> {
                             "remove the recursive M98 call or flatten the nesting",
                         ));
                     }
+                    let level = self.enter_call(locals);
                     for _ in 0..times {
                         match self.run(program, sub, 0, depth + 1)? {
                             Exit::End => return Ok(Exit::End),
@@ -115,11 +112,13 @@ impl Interp<'_> {
                                         "give the block to return to that sequence number",
                                     ));
                                 };
+                                self.leave_call(level);
                                 i = target;
                                 continue 'blocks;
                             }
                         }
                     }
+                    self.leave_call(level);
                     i += 1;
                 }
             }
@@ -204,6 +203,7 @@ fn m98(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
         number,
         times: times.max(1),
         span: w.span,
+        locals: None,
     })
 }
 

@@ -11,6 +11,7 @@
 mod actions;
 mod cycle;
 mod flow;
+mod macros;
 mod modal;
 mod motion;
 mod tool_facts;
@@ -45,6 +46,9 @@ pub struct Options {
     /// The tool that cuts before the program's first T word (`--tool N`, else the tool
     /// table's first entry); `None` leaves it 0, "no tool yet".
     pub start_tool: Option<u32>,
+    /// Custom macro B with these rules (`--macro`); `None`: off. The program must have
+    /// been read with macro B on too.
+    pub macros: Option<macro_b::Options>,
 }
 
 impl Default for Options {
@@ -52,7 +56,7 @@ impl Default for Options {
         Self {
             block_delete: false,
             max_segments: 5_000_000,
-            max_blocks: 20_000_000,
+            max_blocks: macro_b::DEFAULT_MAX_BLOCKS as usize,
             noses: BTreeMap::new(),
             default_nose: Nose {
                 radius: 0.4,
@@ -60,6 +64,7 @@ impl Default for Options {
             },
             blades: BTreeMap::new(),
             start_tool: None,
+            macros: None,
         }
     }
 }
@@ -83,6 +88,11 @@ pub struct Toolpath {
     pub blocks: usize,
     /// Shapes the program defines for itself (G75.1 grooves, G70–G73 finishing shapes).
     pub intended: Vec<crate::Intended>,
+    /// Custom macro B: the variables the run read or set, with their final values
+    /// (`None`: vacant), in number order.
+    pub variables: Vec<(String, Option<f64>)>,
+    /// Custom macro B: the source lines executed more than once, with how many times.
+    pub line_counts: Vec<(u32, u64)>,
 }
 
 /// Expand a parsed program into segments.
@@ -93,7 +103,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
     }
     if let Some(main) = program.main() {
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
-        let mut result = it.run(program, 0, 0, 0);
+        let mut result = it.prepare_macros(program).and_then(|()| it.run(program, 0, 0, 0));
         it.flush_compensation();
         if result.is_ok() && it.retained.g75_1.is_some() {
             let span = program
@@ -110,6 +120,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
             Ok(Exit::Return(_)) => unreachable!("M99 in the main program is an alarm"),
             Err(alarm) => it.out.alarms.push(alarm),
         }
+        it.finish_macros(program);
     }
     it.out
 }
@@ -142,6 +153,8 @@ pub(crate) struct Interp<'m> {
     pub(crate) section: Option<(Side, Nose, Vec<Segment>)>,
     /// Offsets already warned about (blade, no entry).
     pub(crate) comp_warned: Vec<u32>,
+    /// Custom macro B's variables and program structure, when it is on.
+    macros: Option<Box<macros::Macros>>,
 }
 
 /// A controller alarm.
@@ -177,6 +190,7 @@ impl<'m> Interp<'m> {
             offset: 0,
             section: None,
             comp_warned: vec![],
+            macros: None,
         }
     }
 
