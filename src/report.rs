@@ -161,6 +161,8 @@ pub(crate) fn build(
                 ring: i.points.iter().map(|p| [p.z, p.r]).collect(),
             })
             .collect(),
+        variables: tp.variables.clone(),
+        line_counts: tp.line_counts.clone(),
         ..Report::default()
     }
 }
