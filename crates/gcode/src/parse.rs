@@ -1135,6 +1135,7 @@ mod tests {
             "G1 X56,08 F0,2",
             ReadOptions {
                 decimal_comma: true,
+                ..ReadOptions::default()
             },
         )
         .unwrap();
@@ -1146,6 +1147,68 @@ mod tests {
     fn columns_count_characters_not_bytes() {
         let e = parse("（中文）X").unwrap_err();
         assert_eq!(e.span.column, 5);
+    }
+
+    fn macro_b(src: &str) -> Result<Program, ParseError> {
+        parse_with(
+            src,
+            ReadOptions {
+                macros: Some(Dialect::Fanuc),
+                ..ReadOptions::default()
+            },
+        )
+    }
+
+    #[test]
+    fn macro_statements_and_expression_words_with_spans() {
+        let p = macro_b("N5 #1 = 2 + 3 * 4 ;\nWHILE [#1 GT 2] DO1\nG00 X#1 Z[#2-0.5] F0.2 (C)\nEND1\n#3000 = 1 (TOOL BROKEN) ;\n").unwrap();
+        let b = &p.programs[0].blocks;
+        assert_eq!(b.len(), 5);
+        assert_eq!(b[0].seq, Some(5));
+        let s = b[0].stmt.as_ref().unwrap();
+        assert_eq!((s.span.line, s.span.column), (1, 4));
+        assert!(b[0].words.is_empty());
+        assert!(matches!(b[1].stmt.as_ref().unwrap().kind, macro_b::StmtKind::While { id: 1, .. }));
+        let w = &b[2].words;
+        assert_eq!(w.len(), 4);
+        assert_eq!(w[1].expr.as_ref().unwrap().to_string(), "#1");
+        assert_eq!((w[1].span.column, w[1].span.len), (5, 3));
+        let z = w[2].expr.as_ref().unwrap();
+        assert_eq!(z.to_string(), "[#2-0.5]");
+        assert_eq!((w[2].span.column, z.span.column), (9, 10));
+        assert_eq!((w[3].letter, w[3].value, w[3].expr.is_none()), ('F', 0.2, true));
+        assert!(matches!(b[3].stmt.as_ref().unwrap().kind, macro_b::StmtKind::End { id: 1 }));
+        let macro_b::StmtKind::Assign { comment, .. } = &b[4].stmt.as_ref().unwrap().kind else {
+            panic!("an assignment")
+        };
+        assert_eq!(comment.as_deref(), Some("TOOL BROKEN"));
+        // functions and signs as word values, G#10, spaces and ';' between blocks
+        let p = macro_b("G#10 X-#1 Z ROUND[#2];IF [#1 EQ #0] GOTO 10;GOTO#3").unwrap();
+        let b = &p.programs[0].blocks;
+        assert_eq!(b.len(), 3);
+        assert!(b[0].words.iter().all(|w| w.expr.is_some()));
+        assert!(b[1].stmt.is_some() && b[2].stmt.is_some());
+        // plain programs read as before
+        assert_eq!(macro_b("G0 X1 Z2").unwrap(), parse("G0 X1 Z2").unwrap());
+    }
+
+    #[test]
+    fn macro_errors_at_their_column() {
+        // without macro B a # is an error that says how to turn it on
+        let e = parse("G0 X1\nG1 X#1").unwrap_err();
+        assert_eq!((e.span.line, e.span.column), (2, 5));
+        assert!(e.message.contains("needs custom macro B"), "{}", e.message);
+        assert!(e.message.contains("--control fanuc-a"), "{}", e.message);
+        let e = macro_b("#1 = [2 + 3").unwrap_err();
+        assert_eq!(e.span.line, 1);
+        let e = macro_b("G0 X#1 X2").unwrap_err();
+        assert!(e.message.contains("twice"), "{}", e.message);
+        let e = macro_b("N#1 G0").unwrap_err();
+        assert!(e.message.contains("N needs a number"), "{}", e.message);
+        let e = macro_b("G0 X1#2").unwrap_err();
+        assert_eq!(e.span.column, 6);
+        let e = macro_b("#1 = 5 / \n").unwrap_err();
+        assert_eq!(e.span.line, 1);
     }
 
     #[test]
