@@ -299,7 +299,14 @@ impl MacroState {
     /// The sequence number a jump names (`GOTO n`, `GOTO #1`, `GOTO [expr]`; `what` says
     /// which): required, rounded half away from zero (4.5 → 5), 1–99999999.
     pub fn sequence_number(&mut self, e: &Expr, what: &str, sys: &mut dyn System) -> Result<u32> {
-        let v = self.required(e, &format!("{what} target"), sys)?;
+        let Some(v) = self.eval(e, sys)?.get() else {
+            return Err(MacroError::new(
+                ErrorKind::Vacant,
+                e.span,
+                format!("{what} target: {e} is vacant"),
+                "give the variable a value before this block",
+            ));
+        };
         let n = round_half_away(v);
         if !(1.0..=99_999_999.0).contains(&n) {
             return Err(MacroError::new(

@@ -6,8 +6,6 @@
 //! ([`Flow::next`]); the interpreter tells it about calls and returns it reads in those
 //! blocks ([`Flow::call_macro`], [`Flow::call_sub`], [`Flow::call_local`], [`Flow::ret`]).
 
-use std::collections::HashMap;
-
 use crate::span::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
@@ -57,7 +55,8 @@ pub struct MacroProgram<B> {
     partner: Vec<usize>,
     /// (DO line, END line) of every loop.
     loops: Vec<(usize, usize)>,
-    seqs: HashMap<u32, Vec<usize>>,
+    /// (N number, line), sorted: found by binary search on every jump.
+    seqs: Vec<(u32, usize)>,
     warnings: Vec<Warning>,
 }
 
@@ -78,13 +77,13 @@ impl<B> MacroProgram<B> {
     pub fn new(number: Option<u32>, lines: Vec<Line<B>>, limits: &Limits) -> Result<Self> {
         let mut partner = vec![usize::MAX; lines.len()];
         let mut loops = Vec::new();
-        let mut seqs: HashMap<u32, Vec<usize>> = HashMap::new();
+        let mut seqs: Vec<(u32, usize)> = Vec::new();
         let mut warnings = Vec::new();
         let mut open: Vec<(u8, usize)> = Vec::new();
         let mut ifs: Vec<(usize, Option<usize>)> = Vec::new();
         for (i, line) in lines.iter().enumerate() {
             if let Some(n) = line.seq {
-                seqs.entry(n).or_default().push(i);
+                seqs.push((n, i));
             }
             match stmt_of(line) {
                 Some(StmtKind::While { id, .. } | StmtKind::Do { id }) => {
@@ -193,6 +192,7 @@ impl<B> MacroProgram<B> {
                 "close the block with ENDIF",
             ));
         }
+        seqs.sort_unstable();
         Ok(Self {
             number,
             lines,
@@ -249,8 +249,10 @@ impl<B> MacroProgram<B> {
 
     /// The line of block `Nn`; a missing or duplicated number is an error at `span`.
     fn find_seq(&self, n: u32, span: Span, what: &str) -> Result<usize> {
-        match self.seqs.get(&n).map(Vec::as_slice) {
-            None | Some([]) => Err(MacroError::new(
+        let from = self.seqs.partition_point(|&(m, _)| m < n);
+        let to = from + self.seqs[from..].partition_point(|&(m, _)| m == n);
+        match &self.seqs[from..to] {
+            [] => Err(MacroError::new(
                 ErrorKind::SequenceMissing,
                 span,
                 format!(
@@ -259,8 +261,8 @@ impl<B> MacroProgram<B> {
                 ),
                 format!("number the target block N{n}, or correct the target"),
             )),
-            Some([i]) => Ok(*i),
-            Some([a, b, ..]) => Err(MacroError::new(
+            [(_, i)] => Ok(*i),
+            [(_, a), (_, b), ..] => Err(MacroError::new(
                 ErrorKind::DuplicateSequence,
                 span,
                 format!(

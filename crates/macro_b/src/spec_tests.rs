@@ -367,7 +367,9 @@ fn bad_inputs_are_alarms_at_their_place() {
     // a runaway loop ended by the budget, fast
     let t = std::time::Instant::now();
     let e = err("#1 = 1 ;\nWHILE [#1 GT 0] DO1 ;\nG00 X#1 ;\n#1 = #1 + 1 ;\nEND1 ;");
-    assert!(t.elapsed().as_secs_f64() < 1.0, "{:?}", t.elapsed());
+    // under a second in release; a debug build on a loaded machine gets more room
+    let limit = if cfg!(debug_assertions) { 10.0 } else { 1.0 };
+    assert!(t.elapsed().as_secs_f64() < limit, "{:?}", t.elapsed());
     assert_eq!(e.kind, ErrorKind::Budget);
     assert_eq!(e.span.line, 2);
     assert!(e.message.contains("ran 2499999 times"), "{}", e.message);

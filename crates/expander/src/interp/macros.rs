@@ -32,28 +32,18 @@ pub(crate) struct Macros {
     last_loop: Option<(usize, usize)>,
 }
 
-/// The interpreter's state as the system variables see it (§5.7), copied before a
-/// statement or a block's expressions are evaluated.
-struct View {
-    /// The programmed point, work coordinates.
-    work: Pt,
-    /// The programmed point, G54 frame (latsim's machine frame).
-    machine: Pt,
-    motion: f64,
-    feed_mode: f64,
-    units: f64,
-    f: f64,
-    s: f64,
-    t: f64,
-    /// `#3006` stops: (number, message).
-    stops: Vec<(f64, String)>,
+/// The interpreter as the system variables see it (§5.7); `span` is the block being run.
+struct Sys<'a, 'm> {
+    it: &'a mut Interp<'m>,
+    span: Span,
 }
 
-impl System for View {
+impl System for Sys<'_, '_> {
     fn position(&self, kind: Position, axis: Axis) -> Option<f64> {
-        let p = match kind {
-            Position::BlockEnd | Position::Work => self.work,
-            Position::Machine => self.machine,
+        let p: Pt = match kind {
+            Position::BlockEnd | Position::Work => self.it.pos - self.it.shift,
+            // latsim's machine frame is the G54 frame the segments live in
+            Position::Machine => self.it.pos,
         };
         Some(match axis {
             Axis::X => 2.0 * p.r,
@@ -62,22 +52,34 @@ impl System for View {
     }
     fn modal_group(&self, group: u32) -> Option<f64> {
         match group {
-            1 => Some(self.motion),
-            5 => Some(self.feed_mode),
-            6 => Some(self.units),
+            1 => Some(match self.it.motion {
+                MotionMode::Rapid => 0.0,
+                MotionMode::Line => 1.0,
+                MotionMode::Cw => 2.0,
+                MotionMode::Ccw => 3.0,
+                MotionMode::Thread => 32.0,
+                MotionMode::Cycle(t) => f64::from(t) / 10.0,
+            }),
+            5 => Some(if self.it.per_rev { 99.0 } else { 98.0 }),
+            6 => Some(if self.it.inch { 20.0 } else { 21.0 }),
             _ => None,
         }
     }
     fn last_address(&self, letter: char) -> Option<Value> {
         match letter {
-            'F' => Some(Value::num(self.f)),
-            'S' => Some(Value::num(self.s)),
-            'T' => Some(Value::num(self.t)),
+            'F' => Some(Value::num(self.it.feed)),
+            'S' => Some(Value::num(self.it.s_value)),
+            'T' => Some(Value::num(f64::from(self.it.tool * 100 + self.it.offset))),
             _ => None,
         }
     }
     fn stop_message(&mut self, number: f64, message: &str) -> bool {
-        self.stops.push((number, message.to_string()));
+        self.it.warn(
+            self.span,
+            "LS-STOP",
+            format!("stop {number}: {message}"),
+            "#3006 stops the program like M00; the simulation goes on",
+        );
         true
     }
 }
@@ -159,7 +161,7 @@ impl Macros {
         i: usize,
         kind: &StmtKind,
         stmt: &macro_b::Stmt,
-        sys: &mut View,
+        sys: &mut dyn System,
     ) -> Result<Flow, MacroError> {
         let prog = &self.programs[index];
         let after = |line: usize| prog.partner(line).map_or(Flow::Next, |p| Flow::Jump(p + 1));
@@ -206,7 +208,7 @@ impl Macros {
         index: usize,
         i: usize,
         target: &Expr,
-        sys: &mut View,
+        sys: &mut dyn System,
     ) -> Result<Flow, MacroError> {
         let n = self.state.sequence_number(target, "GOTO", sys)?;
         let t = self.programs[index].jump_target(i, n, target.span, "GOTO")?;
@@ -224,7 +226,7 @@ impl Macros {
         w: &Word,
         e: &Expr,
         increment: f64,
-        sys: &mut View,
+        sys: &mut dyn System,
     ) -> Result<Option<(f64, bool)>, MacroError> {
         if INTEGER_ADDRESSES.contains(w.letter) {
             return Ok(self
@@ -246,7 +248,7 @@ impl Macros {
         from: &Block,
         to: &mut Block,
         increment: f64,
-        sys: &mut View,
+        sys: &mut dyn System,
     ) -> Result<(), MacroError> {
         to.words.clear();
         for w in &from.words {
@@ -266,12 +268,44 @@ impl Macros {
         Ok(())
     }
 
+    /// Evaluate block `i` of `sub` into `work`; for a G70–G73 block also the blocks of its
+    /// finishing shape `P`…`Q`, which the cycle reads from the program.
+    fn evaluate_for(
+        &mut self,
+        sub: &Subprogram,
+        work: &mut Subprogram,
+        i: usize,
+        increment: f64,
+        sys: &mut dyn System,
+    ) -> Result<(), MacroError> {
+        if sub.blocks[i].has_macro() {
+            self.evaluate(&sub.blocks[i], &mut work.blocks[i], increment, sys)?;
+        }
+        let b = &work.blocks[i];
+        if !reads_shape(b) {
+            return Ok(());
+        }
+        let seq = |letter| {
+            let n = b.get(letter)?.value as u32;
+            sub.blocks.iter().position(|x| x.seq == Some(n))
+        };
+        let (Some(p), Some(q)) = (seq('P'), seq('Q')) else {
+            return Ok(());
+        };
+        for k in p..=q {
+            if sub.blocks[k].has_macro() {
+                self.evaluate(&sub.blocks[k], &mut work.blocks[k], increment, sys)?;
+            }
+        }
+        Ok(())
+    }
+
     /// The locals a `G65` block passes, its program number and repeat count.
     fn g65(
         &mut self,
         b: &Block,
         increment: f64,
-        sys: &mut View,
+        sys: &mut dyn System,
         notes: &mut Vec<(Span, String)>,
     ) -> Result<(u32, u32, Locals), Diagnostic> {
         let mut args = Vec::new();
@@ -400,39 +434,6 @@ impl Interp<'_> {
         }
     }
 
-    fn view(&self) -> View {
-        View {
-            work: self.pos - self.shift,
-            machine: self.pos,
-            motion: match self.motion {
-                MotionMode::Rapid => 0.0,
-                MotionMode::Line => 1.0,
-                MotionMode::Cw => 2.0,
-                MotionMode::Ccw => 3.0,
-                MotionMode::Thread => 32.0,
-                MotionMode::Cycle(t) => f64::from(t) / 10.0,
-            },
-            feed_mode: if self.per_rev { 99.0 } else { 98.0 },
-            units: if self.inch { 20.0 } else { 21.0 },
-            f: self.feed,
-            s: self.s_value,
-            t: f64::from(self.tool * 100 + self.offset),
-            stops: vec![],
-        }
-    }
-
-    /// The `#3006` stops of a view: events, and the run goes on.
-    fn stops(&mut self, view: View, span: Span) {
-        for (n, message) in view.stops {
-            self.warn(
-                span,
-                "LS-STOP",
-                format!("stop {n}: {message}"),
-                "#3006 stops the program like M00; the simulation goes on",
-            );
-        }
-    }
-
     /// Run block `i` of O program `index`: a macro statement, a `G65` call, or an NC block
     /// with its expressions evaluated. Without custom macro B, just the block.
     pub(super) fn step(
@@ -441,78 +442,59 @@ impl Interp<'_> {
         index: usize,
         i: usize,
     ) -> Result<Flow, Diagnostic> {
-        let sub = &program.programs[index];
-        let Some(m) = self.macros.as_mut() else {
-            return self.block(sub, i);
+        let Some(mut m) = self.macros.take() else {
+            return self.block(&program.programs[index], i);
         };
+        let flow = self.step_with(&mut m, &program.programs[index], index, i);
+        self.macros = Some(m);
+        flow
+    }
+
+    fn step_with(
+        &mut self,
+        m: &mut Macros,
+        sub: &Subprogram,
+        index: usize,
+        i: usize,
+    ) -> Result<Flow, Diagnostic> {
         m.counts[index][i] += 1;
         let b = &sub.blocks[i];
-        let mut view = self.view();
         let increment = self.increment();
-        let m = self.macros.as_mut().expect("macro B is on");
+        let span = b.span;
         if let Some(stmt) = &b.stmt {
-            let flow = m.statement(index, i, &stmt.kind, stmt, &mut view);
-            self.stops(view, b.span);
-            return flow.map_err(diagnostic);
+            let mut sys = Sys { it: self, span };
+            return m
+                .statement(index, i, &stmt.kind, stmt, &mut sys)
+                .map_err(diagnostic);
         }
         if is_g65(b) {
             let mut notes = vec![];
-            let (number, times, locals) = m.g65(b, increment, &mut view, &mut notes)?;
-            for (span, note) in notes {
-                self.warn(span, "LS-G65-ARG", note, "write the argument with a decimal point to pass it as written");
+            let (number, times, locals) =
+                m.g65(b, increment, &mut Sys { it: self, span }, &mut notes)?;
+            for (at, note) in notes {
+                self.warn(
+                    at,
+                    "LS-G65-ARG",
+                    note,
+                    "write the argument with a decimal point to pass it as written",
+                );
             }
             return Ok(Flow::Call {
                 number,
                 times,
-                span: b.span,
+                span,
                 locals: Some(Box::new(locals)),
             });
         }
         let Some(mut work) = m.work[index].take() else {
             return self.block(sub, i);
         };
-        let flow = self.evaluate(sub, &mut work, i, &mut view);
-        self.stops(view, b.span);
-        let flow = flow.and_then(|()| self.block(&work, i));
-        if let Some(m) = self.macros.as_mut() {
-            m.work[index] = Some(work);
-        }
+        let flow = m
+            .evaluate_for(sub, &mut work, i, increment, &mut Sys { it: self, span })
+            .map_err(diagnostic)
+            .and_then(|()| self.block(&work, i));
+        m.work[index] = Some(work);
         flow
-    }
-
-    /// Evaluate block `i` of `sub` into `work`; for a G70–G73 block also the blocks of its
-    /// finishing shape `P`…`Q`, which the cycle reads from the program.
-    fn evaluate(
-        &mut self,
-        sub: &Subprogram,
-        work: &mut Subprogram,
-        i: usize,
-        view: &mut View,
-    ) -> Result<(), Diagnostic> {
-        let increment = self.increment();
-        let m = self.macros.as_mut().expect("macro B is on");
-        if sub.blocks[i].has_macro() {
-            m.evaluate(&sub.blocks[i], &mut work.blocks[i], increment, view)
-                .map_err(diagnostic)?;
-        }
-        let b = &work.blocks[i];
-        if !reads_shape(b) {
-            return Ok(());
-        }
-        let seq = |letter| {
-            let n = b.get(letter)?.value as u32;
-            sub.blocks.iter().position(|x| x.seq == Some(n))
-        };
-        let (Some(p), Some(q)) = (seq('P'), seq('Q')) else {
-            return Ok(());
-        };
-        for k in p..=q {
-            if sub.blocks[k].has_macro() {
-                m.evaluate(&sub.blocks[k], &mut work.blocks[k], increment, view)
-                    .map_err(diagnostic)?;
-            }
-        }
-        Ok(())
     }
 
     /// Enter a `G65` level (its locals) for a call; returns whether one was entered.
