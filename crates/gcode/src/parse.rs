@@ -669,7 +669,12 @@ impl<'a> Reader<'a> {
                 "put the macro statement on a block of its own",
             ));
         }
-        if letter != 'G' && letter != 'M' {
+        // G65 assignment II repeats I J K (spec/dialects.md §5.5)
+        let g65 = || {
+            matches!(letter, 'I' | 'J' | 'K')
+                && self.words.iter().any(|w| w.letter == 'G' && w.value == 65.0)
+        };
+        if letter != 'G' && letter != 'M' && !g65() {
             if let Some(first) = self.words.iter().find(|w| w.letter == letter) {
                 return Err(ParseError::new(
                     word.span,

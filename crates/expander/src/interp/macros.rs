@@ -324,6 +324,12 @@ impl Macros {
             };
             let whole = |what: &str, max: f64| match value.get() {
                 Some(v) if v.fract() == 0.0 && (0.0..=max).contains(&v) => Ok(v as u32),
+                None => Err(alarm(
+                    w.span,
+                    "LS-VACANT",
+                    format!("G65 {what}: the variable is vacant"),
+                    "give the variable a value before this block",
+                )),
                 _ => Err(alarm(
                     w.span,
                     "PS078",
