@@ -42,7 +42,10 @@ fn clean(src: &str) -> Toolpath {
 /// The reported final value of a variable; one the run neither read nor set is not
 /// reported, and vacant.
 fn var(tp: &Toolpath, name: &str) -> Option<f64> {
-    tp.variables.iter().find(|(n, _)| n == name).and_then(|v| v.1)
+    tp.variables
+        .iter()
+        .find(|(n, _)| n == name)
+        .and_then(|v| v.1)
 }
 
 /// The moves as (z0, x0, z1, x1, line), X as a diameter.
@@ -227,27 +230,27 @@ M30 ;
 #[test]
 fn precedence_table_rows_and_functions() {
     let cases: [(&str, f64); 22] = [
-        ("[2 + 3] * 4", 20.0),    // level 1: brackets first
-        ("-2 * 3", -6.0),         // level 2: unary minus before *
-        ("SQRT[16] * 2", 8.0),    // level 2: functions before *
-        ("2 + 3 * 4", 14.0),      // level 3 over level 4
-        ("10 - 6 / 2", 7.0),      // / over -
-        ("7 AND 3 + 1", 4.0),     // AND (3) over + (4): [7 AND 3] + 1
-        ("1 OR 2 * 2", 5.0),      // * (3) over OR (4): 1 OR 4
-        ("6 XOR 3", 5.0),         // bitwise on integers
-        ("1 + 1 EQ 2", 1.0),      // level 5 last: [1 + 1] EQ 2
-        ("[1 LT 5]", 1.0),        // a comparison as a value
-        ("8 / 4 / 2", 1.0),       // equal levels left to right
-        ("10 - 3 - 2", 5.0),      // left to right
-        ("FIX[1.2]", 1.0),        // §5.4
-        ("FIX[-1.2]", -1.0),      //
-        ("FUP[1.2]", 2.0),        //
-        ("FUP[-1.2]", -2.0),      // away from zero, not ceil
-        ("ROUND[1.714]", 2.0),    //
-        ("ROUND[3.54]", 4.0),     //
-        ("ROUND[-2.5]", -3.0),    // halves away from zero
-        ("SIN[30]", 0.5),         // degrees
-        ("ATAN[1,-1]", 135.0),    // 0 ≤ θ < 360
+        ("[2 + 3] * 4", 20.0), // level 1: brackets first
+        ("-2 * 3", -6.0),      // level 2: unary minus before *
+        ("SQRT[16] * 2", 8.0), // level 2: functions before *
+        ("2 + 3 * 4", 14.0),   // level 3 over level 4
+        ("10 - 6 / 2", 7.0),   // / over -
+        ("7 AND 3 + 1", 4.0),  // AND (3) over + (4): [7 AND 3] + 1
+        ("1 OR 2 * 2", 5.0),   // * (3) over OR (4): 1 OR 4
+        ("6 XOR 3", 5.0),      // bitwise on integers
+        ("1 + 1 EQ 2", 1.0),   // level 5 last: [1 + 1] EQ 2
+        ("[1 LT 5]", 1.0),     // a comparison as a value
+        ("8 / 4 / 2", 1.0),    // equal levels left to right
+        ("10 - 3 - 2", 5.0),   // left to right
+        ("FIX[1.2]", 1.0),     // §5.4
+        ("FIX[-1.2]", -1.0),   //
+        ("FUP[1.2]", 2.0),     //
+        ("FUP[-1.2]", -2.0),   // away from zero, not ceil
+        ("ROUND[1.714]", 2.0), //
+        ("ROUND[3.54]", 4.0),  //
+        ("ROUND[-2.5]", -3.0), // halves away from zero
+        ("SIN[30]", 0.5),      // degrees
+        ("ATAN[1,-1]", 135.0), // 0 ≤ θ < 360
         ("ACOS[-1] + ASIN[1]", 270.0),
     ];
     let mut src = String::new();
@@ -655,7 +658,11 @@ fn runaway_loop_ends_by_the_block_budget() {
         "more than 10000000 blocks executed",
         "the loop at line 3 ran",
     ] {
-        assert!(out.stderr.contains(n), "{n:?} missing from:\n{}", out.stderr);
+        assert!(
+            out.stderr.contains(n),
+            "{n:?} missing from:\n{}",
+            out.stderr
+        );
     }
     let limit = if cfg!(debug_assertions) { 60.0 } else { 1.0 };
     assert!(secs < limit, "{secs} s");

@@ -7,6 +7,6 @@
 mod parse;
 mod program;
 
+pub use macro_b::Span;
 pub use parse::{parse, parse_with, ParseError, ReadOptions};
 pub use program::{Block, Note, Program, Subprogram, Word};
-pub use macro_b::Span;

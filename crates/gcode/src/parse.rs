@@ -75,10 +75,10 @@ pub fn parse_with(source: &str, options: ReadOptions) -> Result<Program, ParseEr
 }
 
 /// Macro B words that are letters only; any other run of two letters after `;` is prose.
-const KEYWORDS: [&str; 32] = [
-    "IF", "GOTO", "WHILE", "DO", "END", "THEN", "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR",
-    "XOR", "MOD", "SIN", "COS", "TAN", "ATAN", "ASIN", "ACOS", "SQRT", "ABS", "ROUND", "FIX",
-    "FUP", "LN", "EXP", "BIN", "BCD", "POPEN",
+const KEYWORDS: [&str; 37] = [
+    "IF", "GOTO", "WHILE", "WH", "DO", "END", "THEN", "ELSE", "ENDIF", "EQ", "NE", "GT", "GE",
+    "LT", "LE", "AND", "OR", "XOR", "MOD", "SIN", "COS", "TAN", "ATAN", "ASIN", "ACOS", "SQRT",
+    "ABS", "ROUND", "FIX", "FUP", "LN", "EXP", "POW", "ADP", "BIN", "BCD", "POPEN",
 ];
 
 /// Whether the text after a `;` is prose (a comment in another control's style) rather
@@ -624,7 +624,10 @@ impl<'a> Reader<'a> {
         let at = self.offset();
         let rest = self.block_text(at);
         let t = rest.trim_start_matches([' ', '\t']);
-        let t = t.strip_prefix(['-', '+']).unwrap_or(t).trim_start_matches([' ', '\t']);
+        let t = t
+            .strip_prefix(['-', '+'])
+            .unwrap_or(t)
+            .trim_start_matches([' ', '\t']);
         if t.starts_with(['#', '[']) {
             return true;
         }
@@ -634,7 +637,9 @@ impl<'a> Reader<'a> {
             .map(|c| c.to_ascii_uppercase())
             .collect();
         Func::from_name(&name).is_some()
-            && t[name.len()..].trim_start_matches([' ', '\t']).starts_with('[')
+            && t[name.len()..]
+                .trim_start_matches([' ', '\t'])
+                .starts_with('[')
     }
 
     /// An address whose value is a macro expression (`X#1`, `Z[#2-0.5]`, `G#10`).
@@ -672,7 +677,10 @@ impl<'a> Reader<'a> {
         // G65 assignment II repeats I J K (spec/dialects.md §5.5)
         let g65 = || {
             matches!(letter, 'I' | 'J' | 'K')
-                && self.words.iter().any(|w| w.letter == 'G' && w.value == 65.0)
+                && self
+                    .words
+                    .iter()
+                    .any(|w| w.letter == 'G' && w.value == 65.0)
         };
         if letter != 'G' && letter != 'M' && !g65() {
             if let Some(first) = self.words.iter().find(|w| w.letter == letter) {
@@ -1173,7 +1181,10 @@ mod tests {
         let s = b[0].stmt.as_ref().unwrap();
         assert_eq!((s.span.line, s.span.column), (1, 4));
         assert!(b[0].words.is_empty());
-        assert!(matches!(b[1].stmt.as_ref().unwrap().kind, macro_b::StmtKind::While { id: 1, .. }));
+        assert!(matches!(
+            b[1].stmt.as_ref().unwrap().kind,
+            macro_b::StmtKind::While { id: 1, .. }
+        ));
         let w = &b[2].words;
         assert_eq!(w.len(), 4);
         assert_eq!(w[1].expr.as_ref().unwrap().to_string(), "#1");
@@ -1181,8 +1192,14 @@ mod tests {
         let z = w[2].expr.as_ref().unwrap();
         assert_eq!(z.to_string(), "[#2-0.5]");
         assert_eq!((w[2].span.column, z.span.column), (9, 10));
-        assert_eq!((w[3].letter, w[3].value, w[3].expr.is_none()), ('F', 0.2, true));
-        assert!(matches!(b[3].stmt.as_ref().unwrap().kind, macro_b::StmtKind::End { id: 1 }));
+        assert_eq!(
+            (w[3].letter, w[3].value, w[3].expr.is_none()),
+            ('F', 0.2, true)
+        );
+        assert!(matches!(
+            b[3].stmt.as_ref().unwrap().kind,
+            macro_b::StmtKind::End { id: 1 }
+        ));
         let macro_b::StmtKind::Assign { comment, .. } = &b[4].stmt.as_ref().unwrap().kind else {
             panic!("an assignment")
         };

@@ -113,9 +113,10 @@ fn diagnostic(e: MacroError) -> Diagnostic {
     alarm(e.span, code(e.kind), e.message, e.help)
 }
 
-/// Letters whose values are whole numbers (codes, counts, program and sequence numbers):
-/// a value put there is rounded half away from zero (`M#1` with #1 = 3.5 is M04).
-const INTEGER_ADDRESSES: &str = "MSTPQLHD";
+/// Letters whose values are whole numbers (codes, speeds, tools, counts, program and
+/// sequence numbers, increments): a value put there is rounded half away from zero (`M#1`
+/// with #1 = 3.5 is M04, spec §5.2).
+const INTEGER_ADDRESSES: &str = "MSTPQL";
 
 impl Macros {
     /// Prepare the programs of a file: check their `DO`/`END` structure and index them.
@@ -138,7 +139,13 @@ impl Macros {
             .iter()
             .map(|p| p.blocks.iter().any(Block::has_macro).then(|| p.clone()))
             .collect();
-        let zeros = || program.programs.iter().map(|p| vec![0; p.blocks.len()]).collect();
+        let zeros = || {
+            program
+                .programs
+                .iter()
+                .map(|p| vec![0; p.blocks.len()])
+                .collect()
+        };
         Ok(Self {
             state: MacroState::new(options),
             programs,
@@ -229,17 +236,17 @@ impl Macros {
         sys: &mut dyn System,
     ) -> Result<Option<(f64, bool)>, MacroError> {
         if INTEGER_ADDRESSES.contains(w.letter) {
-            return Ok(self
-                .state
-                .integer_value(e, sys)?
-                .map(|v| (v as f64, false)));
+            return Ok(self.state.integer_value(e, sys)?.map(|v| (v as f64, false)));
         }
         let increment = match w.letter {
             'G' => 0.1,
             'F' => 0.0001,
             _ => increment,
         };
-        Ok(self.state.address_value(e, increment, sys)?.map(|v| (v, true)))
+        Ok(self
+            .state
+            .address_value(e, increment, sys)?
+            .map(|v| (v, true)))
     }
 
     /// Evaluate the expression words of `from` into `to`.
@@ -525,7 +532,11 @@ impl Interp<'_> {
     pub(super) fn budget_alarm(&self, span: Span, program: &Program) -> Diagnostic {
         let max = self.opts.max_blocks;
         let help = "the loop's exit condition never holds (or M98 repeats and M99 jumps never end); correct it, or raise --max-steps if the program really runs this long";
-        match self.macros.as_ref().and_then(|m| m.last_loop.map(|l| (m, l))) {
+        match self
+            .macros
+            .as_ref()
+            .and_then(|m| m.last_loop.map(|l| (m, l)))
+        {
             Some((m, (p, l))) => {
                 let head = &program.programs[p].blocks[l];
                 alarm(

@@ -103,7 +103,9 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
     }
     if let Some(main) = program.main() {
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
-        let mut result = it.prepare_macros(program).and_then(|()| it.run(program, 0, 0, 0));
+        let mut result = it
+            .prepare_macros(program)
+            .and_then(|()| it.run(program, 0, 0, 0));
         it.flush_compensation();
         if result.is_ok() && it.retained.g75_1.is_some() {
             let span = program

@@ -88,6 +88,7 @@ pub(crate) fn groove_bar() -> Report {
         tolerance_mm: 0.01,
         snapshots: vec![],
         grooves: vec![],
+        ..Report::default()
     }
 }
 
@@ -176,6 +177,7 @@ pub(crate) fn o0008_groove() -> Report {
             line: 2,
             ring: trapezoid.to_vec(),
         }],
+        ..Report::default()
     }
 }
 
