@@ -683,3 +683,116 @@ fn runaway_loop_ends_by_the_block_budget() {
         out.stderr
     );
 }
+
+/// A small deterministic generator (no dependency; the same programs on every run).
+struct Lcg(u64);
+
+impl Lcg {
+    fn next(&mut self) -> u64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        self.0 >> 33
+    }
+    fn pick<'a>(&mut self, items: &[&'a str]) -> &'a str {
+        items[(self.next() as usize) % items.len()]
+    }
+}
+
+const STATEMENTS: &[&str] = &[
+    "#1 = #1 + 1",
+    "#2 = #1 / #3",
+    "#3 = [#1 - 2] * SIN[#2]",
+    "#[#1] = 5",
+    "#100 = #500 MOD 3",
+    "#0 = 1",
+    "#3000 = 7 (STOP)",
+    "#3006 = 1 (MSG)",
+    "#4 = #5001 + #5002 + #4001",
+    "#5 = SQRT[#1 - 3]",
+    "#6 = ATAN[#1, #2]",
+    "#7 = ROUND[#1 * 1.5] AND 3",
+    "IF [#1 GT 3] GOTO 10",
+    "IF [#1 LT 100] GOTO 20",
+    "IF [#2 EQ #0] THEN #2 = 1",
+    "IF [#1] THEN G01 X#1",
+    "WHILE [#1 LT 5] DO1",
+    "WHILE [#2 LE #1] DO2",
+    "DO3",
+    "END1",
+    "END2",
+    "END3",
+    "GOTO #1",
+    "GOTO 20",
+    "N10",
+    "N20",
+    "G65 P9001 A#1 B2. I1. J2. K3. I4.",
+    "G65 P9001 L3 X5",
+    "M98 P9001",
+    "M99",
+    "M30",
+    "O9001",
+    "G00 X#1 Z[#2 + 1.]",
+    "G01 X[50. - #1 * 2] Z-#3 F0.2",
+    "G#1 U#2 W-[#3]",
+    "G71 U1. R0.5",
+    "G71 P10 Q20 U0.2 W0.1 F0.2",
+    "G70 P10 Q20",
+    "T#1 M#2 S#3",
+    "[",
+    "#",
+    "X#",
+];
+
+fn random_macro_program(rng: &mut Lcg) -> String {
+    let mut s = String::new();
+    for _ in 0..(rng.next() % 30) {
+        s += rng.pick(STATEMENTS);
+        s += if rng.next().is_multiple_of(5) {
+            " ;"
+        } else {
+            "\n"
+        };
+    }
+    s
+}
+
+/// Random macro programs (loops, jumps, calls, alarms, broken syntax) go through the reader
+/// and the interpreter under FANUC and Haas rules without panic, each run ending with at
+/// most one alarm (the fuzz target `interpret_macro` does the same at scale).
+#[test]
+fn random_macro_programs_never_panic() {
+    let mut rng = Lcg(0x3ac0);
+    let (mut read, mut ran) = (0, 0);
+    for _ in 0..5000 {
+        let text = random_macro_program(&mut rng);
+        for (control, options) in [
+            (Control::FanucA, macro_b::Options::fanuc()),
+            (Control::Haas, macro_b::Options::haas()),
+        ] {
+            let Ok(program) = gcode::parse_with(
+                &text,
+                gcode::ReadOptions {
+                    macros: Some(options.dialect),
+                    ..Default::default()
+                },
+            ) else {
+                continue;
+            };
+            read += 1;
+            let opts = expander::Options {
+                max_segments: 20_000,
+                max_blocks: 20_000,
+                macros: Some(options),
+                ..Default::default()
+            };
+            let tp = expander::expand(&program, &Machine::for_control(control), &opts);
+            assert!(tp.alarms.len() <= 1, "{text}: {:?}", tp.alarms);
+            ran += usize::from(tp.blocks > 0);
+        }
+    }
+    eprintln!("{read} programs read, {ran} ran");
+    // most are refused when read or prepared (unbalanced DO/END); enough run to matter
+    assert!(read > 3000 && ran > 800, "{read} read, {ran} ran");
+}
