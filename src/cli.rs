@@ -39,6 +39,10 @@ pub(crate) struct ProgramArgs {
     /// the FANUC and Haas controls, off for gsk980 (spec/dialects.md §0).
     #[arg(long = "macro", value_enum, value_name = "ON|OFF")]
     pub(crate) macro_b: Option<Switch>,
+    /// Common variables to start with (custom macro B, spec/dialects.md §5.1): TOML such as
+    /// `500 = 2.0` (#100–#199 and #500–#999; the rest start vacant).
+    #[arg(long, value_name = "F")]
+    pub(crate) vars: Option<PathBuf>,
     /// The block budget: a run that executes more blocks (macro statements included) ends
     /// with an alarm naming the loop.
     #[arg(long, value_name = "N", default_value_t = 10_000_000)]

@@ -796,3 +796,41 @@ fn random_macro_programs_never_panic() {
     // most are refused when read or prepared (unbalanced DO/END); enough run to matter
     assert!(read > 3000 && ran > 800, "{read} read, {ran} ran");
 }
+
+/// `--vars FILE` starts common variables with values (spec §5.1): a dispatcher reads #500
+/// from it; a variable that is not common is refused before anything runs.
+#[test]
+fn vars_file_sets_common_variables() {
+    let (dir, prog) = temp_program(
+        "pick.nc",
+        b"IF [#500 EQ 3] GOTO 30 ;\n#3000 = 1 (NOT 3) ;\nN30 G00 X[#500 * 10.] Z2. ;\nM30 ;\n",
+    );
+    let vars = dir.path().join("vars.toml");
+    std::fs::write(&vars, "500 = 3.0\n\"#501\" = 2\n").unwrap();
+    let out = latsim(&[
+        "expand",
+        prog.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--vars",
+        vars.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(out.stdout.contains("3,1,rapid"), "{}", out.stdout);
+    assert!(out.stdout.contains(",2,30,"), "{}", out.stdout);
+    std::fs::write(&vars, "1 = 3.0\n").unwrap();
+    let out = latsim(&[
+        "check",
+        prog.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--vars",
+        vars.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(
+        out.stderr.contains("#1 is not a common variable"),
+        "{}",
+        out.stderr
+    );
+}

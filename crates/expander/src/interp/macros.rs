@@ -397,7 +397,14 @@ impl Interp<'_> {
         let Some(options) = self.opts.macros else {
             return Ok(());
         };
-        let macros = Macros::new(program, options).map_err(diagnostic)?;
+        let mut macros = Macros::new(program, options).map_err(diagnostic)?;
+        for &(n, v) in &self.opts.vars {
+            macros
+                .state
+                .vars
+                .load(n, v, Span::default())
+                .map_err(diagnostic)?;
+        }
         for p in &macros.programs {
             for w in p.warnings() {
                 self.warn(w.span, "LS-MACRO", w.message.clone(), "");

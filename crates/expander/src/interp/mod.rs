@@ -49,6 +49,8 @@ pub struct Options {
     /// Custom macro B with these rules (`--macro`); `None`: off. The program must have
     /// been read with macro B on too.
     pub macros: Option<macro_b::Options>,
+    /// Custom macro B: common variables set before the run (`--vars`).
+    pub vars: Vec<(u32, f64)>,
 }
 
 impl Default for Options {
@@ -65,6 +67,7 @@ impl Default for Options {
             blades: BTreeMap::new(),
             start_tool: None,
             macros: None,
+            vars: vec![],
         }
     }
 }
