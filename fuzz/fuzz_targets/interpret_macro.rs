@@ -32,7 +32,6 @@ fuzz_target!(|data: &[u8]| {
             macros: Some(options),
             ..Default::default()
         };
-        let tp = expander::expand(&program, &expander::Machine::for_control(control), &opts);
-        assert!(tp.alarms.len() <= 1, "an alarm stops the run");
+        let _ = expander::expand(&program, &expander::Machine::for_control(control), &opts);
     }
 });
