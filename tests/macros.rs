@@ -834,3 +834,28 @@ fn vars_file_sets_common_variables() {
         out.stderr
     );
 }
+
+/// Haas `IF [cond] THEN <NC block>` (§5.6): the block runs when the condition holds; on
+/// FANUC the form is refused when read.
+#[test]
+fn haas_if_then_nc_block() {
+    let tp = expand_with(
+        "#1 = 1 ;\nG00 X40. Z10. ;\nIF [#1 EQ 1] THEN G00 X#24 Z5. ;\nIF [#1 EQ 2] THEN G00 X20. Z2. ;\nM30 ;\n",
+        Control::Haas,
+        macro_b::Options::haas(),
+    );
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let m = moves(&tp);
+    // the first THEN ran (X#24 vacant: only Z), the second did not
+    assert_eq!(m.len(), 2, "{m:?}");
+    assert_eq!(m[1], (10.0, 40.0, 5.0, 40.0, 3));
+    let e = gcode::parse_with(
+        "IF [#1 EQ 1] THEN G00 X20. ;\n",
+        gcode::ReadOptions {
+            macros: Some(macro_b::Dialect::Fanuc),
+            ..Default::default()
+        },
+    )
+    .unwrap_err();
+    assert!(e.message.contains("Haas"), "{}", e.message);
+}

@@ -613,7 +613,12 @@ impl<'a> Reader<'a> {
             _ => macro_b::Options::fanuc(),
         };
         let stmt = macro_b::parse_stmt(text, start, &options)?;
-        self.consume_to(start.offset + text.len());
+        // Haas `IF [cond] THEN <NC block>`: the block's words are read as words
+        let end = match &stmt.kind {
+            macro_b::StmtKind::IfThenBlock { text_span, .. } => text_span.offset,
+            _ => start.offset + text.len(),
+        };
+        self.consume_to(end);
         self.stmt = Some(stmt);
         Ok(())
     }
@@ -667,7 +672,11 @@ impl<'a> Reader<'a> {
     /// Add a word to the block: one of each address, except G and M.
     fn push_word(&mut self, word: Word) -> Result<(), ParseError> {
         let letter = word.letter;
-        if self.stmt.is_some() {
+        let then_block = self
+            .stmt
+            .as_ref()
+            .is_some_and(|s| matches!(s.kind, macro_b::StmtKind::IfThenBlock { .. }));
+        if self.stmt.is_some() && !then_block {
             return Err(ParseError::new(
                 word.span,
                 "an NC word after a macro statement",

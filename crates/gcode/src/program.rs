@@ -45,7 +45,8 @@ pub struct Block {
     /// The whole block's text span (first to last significant character).
     pub span: Span,
     /// A custom macro B statement (`#1 = 2`, `IF […] GOTO 5`, `WHILE […] DO1`, `END1`,
-    /// `GOTO 5`): the block then has no words.
+    /// `GOTO 5`): the block then has no words, except Haas `IF [cond] THEN <NC block>`,
+    /// whose NC block's words are the block's words.
     pub stmt: Option<macro_b::Stmt>,
 }
 

@@ -161,7 +161,8 @@ impl Macros {
         self.iterations[index][head] += 1;
     }
 
-    /// Run a macro statement: where the block loop goes next.
+    /// Run a macro statement: where the block loop goes next; `None` when the block's NC
+    /// words run now (Haas `IF [cond] THEN <NC block>` whose condition held).
     fn statement(
         &mut self,
         index: usize,
@@ -169,10 +170,10 @@ impl Macros {
         kind: &StmtKind,
         stmt: &macro_b::Stmt,
         sys: &mut dyn System,
-    ) -> Result<Flow, MacroError> {
+    ) -> Result<Option<Flow>, MacroError> {
         let prog = &self.programs[index];
         let after = |line: usize| prog.partner(line).map_or(Flow::Next, |p| Flow::Jump(p + 1));
-        Ok(match kind {
+        Ok(Some(match kind {
             StmtKind::Assign { .. } | StmtKind::IfThen { .. } => {
                 self.state.execute(stmt, sys)?;
                 Flow::Next
@@ -199,15 +200,13 @@ impl Macros {
                 self.back_jump(index, head);
                 Flow::Jump(head)
             }
-            StmtKind::IfThenBlock { text_span, .. } => {
-                return Err(MacroError::new(
-                    ErrorKind::Unsupported,
-                    *text_span,
-                    "IF [ … ] THEN with an NC block (Haas) is not run yet",
-                    "write it as IF [ … ] GOTO n around the block",
-                ))
+            StmtKind::IfThenBlock { cond, .. } => {
+                if self.state.condition(cond, sys)? {
+                    return Ok(None);
+                }
+                Flow::Next
             }
-        })
+        }))
     }
 
     fn goto(
@@ -483,9 +482,12 @@ impl Interp<'_> {
         let span = b.span;
         if let Some(stmt) = &b.stmt {
             let mut sys = Sys { it: self, span };
-            return m
+            if let Some(flow) = m
                 .statement(index, i, &stmt.kind, stmt, &mut sys)
-                .map_err(diagnostic);
+                .map_err(diagnostic)?
+            {
+                return Ok(flow);
+            }
         }
         if is_g65(b) {
             let mut notes = vec![];
