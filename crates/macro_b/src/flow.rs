@@ -1075,7 +1075,9 @@ mod tests {
             "{}",
             e.message
         );
-        assert!(took.as_secs_f64() < 1.0, "{took:?}");
+        // under a second in release; a debug build on a loaded machine gets more room
+        let limit = if cfg!(debug_assertions) { 10.0 } else { 1.0 };
+        assert!(took.as_secs_f64() < limit, "{took:?}");
         // GOTO loops and DO without WHILE too
         let e = run_one("!A\nN1 #1 = 1\nGOTO 1").unwrap_err();
         assert_eq!(e.kind, ErrorKind::Budget);
