@@ -2,9 +2,9 @@
 //! statements (`#i = …`, `IF`, `GOTO`, `WHILE`/`DO`/`END`) run here as blocks of the block
 //! loop, so every executed block keeps its source line; an NC block's expression words are
 //! evaluated into a working copy of its program just before it runs (a vacant value drops
-//! the address, §5.2), together with the finishing shape a G70–G73 block reads; `G65`
-//! becomes a call with a new local level; the system variables read the interpreter's
-//! state. At the end the run's variables and the lines run more than once go into the
+//! the address, §5.2), together with the finishing shape a G70–G73 block reads (and a Haas
+//! `IF [cond] THEN <NC block>` runs its words when the condition holds); `G65` becomes a
+//! call with a new local level; the system variables read the interpreter's state. At the end the run's variables and the lines run more than once go into the
 //! toolpath.
 
 use super::flow::Flow;
