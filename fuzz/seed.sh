@@ -2,7 +2,7 @@
 # Fills fuzz/corpus/<target>/ with seeds from assets/ (programs, tool tables, profiles).
 set -euo pipefail
 cd "$(dirname "$0")"
-for t in read interpret run; do
+for t in read interpret interpret_macro run; do
   mkdir -p corpus/$t
   cp ../assets/programs/*.nc corpus/$t/ 2>/dev/null || true
   find ../assets/corpus -name '*.nc' -exec cp {} corpus/$t/ \; 2>/dev/null || true

@@ -35,6 +35,18 @@ pub(crate) struct ProgramArgs {
     /// cycle forms (spec/dialects.md §0). Wins over the machine profile's `control` key.
     #[arg(long, value_enum, value_name = "CONTROL")]
     pub(crate) control: Option<ControlArg>,
+    /// Custom macro B (`#` variables, expressions, IF/GOTO/WHILE, G65): on by default for
+    /// the FANUC and Haas controls, off for gsk980 (spec/dialects.md §0).
+    #[arg(long = "macro", value_enum, value_name = "ON|OFF")]
+    pub(crate) macro_b: Option<Switch>,
+    /// Common variables to start with (custom macro B, spec/dialects.md §5.1): TOML such as
+    /// `500 = 2.0` (#100–#199 and #500–#999; the rest start vacant).
+    #[arg(long, value_name = "F")]
+    pub(crate) vars: Option<PathBuf>,
+    /// The block budget: a run that executes more blocks (macro statements included) ends
+    /// with an alarm naming the loop.
+    #[arg(long, value_name = "N", default_value_t = 10_000_000)]
+    pub(crate) max_steps: usize,
     /// Least input increment, overriding the machine profile.
     #[arg(long, value_enum, value_name = "SYSTEM")]
     pub(crate) increment: Option<IncrementArg>,
@@ -93,6 +105,31 @@ impl ControlArg {
             Self::FanucC => expander::Control::FanucC,
             Self::Haas => expander::Control::Haas,
         }
+    }
+}
+
+/// An on/off switch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum Switch {
+    /// on
+    On,
+    /// off
+    Off,
+}
+
+impl ProgramArgs {
+    /// Custom macro B's rules for this control, or `None` when it is off: `--macro`, else
+    /// on for FANUC and Haas and off for GSK.
+    pub(crate) fn macros(&self, control: expander::Control) -> Option<macro_b::Dialect> {
+        let on = match self.macro_b {
+            Some(s) => s == Switch::On,
+            None => control != expander::Control::Gsk980,
+        };
+        on.then_some(if control == expander::Control::Haas {
+            macro_b::Dialect::Haas
+        } else {
+            macro_b::Dialect::Fanuc
+        })
     }
 }
 

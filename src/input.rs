@@ -99,6 +99,41 @@ fn load_machine(args: &ProgramArgs) -> Result<Machine, ()> {
     Ok(machine)
 }
 
+/// `--vars FILE`: the common variables a run starts with, `"500" = 2.0` (or `500 = 2`).
+fn load_vars(path: &Path) -> Result<Vec<(u32, f64)>, ()> {
+    let text = read_text(path, "variables file")?;
+    let fail = |message: String| {
+        diag::print_plain(
+            &format!("{}: {message}", path.display()),
+            "write one common variable a line, e.g. 500 = 2.0 (#100–#199 and #500–#999)",
+        );
+    };
+    let table: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| fail(e.to_string()))?;
+    let mut check = macro_b::Variables::new();
+    let mut vars = Vec::with_capacity(table.len());
+    for (key, value) in &table {
+        let v = match value {
+            toml::Value::Float(v) => *v,
+            toml::Value::Integer(v) => *v as f64,
+            _ => {
+                fail(format!("#{key}: the value is not a number"));
+                return Err(());
+            }
+        };
+        let n: u32 = key
+            .trim_start_matches('#')
+            .parse()
+            .map_err(|_| fail(format!("'{key}' is not a variable number")))?;
+        check
+            .load(n, v, gcode::Span::default())
+            .map_err(|e| fail(e.message))?;
+        vars.push((n, v));
+    }
+    Ok(vars)
+}
+
 /// Read, parse and expand the program. Parse errors and an empty program are `Err`.
 pub(crate) fn load_program(
     args: &ProgramArgs,
@@ -112,8 +147,21 @@ pub(crate) fn load_program(
         name: path.display().to_string(),
         text,
     };
+    let macros = args.macros(machine.control);
+    let vars = match &args.vars {
+        Some(path) if macros.is_some() => load_vars(path)?,
+        Some(_) => {
+            diag::print_plain(
+                "--vars sets macro variables, and custom macro B is off",
+                "run with --macro on, or a FANUC or Haas --control",
+            );
+            return Err(());
+        }
+        None => vec![],
+    };
     let read = gcode::ReadOptions {
         decimal_comma: args.decimal_comma,
+        macros,
     };
     let program = gcode::parse_with(&source.text, read).map_err(|e| {
         diag::print_at(
@@ -155,6 +203,16 @@ pub(crate) fn load_program(
             .clone()
             .map(|l| expander::LibraryRef(l as Arc<dyn expander::Library>)),
         start_tool: start_tool.or_else(|| tools.numbers().first().copied()),
+        max_blocks: args.max_steps,
+        vars,
+        macros: macros.map(|d| {
+            let mut o = match d {
+                macro_b::Dialect::Haas => macro_b::Options::haas(),
+                macro_b::Dialect::Fanuc => macro_b::Options::fanuc(),
+            };
+            o.limits.max_blocks = args.max_steps as u64;
+            o
+        }),
         ..Options::default()
     };
     let toolpath = expander::expand(&program, &machine, &opts);

@@ -171,6 +171,8 @@ pub(crate) fn build(
                 }
             })
             .collect(),
+        variables: tp.variables.clone(),
+        line_counts: tp.line_counts.clone(),
         ..Report::default()
     }
 }

@@ -6,7 +6,7 @@
 //! ```
 mod parse;
 mod program;
-mod span;
+
+pub use macro_b::Span;
 pub use parse::{parse, parse_with, ParseError, ReadOptions};
 pub use program::{Block, Note, Program, Subprogram, Word};
-pub use span::Span;

@@ -12,6 +12,7 @@
 //! the way the author meant it — each with a note the report shows.
 
 use crate::{Block, Note, Program, Span, Subprogram, Word};
+use macro_b::{Dialect, Func, MacroError, Stmt};
 
 /// A reading error: where, what, and what to change.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -48,7 +49,20 @@ const NUMBER_HELP: &str = "a number has at most 9 digits before the point and 20
 pub struct ReadOptions {
     /// Read `F0,2` as `F0.2` (German-style posts); otherwise a decimal comma is an error.
     pub decimal_comma: bool,
+    /// Custom macro B (spec/dialects.md §5) with this control's rules: `#` variables,
+    /// `[ ]` expressions as word values and macro statements. `None`: a `#` is an error.
+    pub macros: Option<Dialect>,
 }
+
+impl From<MacroError> for ParseError {
+    fn from(e: MacroError) -> Self {
+        Self::new(e.span, e.message, e.help)
+    }
+}
+
+/// The help of a `#` read without custom macro B.
+const NO_MACRO_HELP: &str =
+    "custom macro B is on by default for --control fanuc-a, fanuc-b, fanuc-c and haas; --macro on turns it on for gsk980";
 
 /// Read a whole program text.
 pub fn parse(source: &str) -> Result<Program, ParseError> {
@@ -61,10 +75,10 @@ pub fn parse_with(source: &str, options: ReadOptions) -> Result<Program, ParseEr
 }
 
 /// Macro B words that are letters only; any other run of two letters after `;` is prose.
-const KEYWORDS: [&str; 32] = [
-    "IF", "GOTO", "WHILE", "DO", "END", "THEN", "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR",
-    "XOR", "MOD", "SIN", "COS", "TAN", "ATAN", "ASIN", "ACOS", "SQRT", "ABS", "ROUND", "FIX",
-    "FUP", "LN", "EXP", "BIN", "BCD", "POPEN",
+const KEYWORDS: [&str; 37] = [
+    "IF", "GOTO", "WHILE", "WH", "DO", "END", "THEN", "ELSE", "ENDIF", "EQ", "NE", "GT", "GE",
+    "LT", "LE", "AND", "OR", "XOR", "MOD", "SIN", "COS", "TAN", "ATAN", "ASIN", "ACOS", "SQRT",
+    "ABS", "ROUND", "FIX", "FUP", "LN", "EXP", "POW", "ADP", "BIN", "BCD", "POPEN",
 ];
 
 /// Whether the text after a `;` is prose (a comment in another control's style) rather
@@ -182,6 +196,8 @@ struct Reader<'a> {
     flow_control: (usize, Span),
     /// Other unexpected control bytes dropped, and the first one's place.
     unexpected_control: (usize, Span),
+    /// The macro statement of the current block.
+    stmt: Option<Stmt>,
 }
 
 impl<'a> Reader<'a> {
@@ -209,6 +225,7 @@ impl<'a> Reader<'a> {
             delete_level: 0,
             flow_control: (0, Span::default()),
             unexpected_control: (0, Span::default()),
+            stmt: None,
         }
     }
 
@@ -439,14 +456,43 @@ impl<'a> Reader<'a> {
                     // the end of the tape: a control reads no further
                     self.skip_trailer(span);
                 }
+                c if (c == '#' || c.is_ascii_alphabetic())
+                    && self.options.macros.is_some()
+                    && self.at_statement_start()
+                    && macro_b::starts_statement(&self.src[span.offset..]) =>
+                {
+                    self.finish_word()?;
+                    self.statement(span)?;
+                }
+                '#' => {
+                    let message = if self.options.macros.is_some() {
+                        "'#' where no macro variable can stand"
+                    } else {
+                        "`#` needs custom macro B: run with --control fanuc-a or --macro on"
+                    };
+                    return Err(ParseError::new(
+                        span,
+                        message,
+                        if self.options.macros.is_some() {
+                            "a variable stands in a statement (#1 = …) or right after an address letter (X#1)"
+                        } else {
+                            NO_MACRO_HELP
+                        },
+                    ));
+                }
                 c if c.is_ascii_alphabetic() => {
                     self.finish_word()?;
-                    self.pending = Some(PendingWord {
-                        letter: c.to_ascii_uppercase(),
-                        start: span,
-                        end: span,
-                        text: String::new(),
-                    });
+                    let letter = c.to_ascii_uppercase();
+                    if self.options.macros.is_some() && self.expression_follows() {
+                        self.expression_word(letter, span)?;
+                    } else {
+                        self.pending = Some(PendingWord {
+                            letter,
+                            start: span,
+                            end: span,
+                            text: String::new(),
+                        });
+                    }
                     self.mark(span);
                 }
                 c if c.is_ascii_digit() || c == '.' || c == '+' || c == '-' => {
@@ -489,7 +535,7 @@ impl<'a> Reader<'a> {
                     } else {
                         (
                             format!("unexpected character '{c}'"),
-                            "only address letters, numbers, ';', '/', '%' and comments ( ) belong in a block (macro variables # are not supported)",
+                            "only address letters, numbers, ';', '/', '%' and comments ( ) belong in a block",
                         )
                     };
                     return Err(ParseError::new(span, what, help));
@@ -507,6 +553,158 @@ impl<'a> Reader<'a> {
     /// Nothing of the current block read yet.
     fn block_is_empty(&self) -> bool {
         self.pending.is_none() && self.words.is_empty() && self.seq.is_none() && !self.block_delete
+    }
+
+    /// Nothing but an N word (or `/`) read of the current block: a macro statement may
+    /// start here.
+    fn at_statement_start(&self) -> bool {
+        self.words.is_empty()
+            && self.stmt.is_none()
+            && self.pending.as_ref().is_none_or(|p| p.letter == 'N')
+    }
+
+    /// The text from byte `start` to the end of its block: the next newline, lone CR or
+    /// `;` outside a comment.
+    fn block_text(&self, start: usize) -> &'a str {
+        let rest = &self.src[start..];
+        let mut depth = 0usize;
+        for (i, c) in rest.char_indices() {
+            match c {
+                '(' => depth += 1,
+                ')' => depth = depth.saturating_sub(1),
+                '\n' | '\r' => return &rest[..i],
+                ';' if depth == 0 => return &rest[..i],
+                _ => {}
+            }
+        }
+        rest
+    }
+
+    /// Consume the characters up to byte `end`, extending the block; the last span.
+    fn consume_to(&mut self, end: usize) -> Option<Span> {
+        let mut last = None;
+        while self.offset() < end {
+            let (span, _) = self.next()?;
+            last = Some(span);
+        }
+        if let Some(l) = last {
+            self.block_end = l;
+        }
+        last
+    }
+
+    /// The span of the next character (a zero-length span at the end of the text).
+    fn next_span(&mut self) -> Span {
+        let offset = self.offset();
+        Span {
+            line: self.line,
+            column: self.column + 1,
+            offset,
+            len: 0,
+        }
+    }
+
+    /// A macro statement from `start` (already read) to the end of the block.
+    fn statement(&mut self, start: Span) -> Result<(), ParseError> {
+        self.mark(start);
+        let text = self.block_text(start.offset).trim_end();
+        let options = match self.options.macros {
+            Some(Dialect::Haas) => macro_b::Options::haas(),
+            _ => macro_b::Options::fanuc(),
+        };
+        let stmt = macro_b::parse_stmt(text, start, &options)?;
+        // Haas `IF [cond] THEN <NC block>`: the block's words are read as words
+        let end = match &stmt.kind {
+            macro_b::StmtKind::IfThenBlock { text_span, .. } => text_span.offset,
+            _ => start.offset + text.len(),
+        };
+        self.consume_to(end);
+        self.stmt = Some(stmt);
+        Ok(())
+    }
+
+    /// Whether the value after an address letter is a macro expression: `#…`, `[…]`, a
+    /// function (`ROUND[…]`), each possibly after a sign.
+    fn expression_follows(&mut self) -> bool {
+        let at = self.offset();
+        let rest = self.block_text(at);
+        let t = rest.trim_start_matches([' ', '\t']);
+        let t = t
+            .strip_prefix(['-', '+'])
+            .unwrap_or(t)
+            .trim_start_matches([' ', '\t']);
+        if t.starts_with(['#', '[']) {
+            return true;
+        }
+        let name: String = t
+            .chars()
+            .take_while(char::is_ascii_alphabetic)
+            .map(|c| c.to_ascii_uppercase())
+            .collect();
+        Func::from_name(&name).is_some()
+            && t[name.len()..]
+                .trim_start_matches([' ', '\t'])
+                .starts_with('[')
+    }
+
+    /// An address whose value is a macro expression (`X#1`, `Z[#2-0.5]`, `G#10`).
+    fn expression_word(&mut self, letter: char, at: Span) -> Result<(), ParseError> {
+        if matches!(letter, 'N' | 'O') {
+            return Err(ParseError::new(
+                at,
+                format!("{letter} needs a number, not a macro expression"),
+                format!("write {letter} as digits only, e.g. {letter}14"),
+            ));
+        }
+        let base = self.next_span();
+        let text = self.block_text(base.offset);
+        let (expr, used) = macro_b::parse_operand(text, base)?;
+        let end = self.consume_to(base.offset + used).unwrap_or(at);
+        self.push_word(Word {
+            letter,
+            value: 0.0,
+            has_point: true,
+            span: at.to(end),
+            expr: Some(expr),
+        })
+    }
+
+    /// Add a word to the block: one of each address, except G and M.
+    fn push_word(&mut self, word: Word) -> Result<(), ParseError> {
+        let letter = word.letter;
+        let then_block = self
+            .stmt
+            .as_ref()
+            .is_some_and(|s| matches!(s.kind, macro_b::StmtKind::IfThenBlock { .. }));
+        if self.stmt.is_some() && !then_block {
+            return Err(ParseError::new(
+                word.span,
+                "an NC word after a macro statement",
+                "put the macro statement on a block of its own",
+            ));
+        }
+        // G65 assignment II repeats I J K (spec/dialects.md §5.5)
+        let g65 = || {
+            matches!(letter, 'I' | 'J' | 'K')
+                && self
+                    .words
+                    .iter()
+                    .any(|w| w.letter == 'G' && w.value == 65.0)
+        };
+        if letter != 'G' && letter != 'M' && !g65() {
+            if let Some(first) = self.words.iter().find(|w| w.letter == letter) {
+                return Err(ParseError::new(
+                    word.span,
+                    format!(
+                        "address {letter} given twice in one block (first at {})",
+                        first.span
+                    ),
+                    format!("remove one of the two {letter} words"),
+                ));
+            }
+        }
+        self.words.push(word);
+        Ok(())
     }
 
     /// Skip to the end of the line (the newline itself ends the block). Returns the last span.
@@ -675,26 +873,13 @@ impl<'a> Reader<'a> {
                     });
                 }
             }
-            letter => {
-                if letter != 'G' && letter != 'M' {
-                    if let Some(first) = self.words.iter().find(|w| w.letter == letter) {
-                        return Err(ParseError::new(
-                            span,
-                            format!(
-                                "address {letter} given twice in one block (first at {})",
-                                first.span
-                            ),
-                            format!("remove one of the two {letter} words"),
-                        ));
-                    }
-                }
-                self.words.push(Word {
-                    letter,
-                    value,
-                    has_point,
-                    span,
-                });
-            }
+            letter => self.push_word(Word {
+                letter,
+                value,
+                has_point,
+                span,
+                expr: None,
+            })?,
         }
         Ok(())
     }
@@ -706,7 +891,8 @@ impl<'a> Reader<'a> {
             let seq = self.seq.take();
             let block_delete = std::mem::replace(&mut self.block_delete, false);
             let delete_level = std::mem::replace(&mut self.delete_level, 0);
-            if !words.is_empty() || seq.is_some() {
+            let stmt = self.stmt.take();
+            if !words.is_empty() || seq.is_some() || stmt.is_some() {
                 let span = start.to(self.block_end);
                 let block = Block {
                     words,
@@ -715,6 +901,7 @@ impl<'a> Reader<'a> {
                     block_delete,
                     delete_level,
                     span,
+                    stmt,
                 };
                 self.program
                     .programs
@@ -728,6 +915,7 @@ impl<'a> Reader<'a> {
         self.seq = None;
         self.block_delete = false;
         self.delete_level = 0;
+        self.stmt = None;
         Ok(())
     }
 }
@@ -969,6 +1157,7 @@ mod tests {
             "G1 X56,08 F0,2",
             ReadOptions {
                 decimal_comma: true,
+                ..ReadOptions::default()
             },
         )
         .unwrap();
@@ -980,6 +1169,77 @@ mod tests {
     fn columns_count_characters_not_bytes() {
         let e = parse("（中文）X").unwrap_err();
         assert_eq!(e.span.column, 5);
+    }
+
+    fn macro_b(src: &str) -> Result<Program, ParseError> {
+        parse_with(
+            src,
+            ReadOptions {
+                macros: Some(Dialect::Fanuc),
+                ..ReadOptions::default()
+            },
+        )
+    }
+
+    #[test]
+    fn macro_statements_and_expression_words_with_spans() {
+        let p = macro_b("N5 #1 = 2 + 3 * 4 ;\nWHILE [#1 GT 2] DO1\nG00 X#1 Z[#2-0.5] F0.2 (C)\nEND1\n#3000 = 1 (TOOL BROKEN) ;\n").unwrap();
+        let b = &p.programs[0].blocks;
+        assert_eq!(b.len(), 5);
+        assert_eq!(b[0].seq, Some(5));
+        let s = b[0].stmt.as_ref().unwrap();
+        assert_eq!((s.span.line, s.span.column), (1, 4));
+        assert!(b[0].words.is_empty());
+        assert!(matches!(
+            b[1].stmt.as_ref().unwrap().kind,
+            macro_b::StmtKind::While { id: 1, .. }
+        ));
+        let w = &b[2].words;
+        assert_eq!(w.len(), 4);
+        assert_eq!(w[1].expr.as_ref().unwrap().to_string(), "#1");
+        assert_eq!((w[1].span.column, w[1].span.len), (5, 3));
+        let z = w[2].expr.as_ref().unwrap();
+        assert_eq!(z.to_string(), "[#2-0.5]");
+        assert_eq!((w[2].span.column, z.span.column), (9, 10));
+        assert_eq!(
+            (w[3].letter, w[3].value, w[3].expr.is_none()),
+            ('F', 0.2, true)
+        );
+        assert!(matches!(
+            b[3].stmt.as_ref().unwrap().kind,
+            macro_b::StmtKind::End { id: 1 }
+        ));
+        let macro_b::StmtKind::Assign { comment, .. } = &b[4].stmt.as_ref().unwrap().kind else {
+            panic!("an assignment")
+        };
+        assert_eq!(comment.as_deref(), Some("TOOL BROKEN"));
+        // functions and signs as word values, G#10, spaces and ';' between blocks
+        let p = macro_b("G#10 X-#1 Z ROUND[#2];IF [#1 EQ #0] GOTO 10;GOTO#3").unwrap();
+        let b = &p.programs[0].blocks;
+        assert_eq!(b.len(), 3);
+        assert!(b[0].words.iter().all(|w| w.expr.is_some()));
+        assert!(b[1].stmt.is_some() && b[2].stmt.is_some());
+        // plain programs read as before
+        assert_eq!(macro_b("G0 X1 Z2").unwrap(), parse("G0 X1 Z2").unwrap());
+    }
+
+    #[test]
+    fn macro_errors_at_their_column() {
+        // without macro B a # is an error that says how to turn it on
+        let e = parse("G0 X1\nG1 X#1").unwrap_err();
+        assert_eq!((e.span.line, e.span.column), (2, 5));
+        assert!(e.message.contains("needs custom macro B"), "{}", e.message);
+        assert!(e.message.contains("--control fanuc-a"), "{}", e.message);
+        let e = macro_b("#1 = [2 + 3").unwrap_err();
+        assert_eq!(e.span.line, 1);
+        let e = macro_b("G0 X#1 X2").unwrap_err();
+        assert!(e.message.contains("twice"), "{}", e.message);
+        let e = macro_b("N#1 G0").unwrap_err();
+        assert!(e.message.contains("N needs a number"), "{}", e.message);
+        let e = macro_b("G0 X1#2").unwrap_err();
+        assert_eq!(e.span.column, 6);
+        let e = macro_b("#1 = 5 / \n").unwrap_err();
+        assert_eq!(e.span.line, 1);
     }
 
     #[test]

@@ -14,6 +14,9 @@ pub struct Word {
     pub has_point: bool,
     /// Where the word stands (letter through last digit).
     pub span: Span,
+    /// The value written as a custom macro B expression (`X#1`, `Z[#2-0.5]`); the
+    /// interpreter evaluates it before the block runs (`value` is 0 until then).
+    pub expr: Option<macro_b::Expr>,
 }
 
 impl Word {
@@ -41,6 +44,10 @@ pub struct Block {
     pub delete_level: u8,
     /// The whole block's text span (first to last significant character).
     pub span: Span,
+    /// A custom macro B statement (`#1 = 2`, `IF […] GOTO 5`, `WHILE […] DO1`, `END1`,
+    /// `GOTO 5`): the block then has no words, except Haas `IF [cond] THEN <NC block>`,
+    /// whose NC block's words are the block's words.
+    pub stmt: Option<macro_b::Stmt>,
 }
 
 impl Block {
@@ -51,6 +58,10 @@ impl Block {
     /// Whether a word with this letter is present.
     pub fn has(&self, letter: char) -> bool {
         self.get(letter).is_some()
+    }
+    /// Whether the block holds macro B: a statement, or a word written with an expression.
+    pub fn has_macro(&self) -> bool {
+        self.stmt.is_some() || self.words.iter().any(|w| w.expr.is_some())
     }
 }
 

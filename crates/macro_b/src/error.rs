@@ -1,6 +1,6 @@
 //! The one error type of the crate: what went wrong, where, and what to change.
 
-use gcode::Span;
+use crate::span::Span;
 
 /// What kind of problem a [`MacroError`] is. Reading problems (`Syntax`, nesting found
 /// when a program is prepared) and run-time alarms share the type so the interpreter can

@@ -1,7 +1,7 @@
 //! Evaluation with the exact rules of spec/dialects.md §5.2–§5.4: vacancy, alarms for
 //! division by zero and domain errors, and the rounding of values given to addresses.
 
-use gcode::Span;
+use crate::span::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::expr::{BinOp, Expr, ExprKind, Func, Stmt, StmtKind, VarRef};
@@ -294,6 +294,29 @@ impl MacroState {
                 "give the variable a value before this block",
             )
         })
+    }
+
+    /// The sequence number a jump names (`GOTO n`, `GOTO #1`, `GOTO [expr]`; `what` says
+    /// which): required, rounded half away from zero (4.5 → 5), 1–99999999.
+    pub fn sequence_number(&mut self, e: &Expr, what: &str, sys: &mut dyn System) -> Result<u32> {
+        let Some(v) = self.eval(e, sys)?.get() else {
+            return Err(MacroError::new(
+                ErrorKind::Vacant,
+                e.span,
+                format!("{what} target: {e} is vacant"),
+                "give the variable a value before this block",
+            ));
+        };
+        let n = round_half_away(v);
+        if !(1.0..=99_999_999.0).contains(&n) {
+            return Err(MacroError::new(
+                ErrorKind::SequenceMissing,
+                e.span,
+                format!("{what} {n}: sequence numbers are 1–99999999"),
+                "jump to an N number that is written in this program",
+            ));
+        }
+        Ok(n as u32)
     }
 
     /// Run an assignment `#i = expr` (also the one in `IF … THEN`).

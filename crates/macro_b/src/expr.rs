@@ -13,7 +13,7 @@
 
 use std::fmt;
 
-use gcode::Span;
+use crate::span::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::options::{Options, MAX_BRACKET_DEPTH};

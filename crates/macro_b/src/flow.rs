@@ -6,15 +6,13 @@
 //! ([`Flow::next`]); the interpreter tells it about calls and returns it reads in those
 //! blocks ([`Flow::call_macro`], [`Flow::call_sub`], [`Flow::call_local`], [`Flow::ret`]).
 
-use std::collections::HashMap;
-
-use gcode::Span;
+use crate::span::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::eval::MacroState;
 use crate::expr::{Expr, Stmt, StmtKind};
 use crate::options::Limits;
-use crate::value::{round_half_away, Value};
+use crate::value::Value;
 use crate::vars::{Locals, System};
 
 /// What a line of a program holds.
@@ -57,7 +55,8 @@ pub struct MacroProgram<B> {
     partner: Vec<usize>,
     /// (DO line, END line) of every loop.
     loops: Vec<(usize, usize)>,
-    seqs: HashMap<u32, Vec<usize>>,
+    /// (N number, line), sorted: found by binary search on every jump.
+    seqs: Vec<(u32, usize)>,
     warnings: Vec<Warning>,
 }
 
@@ -78,13 +77,13 @@ impl<B> MacroProgram<B> {
     pub fn new(number: Option<u32>, lines: Vec<Line<B>>, limits: &Limits) -> Result<Self> {
         let mut partner = vec![usize::MAX; lines.len()];
         let mut loops = Vec::new();
-        let mut seqs: HashMap<u32, Vec<usize>> = HashMap::new();
+        let mut seqs: Vec<(u32, usize)> = Vec::new();
         let mut warnings = Vec::new();
         let mut open: Vec<(u8, usize)> = Vec::new();
         let mut ifs: Vec<(usize, Option<usize>)> = Vec::new();
         for (i, line) in lines.iter().enumerate() {
             if let Some(n) = line.seq {
-                seqs.entry(n).or_default().push(i);
+                seqs.push((n, i));
             }
             match stmt_of(line) {
                 Some(StmtKind::While { id, .. } | StmtKind::Do { id }) => {
@@ -193,6 +192,7 @@ impl<B> MacroProgram<B> {
                 "close the block with ENDIF",
             ));
         }
+        seqs.sort_unstable();
         Ok(Self {
             number,
             lines,
@@ -218,10 +218,41 @@ impl<B> MacroProgram<B> {
         &self.warnings
     }
 
+    /// The line a structured statement is paired with: `WHILE`/`DO` → its `END`, `END` →
+    /// its `WHILE`/`DO`, block-form `IF` → its `ELSE` or `ENDIF`, `ELSE` → its `ENDIF`.
+    pub fn partner(&self, line: usize) -> Option<usize> {
+        self.partner.get(line).copied().filter(|&p| p != usize::MAX)
+    }
+
+    /// The line a jump (`GOTO n`, `M99 Pn`: `what`) from line `from` goes to: block `Nn`.
+    /// A missing or duplicated number, or a target inside a loop `from` is not in, is an
+    /// error at `span`.
+    pub fn jump_target(&self, from: usize, n: u32, span: Span, what: &str) -> Result<usize> {
+        let t = self.find_seq(n, span, what)?;
+        if let Some(&(s, e)) = self
+            .loops
+            .iter()
+            .find(|&&(s, e)| s < t && t <= e && !(s <= from && from <= e))
+        {
+            return Err(MacroError::new(
+                ErrorKind::JumpIntoLoop,
+                span,
+                format!(
+                    "{what} {n} jumps into the loop of lines {}–{} from outside it",
+                    self.lines[s].span.line, self.lines[e].span.line
+                ),
+                "jump to the WHILE line or before it; jumping out of a loop or within it is allowed",
+            ));
+        }
+        Ok(t)
+    }
+
     /// The line of block `Nn`; a missing or duplicated number is an error at `span`.
     fn find_seq(&self, n: u32, span: Span, what: &str) -> Result<usize> {
-        match self.seqs.get(&n).map(Vec::as_slice) {
-            None | Some([]) => Err(MacroError::new(
+        let from = self.seqs.partition_point(|&(m, _)| m < n);
+        let to = from + self.seqs[from..].partition_point(|&(m, _)| m == n);
+        match &self.seqs[from..to] {
+            [] => Err(MacroError::new(
                 ErrorKind::SequenceMissing,
                 span,
                 format!(
@@ -230,8 +261,8 @@ impl<B> MacroProgram<B> {
                 ),
                 format!("number the target block N{n}, or correct the target"),
             )),
-            Some([i]) => Ok(*i),
-            Some([a, b, ..]) => Err(MacroError::new(
+            [(_, i)] => Ok(*i),
+            [(_, a), (_, b), ..] => Err(MacroError::new(
                 ErrorKind::DuplicateSequence,
                 span,
                 format!(
@@ -517,38 +548,13 @@ impl<'p, B> Flow<'p, B> {
         pi: usize,
         li: usize,
     ) -> Result<()> {
-        let v = state.required(target, "GOTO target", sys)?;
-        let n = round_half_away(v);
-        if !(1.0..=99_999_999.0).contains(&n) {
-            return Err(MacroError::new(
-                ErrorKind::SequenceMissing,
-                target.span,
-                format!("GOTO {n}: sequence numbers are 1–99999999"),
-                "jump to an N number that is written in this program",
-            ));
-        }
-        self.jump_within(pi, li, n as u32, target.span, "GOTO")
+        let n = state.sequence_number(target, "GOTO", sys)?;
+        self.jump_within(pi, li, n, target.span, "GOTO")
     }
 
     /// Jump to block `Nn` of program `pi` from its line `li`.
     fn jump_within(&mut self, pi: usize, li: usize, n: u32, span: Span, what: &str) -> Result<()> {
-        let prog = &self.programs[pi];
-        let t = prog.find_seq(n, span, what)?;
-        if let Some(&(s, e)) = prog
-            .loops
-            .iter()
-            .find(|&&(s, e)| s < t && t <= e && !(s <= li && li <= e))
-        {
-            return Err(MacroError::new(
-                ErrorKind::JumpIntoLoop,
-                span,
-                format!(
-                    "{what} {n} jumps into the loop of lines {}–{} from outside it",
-                    prog.lines[s].span.line, prog.lines[e].span.line
-                ),
-                "jump to the WHILE line or before it; jumping out of a loop or within it is allowed",
-            ));
-        }
+        let t = self.programs[pi].jump_target(li, n, span, what)?;
         if t <= li {
             self.back_jump(pi, li);
         }

@@ -48,6 +48,7 @@ mod eval;
 mod expr;
 mod flow;
 mod options;
+mod span;
 mod value;
 mod vars;
 
@@ -64,7 +65,7 @@ pub use flow::{
     g65_argument_value, g65_locals, letter_of_argument, Argument, At, Body, CallKind, Flow, Line,
     MacroProgram, Step, Warning, ARGUMENTS,
 };
-pub use gcode::Span;
 pub use options::{Dialect, Limits, Options, DEFAULT_MAX_BLOCKS, MAX_BRACKET_DEPTH};
+pub use span::Span;
 pub use value::{fix, fup, round_half_away, round_to_increment, Value};
 pub use vars::{Axis, Locals, NoMachine, Position, System, Timer, VarEntry, Variables};

@@ -1,7 +1,7 @@
 //! Variables: locals per call level, common and retained variables, and the system
 //! variables the interpreter answers through [`System`] (spec/dialects.md §5.1, §5.7).
 
-use gcode::Span;
+use crate::span::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::flow::letter_of_argument;

@@ -130,6 +130,22 @@ struct Doc<'a> {
     gouges: Vec<GougeJ>,
     deviation: Option<DeviationJ>,
     grooves: Vec<GrooveJ>,
+    /// Custom macro B's variables at the end of the run (additive field).
+    variables: Vec<VariableJ<'a>>,
+    /// Lines executed more than once (additive field).
+    line_counts: Vec<LineCountJ>,
+}
+
+#[derive(Serialize)]
+struct VariableJ<'a> {
+    name: &'a str,
+    value: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct LineCountJ {
+    line: u32,
+    count: u64,
 }
 
 /// The word used for a verdict in the JSON.
@@ -188,6 +204,19 @@ pub(crate) fn json(report: &Report) -> String {
                 line: g.line,
                 ring: g.ring.iter().map(zx).collect(),
             })
+            .collect(),
+        variables: report
+            .variables
+            .iter()
+            .map(|(name, value)| VariableJ {
+                name,
+                value: *value,
+            })
+            .collect(),
+        line_counts: report
+            .line_counts
+            .iter()
+            .map(|&(line, count)| LineCountJ { line, count })
             .collect(),
     };
     // Serialising plain structs of strings, integers and Option<f64> cannot fail.

@@ -8,7 +8,9 @@
 //! `program`, `title`, `verdict`, `stock`, `final`, `removed_area_mm2`,
 //! `removed_volume_mm3`, `segments`, `cycle_time_s`, `tolerance_mm`, `tools`, `alarms`,
 //! `warnings`, `crashes`, `gouges`, `deviation`, and `grooves` (`[{"line": n, "ring":
-//! [[z, x], …]}]`, the G75.1 grooves of [`Report::grooves`]). Numbers are rounded to 6
+//! [[z, x], …]}]`, the G75.1 grooves of [`Report::grooves`]), `variables` (`[{"name":
+//! "#1", "value": 14.0}]`, custom macro B's variables at the end, `null` when vacant) and
+//! `line_counts` (`[{"line": n, "count": k}]`, lines run more than once). Numbers are rounded to 6
 //! decimals; non-finite numbers are written as `null`.
 //!
 //! The picture's right column holds zoomed detail views of each crash, gouge and groove,

@@ -162,6 +162,11 @@ pub struct Report {
     /// the crash and gouge details, as room allows); empty when there are none. The CLI
     /// fills it.
     pub grooves: Vec<Groove>,
+    /// Custom macro B: the variables the run read or set and their final values (`None`:
+    /// vacant), e.g. `("#1", Some(14.0))`.
+    pub variables: Vec<(String, Option<f64>)>,
+    /// Custom macro B: source lines executed more than once, with how many times.
+    pub line_counts: Vec<(u32, u64)>,
 }
 
 /// A G75.1 groove the program defines, as its intended outline.

@@ -11,6 +11,8 @@
 //! - `M99 P n`: FANUC returns to `N n` of the caller; Haas branches to `N n` of the program
 //!   it is in and does not return. M99 in a Haas main program loops to its start: run once,
 //!   then stop with a warning.
+//!
+//! Macro B statements and G65 run through `macros.rs` (`Interp::step`).
 
 use super::{alarm, Interp};
 use crate::words::{whole_in, Words};
@@ -45,6 +47,8 @@ pub(super) enum Flow {
         callee: Callee,
         times: u32,
         span: Span,
+        /// A G65 call's new local level.
+        locals: Option<Box<macro_b::Locals>>,
     },
     Return {
         seq: Option<u32>,
@@ -113,17 +117,9 @@ impl Interp<'_> {
             }
             self.out.blocks += 1;
             if self.out.blocks > self.opts.max_blocks {
-                return Err(alarm(
-                    b.span,
-                    "LS-LOOP",
-                    format!(
-                        "more than {} blocks executed: the program does not end",
-                        self.opts.max_blocks
-                    ),
-                    "check M98 repeat counts and M99 jumps for an endless loop",
-                ));
+                return Err(self.budget_alarm(b.span, program));
             }
-            match self.block(&program.programs[index], i)? {
+            match self.step(program, index, i)? {
                 Flow::Next => i += 1,
                 Flow::Jump(j) => i = j,
                 Flow::End => return Ok(Exit::End),
@@ -151,6 +147,7 @@ impl Interp<'_> {
                     callee,
                     times,
                     span,
+                    locals,
                 } => {
                     let limit = if self.machine.control == Control::Haas {
                         MAX_NESTING_HAAS
@@ -170,16 +167,20 @@ impl Interp<'_> {
                         Target::Here(sub, from) => (program, *sub, *from),
                         Target::Library(p, sub) => (&**p, *sub, 0),
                     };
+                    let level = self.enter_call(locals);
                     for _ in 0..times {
                         match self.run(called, sub, from, depth + 1)? {
                             Exit::End => return Ok(Exit::End),
                             Exit::Return(None) => {}
                             Exit::Return(Some(seq)) => {
-                                i = seq_index(blocks, seq, span, "returns to")?;
+                                let target = seq_index(blocks, seq, span, "returns to")?;
+                                self.leave_call(level);
+                                i = target;
                                 continue 'blocks;
                             }
                         }
                     }
+                    self.leave_call(level);
                     i += 1;
                 }
                 Flow::Branch { seq, span } => i = seq_index(blocks, seq, span, "branches to")?,
@@ -320,6 +321,7 @@ fn m98(w: &Word, used: &mut Words, haas: bool) -> Result<Flow, Diagnostic> {
         callee: Callee::Program(number),
         times: times.max(1),
         span: w.span,
+        locals: None,
     })
 }
 
@@ -362,6 +364,7 @@ fn m97(w: &Word, used: &mut Words) -> Result<Flow, Diagnostic> {
         callee: Callee::Local(p.value as u32),
         times,
         span: w.span,
+        locals: None,
     })
 }
 

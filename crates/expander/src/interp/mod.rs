@@ -14,6 +14,7 @@ mod dialect_words;
 mod flow;
 mod frame;
 mod g10;
+mod macros;
 mod modal;
 mod motion;
 mod reach;
@@ -44,6 +45,11 @@ pub struct Options {
     pub start_tool: Option<u32>,
     /// Where `M98 P`/`G65 P` find programs the file does not hold (`--lib`).
     pub library: Option<crate::LibraryRef>,
+    /// Custom macro B with these rules (`--macro`); `None`: off. The program must have
+    /// been read with macro B on too.
+    pub macros: Option<macro_b::Options>,
+    /// Custom macro B: common variables set before the run (`--vars`).
+    pub vars: Vec<(u32, f64)>,
 }
 
 impl Default for Options {
@@ -51,10 +57,12 @@ impl Default for Options {
         Self {
             block_delete: false,
             max_segments: 5_000_000,
-            max_blocks: 20_000_000,
+            max_blocks: macro_b::DEFAULT_MAX_BLOCKS as usize,
             tools: toolfacts::ToolFacts::default(),
             start_tool: None,
             library: None,
+            macros: None,
+            vars: vec![],
         }
     }
 }
@@ -78,6 +86,11 @@ pub struct Toolpath {
     pub blocks: usize,
     /// Shapes the program defines for itself (G75.1 grooves, G70–G73 finishing shapes).
     pub intended: Vec<crate::Intended>,
+    /// Custom macro B: the variables the run read or set, with their final values
+    /// (`None`: vacant), in number order.
+    pub variables: Vec<(String, Option<f64>)>,
+    /// Custom macro B: the source lines executed more than once, with how many times.
+    pub line_counts: Vec<(u32, u64)>,
 }
 
 /// Expand a parsed program into segments.
@@ -97,7 +110,9 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
                 "start them with an O number to make a subprogram, call them with M97 P<N>, or delete them",
             );
         }
-        let mut result = it.run(program, 0, 0, 0);
+        let mut result = it
+            .prepare_macros(program)
+            .and_then(|()| it.run(program, 0, 0, 0));
         it.flush_compensation();
         if result.is_ok() && it.retained.g75_1.is_some() {
             let span = program
@@ -114,6 +129,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
             Ok(Exit::Return(_)) => unreachable!("M99 in the main program ends it or is an alarm"),
             Err(alarm) => it.out.alarms.push(alarm),
         }
+        it.finish_macros(program);
     }
     it.out
 }
@@ -170,6 +186,8 @@ pub(crate) struct Interp<'m> {
     pub(crate) thread_chamfer: bool,
     /// Return level of the drilling cycles (the profile's; G98/G99 in systems B/C set it).
     pub(crate) drill_return: crate::DrillReturn,
+    /// Custom macro B's variables and program structure, when it is on.
+    macros: Option<Box<macros::Macros>>,
 }
 
 /// A controller alarm.
@@ -223,6 +241,7 @@ impl<'m> Interp<'m> {
             frames: frame::Frames::new(machine),
             thread_chamfer: true,
             drill_return: machine.drill_return,
+            macros: None,
         }
     }
 

@@ -1,4 +1,5 @@
-//! Source positions: every word, block, alarm and segment points back at its text.
+//! Source positions: every word, block, alarm and segment points back at its text (the
+//! reader and the macro language share it; `gcode::Span` re-exports it).
 
 /// A place in the program text: 1-based line and column (in characters), plus the
 /// byte range so a diagnostic renderer can underline it.

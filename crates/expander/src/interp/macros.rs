@@ -1,0 +1,569 @@
+//! Custom macro B in the interpreter (spec/dialects.md §5), on the `macro_b` crate: the
+//! statements (`#i = …`, `IF`, `GOTO`, `WHILE`/`DO`/`END`) run here as blocks of the block
+//! loop, so every executed block keeps its source line; an NC block's expression words are
+//! evaluated into a working copy of its program just before it runs (a vacant value drops
+//! the address, §5.2), together with the finishing shape a G70–G73 block reads (and a Haas
+//! `IF [cond] THEN <NC block>` runs its words when the condition holds); `G65` becomes a
+//! call with a new local level; the system variables read the interpreter's state. At the end the run's variables and the lines run more than once go into the
+//! toolpath.
+
+use super::flow::Flow;
+use super::{alarm, Interp, MotionMode};
+use crate::{Diagnostic, Pt, Span};
+use gcode::{Block, Program, Subprogram, Word};
+use macro_b::{
+    Axis, Body, ErrorKind, Expr, Line, Locals, MacroError, MacroProgram, MacroState, Position,
+    StmtKind, System, Value,
+};
+
+/// The macro side of a run.
+pub(crate) struct Macros {
+    state: MacroState,
+    /// Each O program's structure (loops matched, N numbers indexed), in the file's order.
+    programs: Vec<MacroProgram<()>>,
+    /// Per O program that holds macro B: the copy its blocks are evaluated into. `None`:
+    /// the program runs as written.
+    work: Vec<Option<Subprogram>>,
+    /// How many times each block ran, per O program.
+    counts: Vec<Vec<u64>>,
+    /// Back jumps to each block (loop iterations), per O program.
+    iterations: Vec<Vec<u64>>,
+    /// The (program, block) last jumped back to: the loop the block budget names.
+    last_loop: Option<(usize, usize)>,
+}
+
+/// The interpreter as the system variables see it (§5.7); `span` is the block being run.
+struct Sys<'a, 'm> {
+    it: &'a mut Interp<'m>,
+    span: Span,
+}
+
+impl System for Sys<'_, '_> {
+    fn position(&self, kind: Position, axis: Axis) -> Option<f64> {
+        let p: Pt = match kind {
+            Position::BlockEnd | Position::Work => self.it.pos - self.it.shift,
+            // latsim's machine frame is the G54 frame the segments live in
+            Position::Machine => self.it.pos,
+        };
+        Some(match axis {
+            Axis::X => 2.0 * p.r,
+            Axis::Z => p.z,
+        })
+    }
+    fn modal_group(&self, group: u32) -> Option<f64> {
+        match group {
+            1 => Some(match self.it.motion {
+                MotionMode::Rapid => 0.0,
+                MotionMode::Line => 1.0,
+                MotionMode::Cw => 2.0,
+                MotionMode::Ccw => 3.0,
+                MotionMode::Thread => 32.0,
+                MotionMode::Cycle(t) => f64::from(t) / 10.0,
+            }),
+            5 => Some(if self.it.per_rev { 99.0 } else { 98.0 }),
+            6 => Some(if self.it.inch { 20.0 } else { 21.0 }),
+            _ => None,
+        }
+    }
+    fn last_address(&self, letter: char) -> Option<Value> {
+        match letter {
+            'F' => Some(Value::num(self.it.feed)),
+            'S' => Some(Value::num(self.it.s_value)),
+            'T' => Some(Value::num(f64::from(self.it.tool * 100 + self.it.offset))),
+            _ => None,
+        }
+    }
+    fn stop_message(&mut self, number: f64, message: &str) -> bool {
+        self.it.warn(
+            self.span,
+            "LS-STOP",
+            format!("stop {number}: {message}"),
+            "#3006 stops the program like M00; the simulation goes on",
+        );
+        true
+    }
+}
+
+/// The alarm code of a macro error (FANUC's where it has one).
+fn code(kind: ErrorKind) -> &'static str {
+    match kind {
+        ErrorKind::Syntax | ErrorKind::BracketNesting | ErrorKind::Unsupported => "PS0114",
+        ErrorKind::DivisionByZero => "PS0112",
+        ErrorKind::Domain => "PS0119",
+        ErrorKind::Vacant => "LS-VACANT",
+        ErrorKind::NoSuchVariable | ErrorKind::Argument => "PS0115",
+        ErrorKind::ReadOnly => "PS0116",
+        ErrorKind::NotSimulated => "LS-NOT-SIMULATED",
+        ErrorKind::SequenceMissing | ErrorKind::DuplicateSequence | ErrorKind::JumpIntoLoop => {
+            "PS0128"
+        }
+        ErrorKind::EndWithoutDo
+        | ErrorKind::DoWithoutEnd
+        | ErrorKind::LoopNesting
+        | ErrorKind::LoopCrossing
+        | ErrorKind::IfStructure => "PS0124",
+        ErrorKind::Budget => "LS-LOOP",
+        ErrorKind::CallDepth => "PS077",
+        ErrorKind::ProgramMissing => "PS078",
+        ErrorKind::ProgramAlarm { .. } => "MACRO-ALARM",
+    }
+}
+
+fn diagnostic(e: MacroError) -> Diagnostic {
+    alarm(e.span, code(e.kind), e.message, e.help)
+}
+
+/// Letters whose values are whole numbers (codes, speeds, tools, counts, program and
+/// sequence numbers, increments): a value put there is rounded half away from zero (`M#1`
+/// with #1 = 3.5 is M04, spec §5.2).
+const INTEGER_ADDRESSES: &str = "MSTPQL";
+
+impl Macros {
+    /// Prepare the programs of a file: check their `DO`/`END` structure and index them.
+    fn new(program: &Program, options: macro_b::Options) -> Result<Self, MacroError> {
+        let mut programs = Vec::with_capacity(program.programs.len());
+        for sub in &program.programs {
+            let lines = sub
+                .blocks
+                .iter()
+                .map(|b| Line {
+                    seq: b.seq,
+                    span: b.span,
+                    body: b.stmt.clone().map_or(Body::Block(()), Body::Stmt),
+                })
+                .collect();
+            programs.push(MacroProgram::new(sub.number, lines, &options.limits)?);
+        }
+        let work = program
+            .programs
+            .iter()
+            .map(|p| p.blocks.iter().any(Block::has_macro).then(|| p.clone()))
+            .collect();
+        let zeros = || {
+            program
+                .programs
+                .iter()
+                .map(|p| vec![0; p.blocks.len()])
+                .collect()
+        };
+        Ok(Self {
+            state: MacroState::new(options),
+            programs,
+            work,
+            counts: zeros(),
+            iterations: zeros(),
+            last_loop: None,
+        })
+    }
+
+    fn back_jump(&mut self, index: usize, head: usize) {
+        self.last_loop = Some((index, head));
+        self.iterations[index][head] += 1;
+    }
+
+    /// Run a macro statement: where the block loop goes next; `None` when the block's NC
+    /// words run now (Haas `IF [cond] THEN <NC block>` whose condition held).
+    fn statement(
+        &mut self,
+        index: usize,
+        i: usize,
+        kind: &StmtKind,
+        stmt: &macro_b::Stmt,
+        sys: &mut dyn System,
+    ) -> Result<Option<Flow>, MacroError> {
+        let prog = &self.programs[index];
+        let after = |line: usize| prog.partner(line).map_or(Flow::Next, |p| Flow::Jump(p + 1));
+        Ok(Some(match kind {
+            StmtKind::Assign { .. } | StmtKind::IfThen { .. } => {
+                self.state.execute(stmt, sys)?;
+                Flow::Next
+            }
+            StmtKind::IfGoto { cond, target } => {
+                if self.state.condition(cond, sys)? {
+                    self.goto(index, i, target, sys)?
+                } else {
+                    Flow::Next
+                }
+            }
+            StmtKind::Goto { target } => self.goto(index, i, target, sys)?,
+            StmtKind::While { cond, .. } | StmtKind::IfBlock { cond } => {
+                if self.state.condition(cond, sys)? {
+                    Flow::Next
+                } else {
+                    after(i)
+                }
+            }
+            StmtKind::Else => after(i),
+            StmtKind::Do { .. } | StmtKind::EndIf => Flow::Next,
+            StmtKind::End { .. } => {
+                let head = prog.partner(i).expect("an END is matched when prepared");
+                self.back_jump(index, head);
+                Flow::Jump(head)
+            }
+            StmtKind::IfThenBlock { cond, .. } => {
+                if self.state.condition(cond, sys)? {
+                    return Ok(None);
+                }
+                Flow::Next
+            }
+        }))
+    }
+
+    fn goto(
+        &mut self,
+        index: usize,
+        i: usize,
+        target: &Expr,
+        sys: &mut dyn System,
+    ) -> Result<Flow, MacroError> {
+        let n = self.state.sequence_number(target, "GOTO", sys)?;
+        let t = self.programs[index].jump_target(i, n, target.span, "GOTO")?;
+        if t <= i {
+            self.back_jump(index, i);
+        }
+        Ok(Flow::Jump(t))
+    }
+
+    /// The value an expression puts into an address: `None` when vacant (the address is
+    /// then not written). Whole-number addresses are rounded half away from zero, G codes
+    /// to tenths, lengths and feeds to their increment.
+    fn word_value(
+        &mut self,
+        w: &Word,
+        e: &Expr,
+        increment: f64,
+        sys: &mut dyn System,
+    ) -> Result<Option<(f64, bool)>, MacroError> {
+        if INTEGER_ADDRESSES.contains(w.letter) {
+            return Ok(self.state.integer_value(e, sys)?.map(|v| (v as f64, false)));
+        }
+        let increment = match w.letter {
+            'G' => 0.1,
+            'F' => 0.0001,
+            _ => increment,
+        };
+        Ok(self
+            .state
+            .address_value(e, increment, sys)?
+            .map(|v| (v, true)))
+    }
+
+    /// Evaluate the expression words of `from` into `to`.
+    fn evaluate(
+        &mut self,
+        from: &Block,
+        to: &mut Block,
+        increment: f64,
+        sys: &mut dyn System,
+    ) -> Result<(), MacroError> {
+        to.words.clear();
+        for w in &from.words {
+            let Some(e) = &w.expr else {
+                to.words.push(w.clone());
+                continue;
+            };
+            if let Some((value, has_point)) = self.word_value(w, e, increment, sys)? {
+                to.words.push(Word {
+                    value,
+                    has_point,
+                    expr: None,
+                    ..w.clone()
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Evaluate block `i` of `sub` into `work`; for a G70–G73 block also the blocks of its
+    /// finishing shape `P`…`Q`, which the cycle reads from the program.
+    fn evaluate_for(
+        &mut self,
+        sub: &Subprogram,
+        work: &mut Subprogram,
+        i: usize,
+        increment: f64,
+        sys: &mut dyn System,
+    ) -> Result<(), MacroError> {
+        if sub.blocks[i].has_macro() {
+            self.evaluate(&sub.blocks[i], &mut work.blocks[i], increment, sys)?;
+        }
+        let b = &work.blocks[i];
+        if !reads_shape(b) {
+            return Ok(());
+        }
+        let seq = |letter| {
+            let n = b.get(letter)?.value as u32;
+            sub.blocks.iter().position(|x| x.seq == Some(n))
+        };
+        let (Some(p), Some(q)) = (seq('P'), seq('Q')) else {
+            return Ok(());
+        };
+        for k in p..=q {
+            if sub.blocks[k].has_macro() {
+                self.evaluate(&sub.blocks[k], &mut work.blocks[k], increment, sys)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The locals a `G65` block passes, its program number and repeat count.
+    fn g65(
+        &mut self,
+        b: &Block,
+        increment: f64,
+        sys: &mut dyn System,
+        notes: &mut Vec<(Span, String)>,
+    ) -> Result<(u32, u32, Locals), Diagnostic> {
+        let mut args = Vec::new();
+        let (mut number, mut times) = (None, 1);
+        for w in &b.words {
+            let value = match &w.expr {
+                Some(e) => self.state.eval(e, sys).map_err(diagnostic)?,
+                None => {
+                    let (v, note) =
+                        macro_b::g65_argument_value(w.letter, w.value, w.has_point, increment);
+                    if let Some(n) = note.filter(|_| !matches!(w.letter, 'G' | 'P' | 'L')) {
+                        notes.push((w.span, n));
+                    }
+                    Value::num(v)
+                }
+            };
+            let whole = |what: &str, max: f64| match value.get() {
+                Some(v) if v.fract() == 0.0 && (0.0..=max).contains(&v) => Ok(v as u32),
+                None => Err(alarm(
+                    w.span,
+                    "LS-VACANT",
+                    format!("G65 {what}: the variable is vacant"),
+                    "give the variable a value before this block",
+                )),
+                _ => Err(alarm(
+                    w.span,
+                    "PS078",
+                    format!("G65 {what} {} is not a whole number 0 … {max}", value),
+                    "write e.g. G65 P9010 L1 A1. B2.",
+                )),
+            };
+            match w.letter {
+                'G' if w.code_tenths() == Some(650) && w.expr.is_none() => {}
+                'G' => {
+                    return Err(alarm(
+                        w.span,
+                        "PS0115",
+                        "a G65 block holds only P, L and the arguments",
+                        "put other G codes on a block of their own",
+                    ))
+                }
+                'P' => number = Some(whole("P", 9999.0)?),
+                'L' => times = whole("L", 9999.0)?,
+                letter => args.push(macro_b::Argument {
+                    letter,
+                    value,
+                    span: w.span,
+                }),
+            }
+        }
+        let number = number.ok_or_else(|| {
+            alarm(
+                b.span,
+                "PS078",
+                "G65 without P",
+                "write G65 P<program number> and the arguments, e.g. G65 P9010 A1. B2.",
+            )
+        })?;
+        let locals = macro_b::g65_locals(&args).map_err(diagnostic)?;
+        Ok((number, times, locals))
+    }
+}
+
+/// Whether the block calls a macro: a plain `G65` word.
+fn is_g65(b: &Block) -> bool {
+    b.words
+        .iter()
+        .any(|w| w.letter == 'G' && w.expr.is_none() && w.code_tenths() == Some(650))
+}
+
+/// The G70–G73 cycles that read a finishing shape `P`…`Q` of the program.
+fn reads_shape(b: &Block) -> bool {
+    b.words
+        .iter()
+        .any(|w| w.letter == 'G' && matches!(w.code_tenths(), Some(700 | 710 | 720 | 730)))
+}
+
+impl Interp<'_> {
+    /// Start the macro side of the run when custom macro B is on: the programs' loop
+    /// structure is checked before anything runs.
+    pub(super) fn prepare_macros(&mut self, program: &Program) -> Result<(), Diagnostic> {
+        let Some(options) = self.opts.macros else {
+            return Ok(());
+        };
+        let mut macros = Macros::new(program, options).map_err(diagnostic)?;
+        for &(n, v) in &self.opts.vars {
+            macros
+                .state
+                .vars
+                .load(n, v, Span::default())
+                .map_err(diagnostic)?;
+        }
+        for p in &macros.programs {
+            for w in p.warnings() {
+                self.warn(w.span, "LS-MACRO", w.message.clone(), "");
+            }
+        }
+        self.macros = Some(Box::new(macros));
+        Ok(())
+    }
+
+    /// Put the run's variables and the lines run more than once into the toolpath.
+    pub(super) fn finish_macros(&mut self, program: &Program) {
+        let Some(m) = self.macros.take() else {
+            return;
+        };
+        self.out.variables = m
+            .state
+            .vars
+            .report()
+            .into_iter()
+            .map(|v| (format!("#{}", v.number), v.value.get()))
+            .collect();
+        let mut lines: Vec<(u32, u64)> = Vec::new();
+        for (sub, counts) in program.programs.iter().zip(&m.counts) {
+            for (b, &n) in sub.blocks.iter().zip(counts) {
+                if n > 1 {
+                    lines.push((b.span.line, n));
+                }
+            }
+        }
+        lines.sort_unstable();
+        lines.dedup_by(|a, b| {
+            let same = a.0 == b.0;
+            if same {
+                b.1 += a.1;
+            }
+            same
+        });
+        self.out.line_counts = lines;
+    }
+
+    /// The least increment a length written with an expression is rounded to.
+    fn increment(&self) -> f64 {
+        if self.inch {
+            0.0001
+        } else {
+            self.machine.increment.mm()
+        }
+    }
+
+    /// Run block `i` of O program `index`: a macro statement, a `G65` call, or an NC block
+    /// with its expressions evaluated. Without custom macro B, just the block.
+    pub(super) fn step(
+        &mut self,
+        program: &Program,
+        index: usize,
+        i: usize,
+    ) -> Result<Flow, Diagnostic> {
+        let Some(mut m) = self.macros.take() else {
+            return self.block(&program.programs[index], i);
+        };
+        let flow = self.step_with(&mut m, &program.programs[index], index, i);
+        self.macros = Some(m);
+        flow
+    }
+
+    fn step_with(
+        &mut self,
+        m: &mut Macros,
+        sub: &Subprogram,
+        index: usize,
+        i: usize,
+    ) -> Result<Flow, Diagnostic> {
+        m.counts[index][i] += 1;
+        let b = &sub.blocks[i];
+        let increment = self.increment();
+        let span = b.span;
+        if let Some(stmt) = &b.stmt {
+            let mut sys = Sys { it: self, span };
+            if let Some(flow) = m
+                .statement(index, i, &stmt.kind, stmt, &mut sys)
+                .map_err(diagnostic)?
+            {
+                return Ok(flow);
+            }
+        }
+        if is_g65(b) {
+            let mut notes = vec![];
+            let (number, times, locals) =
+                m.g65(b, increment, &mut Sys { it: self, span }, &mut notes)?;
+            for (at, note) in notes {
+                self.warn(
+                    at,
+                    "LS-G65-ARG",
+                    note,
+                    "write the argument with a decimal point to pass it as written",
+                );
+            }
+            return Ok(Flow::Call {
+                callee: super::flow::Callee::Program(number),
+                times,
+                span,
+                locals: Some(Box::new(locals)),
+            });
+        }
+        let Some(mut work) = m.work[index].take() else {
+            return self.block(sub, i);
+        };
+        let flow = m
+            .evaluate_for(sub, &mut work, i, increment, &mut Sys { it: self, span })
+            .map_err(diagnostic)
+            .and_then(|()| self.block(&work, i));
+        m.work[index] = Some(work);
+        flow
+    }
+
+    /// Enter a `G65` level (its locals) for a call; returns whether one was entered.
+    pub(super) fn enter_call(&mut self, locals: Option<Box<Locals>>) -> bool {
+        match (locals, self.macros.as_mut()) {
+            (Some(locals), Some(m)) => {
+                m.state.vars.push_level(*locals);
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Leave the `G65` level entered for a call.
+    pub(super) fn leave_call(&mut self, entered: bool) {
+        if let (true, Some(m)) = (entered, self.macros.as_mut()) {
+            m.state.vars.pop_level();
+        }
+    }
+
+    /// The alarm of the block budget: it names the loop last jumped back to, if any.
+    pub(super) fn budget_alarm(&self, span: Span, program: &Program) -> Diagnostic {
+        let max = self.opts.max_blocks;
+        let help = "the loop's exit condition never holds (or M98 repeats and M99 jumps never end); correct it, or raise --max-steps if the program really runs this long";
+        match self
+            .macros
+            .as_ref()
+            .and_then(|m| m.last_loop.map(|l| (m, l)))
+        {
+            Some((m, (p, l))) => {
+                let head = &program.programs[p].blocks[l];
+                alarm(
+                    head.span,
+                    "LS-LOOP",
+                    format!(
+                        "more than {max} blocks executed: the loop at line {} ran {} times and does not end",
+                        head.span.line, m.iterations[p][l]
+                    ),
+                    help,
+                )
+            }
+            None => alarm(
+                span,
+                "LS-LOOP",
+                format!("more than {max} blocks executed: the program does not end"),
+                help,
+            ),
+        }
+    }
+}
