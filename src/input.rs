@@ -188,7 +188,7 @@ pub(crate) fn load_program(
     let library = if args.lib.is_empty() {
         None
     } else {
-        match Folders::scan(&args.lib, source.text.len()) {
+        match Folders::scan(&args.lib, source.text.len(), read) {
             Ok(f) => Some(Arc::new(f)),
             Err(e) => {
                 diag::print_plain(&e, "give --lib the folder that holds the subprogram files");

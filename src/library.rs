@@ -29,6 +29,8 @@ const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
 pub(crate) struct Folders {
     /// Program files, in folder order then name order.
     files: Vec<PathBuf>,
+    /// How the files are read: as the main program (macro B, decimal comma).
+    read: gcode::ReadOptions,
     state: Mutex<State>,
 }
 
@@ -44,7 +46,11 @@ struct State {
 
 impl Folders {
     /// List the folders. `main_len`: the main file's length (library ranges start after it).
-    pub(crate) fn scan(dirs: &[PathBuf], main_len: usize) -> Result<Self, String> {
+    pub(crate) fn scan(
+        dirs: &[PathBuf],
+        main_len: usize,
+        read: gcode::ReadOptions,
+    ) -> Result<Self, String> {
         let mut files = vec![];
         for dir in dirs {
             let entries = std::fs::read_dir(dir)
@@ -67,6 +73,7 @@ impl Folders {
         }
         Ok(Self {
             files,
+            read,
             state: Mutex::new(State {
                 next_base: main_len + 1,
                 ..State::default()
@@ -99,7 +106,7 @@ impl Folders {
             return Ok(Arc::clone(p));
         }
         let text = read(path)?;
-        let mut program = gcode::parse(&text).map_err(|e| {
+        let mut program = gcode::parse_with(&text, self.read).map_err(|e| {
             format!(
                 "{}:{}:{}: {}",
                 path.display(),
@@ -140,7 +147,7 @@ impl Folders {
             // A file that does not read or parse simply has no number here.
             if let Some(n) = read(f)
                 .ok()
-                .and_then(|t| gcode::parse(&t).ok())
+                .and_then(|t| gcode::parse_with(&t, self.read).ok())
                 .and_then(|p| p.programs.iter().find_map(|s| s.number))
             {
                 map.entry(n).or_insert_with(|| f.clone());

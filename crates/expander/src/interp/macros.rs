@@ -30,6 +30,11 @@ pub(crate) struct Macros {
     iterations: Vec<Vec<u64>>,
     /// The (program, block) last jumped back to: the loop the block budget names.
     last_loop: Option<(usize, usize)>,
+    /// Where each file's O programs start in the vectors above, by the file's address: the
+    /// main file at 0, a `--lib` file appended when it is first run (its programs number
+    /// from 0 in their own file, so they need their own slots).
+    bases: Vec<(usize, usize)>,
+    limits: macro_b::Limits,
 }
 
 /// The interpreter as the system variables see it (§5.7); `span` is the block being run.
@@ -121,7 +126,34 @@ const INTEGER_ADDRESSES: &str = "MSTPQL";
 impl Macros {
     /// Prepare the programs of a file: check their `DO`/`END` structure and index them.
     fn new(program: &Program, options: macro_b::Options) -> Result<Self, MacroError> {
-        let mut programs = Vec::with_capacity(program.programs.len());
+        let mut m = Self {
+            state: MacroState::new(options),
+            programs: vec![],
+            work: vec![],
+            counts: vec![],
+            iterations: vec![],
+            last_loop: None,
+            bases: vec![],
+            limits: options.limits,
+        };
+        m.base(program)?;
+        Ok(m)
+    }
+
+    /// Where `program`'s O programs start, if it has run.
+    fn base_of(&self, program: &Program) -> Option<usize> {
+        let key = std::ptr::from_ref(program) as usize;
+        self.bases.iter().find(|(k, _)| *k == key).map(|&(_, b)| b)
+    }
+
+    /// Where `program`'s O programs start in the per-program vectors, preparing them (their
+    /// `DO`/`END` structure checked, N numbers indexed) the first time the file runs.
+    fn base(&mut self, program: &Program) -> Result<usize, MacroError> {
+        let key = std::ptr::from_ref(program) as usize;
+        if let Some(&(_, base)) = self.bases.iter().find(|(k, _)| *k == key) {
+            return Ok(base);
+        }
+        let base = self.programs.len();
         for sub in &program.programs {
             let lines = sub
                 .blocks
@@ -132,28 +164,15 @@ impl Macros {
                     body: b.stmt.clone().map_or(Body::Block(()), Body::Stmt),
                 })
                 .collect();
-            programs.push(MacroProgram::new(sub.number, lines, &options.limits)?);
+            self.programs
+                .push(MacroProgram::new(sub.number, lines, &self.limits)?);
+            self.work
+                .push(sub.blocks.iter().any(Block::has_macro).then(|| sub.clone()));
+            self.counts.push(vec![0; sub.blocks.len()]);
+            self.iterations.push(vec![0; sub.blocks.len()]);
         }
-        let work = program
-            .programs
-            .iter()
-            .map(|p| p.blocks.iter().any(Block::has_macro).then(|| p.clone()))
-            .collect();
-        let zeros = || {
-            program
-                .programs
-                .iter()
-                .map(|p| vec![0; p.blocks.len()])
-                .collect()
-        };
-        Ok(Self {
-            state: MacroState::new(options),
-            programs,
-            work,
-            counts: zeros(),
-            iterations: zeros(),
-            last_loop: None,
-        })
+        self.bases.push((key, base));
+        Ok(base)
     }
 
     fn back_jump(&mut self, index: usize, head: usize) {
@@ -464,7 +483,10 @@ impl Interp<'_> {
         let Some(mut m) = self.macros.take() else {
             return self.block(&program.programs[index], i);
         };
-        let flow = self.step_with(&mut m, &program.programs[index], index, i);
+        let flow = match m.base(program) {
+            Ok(base) => self.step_with(&mut m, &program.programs[index], base + index, i),
+            Err(e) => Err(diagnostic(e)),
+        };
         self.macros = Some(m);
         flow
     }
@@ -541,13 +563,22 @@ impl Interp<'_> {
     pub(super) fn budget_alarm(&self, span: Span, program: &Program) -> Diagnostic {
         let max = self.opts.max_blocks;
         let help = "the loop's exit condition never holds (or M98 repeats and M99 jumps never end); correct it, or raise --max-steps if the program really runs this long";
-        match self
-            .macros
-            .as_ref()
-            .and_then(|m| m.last_loop.map(|l| (m, l)))
-        {
-            Some((m, (p, l))) => {
-                let head = &program.programs[p].blocks[l];
+        // the loop is named when it lies in the program that was running (its file's slots)
+        let in_program = |m: &Macros, (p, l): (usize, usize)| {
+            let local = p.checked_sub(m.base_of(program)?)?;
+            program
+                .programs
+                .get(local)?
+                .blocks
+                .get(l)
+                .map(|_| (local, l))
+        };
+        match self.macros.as_ref().and_then(|m| {
+            let last = m.last_loop?;
+            in_program(m, last).map(|local| (m, last, local))
+        }) {
+            Some((m, (p, l), (local, _))) => {
+                let head = &program.programs[local].blocks[l];
                 alarm(
                     head.span,
                     "LS-LOOP",
