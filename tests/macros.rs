@@ -858,3 +858,49 @@ fn haas_if_then_nc_block() {
     .unwrap_err();
     assert!(e.message.contains("Haas"), "{}", e.message);
 }
+
+/// A macro program in a `--lib` folder runs with its own loop structure: its O program
+/// index (0 in its own file) does not alias the main file's program 0, whose blocks differ.
+#[test]
+fn a_library_macro_program_runs_its_own_loops() {
+    let dir = tempfile::tempdir().unwrap();
+    let lib = dir.path().join("lib");
+    std::fs::create_dir(&lib).unwrap();
+    // three grooves 4 mm apart from the Z given in #26 (argument Z), each a plunge to X#24
+    std::fs::write(
+        lib.join("O9002.nc"),
+        "O9002 (GROOVES)\n#10 = 0 ;\nWHILE [#10 LT 3] DO1 ;\nG00 Z[#26 - 4 * #10] ;\nG01 X#24 F0.05 ;\nG00 X42. ;\n#10 = #10 + 1 ;\nEND1 ;\nM99 ;\n",
+    )
+    .unwrap();
+    let main = dir.path().join("main.nc");
+    std::fs::write(
+        &main,
+        "O0100\nG21 G99 T0505\nG97 S600 M03\nG00 X42. Z2.\nG65 P9002 X34. Z-10.\nG00 X100. Z100.\nM30\n",
+    )
+    .unwrap();
+    let out = latsim(&[
+        "expand",
+        main.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--lib",
+        lib.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    // the three plunges to X34 at Z-10, -14, -18
+    let plunges: Vec<&str> = out
+        .stdout
+        .lines()
+        .filter(|r| r.contains(",feed,") && r.contains(",34,"))
+        .collect();
+    assert_eq!(plunges.len(), 3, "{}", out.stdout);
+    for (k, z) in ["-10", "-14", "-18"].iter().enumerate() {
+        assert!(
+            plunges[k].contains(&format!(",{z},42,{z},34,")),
+            "{}",
+            plunges[k]
+        );
+    }
+}
