@@ -366,3 +366,83 @@ fn corpus() {
         failures.join("\n")
     );
 }
+
+/// `latsim run FOLDER` (the batch a shop's CI runs, issue 11): every dialect folder of the
+/// corpus under its control, one verdict line per program, never "unusable" (exit 2), and
+/// each program's JSON report byte-identical to its run on its own with the same flags.
+#[test]
+fn corpus_folders_run_as_batches() {
+    let bin = env!("CARGO_BIN_EXE_latsim");
+    let root = corpus_dir();
+    let common = |out: &Path| -> Vec<String> {
+        [
+            "--tools",
+            root.join("tools/shop.toml").to_str().unwrap(),
+            "--stock",
+            "60x100",
+            "--lib",
+            root.join("subprograms/lib").to_str().unwrap(),
+            "--quiet",
+            "--out",
+            out.to_str().unwrap(),
+        ]
+        .iter()
+        .map(ToString::to_string)
+        .collect()
+    };
+    let mut programs = 0;
+    for (folder, control) in [
+        ("gsk980", "gsk980"),
+        ("fanuc-a", "fanuc-a"),
+        ("fanuc-b", "fanuc-b"),
+        ("fanuc-c", "fanuc-c"),
+        ("haas", "haas"),
+        ("subprograms", "fanuc-a"),
+        ("macro", "fanuc-a"),
+    ] {
+        let dir = root.join(folder);
+        let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+            .unwrap()
+            .flatten()
+            .map(|e| e.path())
+            .filter(|p| p.extension().is_some_and(|e| e == "nc"))
+            .collect();
+        files.sort();
+        let batch_out = tempfile::tempdir().unwrap();
+        let o = Command::new(bin)
+            .args(["run", dir.to_str().unwrap(), "--control", control])
+            .args(common(batch_out.path()))
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&o.stdout);
+        let code = o.status.code().unwrap_or(-1);
+        assert!(code == 0 || code == 1, "{folder}: exit {code}\n{stdout}");
+        assert_eq!(
+            stdout.lines().count(),
+            files.len(),
+            "{folder}: one verdict line per program\n{stdout}"
+        );
+        for f in &files {
+            let name = f.file_name().unwrap().to_string_lossy().into_owned();
+            assert!(
+                stdout.lines().any(|l| l.starts_with(&format!("{name}: "))),
+                "{folder}: no verdict line for {name}\n{stdout}"
+            );
+            let stem = f.file_stem().unwrap().to_string_lossy().into_owned();
+            let one_out = tempfile::tempdir().unwrap();
+            let one = Command::new(bin)
+                .args(["run", f.to_str().unwrap(), "--control", control])
+                .args(common(one_out.path()))
+                .output()
+                .unwrap();
+            assert!(one.status.code().unwrap_or(-1) <= 1, "{name}");
+            let read = |d: &Path| std::fs::read(d.join(format!("{stem}.json"))).unwrap();
+            assert!(
+                read(batch_out.path()) == read(one_out.path()),
+                "{folder}/{name}: the batch JSON differs from the single run's"
+            );
+            programs += 1;
+        }
+    }
+    assert!(programs >= 70, "only {programs} corpus programs");
+}
