@@ -173,6 +173,10 @@ fn fixed_rows(b: &mut Block, report: &Report) {
         program = format!("{program} ({})", report.title);
     }
     b.row("program", &program, FS_TEXT, colour::INK, 2);
+    if !report.control.is_empty() {
+        // the dialect the program was read in: the same text means other motion elsewhere
+        b.row("control", &report.control, FS_TEXT, colour::INK, 1);
+    }
     let feed = report.segments.saturating_sub(report.rapid_segments);
     b.row(
         "moves",
