@@ -74,7 +74,7 @@ pub(crate) fn read_rings(path: &Path, x: DxfXArg, role: Role) -> Result<Vec<Vec<
         .collect())
 }
 
-/// The final half section and the intended part as DXF text (AutoCAD 2000).
+/// The final half section and the intended part as DXF text (`AutoCAD` 2000).
 pub(crate) fn section_dxf(report: &render::Report, x: DxfXArg) -> Result<Vec<u8>, String> {
     let rings = |shapes: &[render::Shape]| -> Vec<Vec<Pt>> {
         shapes

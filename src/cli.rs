@@ -191,7 +191,7 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "DIR")]
     pub(crate) out: Option<PathBuf>,
     /// Write the final half section (layer PART) and the intended part (layer INTENDED)
-    /// as a DXF drawing (AutoCAD 2000) here.
+    /// as a DXF drawing (DXF version 2000) here.
     #[arg(long, value_name = "F")]
     pub(crate) dxf: Option<PathBuf>,
     /// How a DXF's Y maps to the lathe's X, for `--stock-file`/`--target` `.dxf` files and

@@ -337,7 +337,7 @@ mod tests {
                 })
                 .collect();
             let union = crate::overlay::clean(&hulls);
-            let chain = crate::overlay::clean(&[ring.clone()]);
+            let chain = crate::overlay::clean(std::slice::from_ref(&ring));
             let xor = crate::symmetric_difference_area(&union, &chain);
             assert!(xor < 1e-6, "path {i}: symmetric difference {xor} mm²");
             // arcs turn a little at each vertex: about four points per chord plus the caps
