@@ -454,8 +454,8 @@ fn diag_table(out: &mut String, id: &str, title: &str, list: &[Diagnostic], clas
     more(out, list.len());
 }
 
-fn crash_table(out: &mut String, list: &[Crash]) {
-    list_head(out, "ls-crashes", "Crashes (rapids into stock)", list.len());
+fn crash_table(out: &mut String, id: &str, title: &str, list: &[Crash]) {
+    list_head(out, id, title, list.len());
     if list.is_empty() {
         out.push_str("<p class=\"none\">none</p>\n");
         return;
@@ -464,13 +464,14 @@ fn crash_table(out: &mut String, list: &[Crash]) {
     for c in list.iter().take(MAX_ROWS) {
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">—</td></tr>",
+            "<tr data-line=\"{}\"><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
             c.line,
             c.line,
             c.column,
             pos(c.z),
             pos(2.0 * c.r),
-            esc(&quantity(c.area_mm2))
+            esc(&quantity(c.area_mm2)),
+            esc(&quantity(c.depth_mm))
         );
     }
     out.push_str("</tbody></table>\n");
@@ -636,7 +637,18 @@ pub(crate) fn html(report: &Report) -> String {
     summary_table(&mut out, report);
     out.push_str("</section>\n<section id=\"ls-findings\"><h2>Findings</h2>\n");
     diag_table(&mut out, "ls-alarms", "Alarms", &report.alarms, "alarm");
-    crash_table(&mut out, &report.crashes);
+    crash_table(
+        &mut out,
+        "ls-crashes",
+        "Crashes (rapids into stock)",
+        &report.crashes,
+    );
+    crash_table(
+        &mut out,
+        "ls-scrapes",
+        "Rapid scrapes (rapids that re-cut no deeper than rapid_cut_tol: warnings)",
+        &report.rapid_cuts,
+    );
     gouge_table(&mut out, &report.gouges);
     diag_table(
         &mut out,

@@ -65,6 +65,8 @@ pub(crate) mod colour {
     pub(crate) const LEFTOVER_EDGE: &str = "#d9650b";
     /// Crash markers.
     pub(crate) const CRASH: &str = "#7b3fe4";
+    /// Rapid scrapes (a rapid re-cutting at most `rapid_cut_tol`): a warning, not a crash.
+    pub(crate) const SCRAPE: &str = "#b26a00";
     /// Good verdict.
     pub(crate) const OK: &str = "#1a7f37";
     /// Bad verdict, alarms.

@@ -1,5 +1,5 @@
-//! Crash and gouge markers in the main view, each with a label and a leader line placed
-//! where it overlaps neither the frame nor another label.
+//! Crash, rapid-scrape and gouge markers in the main view, each with a label and a leader
+//! line placed where it overlaps neither the frame nor another label.
 
 use crate::doc::{marker, Doc};
 use crate::layout::{colour, FS_TEXT};
@@ -48,7 +48,8 @@ fn place(v: &View, x: f64, y: f64, w: f64, h: f64, placed: &[Rect]) -> Option<Re
     })
 }
 
-/// Draw markers and labels for crashes (purple) and gouges (red).
+/// Draw markers and labels for crashes (purple), rapid scrapes (a brown square: a rapid
+/// that re-cut no deeper than the profile's `rapid_cut_tol`, a warning) and gouges (red).
 pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
     let mut placed: Vec<Rect> = Vec::new();
     let crashes = report
@@ -59,8 +60,13 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
         .gouges
         .iter()
         .map(|g| (g.z, g.r, g.line, "gouge", colour::GOUGE));
+    let scrapes = report
+        .rapid_cuts
+        .iter()
+        .map(|c| (c.z, c.r, c.line, "scrape", colour::SCRAPE));
     let items: Vec<_> = crashes
         .take(MAX_LABELS)
+        .chain(scrapes.take(MAX_LABELS))
         .chain(gouges.take(MAX_LABELS))
         .collect();
     doc.open("g", &[("id", "findings".into())]);
@@ -71,10 +77,10 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
         if !(x.is_finite() && y.is_finite() && v.contains_px(x, y)) {
             continue;
         }
-        if what == "crash" {
-            marker(doc, x, y, c);
-        } else {
-            doc.circle([x, y], 8.0, "none", c, 2.0);
+        match what {
+            "crash" => marker(doc, x, y, c),
+            "scrape" => scrape_marker(doc, x, y),
+            _ => doc.circle([x, y], 8.0, "none", c, 2.0),
         }
         placed.push([x - 9.0, y - 9.0, 18.0, 18.0]);
         shown.push((x, y, line, what, c));
@@ -102,4 +108,9 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
         doc.text(r[0] + 5.0, r[1] + h - 7.0, FS_TEXT, "start", c, &label);
     }
     doc.close();
+}
+
+/// The rapid-scrape marker: a hollow square (a crash is a filled, crossed circle).
+pub(crate) fn scrape_marker(doc: &mut Doc, x: f64, y: f64) {
+    doc.rect([x - 6.0, y - 6.0, 12.0, 12.0], "none", colour::SCRAPE, 2.0);
 }

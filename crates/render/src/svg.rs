@@ -107,6 +107,7 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
         Fill(&'static str, &'static str),
         Line(&'static str, &'static str),
         Marker,
+        Scrape,
     }
     let has = |k: PathKind| report.toolpath.iter().any(|l| l.kind == k);
     let mut items: Vec<(Sw, &str)> = vec![
@@ -136,6 +137,9 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
     if !report.crashes.is_empty() {
         items.push((Sw::Marker, "crash"));
     }
+    if !report.rapid_cuts.is_empty() {
+        items.push((Sw::Scrape, "rapid scrape"));
+    }
     let note = thinned.then_some("toolpath thinned (not every move drawn)");
     let (x_start, x_end) = (40.0, MAIN[0] + MAIN[2]);
     let mut x = x_start;
@@ -151,6 +155,7 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
             Sw::Fill(f, s) => doc.rect([x, y - 12.0, 22.0, 14.0], f, s, 1.0),
             Sw::Line(c, dash) => doc.line([x, y - 5.0], [x + 22.0, y - 5.0], c, 2.2, dash),
             Sw::Marker => marker(doc, x + 11.0, y - 5.0, colour::CRASH),
+            Sw::Scrape => crate::marks::scrape_marker(doc, x + 11.0, y - 5.0),
         }
         doc.text(x + 30.0, y, FS_TEXT, "start", colour::INK, label);
         x += w;

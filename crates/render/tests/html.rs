@@ -326,3 +326,41 @@ fn write_pages() {
     )
     .unwrap();
 }
+
+/// Crash, rapid scrape, gouge and leftover are told apart (issue 13): the scrape gets its
+/// own marker, label and legend entry in the picture and its own table in the page, and a
+/// crash's depth is shown.
+#[test]
+fn rapid_scrapes_are_shown_apart_from_crashes() {
+    let mut r = common::groove_bar();
+    r.rapid_cuts.push(render::Crash {
+        line: 9,
+        column: 1,
+        z: -38.1,
+        r: 24.8,
+        area_mm2: 0.014,
+        depth_mm: 0.07,
+    });
+    let svg = render::svg(&r);
+    assert!(svg.contains("scrape line 9"), "the scrape is labelled");
+    assert!(svg.contains("rapid scrape"), "the legend names it");
+    assert!(
+        svg.contains("crash line 14"),
+        "the crash keeps its own label"
+    );
+    let page = render::html(&r);
+    let scrapes = &page[page.find("id=\"ls-scrapes\"").expect("a scrape table")..];
+    let table = &scrapes[..scrapes.find("</table>").expect("its rows")];
+    assert!(table.contains("data-line=\"9\""), "{table}");
+    assert!(table.contains("0.07"), "its depth: {table}");
+    let crashes = &page[page.find("id=\"ls-crashes\"").unwrap()..];
+    let crash_rows = &crashes[..crashes.find("</table>").unwrap()];
+    assert!(
+        !crash_rows.contains("data-line=\"9\""),
+        "a scrape is no crash"
+    );
+    assert!(
+        crash_rows.contains(">1<"),
+        "the crash's depth 1 mm: {crash_rows}"
+    );
+}
