@@ -194,12 +194,15 @@ fn t3_system_c_under_fanuc_c_and_its_alarm_under_fanuc_a() {
 }
 
 #[test]
-fn the_same_part_in_systems_a_b_and_c_gives_the_same_section() {
+fn the_same_part_in_systems_a_b_c_and_haas_gives_the_same_section() {
     let c_form = T3.replace("G24 X20. Z-2. F0.15 ;\n", "");
+    // the Haas form: safe start, a one-block G71 with D to the same Φ42 × 30 step, then G70
+    let haas_form = "%\nO00100 (SAME PART, HAAS)\nG18 G21 G40 G80 G99 ;\nT101 ;\nG97 S800 M03 ;\nG00 X52. Z2. ;\nG71 P10 Q20 U0. W0. D2. F0.2 ;\nN10 G00 X42. ;\nG01 Z-30. ;\nN20 X52. ;\nG70 P10 Q20 ;\nG28 U0. W0. ;\nM30 ;\n%\n";
     let finals: Vec<Vec<stock::Shape>> = [
         ("a.nc", T1.to_vec(), "fanuc-a"),
         ("b.nc", T2.as_bytes().to_vec(), "fanuc-b"),
         ("c.nc", c_form.into_bytes(), "fanuc-c"),
+        ("h.nc", haas_form.as_bytes().to_vec(), "haas"),
     ]
     .iter()
     .map(|(name, text, control)| {
