@@ -416,3 +416,33 @@ fn a_self_intersecting_blank_profile_is_refused() {
     assert!(out.stderr.contains("crosses itself"), "{}", out.stderr);
     assert!(out.stderr.contains("bowtie.toml:1:9"), "{}", out.stderr);
 }
+
+/// found/toml-stock-slow-timeout-dee1…: a blank profile of 10 000 points jumping back and
+/// forth along Z between two radii crosses itself millions of times; the boolean engine
+/// took minutes to split them before the crossing test. The kernel's sweep stops at the
+/// first crossing: a clear error at the profile's start, exit 2.
+#[test]
+fn a_tangled_blank_profile_is_refused_at_once() {
+    let mut seed = 0x2545_f491_u64;
+    let mut text = String::from("start = [0.0, 0.0]\npath = [");
+    for k in 0..10_000 {
+        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+        let z = -(((seed >> 33) % 60_000) as f64) / 1000.0;
+        let x = if k % 2 == 0 { 40.0 } else { 45.0 };
+        text.push_str(&format!("{{ to = [{z}, {x}] }}, "));
+    }
+    text.push_str("{ to = [-60.0, 0.0] }]\n");
+    let (dir, blank) = temp_program("tangled.toml", text.as_bytes());
+    let json = dir.path().join("r.json");
+    let out = latsim(&[
+        "run",
+        asset("programs/G75_1-cone.nc").to_str().unwrap(),
+        "--stock-file",
+        blank.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("crosses itself near"), "{}", out.stderr);
+    assert!(!json.exists());
+}

@@ -86,6 +86,78 @@ pub fn bounds(ring: &[Pt]) -> Rect {
     Rect::of(ring.iter().copied())
 }
 
+/// The first place a closed ring crosses or touches itself (neighbouring edges sharing
+/// their joint excepted; overlapping collinear pieces count). A sweep over z with early
+/// exit: edges are compared only with those whose z ranges overlap, so a simple outline of
+/// 10⁵ points is checked in linear-ish time and a tangled one stops at its first crossing
+/// (a boolean engine would first split every one of its crossings).
+pub fn self_intersection(ring: &[Pt]) -> Option<Pt> {
+    let n = ring.len();
+    if n < 3 {
+        return None;
+    }
+    // sort edges by their least z to prune: a sweep over z
+    let mut edges: Vec<(f64, f64, usize)> = (0..n)
+        .map(|i| {
+            let (a, b) = (ring[i], ring[(i + 1) % n]);
+            (a.z.min(b.z), a.z.max(b.z), i)
+        })
+        .collect();
+    edges.sort_by(|x, y| x.0.total_cmp(&y.0));
+    for (k, &(_, hi, i)) in edges.iter().enumerate() {
+        for &(lo2, _, j) in &edges[k + 1..] {
+            if lo2 > hi + 1e-12 {
+                break;
+            }
+            let adjacent = (i + 1) % n == j || (j + 1) % n == i;
+            let (a, b) = (ring[i], ring[(i + 1) % n]);
+            let (c, d) = (ring[j], ring[(j + 1) % n]);
+            if adjacent {
+                // neighbours share one end: only a fold back onto each other is a crossing
+                let (p, q, o) = if (i + 1) % n == j {
+                    (a, b, d)
+                } else {
+                    (c, d, b)
+                };
+                let (u, v) = (q - p, o - q);
+                if u.cross(v).abs() <= 1e-12 * u.len() * v.len() && u.dot(v) < 0.0 {
+                    return Some(q);
+                }
+                continue;
+            }
+            if let Some(x) = segments_cross(a, b, c, d) {
+                return Some(x);
+            }
+        }
+    }
+    None
+}
+
+/// Where segments `ab` and `cd` cross or overlap (within a relative 1e-9), if they do.
+fn segments_cross(a: Pt, b: Pt, c: Pt, d: Pt) -> Option<Pt> {
+    let r = b - a;
+    let s = d - c;
+    let den = r.cross(s);
+    if den.abs() < 1e-300 {
+        // parallel: overlapping collinear pieces count as a crossing
+        if (c - a).cross(r).abs() > 1e-12 * r.len().max(1.0) {
+            return None;
+        }
+        let rr = r.len2();
+        if rr == 0.0 {
+            return None;
+        }
+        let t0 = (c - a).dot(r) / rr;
+        let t1 = (d - a).dot(r) / rr;
+        let (lo, hi) = (t0.min(t1), t0.max(t1));
+        return (hi > 1e-9 && lo < 1.0 - 1e-9).then(|| a + r * lo.max(0.0));
+    }
+    let t = (c - a).cross(s) / den;
+    let u = (c - a).cross(r) / den;
+    let e = 1e-9;
+    (t > -e && t < 1.0 + e && u > -e && u < 1.0 + e).then(|| a + r * t)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

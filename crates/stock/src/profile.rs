@@ -123,6 +123,19 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
         }
         cur = to;
     }
+    // A crossing found by the kernel's sweep first: a tangled outline of 10⁵ points would
+    // make the boolean engine split every one of its crossings before the test below.
+    if let Some(x) = geom::ring::self_intersection(&crate::geom::pts(&ring)) {
+        return Err(at(
+            raw.start.span(),
+            format!(
+                "the outline crosses itself near Z{:.4} X{:.4}",
+                x.z,
+                2.0 * x.r
+            ),
+            "list the points once around the outline, without crossing an edge",
+        ));
+    }
     let signed = geom::ring::signed_area(&crate::geom::pts(&ring)).abs();
     let shapes = overlay::clean(&[ring]);
     let area = crate::area(&shapes);
