@@ -36,3 +36,139 @@ fn g76_two_block_m20x1_5_passes() {
         .filter(|s| s.motion == expander::Motion::Thread)
         .all(|s| (s.lead - 1.5).abs() < 1e-12));
 }
+
+/// dialects.md §7 T10 (`fanuc-a`, Φ20 × 40 bar, tool 4 a sharp 60° OD insert).
+const T10: &str = "G21 G99 T0404 ;\nG97 S500 M03 ;\nG00 X22. Z5. ;\nG92 X19.2 Z-20. F3. Q0 ;\nX18.6 Q0 ;\nG92 X19.2 Z-20. F3. Q180000 ;\nX18.6 Q180000 ;\nG00 X100. Z100. ;\nM30 ;\n";
+
+fn t10(program: &str) -> (expander::Toolpath, stock::Simulation) {
+    let machine = expander::Machine::for_control(expander::Control::FanucA);
+    let blank = stock::Blank::bar(20.0, 40.0, 0.0, None).unwrap();
+    let tools =
+        stock::ToolTable::from_toml(&common::read(&common::asset("tools/thread60.toml"))).unwrap();
+    common::pipeline(program, &machine, &blank, &tools)
+}
+
+/// The Z of the thread roots in the final section: the vertices of the outside at the
+/// root radius (a sharp insert leaves each stamp's tip as one vertex), sorted downward.
+fn roots_at(sim: &stock::Simulation, r: f64) -> Vec<f64> {
+    let mut z: Vec<f64> = sim
+        .final_shapes
+        .iter()
+        .flat_map(|s| s.outer.iter())
+        .filter(|p| (p[1] - r).abs() < 1e-3 && p[0] < 0.0)
+        .map(|p| p[0])
+        .collect();
+    z.sort_by(|a, b| b.total_cmp(a));
+    z.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
+    z
+}
+
+/// T10: four passes of lead 3; the Q180000 passes are stamped 1.5 mm (L·180/360) further
+/// along the move. From Z5 down, the first start passes the section at Z 5 − 3k, the second
+/// at Z 3.5 − 3k; in the bar (Z < 0) that is a root Φ18.6 (r 9.3) every 1.5 mm at
+/// Z −1, −2.5, …, −19 (and the end stamp at Z −20). Between two roots 1.5 apart the 60°
+/// V's are 2·0.7·tan 30° = 0.808 wide at the crest, so the crest Φ20 stays between them
+/// (at Z −0.25 − 1.5k).
+#[test]
+fn t10_two_start_g92_q() {
+    let (tp, sim) = t10(T10);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert!(tp
+        .warnings
+        .iter()
+        .all(|w| w.code != "LS-THREAD-Q-NOT-MODAL"));
+    let passes: Vec<_> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .collect();
+    assert_eq!(passes.len(), 4);
+    let phases: Vec<f64> = passes.iter().map(|s| s.thread_phase).collect();
+    assert_eq!(phases, [0.0, 0.0, 0.5, 0.5]);
+    assert!(passes.iter().all(|s| s.lead == 3.0));
+    // the two tooth sets, measured in the section: roots every 1.5 mm, a half lead apart
+    let roots = roots_at(&sim, 9.3);
+    let want: Vec<f64> = (0..13)
+        .map(|k| -1.0 - 1.5 * k as f64)
+        .chain([-20.0])
+        .collect();
+    assert_eq!(roots.len(), want.len(), "{roots:?}");
+    for (z, w) in roots.iter().zip(&want) {
+        assert!((z - w).abs() < 2e-3, "root at {z}, expected {w}: {roots:?}");
+    }
+    for k in 0..12 {
+        let root = -1.0 - 1.5 * k as f64;
+        let r = stock::surface_radius_at(&sim.final_shapes, root, stock::Surface::Outer).unwrap();
+        assert!((r - 9.3).abs() < 2e-3, "root Φ{} at Z{root}", 2.0 * r);
+        let crest = root + 0.75;
+        let r = stock::surface_radius_at(&sim.final_shapes, crest, stock::Surface::Outer).unwrap();
+        assert!((r - 10.0).abs() < 2e-3, "crest Φ{} at Z{crest}", 2.0 * r);
+    }
+    let minor = stock::deepest_radius(&sim.final_shapes, 0.0, -20.0, stock::Surface::Outer);
+    assert!((minor.unwrap() - 9.3).abs() < 2e-3, "{minor:?}");
+}
+
+/// T10 variant: `X18.6 ;` without Q on the last pass threads at 0° (Q is not modal): it
+/// recuts the first start, is warned at its line (7), and the second start keeps its root
+/// Φ19.2 (r 9.6) at Z −2.5 − 3k while the first start's is Φ18.6 at Z −1 − 3k.
+#[test]
+fn t10_q_not_modal_warns() {
+    let (tp, sim) = t10(&T10.replace("X18.6 Q180000 ;", "X18.6 ;"));
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let warned: Vec<u32> = tp
+        .warnings
+        .iter()
+        .filter(|w| w.code == "LS-THREAD-Q-NOT-MODAL")
+        .map(|w| w.span.line)
+        .collect();
+    assert_eq!(warned, [7]);
+    let last = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .last()
+        .unwrap();
+    assert_eq!(last.thread_phase, 0.0);
+    for k in 0..6 {
+        let first = -1.0 - 3.0 * k as f64;
+        let second = -2.5 - 3.0 * k as f64;
+        let at = |z| stock::surface_radius_at(&sim.final_shapes, z, stock::Surface::Outer).unwrap();
+        assert!((at(first) - 9.3).abs() < 2e-3, "Z{first}: r {}", at(first));
+        assert!(
+            (at(second) - 9.6).abs() < 2e-3,
+            "Z{second}: r {}",
+            at(second)
+        );
+    }
+}
+
+/// G32 takes Q for its own block only; a Q with a decimal point or beyond 360° is an alarm
+/// at the Q word.
+#[test]
+fn g32_start_angle() {
+    let expand = |text: &str| {
+        let program = gcode::parse(text).unwrap();
+        expander::expand(
+            &program,
+            &expander::Machine::for_control(expander::Control::FanucA),
+            &Default::default(),
+        )
+    };
+    let tp = expand("G99 M03 S500 T0404\nG00 X19.2 Z5\nG32 Z-20 F3 Q90000\nG32 Z-21\nM30\n");
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let phases: Vec<f64> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .map(|s| s.thread_phase)
+        .collect();
+    assert_eq!(phases, [0.25, 0.0]);
+    for bad in ["Q90.", "Q360001"] {
+        let tp = expand(&format!(
+            "G99 M03 S500\nG00 X19.2 Z5\nG32 Z-20 F3 {bad}\nM30\n"
+        ));
+        assert_eq!(tp.alarms.len(), 1, "{bad}");
+        assert_eq!(tp.alarms[0].code, "LS-THREAD-Q");
+        assert_eq!(tp.alarms[0].span.column, 13, "{bad}");
+    }
+}
