@@ -172,3 +172,93 @@ fn g32_start_angle() {
         assert_eq!(tp.alarms[0].span.column, 13, "{bad}");
     }
 }
+
+/// The M20 × 1.5 G76 thread on a Φ20 bar with the sharp 60° tool 4.
+const M20: &str = "G99 M03 S600 T0404\nG00 X22 Z5\nG76 P021060 Q50 R0.05\nG76 X18.05 Z-25 P975 Q400 F1.5\nG00 X50 Z50\nM30\n";
+
+fn run_json(program: &str, extra: &[&str]) -> (i32, serde_json::Value) {
+    let (dir, path) = common::temp_program("thread.nc", program.as_bytes());
+    let json = dir.path().join("out.json");
+    let tools = common::asset("tools/thread60.toml");
+    let mut args = vec![
+        "run",
+        path.to_str().unwrap(),
+        "--stock",
+        "20x40",
+        "--tools",
+        tools.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+        "--quiet",
+    ];
+    args.extend_from_slice(extra);
+    let out = common::latsim(&args);
+    let text = std::fs::read_to_string(&json).unwrap_or_else(|_| panic!("{}", out.stderr));
+    (out.code, serde_json::from_str(&text).unwrap())
+}
+
+/// The report's `threads`: line 4, lead 1.5, final X 18.05 (20 − 2·0.975), the eight pass
+/// depths of `g76_two_block_m20x1_5_passes` as infeeds (0.4, 0.1657, 0.1272, 0.1072,
+/// 0.0944, 0.0306, 0.05, 0), and the minor diameter reached in the section: 18.05.
+#[test]
+fn m20_thread_reports_its_minor() {
+    let (code, j) = run_json(M20, &[]);
+    assert_eq!(code, 0, "{j:#}");
+    assert_eq!(j["verdict"], "clean");
+    let t = &j["threads"];
+    assert_eq!(t.as_array().unwrap().len(), 1, "{t:#}");
+    let t = &t[0];
+    assert_eq!(t["line"], 4);
+    assert_eq!(t["side"], "od");
+    assert_eq!(t["lead_mm"], 1.5);
+    assert_eq!(t["passes"], 8);
+    let x = |k: &str| t[k].as_f64().unwrap();
+    assert!((x("x") - 18.05).abs() < 1e-9);
+    assert!((x("achieved_x") - 18.05).abs() < 2e-3, "{t:#}");
+    assert!(x("depth_error_mm").abs() < 1e-3, "{t:#}");
+    let h = [0.4, 0.565685, 0.692820, 0.8, 0.894427, 0.925, 0.975, 0.975];
+    let depths: Vec<f64> = t["pass_depths_mm"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d.as_f64().unwrap())
+        .collect();
+    for (k, d) in depths.iter().enumerate() {
+        let want = h[k] - if k == 0 { 0.0 } else { h[k - 1] };
+        assert!(
+            (d - want).abs() < 2e-3,
+            "pass {k}: {d} vs {want}: {depths:?}"
+        );
+    }
+}
+
+/// The same program cut to X17.65 against a target drawing the thread's minor at Φ18.05
+/// (Z0 to Z−25, Φ20 behind it): 0.2 mm too deep (radial, (18.05 − 17.65)/2), a thread depth
+/// error at line 4, and the run fails like a gouge.
+#[test]
+fn thread_too_deep_is_a_finding() {
+    let (dir, target) = common::temp_program(
+        "m20.toml",
+        b"start = [0.0, 0.0]\npath = [\n  { to = [0.0, 18.05] },\n  { to = [-25.0, 18.05] },\n  { to = [-25.0, 20.0] },\n  { to = [-40.0, 20.0] },\n  { to = [-40.0, 0.0] },\n]\n",
+    );
+    let _keep = dir;
+    let deep = M20.replace("X18.05 Z-25", "X17.65 Z-25");
+    let (code, j) = run_json(&deep, &["--target", target.to_str().unwrap()]);
+    let t = &j["threads"][0];
+    let x = |k: &str| t[k].as_f64().unwrap();
+    assert!((x("achieved_x") - 17.65).abs() < 2e-3, "{t:#}");
+    assert!((x("expected_x") - 18.05).abs() < 2e-3, "{t:#}");
+    assert!((x("depth_error_mm") - 0.2).abs() < 1e-3, "{t:#}");
+    assert_eq!(j["verdict"], "gouge", "{j:#}");
+    assert_eq!(code, 1);
+    let warned = j["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w["code"] == "LS-THREAD-DEPTH" && w["line"] == 4);
+    assert!(warned, "{:#}", j["warnings"]);
+    // the program's own X18.05 against the same target is clean
+    let (code, j) = run_json(M20, &["--target", target.to_str().unwrap()]);
+    assert!(j["threads"][0]["depth_error_mm"].as_f64().unwrap().abs() < 1e-3);
+    assert_eq!(code, 0, "{j:#}");
+}

@@ -65,8 +65,9 @@ pub fn deepest_radius(shapes: &[Shape], z0: f64, z1: f64, surface: Surface) -> O
 /// outside, min (surface − reference), for the bore, min (reference − surface); negative
 /// where the surface lies deeper than the reference. The reference is a line
 /// ([`Reference::Line`]) or another section's same surface ([`Reference::Shapes`]). Both
-/// are piecewise linear in Z, so the least gap lies at a vertex of either (or just beside
-/// one) or at an end: those are the places looked at. `None` where neither has material.
+/// are piecewise linear in Z, so the least gap lies beside a vertex of either or at an end:
+/// those are the places looked at, 1e-7 mm inside (exactly at a step of the reference, its
+/// riser would count). `None` where neither has material.
 pub fn least_gap(
     shapes: &[Shape],
     reference: Reference,
@@ -86,8 +87,7 @@ pub fn least_gap(
         .flat_map(|s| std::iter::once(&s.outer).chain(s.holes.iter()))
         .flatten()
         .map(|p| p[0])
-        .filter(|z| (lo..=hi).contains(z))
-        .flat_map(|z| [z - eps, z, z + eps]);
+        .flat_map(|z| [z - eps, z + eps]);
     let reference_at = |z: f64| match reference {
         Reference::Line(a, b) => Some(if (b[0] - a[0]).abs() < 1e-12 {
             a[1]
@@ -96,7 +96,7 @@ pub fn least_gap(
         }),
         Reference::Shapes(r) => surface_radius_at(r, z, surface),
     };
-    [lo, hi]
+    [lo + eps, hi - eps]
         .into_iter()
         .chain(vertices)
         .filter(|z| (lo..=hi).contains(z))
