@@ -276,6 +276,20 @@ pub(crate) fn add_threads(
 ) {
     let shapes = &sim.final_shapes;
     for t in stock::threads(&loaded.toolpath.segments, tools, shapes) {
+        if t.wrong_side {
+            let (side, toward, other) = match t.surface {
+                stock::Surface::Outer => ("an OD", "outward (an inside thread)", "id"),
+                stock::Surface::Bore => ("an ID", "inward (an outside thread)", "od"),
+            };
+            report.alarms.push(render::Diagnostic {
+                line: t.span.line,
+                column: t.span.column,
+                code: "LS-THREAD-SIDE".into(),
+                message: format!(
+                    "the thread passes go deeper {toward} but the threading tool is {side} insert: its body sweeps through the part; give the tool `side = \"{other}\"` in the tool table"
+                ),
+            });
+        }
         let achieved = t.achieved_x(shapes);
         let (z0, z1) = t.z_span();
         let sign = match t.surface {

@@ -262,3 +262,99 @@ fn thread_too_deep_is_a_finding() {
     assert!(j["threads"][0]["depth_error_mm"].as_f64().unwrap().abs() < 1e-3);
     assert_eq!(code, 0, "{j:#}");
 }
+
+/// An ID M30 × 2 thread in a Φ27.9 bore of a Φ40 tube (Z0…−40): G76 from X24 to X30 at
+/// Z−20, height k 1.05 ((30 − 27.9)/2), Δd 0.3.
+const M30_ID: &str = "G99 M03 S400 T0404\nG00 X24 Z5\nG76 P011060 Q50 R0.05\nG76 X30 Z-20 P1050 Q300 F2\nG00 X26 Z50\nM30\n";
+
+fn run_id(side: &str) -> (i32, serde_json::Value) {
+    let (dir, tools) = common::temp_program(
+        "id.toml",
+        format!("[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\nside = \"{side}\"\n")
+            .as_bytes(),
+    );
+    let _keep = dir;
+    let (pdir, path) = common::temp_program("m30.nc", M30_ID.as_bytes());
+    let json = pdir.path().join("out.json");
+    let out = common::latsim(&[
+        "run",
+        path.to_str().unwrap(),
+        "--stock",
+        "40x40",
+        "--bore",
+        "27.9",
+        "--tools",
+        tools.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+        "--quiet",
+    ]);
+    let text = std::fs::read_to_string(&json).unwrap_or_else(|_| panic!("{}", out.stderr));
+    (out.code, serde_json::from_str(&text).unwrap())
+}
+
+/// With an ID insert the wall stays: the outside is Φ40 everywhere (Z0…−40), the bore is
+/// Φ27.9 behind the thread (Z−30), and the thread reaches its major Φ30 (root r 15) over
+/// Z0…−20, teeth 2 mm apart. With the table saying OD for the same program, the OD body
+/// sweeps through the wall: an alarm at the thread's line says so.
+#[test]
+fn id_thread_in_a_bore() {
+    let (code, j) = run_id("id");
+    assert_eq!(code, 0, "{j:#}");
+    assert!(
+        j["crashes"].as_array().unwrap().is_empty(),
+        "{:#}",
+        j["crashes"]
+    );
+    let t = &j["threads"][0];
+    assert_eq!(t["side"], "id", "{t:#}");
+    assert!((t["x"].as_f64().unwrap() - 30.0).abs() < 1e-9);
+    assert!(
+        (t["achieved_x"].as_f64().unwrap() - 30.0).abs() < 2e-3,
+        "{t:#}"
+    );
+    // the final section, read back from the report (x is the diameter)
+    let shapes: Vec<stock::Shape> = j["final"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| stock::Shape {
+            outer: p["outer"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|q| [q[0].as_f64().unwrap(), q[1].as_f64().unwrap() / 2.0])
+                .collect(),
+            holes: vec![],
+        })
+        .collect();
+    let at = |z: f64, s| stock::surface_radius_at(&shapes, z, s).unwrap();
+    for k in 0..40 {
+        let z = -0.5 - k as f64;
+        assert!(
+            (at(z, stock::Surface::Outer) - 20.0).abs() < 1e-6,
+            "wall cut at Z{z}"
+        );
+    }
+    assert!((at(-30.0, stock::Surface::Bore) - 13.95).abs() < 1e-6);
+    let major = stock::deepest_radius(&shapes, -1.0, -19.0, stock::Surface::Bore).unwrap();
+    assert!((major - 15.0).abs() < 2e-3, "{major}");
+    // teeth: between two roots 2 apart a crest of the bore stays (r 13.95)
+    let crest = (0..200)
+        .map(|i| at(-3.0 - 0.01 * i as f64, stock::Surface::Bore))
+        .fold(f64::INFINITY, f64::min);
+    assert!((crest - 13.95).abs() < 1e-6, "{crest}");
+
+    let (code, j) = run_id("od");
+    assert_eq!(code, 1, "{j:#}");
+    // the OD body's rapids back through the wall are crashes too
+    assert!(!j["crashes"].as_array().unwrap().is_empty());
+    let alarm = j["alarms"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|a| a["code"] == "LS-THREAD-SIDE")
+        .unwrap_or_else(|| panic!("{:#}", j["alarms"]));
+    assert_eq!(alarm["line"], 4);
+    assert!(alarm["message"].as_str().unwrap().contains("side = \"id\""));
+}

@@ -136,6 +136,10 @@ pub struct Thread {
     /// thread's end (the first of each start from the crest: the final section's highest
     /// outside, or lowest bore, within a lead of the end; 0 with no material there), mm.
     pub pass_depths: Vec<f64>,
+    /// The passes go deeper away from the tool's side: outward (an inside thread) with an
+    /// OD insert, or inward with an ID insert, whose body then sweeps through the wall or
+    /// the core. Known only from two passes at different depths.
+    pub wrong_side: bool,
 }
 
 impl Thread {
@@ -232,7 +236,15 @@ pub fn threads(segments: &[Segment], tools: &ToolTable, shapes: &[Shape]) -> Vec
                     d
                 })
                 .collect();
+            // the infeed direction: from the first pass to the last
+            let (first, last) = (passes[0].to.r, passes[passes.len() - 1].to.r);
+            let wrong_side = (last - first).abs() > 1e-9
+                && match surface {
+                    Surface::Outer => last > first,
+                    Surface::Bore => last < first,
+                };
             Thread {
+                wrong_side,
                 span: passes[0].span,
                 surface,
                 lead: deepest.lead,
