@@ -358,3 +358,46 @@ fn id_thread_in_a_bore() {
     assert_eq!(alarm["line"], 4);
     assert!(alarm["message"].as_str().unwrap().contains("side = \"id\""));
 }
+
+/// A tapered thread by G92 R on a cone blank (Φ18 at Z0 to Φ20 at Z−20, radius +0.05 per mm
+/// toward −Z, then Φ20 to Z−40): `G92 X17.8 Z-20 F2` from Z5 follows the same cone
+/// (R = start − end radius over the 25 mm from Z5: −0.05·25), 1.1 mm below it. Roots
+/// (stamps at Z 5 − 2k) at Z −1 − 2k on the root cone r = 8.9 − 0.05·(Z + 20); the crests
+/// midway (Z −2k) stay on the blank's cone r = 9 − 0.05·Z (the V's are 2·1.1·tan 30° =
+/// 1.27 wide there, the lead 2).
+#[test]
+fn tapered_thread_crests_on_the_cone() {
+    let machine = expander::Machine::for_control(expander::Control::FanucA);
+    let blank = stock::Blank::from_profile_toml(
+        "start = [0.0, 0.0]\npath = [\n  { to = [0.0, 18.0] },\n  { to = [-20.0, 20.0] },\n  { to = [-40.0, 20.0] },\n  { to = [-40.0, 0.0] },\n]\n",
+        0.001,
+    )
+    .unwrap();
+    let tools =
+        stock::ToolTable::from_toml(&common::read(&common::asset("tools/thread60.toml"))).unwrap();
+    let (tp, sim) = common::pipeline(
+        "G21 G99 T0404 ;\nG97 S500 M03 ;\nG00 X22. Z5. ;\nG92 X17.8 Z-20. R-1.25 F2. ;\nG00 X100. Z100. ;\nM30 ;\n",
+        &machine,
+        &blank,
+        &tools,
+    );
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let at =
+        |z: f64| stock::surface_radius_at(&sim.final_shapes, z, stock::Surface::Outer).unwrap();
+    for k in 1..9 {
+        let crest = -2.0 * k as f64;
+        let cone = 9.0 - 0.05 * crest;
+        assert!(
+            (at(crest) - cone).abs() < 2e-3,
+            "crest Z{crest}: r {} vs {cone}",
+            at(crest)
+        );
+        let root = crest + 1.0;
+        let line = 8.9 - 0.05 * (root + 20.0);
+        assert!(
+            (at(root) - line).abs() < 2e-3,
+            "root Z{root}: r {} vs {line}",
+            at(root)
+        );
+    }
+}
