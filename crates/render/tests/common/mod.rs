@@ -89,6 +89,7 @@ pub(crate) fn groove_bar() -> Report {
         tolerance_mm: 0.01,
         snapshots: vec![],
         grooves: vec![],
+        threads: vec![],
     }
 }
 
@@ -180,6 +181,7 @@ pub(crate) fn o0008_groove() -> Report {
             // The final part is cut exactly to the ring.
             deviation_mm: Some(0.0),
         }],
+        threads: vec![],
     }
 }
 
