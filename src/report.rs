@@ -263,6 +263,78 @@ pub(crate) fn add_deviation(
     });
 }
 
+/// The threads, checked in the final section (`stock::threads`): the diameter reached
+/// against the programmed final X, or against `target`'s surface over the thread when a
+/// `--target` is given (a target draws a thread at its minor diameter, OD, or major, ID).
+/// A thread deeper than expected by more than `--tol` fails the run like a gouge (part
+/// material removed); one too shallow is a warning (like a leftover). Both are warnings
+/// `LS-THREAD-DEPTH` at the thread's line.
+pub(crate) fn add_threads(
+    report: &mut Report,
+    loaded: &Loaded,
+    tools: &stock::ToolTable,
+    sim: &stock::Simulation,
+    target: Option<&[stock::Shape]>,
+) {
+    let shapes = &sim.final_shapes;
+    for t in stock::threads(&loaded.toolpath.segments, tools, shapes) {
+        if t.wrong_side {
+            let (side, toward, other) = match t.surface {
+                stock::Surface::Outer => ("an OD", "outward (an inside thread)", "id"),
+                stock::Surface::Bore => ("an ID", "inward (an outside thread)", "od"),
+            };
+            report.alarms.push(render::Diagnostic {
+                line: t.span.line,
+                column: t.span.column,
+                code: "LS-THREAD-SIDE".into(),
+                message: format!(
+                    "the thread passes go deeper {toward} but the threading tool is {side} insert: its body sweeps through the part; give the tool `side = \"{other}\"` in the tool table"
+                ),
+            });
+        }
+        let achieved = t.achieved_x(shapes);
+        let (z0, z1) = t.z_span();
+        let sign = match t.surface {
+            stock::Surface::Outer => 1.0,
+            stock::Surface::Bore => -1.0,
+        };
+        // the least gap between the section and what it should be (negative: deeper)
+        let (gap, expected) = match target {
+            Some(part) => {
+                let gap =
+                    stock::least_gap(shapes, stock::Reference::Shapes(part), z0, z1, t.surface);
+                (gap, achieved.zip(gap).map(|(a, g)| a - sign * 2.0 * g))
+            }
+            None => (achieved.map(|a| sign * (a - t.x()) / 2.0), Some(t.x())),
+        };
+        let depth_error = gap.map(|g| -g);
+        if let Some(e) = depth_error.filter(|e| e.abs() > report.tolerance_mm) {
+            report.warnings.push(render::Diagnostic {
+                line: t.span.line,
+                column: t.span.column,
+                code: "LS-THREAD-DEPTH".into(),
+                message: format!(
+                    "thread depth error: the thread is cut {:.3} mm too {} (X{:.3} reached, X{:.3} expected)",
+                    e.abs(),
+                    if e > 0.0 { "deep" } else { "shallow" },
+                    achieved.unwrap_or(f64::NAN),
+                    expected.unwrap_or(f64::NAN),
+                ),
+            });
+        }
+        report.threads.push(render::ThreadCheck {
+            line: t.span.line,
+            inside: t.surface == stock::Surface::Bore,
+            lead_mm: t.lead,
+            x_mm: t.x(),
+            expected_x_mm: expected.unwrap_or(f64::NAN),
+            pass_depths_mm: t.pass_depths.clone(),
+            achieved_x_mm: achieved,
+            depth_error_mm: depth_error,
+        });
+    }
+}
+
 /// Programs up to this many moves get stock snapshots for the HTML slider.
 const SNAPSHOT_MAX_MOVES: usize = 5_000;
 /// How many snapshots (besides the blank and the final part).

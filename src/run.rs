@@ -291,6 +291,8 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     });
     let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
     crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
+    let target = args.target.is_some().then(|| intents[0].part.as_slice());
+    crate::report::add_threads(&mut report, &loaded, &tools, &sim, target);
     report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
 
     // Render every report first, then write them all to disk, then make them visible:

@@ -36,3 +36,368 @@ fn g76_two_block_m20x1_5_passes() {
         .filter(|s| s.motion == expander::Motion::Thread)
         .all(|s| (s.lead - 1.5).abs() < 1e-12));
 }
+
+/// dialects.md §7 T10 (`fanuc-a`, Φ20 × 40 bar, tool 4 a sharp 60° OD insert).
+const T10: &str = "G21 G99 T0404 ;\nG97 S500 M03 ;\nG00 X22. Z5. ;\nG92 X19.2 Z-20. F3. Q0 ;\nX18.6 Q0 ;\nG92 X19.2 Z-20. F3. Q180000 ;\nX18.6 Q180000 ;\nG00 X100. Z100. ;\nM30 ;\n";
+
+fn t10(program: &str) -> (expander::Toolpath, stock::Simulation) {
+    let machine = expander::Machine::for_control(expander::Control::FanucA);
+    let blank = stock::Blank::bar(20.0, 40.0, 0.0, None).unwrap();
+    let tools =
+        stock::ToolTable::from_toml(&common::read(&common::asset("tools/thread60.toml"))).unwrap();
+    common::pipeline(program, &machine, &blank, &tools)
+}
+
+/// The Z of the thread roots in the final section: the vertices of the outside at the
+/// root radius (a sharp insert leaves each stamp's tip as one vertex), sorted downward.
+fn roots_at(sim: &stock::Simulation, r: f64) -> Vec<f64> {
+    let mut z: Vec<f64> = sim
+        .final_shapes
+        .iter()
+        .flat_map(|s| s.outer.iter())
+        .filter(|p| (p[1] - r).abs() < 1e-3 && p[0] < 0.0)
+        .map(|p| p[0])
+        .collect();
+    z.sort_by(|a, b| b.total_cmp(a));
+    z.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
+    z
+}
+
+/// T10: four passes of lead 3; the Q180000 passes are stamped 1.5 mm (L·180/360) further
+/// along the move. From Z5 down, the first start passes the section at Z 5 − 3k, the second
+/// at Z 3.5 − 3k; in the bar (Z < 0) that is a root Φ18.6 (r 9.3) every 1.5 mm at
+/// Z −1, −2.5, …, −19 (and the end stamp at Z −20). Between two roots 1.5 apart the 60°
+/// V's are 2·0.7·tan 30° = 0.808 wide at the crest, so the crest Φ20 stays between them
+/// (at Z −0.25 − 1.5k).
+#[test]
+fn t10_two_start_g92_q() {
+    let (tp, sim) = t10(T10);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert!(tp
+        .warnings
+        .iter()
+        .all(|w| w.code != "LS-THREAD-Q-NOT-MODAL"));
+    let passes: Vec<_> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .collect();
+    assert_eq!(passes.len(), 4);
+    let phases: Vec<f64> = passes.iter().map(|s| s.thread_phase).collect();
+    assert_eq!(phases, [0.0, 0.0, 0.5, 0.5]);
+    assert!(passes.iter().all(|s| s.lead == 3.0));
+    // the two tooth sets, measured in the section: roots every 1.5 mm, a half lead apart
+    let roots = roots_at(&sim, 9.3);
+    let want: Vec<f64> = (0..13)
+        .map(|k| -1.0 - 1.5 * k as f64)
+        .chain([-20.0])
+        .collect();
+    assert_eq!(roots.len(), want.len(), "{roots:?}");
+    for (z, w) in roots.iter().zip(&want) {
+        assert!((z - w).abs() < 2e-3, "root at {z}, expected {w}: {roots:?}");
+    }
+    for k in 0..12 {
+        let root = -1.0 - 1.5 * k as f64;
+        let r = stock::surface_radius_at(&sim.final_shapes, root, stock::Surface::Outer).unwrap();
+        assert!((r - 9.3).abs() < 2e-3, "root Φ{} at Z{root}", 2.0 * r);
+        let crest = root + 0.75;
+        let r = stock::surface_radius_at(&sim.final_shapes, crest, stock::Surface::Outer).unwrap();
+        assert!((r - 10.0).abs() < 2e-3, "crest Φ{} at Z{crest}", 2.0 * r);
+    }
+    let minor = stock::deepest_radius(&sim.final_shapes, 0.0, -20.0, stock::Surface::Outer);
+    assert!((minor.unwrap() - 9.3).abs() < 2e-3, "{minor:?}");
+}
+
+/// T10 variant: `X18.6 ;` without Q on the last pass threads at 0° (Q is not modal): it
+/// recuts the first start, is warned at its line (7), and the second start keeps its root
+/// Φ19.2 (r 9.6) at Z −2.5 − 3k while the first start's is Φ18.6 at Z −1 − 3k.
+#[test]
+fn t10_q_not_modal_warns() {
+    let (tp, sim) = t10(&T10.replace("X18.6 Q180000 ;", "X18.6 ;"));
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let warned: Vec<u32> = tp
+        .warnings
+        .iter()
+        .filter(|w| w.code == "LS-THREAD-Q-NOT-MODAL")
+        .map(|w| w.span.line)
+        .collect();
+    assert_eq!(warned, [7]);
+    let last = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .last()
+        .unwrap();
+    assert_eq!(last.thread_phase, 0.0);
+    for k in 0..6 {
+        let first = -1.0 - 3.0 * k as f64;
+        let second = -2.5 - 3.0 * k as f64;
+        let at = |z| stock::surface_radius_at(&sim.final_shapes, z, stock::Surface::Outer).unwrap();
+        assert!((at(first) - 9.3).abs() < 2e-3, "Z{first}: r {}", at(first));
+        assert!(
+            (at(second) - 9.6).abs() < 2e-3,
+            "Z{second}: r {}",
+            at(second)
+        );
+    }
+}
+
+/// G32 takes Q for its own block only; a Q with a decimal point or beyond 360° is an alarm
+/// at the Q word.
+#[test]
+fn g32_start_angle() {
+    let expand = |text: &str| {
+        let program = gcode::parse(text).unwrap();
+        expander::expand(
+            &program,
+            &expander::Machine::for_control(expander::Control::FanucA),
+            &Default::default(),
+        )
+    };
+    let tp = expand("G99 M03 S500 T0404\nG00 X19.2 Z5\nG32 Z-20 F3 Q90000\nG32 Z-21\nM30\n");
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let phases: Vec<f64> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .map(|s| s.thread_phase)
+        .collect();
+    assert_eq!(phases, [0.25, 0.0]);
+    for bad in ["Q90.", "Q360001"] {
+        let tp = expand(&format!(
+            "G99 M03 S500\nG00 X19.2 Z5\nG32 Z-20 F3 {bad}\nM30\n"
+        ));
+        assert_eq!(tp.alarms.len(), 1, "{bad}");
+        assert_eq!(tp.alarms[0].code, "LS-THREAD-Q");
+        assert_eq!(tp.alarms[0].span.column, 13, "{bad}");
+    }
+}
+
+/// The M20 × 1.5 G76 thread on a Φ20 bar with the sharp 60° tool 4.
+const M20: &str = "G99 M03 S600 T0404\nG00 X22 Z5\nG76 P021060 Q50 R0.05\nG76 X18.05 Z-25 P975 Q400 F1.5\nG00 X50 Z50\nM30\n";
+
+fn run_json(program: &str, extra: &[&str]) -> (i32, serde_json::Value) {
+    let (dir, path) = common::temp_program("thread.nc", program.as_bytes());
+    let json = dir.path().join("out.json");
+    let tools = common::asset("tools/thread60.toml");
+    let mut args = vec![
+        "run",
+        path.to_str().unwrap(),
+        "--stock",
+        "20x40",
+        "--tools",
+        tools.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+        "--quiet",
+    ];
+    args.extend_from_slice(extra);
+    let out = common::latsim(&args);
+    let text = std::fs::read_to_string(&json).unwrap_or_else(|_| panic!("{}", out.stderr));
+    (out.code, serde_json::from_str(&text).unwrap())
+}
+
+/// The report's `threads`: line 4, lead 1.5, final X 18.05 (20 − 2·0.975), the eight pass
+/// depths of `g76_two_block_m20x1_5_passes` as infeeds (0.4, 0.1657, 0.1272, 0.1072,
+/// 0.0944, 0.0306, 0.05, 0), and the minor diameter reached in the section: 18.05.
+#[test]
+fn m20_thread_reports_its_minor() {
+    let (code, j) = run_json(M20, &[]);
+    assert_eq!(code, 0, "{j:#}");
+    assert_eq!(j["verdict"], "clean");
+    let t = &j["threads"];
+    assert_eq!(t.as_array().unwrap().len(), 1, "{t:#}");
+    let t = &t[0];
+    assert_eq!(t["line"], 4);
+    assert_eq!(t["side"], "od");
+    assert_eq!(t["lead_mm"], 1.5);
+    assert_eq!(t["passes"], 8);
+    let x = |k: &str| t[k].as_f64().unwrap();
+    assert!((x("x") - 18.05).abs() < 1e-9);
+    assert!((x("achieved_x") - 18.05).abs() < 2e-3, "{t:#}");
+    assert!(x("depth_error_mm").abs() < 1e-3, "{t:#}");
+    let h = [0.4, 0.565685, 0.692820, 0.8, 0.894427, 0.925, 0.975, 0.975];
+    let depths: Vec<f64> = t["pass_depths_mm"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d.as_f64().unwrap())
+        .collect();
+    for (k, d) in depths.iter().enumerate() {
+        let want = h[k] - if k == 0 { 0.0 } else { h[k - 1] };
+        assert!(
+            (d - want).abs() < 2e-3,
+            "pass {k}: {d} vs {want}: {depths:?}"
+        );
+    }
+}
+
+/// The same program cut to X17.65 against a target drawing the thread's minor at Φ18.05
+/// (Z0 to Z−25, Φ20 behind it): 0.2 mm too deep (radial, (18.05 − 17.65)/2), a thread depth
+/// error at line 4, and the run fails like a gouge.
+#[test]
+fn thread_too_deep_is_a_finding() {
+    let (dir, target) = common::temp_program(
+        "m20.toml",
+        b"start = [0.0, 0.0]\npath = [\n  { to = [0.0, 18.05] },\n  { to = [-25.0, 18.05] },\n  { to = [-25.0, 20.0] },\n  { to = [-40.0, 20.0] },\n  { to = [-40.0, 0.0] },\n]\n",
+    );
+    let _keep = dir;
+    let deep = M20.replace("X18.05 Z-25", "X17.65 Z-25");
+    let (code, j) = run_json(&deep, &["--target", target.to_str().unwrap()]);
+    let t = &j["threads"][0];
+    let x = |k: &str| t[k].as_f64().unwrap();
+    assert!((x("achieved_x") - 17.65).abs() < 2e-3, "{t:#}");
+    assert!((x("expected_x") - 18.05).abs() < 2e-3, "{t:#}");
+    assert!((x("depth_error_mm") - 0.2).abs() < 1e-3, "{t:#}");
+    assert_eq!(j["verdict"], "gouge", "{j:#}");
+    assert_eq!(code, 1);
+    let warned = j["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w["code"] == "LS-THREAD-DEPTH" && w["line"] == 4);
+    assert!(warned, "{:#}", j["warnings"]);
+    // the program's own X18.05 against the same target is clean
+    let (code, j) = run_json(M20, &["--target", target.to_str().unwrap()]);
+    assert!(j["threads"][0]["depth_error_mm"].as_f64().unwrap().abs() < 1e-3);
+    assert_eq!(code, 0, "{j:#}");
+}
+
+/// An ID M30 × 2 thread in a Φ27.9 bore of a Φ40 tube (Z0…−40): G76 from X24 to X30 at
+/// Z−20, height k 1.05 ((30 − 27.9)/2), Δd 0.3.
+const M30_ID: &str = "G99 M03 S400 T0404\nG00 X24 Z5\nG76 P011060 Q50 R0.05\nG76 X30 Z-20 P1050 Q300 F2\nG00 X26 Z50\nM30\n";
+
+fn run_id(side: &str) -> (i32, serde_json::Value) {
+    let (dir, tools) = common::temp_program(
+        "id.toml",
+        format!("[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\nside = \"{side}\"\n")
+            .as_bytes(),
+    );
+    let _keep = dir;
+    let (pdir, path) = common::temp_program("m30.nc", M30_ID.as_bytes());
+    let json = pdir.path().join("out.json");
+    let out = common::latsim(&[
+        "run",
+        path.to_str().unwrap(),
+        "--stock",
+        "40x40",
+        "--bore",
+        "27.9",
+        "--tools",
+        tools.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+        "--quiet",
+    ]);
+    let text = std::fs::read_to_string(&json).unwrap_or_else(|_| panic!("{}", out.stderr));
+    (out.code, serde_json::from_str(&text).unwrap())
+}
+
+/// With an ID insert the wall stays: the outside is Φ40 everywhere (Z0…−40), the bore is
+/// Φ27.9 behind the thread (Z−30), and the thread reaches its major Φ30 (root r 15) over
+/// Z0…−20, teeth 2 mm apart. With the table saying OD for the same program, the OD body
+/// sweeps through the wall: an alarm at the thread's line says so.
+#[test]
+fn id_thread_in_a_bore() {
+    let (code, j) = run_id("id");
+    assert_eq!(code, 0, "{j:#}");
+    assert!(
+        j["crashes"].as_array().unwrap().is_empty(),
+        "{:#}",
+        j["crashes"]
+    );
+    let t = &j["threads"][0];
+    assert_eq!(t["side"], "id", "{t:#}");
+    assert!((t["x"].as_f64().unwrap() - 30.0).abs() < 1e-9);
+    assert!(
+        (t["achieved_x"].as_f64().unwrap() - 30.0).abs() < 2e-3,
+        "{t:#}"
+    );
+    // the final section, read back from the report (x is the diameter)
+    let shapes: Vec<stock::Shape> = j["final"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| stock::Shape {
+            outer: p["outer"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|q| [q[0].as_f64().unwrap(), q[1].as_f64().unwrap() / 2.0])
+                .collect(),
+            holes: vec![],
+        })
+        .collect();
+    let at = |z: f64, s| stock::surface_radius_at(&shapes, z, s).unwrap();
+    for k in 0..40 {
+        let z = -0.5 - k as f64;
+        assert!(
+            (at(z, stock::Surface::Outer) - 20.0).abs() < 1e-6,
+            "wall cut at Z{z}"
+        );
+    }
+    assert!((at(-30.0, stock::Surface::Bore) - 13.95).abs() < 1e-6);
+    let major = stock::deepest_radius(&shapes, -1.0, -19.0, stock::Surface::Bore).unwrap();
+    assert!((major - 15.0).abs() < 2e-3, "{major}");
+    // teeth: between two roots 2 apart a crest of the bore stays (r 13.95)
+    let crest = (0..200)
+        .map(|i| at(-3.0 - 0.01 * i as f64, stock::Surface::Bore))
+        .fold(f64::INFINITY, f64::min);
+    assert!((crest - 13.95).abs() < 1e-6, "{crest}");
+
+    let (code, j) = run_id("od");
+    assert_eq!(code, 1, "{j:#}");
+    // the OD body's rapids back through the wall are crashes too
+    assert!(!j["crashes"].as_array().unwrap().is_empty());
+    let alarm = j["alarms"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|a| a["code"] == "LS-THREAD-SIDE")
+        .unwrap_or_else(|| panic!("{:#}", j["alarms"]));
+    assert_eq!(alarm["line"], 4);
+    assert!(alarm["message"].as_str().unwrap().contains("side = \"id\""));
+}
+
+/// A tapered thread by G92 R on a cone blank (Φ18 at Z0 to Φ20 at Z−20, radius +0.05 per mm
+/// toward −Z, then Φ20 to Z−40): `G92 X17.8 Z-20 F2` from Z5 follows the same cone
+/// (R = start − end radius over the 25 mm from Z5: −0.05·25), 1.1 mm below it. Roots
+/// (stamps at Z 5 − 2k) at Z −1 − 2k on the root cone r = 8.9 − 0.05·(Z + 20); the crests
+/// midway (Z −2k) stay on the blank's cone r = 9 − 0.05·Z (the V's are 2·1.1·tan 30° =
+/// 1.27 wide there, the lead 2).
+#[test]
+fn tapered_thread_crests_on_the_cone() {
+    let machine = expander::Machine::for_control(expander::Control::FanucA);
+    let blank = stock::Blank::from_profile_toml(
+        "start = [0.0, 0.0]\npath = [\n  { to = [0.0, 18.0] },\n  { to = [-20.0, 20.0] },\n  { to = [-40.0, 20.0] },\n  { to = [-40.0, 0.0] },\n]\n",
+        0.001,
+    )
+    .unwrap();
+    let tools =
+        stock::ToolTable::from_toml(&common::read(&common::asset("tools/thread60.toml"))).unwrap();
+    let (tp, sim) = common::pipeline(
+        "G21 G99 T0404 ;\nG97 S500 M03 ;\nG00 X22. Z5. ;\nG92 X17.8 Z-20. R-1.25 F2. ;\nG00 X100. Z100. ;\nM30 ;\n",
+        &machine,
+        &blank,
+        &tools,
+    );
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let at =
+        |z: f64| stock::surface_radius_at(&sim.final_shapes, z, stock::Surface::Outer).unwrap();
+    for k in 1..9 {
+        let crest = -2.0 * k as f64;
+        let cone = 9.0 - 0.05 * crest;
+        assert!(
+            (at(crest) - cone).abs() < 2e-3,
+            "crest Z{crest}: r {} vs {cone}",
+            at(crest)
+        );
+        let root = crest + 1.0;
+        let line = 8.9 - 0.05 * (root + 20.0);
+        assert!(
+            (at(root) - line).abs() < 2e-3,
+            "root Z{root}: r {} vs {line}",
+            at(root)
+        );
+    }
+}

@@ -88,6 +88,7 @@ mod tests {
             tool: 1,
             hint: crate::ToolHint::Table,
             lead: 0.0,
+            thread_phase: 0.0,
             feed,
             span: Span::default(),
         }

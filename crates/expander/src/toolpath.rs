@@ -126,6 +126,10 @@ pub struct Segment {
     pub hint: ToolHint,
     /// Thread lead (mm) for [`Motion::Thread`], else 0.
     pub lead: f64,
+    /// Start shift of a [`Motion::Thread`] move as a fraction of its lead (multi-start Q:
+    /// a start angle of q degrees is q / 360; spec/dialects.md §4.7), else 0. The stamped
+    /// tool outlines move by `thread_phase · lead` along the move.
+    pub thread_phase: f64,
     /// Feed in force, for cycle time.
     pub feed: Feed,
     /// The block that produced this segment.

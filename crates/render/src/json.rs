@@ -100,6 +100,19 @@ struct GrooveJ {
 }
 
 #[derive(Serialize)]
+struct ThreadJ {
+    line: u32,
+    side: &'static str,
+    lead_mm: Option<f64>,
+    x: Option<f64>,
+    expected_x: Option<f64>,
+    passes: usize,
+    pass_depths_mm: Vec<Option<f64>>,
+    achieved_x: Option<f64>,
+    depth_error_mm: Option<f64>,
+}
+
+#[derive(Serialize)]
 struct DeviationJ {
     overcut_area_mm2: Option<f64>,
     undercut_area_mm2: Option<f64>,
@@ -134,6 +147,8 @@ struct Doc<'a> {
     variables: Vec<VariableJ<'a>>,
     /// Lines executed more than once (additive field).
     line_counts: Vec<LineCountJ>,
+    /// The threads and their depth as cut (additive field).
+    threads: Vec<ThreadJ>,
 }
 
 #[derive(Serialize)]
@@ -217,6 +232,21 @@ pub(crate) fn json(report: &Report) -> String {
             .line_counts
             .iter()
             .map(|&(line, count)| LineCountJ { line, count })
+            .collect(),
+        threads: report
+            .threads
+            .iter()
+            .map(|t| ThreadJ {
+                line: t.line,
+                side: if t.inside { "id" } else { "od" },
+                lead_mm: r6(t.lead_mm),
+                x: r6(t.x_mm),
+                expected_x: r6(t.expected_x_mm),
+                passes: t.pass_depths_mm.len(),
+                pass_depths_mm: t.pass_depths_mm.iter().map(|&d| r6(d)).collect(),
+                achieved_x: t.achieved_x_mm.and_then(r6),
+                depth_error_mm: t.depth_error_mm.and_then(r6),
+            })
             .collect(),
     };
     // Serialising plain structs of strings, integers and Option<f64> cannot fail.

@@ -167,6 +167,31 @@ pub struct Report {
     pub variables: Vec<(String, Option<f64>)>,
     /// Custom macro B: source lines executed more than once, with how many times.
     pub line_counts: Vec<(u32, u64)>,
+    /// The threads the program cuts, checked in the final section (the CLI fills it).
+    pub threads: Vec<ThreadCheck>,
+}
+
+/// One thread (a thread cycle or a run of thread passes) and its depth as cut.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ThreadCheck {
+    /// Source line (1-based) of its first pass.
+    pub line: u32,
+    /// Cut in the bore (an ID thread) rather than the outside.
+    pub inside: bool,
+    /// Programmed lead, mm.
+    pub lead_mm: f64,
+    /// Programmed final X (the deepest pass's end): minor diameter (OD), major (ID).
+    pub x_mm: f64,
+    /// The diameter that should be reached: `--target`'s surface over the thread, else
+    /// [`ThreadCheck::x_mm`].
+    pub expected_x_mm: f64,
+    /// Radial depth of each pass, mm.
+    pub pass_depths_mm: Vec<f64>,
+    /// Minor (OD) / major (ID) diameter reached in the final section over the thread's
+    /// length; `None`: no material there.
+    pub achieved_x_mm: Option<f64>,
+    /// Achieved depth minus the expected depth, radial mm (positive: too deep).
+    pub depth_error_mm: Option<f64>,
 }
 
 /// A G75.1 groove the program defines, as its intended outline.
@@ -217,7 +242,8 @@ pub enum Verdict {
     Alarm,
     /// A rapid ran into stock.
     Crash,
-    /// Part material removed.
+    /// Part material removed (a gouge, or a thread cut deeper than expected by more than
+    /// the tolerance).
     Gouge,
 }
 
@@ -228,7 +254,12 @@ impl Report {
             Verdict::Alarm
         } else if !self.crashes.is_empty() {
             Verdict::Crash
-        } else if !self.gouges.is_empty() {
+        } else if !self.gouges.is_empty()
+            || self
+                .threads
+                .iter()
+                .any(|t| t.depth_error_mm.is_some_and(|e| e > self.tolerance_mm))
+        {
             Verdict::Gouge
         } else {
             Verdict::Clean

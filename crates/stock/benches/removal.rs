@@ -22,6 +22,7 @@ fn seg(motion: Motion, from: Pt, to: Pt) -> Segment {
         tool: 1,
         hint: expander::ToolHint::Table,
         lead: 0.0,
+        thread_phase: 0.0,
         feed: Feed::Rapid,
         span: Span::default(),
     }

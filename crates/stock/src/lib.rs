@@ -29,15 +29,16 @@ pub use blank::Blank;
 pub use deviation::{deviation, Deviation, Finding, Intent};
 pub use error::StockError;
 pub use measure::{
-    area, groove_deviation, hausdorff, leftover_spot, revolved_volume, symmetric_difference_area,
-    LeftoverSpot,
+    area, deepest_radius, groove_deviation, hausdorff, least_gap, leftover_spot, revolved_volume,
+    surface_radius_at, symmetric_difference_area, threads, LeftoverSpot, Reference, Surface,
+    Thread,
 };
 pub use outline::Outline;
 pub use overlay::BoolOp;
 pub use profile::profile_from_toml;
 pub use removal::{simulate, Crash, SimOptions, Simulation, CRASH_MIN_AREA};
 pub use section::rear_tools;
-pub use tools::{AxisDir, GroovingBlade, Insert, Tool, ToolTable};
+pub use tools::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool, ToolTable};
 
 /// A polygon with holes in (z, r): `outer` counter-clockwise, `holes` clockwise; rings are
 /// not closed (the first point is not repeated).

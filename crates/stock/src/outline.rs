@@ -257,10 +257,11 @@ pub(crate) const THREAD_PROFILE_HEIGHT: f64 = 3.0;
 /// Height of the insert body above the profile (parallel sides), mm.
 pub(crate) const THREAD_BODY_HEIGHT: f64 = 12.0;
 
-/// An OD threading insert pointing −X: reference at the middle of its tip flat, flanks at
-/// ±angle/2 from the X axis for [`THREAD_PROFILE_HEIGHT`], then a body with parallel sides
-/// up to [`THREAD_BODY_HEIGHT`] more.
-pub(crate) fn threading(angle: f64, tip_flat: f64) -> Outline {
+/// A threading insert: reference at the middle of its tip flat, flanks at ±angle/2 from the
+/// X axis for [`THREAD_PROFILE_HEIGHT`], then a body with parallel sides up to
+/// [`THREAD_BODY_HEIGHT`] more; toward +X (an OD insert pointing −X), or mirrored toward −X
+/// when `inside` (an ID insert in the bore pointing +X).
+pub(crate) fn threading(angle: f64, tip_flat: f64, inside: bool) -> Outline {
     let f = tip_flat / 2.0;
     let w = f + THREAD_PROFILE_HEIGHT * (angle / 2.0).to_radians().tan();
     let top = THREAD_PROFILE_HEIGHT + THREAD_BODY_HEIGHT;
@@ -271,7 +272,8 @@ pub(crate) fn threading(angle: f64, tip_flat: f64) -> Outline {
         [w, top],
         [-w, top],
         [-w, THREAD_PROFILE_HEIGHT],
-    ];
+    ]
+    .map(|[z, r]| if inside { [z, -r] } else { [z, r] });
     Outline {
         parts: vec![convex_hull(&pts)],
     }
@@ -396,10 +398,15 @@ mod tests {
         let d = drill(10.0, 118.0, 60.0);
         let (min, max) = d.bbox().unwrap();
         assert_eq!((min[0], max[0], min[1], max[1]), (0.0, 60.0, -5.0, 5.0));
-        let t = threading(60.0, 0.0);
+        let t = threading(60.0, 0.0, false);
         let p = &t.parts[0];
         assert!(p.contains(&[0.0, 0.0]) || p.iter().any(|q| q[1] == 0.0 && q[0].abs() < 1e-12));
         let (min, max) = t.bbox().unwrap();
         assert!((max[0] - 3.0 * 30f64.to_radians().tan()).abs() < 1e-12 && min[1] == 0.0);
+        assert_eq!(max[1], 15.0);
+        // the ID insert is its mirror: tip at the reference, body toward −X
+        let (min, max) = threading(60.0, 0.0, true).bbox().unwrap();
+        assert_eq!((min[1], max[1]), (-15.0, 0.0));
+        assert!((max[0] - 3.0 * 30f64.to_radians().tan()).abs() < 1e-12);
     }
 }

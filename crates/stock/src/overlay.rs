@@ -195,10 +195,12 @@ pub(crate) fn ring_perimeter(ring: &[IPt]) -> f64 {
 }
 
 /// Exact orientation of `c` against the directed line `a → b`: 1 left, -1 right, 0 on it.
+/// Differences are taken in i64 and products in i128: a tile box may reach the ends of the
+/// i32 grid (an OD threading insert's body swept across a bore overflowed the i32 difference).
 pub(crate) fn orient(a: IPt, b: IPt, c: IPt) -> i64 {
-    let v =
-        i64::from(b.x - a.x) * i64::from(c.y - a.y) - i64::from(b.y - a.y) * i64::from(c.x - a.x);
-    v.signum()
+    let d = |p: i32, q: i32| i128::from(i64::from(p) - i64::from(q));
+    let v = d(b.x, a.x) * d(c.y, a.y) - d(b.y, a.y) * d(c.x, a.x);
+    v.signum() as i64
 }
 
 /// True when every point of `inner` is inside or on the convex counter-clockwise `outer`.

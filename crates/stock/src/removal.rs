@@ -761,6 +761,7 @@ mod tests {
             tool: 1,
             hint: expander::ToolHint::Table,
             lead: 0.0,
+            thread_phase: 0.0,
             feed: Feed::Rapid,
             span: Span::default(),
         }
@@ -934,6 +935,7 @@ mod tests {
             Tool::Threading {
                 angle: 60.0,
                 tip_flat: 0.0,
+                side: crate::tools::ThreadSide::Od,
             },
         )]);
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();

@@ -79,6 +79,7 @@ mod tests {
             tool,
             hint: expander::ToolHint::Table,
             lead: 0.0,
+            thread_phase: 0.0,
             feed: Feed::Rapid,
             span: Span::default(),
         }

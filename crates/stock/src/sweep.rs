@@ -419,16 +419,21 @@ impl<'a> SweepBuilder<'a> {
             ));
             return None;
         }
-        let mut pts: Vec<P> = (0..=n as usize)
-            .map(|k| {
-                let t = if len > 0.0 {
-                    k as f64 * seg.lead / len
-                } else {
-                    0.0
-                };
-                [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]
-            })
-            .collect();
+        // The tool passes the section plane once a lead, shifted by the start angle
+        // (multi-start Q): at from + (phase + k)·lead along the move; the start and end
+        // points are where the tool enters and leaves the thread.
+        let phase = seg.thread_phase.rem_euclid(1.0);
+        let at = |s: f64| {
+            let t = if len > 0.0 { s / len } else { 0.0 };
+            [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]
+        };
+        let mut pts: Vec<P> = vec![p];
+        pts.extend(
+            (0..=n as usize)
+                .map(|k| (phase + k as f64) * seg.lead)
+                .filter(|&s| s > 0.0 && s < len)
+                .map(at),
+        );
         pts.push(q);
         Some(pts)
     }

@@ -124,6 +124,7 @@ impl FinishingShape {
                 tool: 0,
                 hint: crate::ToolHint::Table,
                 lead: 0.0,
+                thread_phase: 0.0,
                 feed: crate::Feed::Rapid,
                 span: e.span,
             };

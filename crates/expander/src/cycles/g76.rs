@@ -1032,6 +1032,7 @@ pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
     let mut out = super::Output {
         moves,
         lead: Some(params.lead),
+        thread_phase: params.start_angle / 360.0,
         ..super::Output::default()
     };
     if first_depth_exceeds_height(&params) {

@@ -80,6 +80,8 @@ pub(crate) struct Retained {
     pub(crate) g73: Option<(f64, f64, u32)>,
     /// G76 first block: m r a, Δdmin, d.
     pub(crate) g76: Option<g76::FirstBlock>,
+    /// The last G92 block had a start angle Q ≠ 0 (a modal repeat without Q is warned).
+    pub(crate) g92_shifted: bool,
     /// The drilling cycle in force (modal until G80 or a group-01 code) and its words.
     pub(crate) drill: Option<drill::DrillWords>,
 }
@@ -147,6 +149,9 @@ pub(crate) struct Output {
     /// The lead of the cycle's thread moves, mm (G76 reads F or E itself); `None`: the F in
     /// force.
     pub(crate) lead: Option<f64>,
+    /// Start shift of the cycle's thread moves as a fraction of the lead (multi-start Q:
+    /// q / 360), 0 without Q.
+    pub(crate) thread_phase: f64,
     /// Dwell the cycle makes (drilling P), s.
     pub(crate) dwell_s: f64,
     /// G70: the move that starts the compensation (the block that wrote G41/G42; 0: the
@@ -247,6 +252,26 @@ impl Cycle<'_, '_> {
             (None, None) => Ok(None),
         }
     }
+}
+
+/// The thread start angle `Q` of G32/G92 in degrees (spec/dialects.md §4.7): 0.001° units,
+/// no decimal point, `Q0`–`Q360000`; 0 without Q (not modal on FANUC).
+pub(crate) fn thread_start_angle(words: &mut Words) -> Result<f64, Diagnostic> {
+    let Some(w) = words.take('Q') else {
+        return Ok(0.0);
+    };
+    if w.has_point || w.value.fract() != 0.0 || !(0.0..=360_000.0).contains(&w.value) {
+        return Err(Diagnostic::new(
+            w.span,
+            "LS-THREAD-Q",
+            format!(
+                "Q{} is not a thread start angle: Q is 0–360000 in 0.001° without a decimal point",
+                w.value
+            ),
+            "write the start angle in thousandths of a degree, e.g. Q180000 for the second start of a two-start thread",
+        ));
+    }
+    Ok(w.value / 1000.0)
 }
 
 /// Run the cycle `c.code`.

@@ -65,6 +65,7 @@ impl Interp<'_> {
         // block that wrote G41/G42 inside the shape; cancel back to A).
         let side = out.comp.and_then(|shape_side| shape_side.or(self.comp));
         let feed = self.feed;
+        self.thread_phase = out.thread_phase;
         for (k, m) in out.moves.into_iter().enumerate() {
             if k == out.comp_from {
                 if let Some(side) = side {
@@ -91,6 +92,7 @@ impl Interp<'_> {
             }
         }
         self.feed = feed;
+        self.thread_phase = 0.0;
         self.flush_compensation();
         Ok(out.resume_at.map_or(Flow::Next, Flow::Jump))
     }

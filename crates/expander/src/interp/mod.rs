@@ -184,6 +184,9 @@ pub(crate) struct Interp<'m> {
     /// Haas M23 (on, the power-on state, **Interpretation**) / M24 (off): the thread
     /// pull-out chamfer of G76 (spec/dialects.md §3.5).
     pub(crate) thread_chamfer: bool,
+    /// Start shift of the thread moves being pushed, a fraction of the lead (the Q of the
+    /// G32/G92/G76 block; 0 otherwise).
+    thread_phase: f64,
     /// Return level of the drilling cycles (the profile's; G98/G99 in systems B/C set it).
     pub(crate) drill_return: crate::DrillReturn,
     /// Custom macro B's variables and program structure, when it is on.
@@ -240,6 +243,7 @@ impl<'m> Interp<'m> {
             noted: vec![],
             frames: frame::Frames::new(machine),
             thread_chamfer: true,
+            thread_phase: 0.0,
             drill_return: machine.drill_return,
             macros: None,
         }

@@ -178,6 +178,11 @@ impl Interp<'_> {
             tool: self.tool,
             hint,
             lead,
+            thread_phase: if motion == Motion::Thread {
+                self.thread_phase
+            } else {
+                0.0
+            },
             feed,
             span,
         };
@@ -232,7 +237,10 @@ impl Interp<'_> {
             MotionMode::Line => self.push(b, Motion::Feed, to, None, 0.0),
             MotionMode::Thread => {
                 let lead = self.feed * self.unit();
-                self.push(b, Motion::Thread, to, None, lead)
+                self.thread_phase = crate::cycles::thread_start_angle(used)? / 360.0;
+                let pushed = self.push(b, Motion::Thread, to, None, lead);
+                self.thread_phase = 0.0;
+                pushed
             }
             MotionMode::Cycle(_) => Ok(()),
             MotionMode::Cw | MotionMode::Ccw => {

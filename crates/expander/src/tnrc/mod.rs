@@ -367,6 +367,7 @@ mod tests {
             tool: 1,
             hint: ToolHint::Table,
             lead: 0.0,
+            thread_phase: 0.0,
             feed: Feed::PerMinute(100.0),
             span: Span::default(),
         }

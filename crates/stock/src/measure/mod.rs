@@ -4,9 +4,13 @@
 
 mod groove;
 mod leftover;
+mod thread;
 
 pub use groove::groove_deviation;
 pub use leftover::{leftover_spot, LeftoverSpot};
+pub use thread::{
+    deepest_radius, least_gap, surface_radius_at, threads, Reference, Surface, Thread,
+};
 
 use crate::geom::{pts, P};
 use crate::overlay::{boolean, BoolOp};

@@ -151,13 +151,25 @@ pub enum Tool {
         /// Length of the body, mm (default 60).
         reach: f64,
     },
-    /// An OD threading insert pointing −X.
+    /// A threading insert: OD pointing −X, ID (a boring bar) pointing +X.
     Threading {
         /// Thread angle, degrees (default 60).
         angle: f64,
         /// Width of the tip flat, mm (default 0).
         tip_flat: f64,
+        /// Outside or inside thread (`side = "od" | "id"`, default od).
+        side: ThreadSide,
     },
+}
+
+/// The side a threading insert cuts: OD (body toward +X, the tip cuts inward) or ID (body
+/// toward −X, in the bore: the tip cuts outward).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ThreadSide {
+    /// Outside thread: the insert points −X.
+    Od,
+    /// Inside thread: the insert points +X.
+    Id,
 }
 
 impl Tool {
@@ -223,9 +235,14 @@ impl Tool {
                 point_angle,
                 ..
             } => format!("drill Ø{}, {}° point", n(diameter), n(point_angle)),
-            Self::Threading { angle, tip_flat } => {
+            Self::Threading {
+                angle,
+                tip_flat,
+                side,
+            } => {
                 format!(
-                    "threading {}°{}",
+                    "threading {}{}°{}",
+                    if side == ThreadSide::Id { "ID " } else { "" },
                     n(angle),
                     if tip_flat > 0.0 {
                         format!(", flat {}", n(tip_flat))

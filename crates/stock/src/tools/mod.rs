@@ -10,7 +10,7 @@ mod outline_choice;
 mod schema;
 
 use crate::StockError;
-pub use kinds::{AxisDir, GroovingBlade, Insert, Tool};
+pub use kinds::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool};
 pub(crate) use outline_choice::hint_key;
 
 /// The tool table: T numbers to tools, in file order.

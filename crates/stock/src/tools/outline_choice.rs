@@ -44,7 +44,11 @@ impl Tool {
                 point_angle,
                 reach,
             } => outline::drill(diameter, point_angle, reach),
-            Self::Threading { angle, tip_flat } => outline::threading(angle, tip_flat),
+            Self::Threading {
+                angle,
+                tip_flat,
+                side,
+            } => outline::threading(angle, tip_flat, side == super::ThreadSide::Id),
         }
     }
 }

@@ -2,7 +2,7 @@
 //! refused with their line and column), then each entry validated into a [`Tool`] with
 //! errors naming the tool, the field and the line.
 
-use super::{AxisDir, GroovingBlade, Insert, Tool};
+use super::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool};
 use crate::error::{from_toml, line_col};
 use crate::StockError;
 use serde::Deserialize;
@@ -35,6 +35,7 @@ struct RawTool {
     point_angle: Option<f64>,
     angle: Option<f64>,
     tip_flat: Option<f64>,
+    side: Option<String>,
 }
 
 const HELP: &str = "each [[tool]] needs `t` and `kind` (turning | grooving | drill | threading) and only the fields of its kind";
@@ -170,7 +171,7 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
             ))
         }
     };
-    let fields: [(&'static str, bool); 15] = [
+    let fields: [(&'static str, bool); 16] = [
         ("insert", raw.insert.is_some()),
         ("holder", raw.holder.is_some()),
         ("nose_radius", raw.nose_radius.is_some()),
@@ -186,6 +187,7 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
         ("point_angle", raw.point_angle.is_some()),
         ("angle", raw.angle.is_some()),
         ("tip_flat", raw.tip_flat.is_some()),
+        ("side", raw.side.is_some()),
     ];
     let allowed: &[&str] = match raw.kind.as_str() {
         "turning" => &[
@@ -198,7 +200,7 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
         ],
         "grooving" => &["width", "width_dir", "shank_dir", "reach", "corner_radius"],
         "drill" => &["diameter", "point_angle", "reach"],
-        "threading" => &["angle", "tip_flat"],
+        "threading" => &["angle", "tip_flat", "side"],
         other => {
             return Err(err(
                 "kind",
@@ -329,9 +331,20 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
         },
         _ => {
             let angle = num("angle", raw.angle, Some(60.0), 0.0, 170.0, false)?;
+            let side = match raw.side.as_deref() {
+                None | Some("od") => ThreadSide::Od,
+                Some("id") => ThreadSide::Id,
+                Some(other) => {
+                    return Err(err(
+                        "side",
+                        format!("= \"{other}\" is not one of od, id (an OD insert cuts inward, an ID insert outward from the bore)"),
+                    ))
+                }
+            };
             Tool::Threading {
                 angle,
                 tip_flat: num("tip_flat", raw.tip_flat, Some(0.0), 0.0, 100.0, true)?,
+                side,
             }
         }
     };
@@ -364,6 +377,8 @@ mod tests {
                 "shank_dir",
             ),
             ("kind = \"laser\"", "kind"),
+            ("kind = \"threading\"\nside = \"inside\"", "side"),
+            ("kind = \"turning\"\nside = \"id\"", "side"),
         ];
         for (body, field) in cases {
             let text = format!("[[tool]]\nt = 5\n{body}\n");
@@ -376,5 +391,21 @@ mod tests {
                 other => panic!("{body}: {other:?}"),
             }
         }
+    }
+
+    #[test]
+    fn threading_side() {
+        use super::super::{ThreadSide, Tool};
+        let side = |body: &str| {
+            let t = ToolTable::from_toml(&format!("[[tool]]\nt = 4\nkind = \"threading\"\n{body}"))
+                .unwrap();
+            match t.get(4) {
+                Some(&Tool::Threading { side, .. }) => side,
+                other => panic!("{other:?}"),
+            }
+        };
+        assert_eq!(side(""), ThreadSide::Od);
+        assert_eq!(side("side = \"od\""), ThreadSide::Od);
+        assert_eq!(side("side = \"id\""), ThreadSide::Id);
     }
 }
