@@ -352,7 +352,11 @@ impl<'a> SweepBuilder<'a> {
             let (start, end) = (path[0], path[path.len() - 1]);
             let (dz, dr) = (end[0] - start[0], end[1] - start[1]);
             let len = dz.hypot(dr);
-            let dir = if len > 0.0 { [dz / len, dr / len] } else { [0.0, 0.0] };
+            let dir = if len > 0.0 {
+                [dz / len, dr / len]
+            } else {
+                [0.0, 0.0]
+            };
             // measured in the section like a rapid (mirrored when it runs below the axis)
             self.end(item, idx, true, start, dir);
             if let Some(it) = self.out.items.last_mut() {
@@ -420,9 +424,7 @@ impl<'a> SweepBuilder<'a> {
                         }
                         // inside the sweep of feeds just made: it meets no stock, removes
                         // nothing (only for exact runs: a merged chain is not the true sweep)
-                        Motion::Rapid if run.mid.is_empty() && run.contains(p, q) => {
-                            return true
-                        }
+                        Motion::Rapid if run.mid.is_empty() && run.contains(p, q) => return true,
                         _ => {}
                     }
                 }

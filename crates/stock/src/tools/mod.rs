@@ -49,7 +49,10 @@ impl ToolTable {
                 .filter_map(|(t, _, d, _)| d.clone().map(|d| (*t, d)))
                 .collect(),
             sizes: entries.iter().map(|(t, _, _, s)| (*t, *s)).collect(),
-            tools: entries.into_iter().map(|(t, tool, _, _)| (t, tool)).collect(),
+            tools: entries
+                .into_iter()
+                .map(|(t, tool, _, _)| (t, tool))
+                .collect(),
         })
     }
 
