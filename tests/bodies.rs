@@ -47,8 +47,9 @@ fn boring_bar_shank_rubs_a_phi20_bore() {
     assert!((c.area - 35.124).abs() < 1e-3, "area {}", c.area);
     // the bar never removes material: the bore is Φ21 exactly where the insert went
     assert!(sim.removed_area < 0.5 * 30.0 + 1e-6, "{}", sim.removed_area);
-    // the retract along the same line drags the bar back through the wall: a crash too
-    assert!(lines(&tp, &sim).contains(&(5, Some("boring bar"))));
+    // the retract along the same line drags the bar back through the wall: the same
+    // crash going on, reported once
+    assert_eq!(sim.crashes.len(), 1, "{:?}", lines(&tp, &sim));
 }
 
 #[test]
@@ -76,10 +77,8 @@ fn blade_sent_deeper_than_its_reach_crashes_its_holder() {
     // 10 mm deep: bottom at r 15, the holder from r 15 + 8 = 23 up, 2 mm wider than the
     // blade on each side (Z-12..-5): two 2 × 2 squares of the bar beside the slot
     let (tp, sim) = simulate(&groove(30.0), &blank, &tools);
-    assert_eq!(
-        lines(&tp, &sim),
-        vec![(4, Some("blade holder")), (5, Some("blade holder"))]
-    );
+    // (the retract that pulls the holder back out continues the crash: reported once)
+    assert_eq!(lines(&tp, &sim), vec![(4, Some("blade holder"))]);
     let c = &sim.crashes[0];
     assert!((c.area - 8.0).abs() < 1e-6, "area {}", c.area);
     // measured normal to the plunge (across Z): Z-12 to Z-5

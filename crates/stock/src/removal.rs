@@ -763,7 +763,21 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
         }
         i = j;
     }
-    out
+    // One crash a move: a move whose cutting outline crashed reports that crash, not its
+    // body's as well. And a body crash right after a crash continues it (the body is still
+    // in the stock that crash put it in, e.g. a retract after a crashing plunge): reported
+    // once, at the first move.
+    let mut kept: Vec<Crash> = Vec::with_capacity(out.len());
+    let mut last: Option<usize> = None;
+    for c in out {
+        let continues =
+            c.body.is_some() && last.is_some_and(|p| p == c.segment || p + 1 == c.segment);
+        last = Some(c.segment);
+        if !continues {
+            kept.push(c);
+        }
+    }
+    kept
 }
 
 #[cfg(test)]
