@@ -60,7 +60,7 @@ pub(crate) fn build(
 ) -> Report {
     let tp = &loaded.toolpath;
     // spec/simulation.md, "Rapids that cut": deeper than the profile's rapid_cut_tol is a
-    // crash, else a rapid scrape (a warning)
+    // crash, else a rapid scrape (a warning); a body touching stock is always a crash
     let cut = |c: &stock::Crash| {
         let span = tp.segments[c.segment].span;
         Crash {
@@ -70,19 +70,20 @@ pub(crate) fn build(
             r: c.at[1],
             area_mm2: c.area,
             depth_mm: c.depth,
+            body: c.body.map(str::to_string),
         }
     };
     let cut_tol = loaded.machine.rapid_cut_tol;
     let crashes: Vec<Crash> = sim
         .crashes
         .iter()
-        .filter(|c| c.depth > cut_tol)
+        .filter(|c| c.body.is_some() || c.depth > cut_tol)
         .map(cut)
         .collect();
     let rapid_cuts: Vec<Crash> = sim
         .crashes
         .iter()
-        .filter(|c| c.depth <= cut_tol)
+        .filter(|c| c.body.is_none() && c.depth <= cut_tol)
         .map(cut)
         .collect();
     let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(|d| diagnostic(loaded, d)).collect();

@@ -339,7 +339,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         let crash_at: Vec<String> = sim
             .crashes
             .iter()
-            .filter(|c| c.depth > cut_tol)
+            .filter(|c| c.body.is_some() || c.depth > cut_tol)
             .map(|c| loaded.place(segments[c.segment].span))
             .collect();
         let gouge_at: Vec<String> = deviation
@@ -389,8 +389,12 @@ const MAX_PRINTED: usize = 20;
 /// `crash_at`, `gouge_at`), at most [`MAX_PRINTED`] of each.
 fn print_findings(name: &str, crash_at: &[String], gouge_at: &[String], report: &render::Report) {
     for (c, at) in report.crashes.iter().zip(crash_at).take(MAX_PRINTED) {
+        let what = match &c.body {
+            Some(body) => format!("the tool's {body} meets stock"),
+            None => "rapid into stock".to_string(),
+        };
         eprintln!(
-            "{at}:{}: crash: rapid into stock at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² of stock",
+            "{at}:{}: crash: {what} at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² of stock",
             c.column,
             c.z,
             2.0 * c.r,

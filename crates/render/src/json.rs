@@ -69,6 +69,8 @@ struct CrashJ {
     x: Option<f64>,
     area_mm2: Option<f64>,
     depth_mm: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    body: Option<String>,
 }
 
 impl From<&crate::Crash> for CrashJ {
@@ -80,6 +82,7 @@ impl From<&crate::Crash> for CrashJ {
             x: r6(2.0 * c.r),
             area_mm2: r6(c.area_mm2),
             depth_mm: r6(c.depth_mm),
+            body: c.body.clone(),
         }
     }
 }

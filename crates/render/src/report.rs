@@ -50,6 +50,9 @@ pub struct Crash {
     pub area_mm2: f64,
     /// Thickness of stock removed, normal to the move, mm.
     pub depth_mm: f64,
+    /// The tool's non-cutting body that met stock ("holder", "boring bar", …); `None` for
+    /// a rapid's cutting edge.
+    pub body: Option<String>,
 }
 
 /// Part material removed that should have stayed.

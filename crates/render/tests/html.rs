@@ -340,6 +340,7 @@ fn rapid_scrapes_are_shown_apart_from_crashes() {
         r: 24.8,
         area_mm2: 0.014,
         depth_mm: 0.07,
+        body: None,
     });
     let svg = render::svg(&r);
     assert!(svg.contains("scrape line 9"), "the scrape is labelled");

@@ -97,6 +97,7 @@ fn write_more_pictures() {
         r: 19.0,
         area_mm2: 4.0,
         depth_mm: 1.0,
+        body: None,
     });
     r.leftovers.push(render::Shape {
         outer: vec![[-40.0, 18.0], [-38.0, 18.0], [-38.0, 18.4], [-40.0, 18.4]],

@@ -156,6 +156,7 @@ fn grooves_come_after_findings_and_insets_stay_bounded() {
         r: 19.0,
         area_mm2: 4.0,
         depth_mm: 1.0,
+        body: None,
     });
     let s = render::svg(&r);
     assert!(s.contains("detail 3: gouge"));
@@ -253,6 +254,7 @@ fn leftover_inset_comes_last_and_only_with_room() {
         r: 19.0,
         area_mm2: 4.0,
         depth_mm: 1.0,
+        body: None,
     });
     let s = render::svg(&r);
     assert!(!s.contains(": leftover"));

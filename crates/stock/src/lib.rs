@@ -38,7 +38,7 @@ pub use overlay::BoolOp;
 pub use profile::profile_from_toml;
 pub use removal::{simulate, Crash, SimOptions, Simulation, CRASH_MIN_AREA};
 pub use section::rear_tools;
-pub use tools::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool, ToolTable};
+pub use tools::{AxisDir, Body, GroovingBlade, HolderSize, Insert, ThreadSide, Tool, ToolTable};
 
 /// A polygon with holes in (z, r): `outer` counter-clockwise, `holes` clockwise; rings are
 /// not closed (the first point is not repeated).

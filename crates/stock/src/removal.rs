@@ -78,11 +78,15 @@ impl Default for SimOptions {
     }
 }
 
-/// A rapid move whose sweep overlapped the stock present at that moment.
+/// A rapid move whose sweep overlapped the stock present at that moment, or a move (at any
+/// speed) whose tool body met stock.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Crash {
-    /// Index of the rapid in the input slice.
+    /// Index of the move in the input slice.
     pub segment: usize,
+    /// The non-cutting body that met stock ("holder", "boring bar", …); `None` for a
+    /// rapid's cutting outline.
+    pub body: Option<&'static str>,
     /// (z, r) where it first meets stock: the point of the overlap nearest the rapid's start.
     pub at: [f64; 2],
     /// Area of stock the rapid's sweep overlapped, mm².
@@ -131,6 +135,7 @@ enum Node {
 /// Part of a crash seen by one strip.
 struct Fragment {
     seg: usize,
+    body: Option<&'static str>,
     eps: f64,
     area: f64,
     dist: f64,
@@ -274,7 +279,7 @@ impl Tile {
     /// Processes `list` in order; returns the index of the first item not processed when
     /// the tile grew too complex and must split first.
     fn process(&mut self, list: &[u32], ctx: &Ctx, worker: &mut Worker) -> Option<usize> {
-        let (sweeps, engine) = (ctx.sweeps, &mut *worker.engine);
+        let sweeps = ctx.sweeps;
         let mut trim = Trimmed::default();
         for (k, &i) in list.iter().enumerate() {
             if self.verts > MAX_TILE_VERTICES && self.pending.is_empty() && self.splittable(ctx) {
@@ -296,35 +301,49 @@ impl Tile {
             {
                 continue;
             }
+            if it.body.is_some() {
+                // a probe: the stock after every earlier cut (this move's own included)
+                self.flush(sweeps, worker.engine, &mut trim);
+                self.probe(it, ctx, worker, &mut trim);
+                continue;
+            }
             if it.rapid && !self.covered_by_pending(sweeps, it) {
-                self.flush(sweeps, engine, &mut trim);
-                if it.bbox.overlaps(&self.bbox) {
-                    trim.clear();
-                    for p in sweeps.polys_flagged_of(it) {
-                        trim.push(p, &self.bbox);
-                    }
-                    let overlap = engine.intersection(&self.stock, trim.iter());
-                    let a = ctx.grid.area(&overlap);
-                    if a > 0.0 {
-                        let (dist, at) = nearest(ctx.grid, &overlap, it.start);
-                        worker.frags.push(Fragment {
-                            seg: it.seg,
-                            eps: it.eps,
-                            area: a,
-                            dist,
-                            at,
-                            across: across(ctx.grid, &overlap, it.dir),
-                        });
-                    }
-                }
+                self.flush(sweeps, worker.engine, &mut trim);
+                self.probe(it, ctx, worker, &mut trim);
             }
             self.pending.push(i);
             if self.pending.len() >= BATCH {
-                self.flush(sweeps, engine, &mut trim);
+                self.flush(sweeps, worker.engine, &mut trim);
             }
         }
-        self.flush(sweeps, engine, &mut trim);
+        self.flush(sweeps, worker.engine, &mut trim);
         None
+    }
+
+    /// Intersects the sweep `it` with the (flushed) stock and keeps the overlap as a
+    /// crash fragment.
+    fn probe(&self, it: &Item, ctx: &Ctx, worker: &mut Worker, trim: &mut Trimmed) {
+        if !it.bbox.overlaps(&self.bbox) {
+            return;
+        }
+        trim.clear();
+        for p in ctx.sweeps.polys_flagged_of(it) {
+            trim.push(p, &self.bbox);
+        }
+        let overlap = worker.engine.intersection(&self.stock, trim.iter());
+        let a = ctx.grid.area(&overlap);
+        if a > 0.0 {
+            let (dist, at) = nearest(ctx.grid, &overlap, it.start);
+            worker.frags.push(Fragment {
+                seg: it.seg,
+                body: it.body,
+                eps: it.eps,
+                area: a,
+                dist,
+                at,
+                across: across(ctx.grid, &overlap, it.dir),
+            });
+        }
     }
 
     fn splittable(&self, ctx: &Ctx) -> bool {
@@ -716,15 +735,15 @@ pub fn simulate(
 /// Adds up the overlaps each strip saw for a rapid; the contact point is the one nearest
 /// the rapid's start over all strips.
 fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
-    frags.sort_by_key(|f| f.seg);
+    frags.sort_by_key(|f| (f.seg, f.body));
     let mut out: Vec<Crash> = Vec::new();
     let mut i = 0;
     while i < frags.len() {
-        let seg = frags[i].seg;
+        let (seg, body) = (frags[i].seg, frags[i].body);
         let mut j = i;
         let (mut total, mut best) = (0.0, &frags[i]);
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        while j < frags.len() && frags[j].seg == seg {
+        while j < frags.len() && frags[j].seg == seg && frags[j].body == body {
             total += frags[j].area;
             lo = lo.min(frags[j].across.0);
             hi = hi.max(frags[j].across.1);
@@ -736,6 +755,7 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
         if total > frags[i].eps {
             out.push(Crash {
                 segment: seg,
+                body,
                 at: best.at,
                 area: total,
                 depth: (hi - lo).max(0.0),
@@ -743,7 +763,21 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
         }
         i = j;
     }
-    out
+    // One crash a move: a move whose cutting outline crashed reports that crash, not its
+    // body's as well. And a body crash right after a crash continues it (the body is still
+    // in the stock that crash put it in, e.g. a retract after a crashing plunge): reported
+    // once, at the first move.
+    let mut kept: Vec<Crash> = Vec::with_capacity(out.len());
+    let mut last: Option<usize> = None;
+    for c in out {
+        let continues =
+            c.body.is_some() && last.is_some_and(|p| p == c.segment || p + 1 == c.segment);
+        last = Some(c.segment);
+        if !continues {
+            kept.push(c);
+        }
+    }
+    kept
 }
 
 #[cfg(test)]
@@ -982,7 +1016,7 @@ mod tests {
         assert!(symmetric_difference_area(&sim.final_shapes, &expected) < 1e-6);
     }
 
-    /// Number of sweeps the builder makes of `segs` (with the defaults' chord tolerance).
+    /// Number of cutting sweeps the builder makes of `segs` (with the defaults' chord tolerance).
     fn sweep_count(tools: &ToolTable, segs: &[Segment], merge_tol: f64) -> usize {
         let bb = Rect::new(geom::Pt::new(-200.0, -200.0), geom::Pt::new(200.0, 200.0));
         let grid = Grid::new(bb.grown(1.0));
@@ -991,7 +1025,8 @@ mod tests {
             b.push(i, s);
         }
         b.flush_run();
-        b.take().items.len()
+        // the cutting sweeps (each move also has its body's probe)
+        b.take().items.iter().filter(|it| it.body.is_none()).count()
     }
 
     #[test]

@@ -60,7 +60,11 @@ impl Snapshots {
             let snap = if open.items.is_empty() {
                 self.stock.clone()
             } else {
-                let polys = open.items.iter().flat_map(|it| open.polys_of(it));
+                let polys = open
+                    .items
+                    .iter()
+                    .filter(|it| it.body.is_none())
+                    .flat_map(|it| open.polys_of(it));
                 engine.difference(&self.stock, polys)
             };
             self.out.push((k, snap));
@@ -76,6 +80,7 @@ impl Snapshots {
         }
         let polys = sweeps.items[items]
             .iter()
+            .filter(|it| it.body.is_none())
             .flat_map(|it| sweeps.polys_of(it));
         self.stock = engine.difference(&self.stock, polys);
     }

@@ -64,6 +64,9 @@ pub(crate) struct Item {
     pub(crate) seg: usize,
     /// A rapid: its overlap with the stock is a crash.
     pub(crate) rapid: bool,
+    /// The sweep of a tool's non-cutting body (named): a probe that never removes
+    /// material; any overlap with the stock is a crash.
+    pub(crate) body: Option<&'static str>,
     /// Its polygons, indices into [`Sweeps::polys`].
     pub(crate) polys: Range<u32>,
     /// Bounding box of all its polygons.
@@ -90,6 +93,19 @@ pub(crate) struct Sweeps {
 }
 
 impl Sweeps {
+    /// Appends the sweeps of `other` after these.
+    fn append(&mut self, other: Self) {
+        let (dp, dq) = (self.pts.len() as u32, self.polys.len() as u32);
+        self.pts.extend(other.pts);
+        self.polys
+            .extend(other.polys.into_iter().map(|r| r.start + dp..r.end + dp));
+        self.convex.extend(other.convex);
+        self.items.extend(other.items.into_iter().map(|mut it| {
+            it.polys = it.polys.start + dq..it.polys.end + dq;
+            it
+        }));
+    }
+
     /// The polygons of one item.
     pub(crate) fn polys_of(&self, it: &Item) -> impl Iterator<Item = &[IPt]> + Clone {
         self.polys[it.polys.start as usize..it.polys.end as usize]
@@ -229,7 +245,11 @@ pub(crate) struct SweepBuilder<'a> {
     /// exact merging).
     merge_tol: f64,
     outlines: HashMap<((u32, u8, u64), bool), Outline>,
+    bodies: HashMap<((u32, u8, u64), bool), crate::Body>,
     run: Option<Run>,
+    /// Body sweeps of the moves of the open run: emitted after the run's own sweep, so
+    /// that they meet the stock as it is after the cut.
+    held: Sweeps,
     /// Tools on a rear post (they work at negative X).
     rear: Vec<u32>,
     /// The segment being pushed runs below the axis.
@@ -259,7 +279,9 @@ impl<'a> SweepBuilder<'a> {
             tol: chord_tol,
             merge_tol: merge_tol.clamp(0.0, chord_tol),
             outlines: HashMap::new(),
+            bodies: HashMap::new(),
             run: None,
+            held: Sweeps::default(),
             rear: Vec::new(),
             below: false,
             scratch: Vec::new(),
@@ -291,9 +313,75 @@ impl<'a> SweepBuilder<'a> {
         o
     }
 
-    /// Adds segment number `idx`, swept where it was programmed and folded about the axis
-    /// ([`crate::section`]).
+    /// The body of tool `t` under `hint`, mirrored about the axis when `flip`.
+    fn body(&mut self, t: u32, hint: ToolHint, flip: bool) -> crate::Body {
+        let key = (crate::tools::hint_key(t, hint), flip);
+        self.bodies
+            .entry(key)
+            .or_insert_with(|| {
+                let b = self.tools.body_for(t, hint);
+                if flip {
+                    crate::Body {
+                        outline: b.outline.mirrored(),
+                        name: b.name,
+                    }
+                } else {
+                    b
+                }
+            })
+            .clone()
+    }
+
+    /// Adds segment number `idx`: the sweep of its cutting outline, then the probe of its
+    /// body (held while a merged run is open: it follows the run's sweep).
     pub(crate) fn push(&mut self, idx: usize, seg: &Segment) {
+        if self.push_cut(idx, seg) {
+            let flip = self.rear.contains(&seg.tool);
+            let body = self.body(seg.tool, seg.hint, flip);
+            let path: Vec<P> = if seg.motion == Motion::Thread {
+                vec![[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]]
+            } else {
+                seg.polyline(self.tol)
+                    .iter()
+                    .map(|pt| [pt.z, pt.r])
+                    .collect()
+            };
+            let done = std::mem::take(&mut self.out);
+            let item = self.begin();
+            self.emit_hulls(&body.outline, &path);
+            let (start, end) = (path[0], path[path.len() - 1]);
+            let (dz, dr) = (end[0] - start[0], end[1] - start[1]);
+            let len = dz.hypot(dr);
+            let dir = if len > 0.0 {
+                [dz / len, dr / len]
+            } else {
+                [0.0, 0.0]
+            };
+            // measured in the section like a rapid (mirrored when it runs below the axis)
+            self.end(item, idx, true, start, dir);
+            if let Some(it) = self.out.items.last_mut() {
+                it.rapid = false;
+                it.body = Some(body.name);
+            }
+            let probe = std::mem::replace(&mut self.out, done);
+            self.held.append(probe);
+        }
+        if self.run.is_none() {
+            self.release_bodies();
+        }
+    }
+
+    /// Emits the held body probes.
+    fn release_bodies(&mut self) {
+        if !self.held.items.is_empty() {
+            let held = std::mem::take(&mut self.held);
+            self.out.append(held);
+        }
+    }
+
+    /// Adds the cutting sweep of segment number `idx`, swept where it was programmed and
+    /// folded about the axis ([`crate::section`]); false when the move was skipped.
+    fn push_cut(&mut self, idx: usize, seg: &Segment) -> bool {
         let flip = self.rear.contains(&seg.tool);
         // a rapid measured in the section: mirrored when it runs below the axis
         self.below = seg.from.r + seg.to.r < 0.0;
@@ -312,7 +400,7 @@ impl<'a> SweepBuilder<'a> {
                 idx,
                 "a move with a non-finite or absurdly large coordinate was skipped".into(),
             ));
-            return;
+            return false;
         }
         let (p, q) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
         // an arc feed whose chord is within chord_tol - merge_tol of it joins chains as a chord
@@ -332,11 +420,11 @@ impl<'a> SweepBuilder<'a> {
                                 || run.try_chain(p, q, merge_tol) =>
                         {
                             run.last = idx;
-                            return;
+                            return true;
                         }
                         // inside the sweep of feeds just made: it meets no stock, removes
                         // nothing (only for exact runs: a merged chain is not the true sweep)
-                        Motion::Rapid if run.mid.is_empty() && run.contains(p, q) => return,
+                        Motion::Rapid if run.mid.is_empty() && run.contains(p, q) => return true,
                         _ => {}
                     }
                 }
@@ -357,7 +445,7 @@ impl<'a> SweepBuilder<'a> {
                     mid: Vec::new(),
                     max_len,
                 });
-                return;
+                return true;
             }
         } else {
             self.flush_run();
@@ -367,7 +455,7 @@ impl<'a> SweepBuilder<'a> {
         if seg.motion == Motion::Thread {
             if let Some(stamps) = self.thread_stamps(idx, seg) {
                 self.emit_stamps(idx, &outline, &stamps, p);
-                return;
+                return true;
             }
         }
         let path: Vec<P> = seg
@@ -376,6 +464,7 @@ impl<'a> SweepBuilder<'a> {
             .map(|pt| [pt.z, pt.r])
             .collect();
         self.emit_path(idx, rapid, &outline, &path);
+        true
     }
 
     /// Positions of the outline for a thread move: every lead from the start, and the end;
@@ -438,8 +527,14 @@ impl<'a> SweepBuilder<'a> {
         Some(pts)
     }
 
-    /// Ends the current merged run, emitting its sweep.
+    /// Ends the current merged run, emitting its sweep and then its moves' body probes.
     pub(crate) fn flush_run(&mut self) {
+        self.emit_run();
+        self.release_bodies();
+    }
+
+    /// Ends the current merged run, emitting its sweep.
+    fn emit_run(&mut self) {
         if let Some(run) = self.run.take() {
             let outline = self.outline(run.tool, run.hint, run.flip, run.last);
             self.emit_path(run.last, false, &outline, &[run.a, run.b]);
@@ -458,7 +553,7 @@ impl<'a> SweepBuilder<'a> {
             return Sweeps::default();
         };
         let done = std::mem::take(&mut self.out);
-        self.flush_run();
+        self.emit_run();
         self.run = Some(run);
         std::mem::replace(&mut self.out, done)
     }
@@ -591,6 +686,7 @@ impl<'a> SweepBuilder<'a> {
         self.out.items.push(Item {
             seg: idx,
             rapid,
+            body: None,
             polys: first..last,
             bbox,
             start,

@@ -4,12 +4,14 @@
 //! and its validation (errors at their line), [`outline_choice`] which outline cuts under
 //! a cycle's hint, [`facts`] what the interpreter is told about the table.
 
+mod bodies;
 mod facts;
 mod kinds;
 mod outline_choice;
 mod schema;
 
 use crate::StockError;
+pub use bodies::{Body, HolderSize};
 pub use kinds::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool};
 pub(crate) use outline_choice::hint_key;
 
@@ -19,6 +21,8 @@ pub struct ToolTable {
     tools: Vec<(u32, Tool)>,
     /// The ISO designations an entry was given by, for the report.
     designations: Vec<(u32, String)>,
+    /// What a turning tool's holder measures, when its designation or `shank` says.
+    sizes: Vec<(u32, HolderSize)>,
 }
 
 impl ToolTable {
@@ -32,6 +36,7 @@ impl ToolTable {
         Self {
             tools,
             designations: Vec::new(),
+            sizes: Vec::new(),
         }
     }
 
@@ -41,9 +46,13 @@ impl ToolTable {
         Ok(Self {
             designations: entries
                 .iter()
-                .filter_map(|(t, _, d)| d.clone().map(|d| (*t, d)))
+                .filter_map(|(t, _, d, _)| d.clone().map(|d| (*t, d)))
                 .collect(),
-            tools: entries.into_iter().map(|(t, tool, _)| (t, tool)).collect(),
+            sizes: entries.iter().map(|(t, _, _, s)| (*t, *s)).collect(),
+            tools: entries
+                .into_iter()
+                .map(|(t, tool, _, _)| (t, tool))
+                .collect(),
         })
     }
 

@@ -57,20 +57,7 @@ impl ToolTable {
     /// The outline for tool `t` (`tt` of `Tttoo`; 0 = no T word yet: the first entry).
     /// A missing entry or an empty table gives [`Tool::DEFAULT`] plus a warning text.
     pub fn outline(&self, t: u32) -> (Outline, Option<String>) {
-        match self.get(t) {
-            Some(tool) => (tool.outline(), None),
-            None => {
-                let why = if self.tools.is_empty() {
-                    format!("no tool table: T{t:02} is taken as the default")
-                } else {
-                    format!("T{t:02} has no entry in the tool table: using the default")
-                };
-                (
-                    Tool::DEFAULT.outline(),
-                    Some(format!("{why} ({})", Tool::DEFAULT.describe())),
-                )
-            }
-        }
+        self.outline_for(t, ToolHint::Table)
     }
 }
 
@@ -97,12 +84,33 @@ impl ToolTable {
     /// G75.1's I, a blade of the program's width (shank, reach and corner radius from the
     /// table's grooving entry, if any). The text is a warning when a default stands in.
     pub fn outline_for(&self, t: u32, hint: ToolHint) -> (Outline, Option<String>) {
+        let (tool, warning) = self.resolve(t, hint);
+        (tool.outline(), warning)
+    }
+
+    /// The tool that cuts for tool `t` under `hint` (see [`ToolTable::outline_for`]), with
+    /// the warning when a default stands in.
+    pub(super) fn resolve(&self, t: u32, hint: ToolHint) -> (Tool, Option<String>) {
+        let table = || match self.get(t) {
+            Some(tool) => (tool.clone(), None),
+            None => {
+                let why = if self.tools.is_empty() {
+                    format!("no tool table: T{t:02} is taken as the default")
+                } else {
+                    format!("T{t:02} has no entry in the tool table: using the default")
+                };
+                (
+                    Tool::DEFAULT,
+                    Some(format!("{why} ({})", Tool::DEFAULT.describe())),
+                )
+            }
+        };
         match hint {
-            ToolHint::Table => self.outline(t),
+            ToolHint::Table => table(),
             ToolHint::Grooving => match self.get(t) {
-                Some(tool) => (tool.outline(), None),
+                Some(tool) => (tool.clone(), None),
                 None => (
-                    Tool::DEFAULT_BLADE.outline(),
+                    Tool::DEFAULT_BLADE,
                     Some(format!("T{t:02} has no entry in the tool table: the grooving cycle uses the default ({})", Tool::DEFAULT_BLADE.describe())),
                 ),
             },
@@ -115,11 +123,10 @@ impl ToolTable {
                 if width.is_finite() && width > 0.0 && width < 1e4 {
                     let width_dir = if toward_plus_z { AxisDir::PlusZ } else { AxisDir::MinusZ };
                     let shank_dir = if matches!(shank_dir, AxisDir::PlusX | AxisDir::MinusX) { shank_dir } else { default_shank };
-                    let tool = Tool::Grooving(GroovingBlade { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) });
-                    (tool.outline(), None)
+                    (Tool::Grooving(GroovingBlade { width, width_dir, shank_dir, reach, corner_radius: corner_radius.min(width / 2.0) }), None)
                 } else {
-                    let (o, _) = self.outline(t);
-                    (o, Some(format!("blade width {width} is not a positive length: T{t:02}'s outline is used")))
+                    let (tool, _) = table();
+                    (tool, Some(format!("blade width {width} is not a positive length: T{t:02}'s outline is used")))
                 }
             }
         }

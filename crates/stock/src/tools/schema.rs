@@ -2,7 +2,7 @@
 //! refused with their line and column), then each entry validated into a [`Tool`] with
 //! errors naming the tool, the field and the line.
 
-use super::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool};
+use super::{AxisDir, GroovingBlade, HolderSize, Insert, ThreadSide, Tool};
 use crate::error::{from_toml, line_col};
 use crate::StockError;
 use serde::Deserialize;
@@ -22,6 +22,7 @@ struct RawTool {
     kind: String,
     insert: Option<String>,
     holder: Option<String>,
+    shank: Option<f64>,
     nose_radius: Option<f64>,
     tip: Option<i64>,
     entering_angle: Option<f64>,
@@ -40,9 +41,9 @@ struct RawTool {
 
 const HELP: &str = "each [[tool]] needs `t` and `kind` (turning | grooving | drill | threading) and only the fields of its kind";
 
-/// One entry read: its T number, the tool, and the ISO designations it was given by
-/// (`"CNMG 120408 in PCLNR 2525M12"`), if any, for the report.
-pub(super) type Entry = (u32, Tool, Option<String>);
+/// One entry read: its T number, the tool, the ISO designations it was given by
+/// (`"CNMG 120408 in PCLNR 2525M12"`), if any, for the report, and its holder's size.
+pub(super) type Entry = (u32, Tool, Option<String>, HolderSize);
 
 /// The table's entries in file order; a T number given twice is an error.
 pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
@@ -52,8 +53,8 @@ pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
     for entry in &raw.tool {
         let (line, _) = line_col(text, entry.span().start);
         let raw = entry.get_ref();
-        let (tool, designation) = parse_tool(raw, line)?;
-        if tools.iter().any(|(t, _, _)| *t == raw.t) {
+        let (tool, designation, size) = parse_tool(raw, line)?;
+        if tools.iter().any(|(t, _, _, _)| *t == raw.t) {
             return Err(StockError::Tool {
                 t: raw.t,
                 field: "t",
@@ -61,7 +62,7 @@ pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
                 line,
             });
         }
-        tools.push((raw.t, tool, designation));
+        tools.push((raw.t, tool, designation, size));
     }
     Ok(tools)
 }
@@ -74,6 +75,8 @@ struct Designated {
     edge: f64,
     /// From the holder: entering angle and the usual imaginary tip for its hand, OD/ID.
     holder: Option<(f64, u8)>,
+    /// From the holder: its shank section and length.
+    size: HolderSize,
     text: String,
 }
 
@@ -109,6 +112,7 @@ fn designated(raw: &RawTool) -> Result<Option<Designated>, (&'static str, String
         nose_radius: iso.nose_radius,
         edge: iso.edge_length,
         holder: None,
+        size: HolderSize::default(),
         text: iso.designation.clone(),
     };
     if let Some(h) = &raw.holder {
@@ -116,6 +120,13 @@ fn designated(raw: &RawTool) -> Result<Option<Designated>, (&'static str, String
         let facts =
             tooling_iso::turning_facts(&iso, &holder).map_err(|e| ("holder", e.to_string()))?;
         d.holder = Some((facts.entering_angle, facts.tip));
+        d.size = HolderSize {
+            shank: Some(match holder.shank {
+                tooling_iso::Shank::Square { width, .. } => width,
+                tooling_iso::Shank::Bar { diameter, .. } => diameter,
+            }),
+            length: holder.length,
+        };
         d.text = format!("{} in {}", iso.designation, holder.designation);
     }
     // an explicit field that repeats the designation is fine; one that contradicts it is not
@@ -123,6 +134,7 @@ fn designated(raw: &RawTool) -> Result<Option<Designated>, (&'static str, String
         ("nose_radius", raw.nose_radius, Some(d.nose_radius)),
         ("edge", raw.edge, Some(d.edge)),
         ("entering_angle", raw.entering_angle, d.holder.map(|h| h.0)),
+        ("shank", raw.shank, d.size.shank),
     ] {
         if let (Some(g), Some(v)) = (given, value) {
             if (g - v).abs() > 1e-6 {
@@ -136,7 +148,10 @@ fn designated(raw: &RawTool) -> Result<Option<Designated>, (&'static str, String
     Ok(Some(d))
 }
 
-fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), StockError> {
+fn parse_tool(
+    raw: &RawTool,
+    line: usize,
+) -> Result<(Tool, Option<String>, HolderSize), StockError> {
     let t = raw.t;
     let err = |field: &'static str, message: String| StockError::Tool {
         t,
@@ -171,9 +186,10 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
             ))
         }
     };
-    let fields: [(&'static str, bool); 16] = [
+    let fields: [(&'static str, bool); 17] = [
         ("insert", raw.insert.is_some()),
         ("holder", raw.holder.is_some()),
+        ("shank", raw.shank.is_some()),
         ("nose_radius", raw.nose_radius.is_some()),
         ("tip", raw.tip.is_some()),
         ("entering_angle", raw.entering_angle.is_some()),
@@ -193,6 +209,7 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
         "turning" => &[
             "insert",
             "holder",
+            "shank",
             "nose_radius",
             "tip",
             "entering_angle",
@@ -212,6 +229,7 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
         return Err(err(field, format!("does not apply to a {} tool", raw.kind)));
     }
     let mut designation = None;
+    let mut size = HolderSize::default();
     let tool = match raw.kind.as_str() {
         "turning" => {
             let iso = designated(raw).map_err(|(field, message)| err(field, message))?;
@@ -260,6 +278,16 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
                 1000.0,
                 false,
             )?;
+            size = HolderSize {
+                shank: match iso.as_ref().and_then(|d| d.size.shank) {
+                    Some(s) => Some(s),
+                    None => raw
+                        .shank
+                        .map(|v| num("shank", Some(v), None, 0.0, 1000.0, false))
+                        .transpose()?,
+                },
+                length: iso.as_ref().and_then(|d| d.size.length),
+            };
             designation = iso.map(|d| d.text);
             if insert != Insert::R && entering_angle + insert.included_angle() >= 180.0 {
                 return Err(err("entering_angle", format!("= {entering_angle}: with a {}° insert the trailing edge would point into the part", insert.included_angle())));
@@ -348,7 +376,7 @@ fn parse_tool(raw: &RawTool, line: usize) -> Result<(Tool, Option<String>), Stoc
             }
         }
     };
-    Ok((tool, designation))
+    Ok((tool, designation, size))
 }
 
 #[cfg(test)]
