@@ -159,3 +159,30 @@ fn body_crash_is_in_the_json_with_its_body_and_exit_1() {
     // an ordinary rapid crash has no body field (the JSON only gains fields)
     assert!(v["rapid_cuts"].as_array().unwrap().is_empty());
 }
+
+/// A tool whose table entry does not state what places its body (no `reach`, no holder
+/// designation or `shank`), or that has no entry at all, is probed by its cutting outline
+/// only: a part-off 22.5 mm deep with an undescribed blade is no holder crash (a default
+/// reach would cry wolf on every program whose tools are not described).
+#[test]
+fn an_undescribed_body_is_not_probed() {
+    let blank = stock::Blank::bar(50.0, 60.0, 0.0, None).unwrap();
+    for table in [
+        "[[tool]]\nt = 1\nkind = \"grooving\"\nwidth = 3.0\n",
+        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\n",
+    ] {
+        let tools = stock::ToolTable::from_toml(table).unwrap();
+        let (_, sim) = simulate(&groove(5.0), &blank, &tools);
+        assert!(
+            sim.crashes.iter().all(|c| c.body.is_none()),
+            "{table}: {:?}",
+            sim.crashes
+        );
+    }
+    let (_, sim) = simulate(&groove(5.0), &blank, &stock::ToolTable::empty());
+    assert!(
+        sim.crashes.iter().all(|c| c.body.is_none()),
+        "{:?}",
+        sim.crashes
+    );
+}

@@ -245,7 +245,7 @@ pub(crate) struct SweepBuilder<'a> {
     /// exact merging).
     merge_tol: f64,
     outlines: HashMap<((u32, u8, u64), bool), Outline>,
-    bodies: HashMap<((u32, u8, u64), bool), crate::Body>,
+    bodies: HashMap<((u32, u8, u64), bool), Option<crate::Body>>,
     run: Option<Run>,
     /// Body sweeps of the moves of the open run: emitted after the run's own sweep, so
     /// that they meet the stock as it is after the cut.
@@ -314,20 +314,20 @@ impl<'a> SweepBuilder<'a> {
     }
 
     /// The body of tool `t` under `hint`, mirrored about the axis when `flip`.
-    fn body(&mut self, t: u32, hint: ToolHint, flip: bool) -> crate::Body {
+    fn body(&mut self, t: u32, hint: ToolHint, flip: bool) -> Option<crate::Body> {
         let key = (crate::tools::hint_key(t, hint), flip);
         self.bodies
             .entry(key)
             .or_insert_with(|| {
-                let b = self.tools.body_for(t, hint);
-                if flip {
+                let b = self.tools.body_for(t, hint)?;
+                Some(if flip {
                     crate::Body {
                         outline: b.outline.mirrored(),
                         name: b.name,
                     }
                 } else {
                     b
-                }
+                })
             })
             .clone()
     }
@@ -337,7 +337,9 @@ impl<'a> SweepBuilder<'a> {
     pub(crate) fn push(&mut self, idx: usize, seg: &Segment) {
         if self.push_cut(idx, seg) {
             let flip = self.rear.contains(&seg.tool);
-            let body = self.body(seg.tool, seg.hint, flip);
+            let Some(body) = self.body(seg.tool, seg.hint, flip) else {
+                return;
+            };
             let path: Vec<P> = if seg.motion == Motion::Thread {
                 vec![[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]]
             } else {

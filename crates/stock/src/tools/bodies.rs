@@ -47,6 +47,11 @@ pub struct HolderSize {
     pub shank: Option<f64>,
     /// Overall length, mm.
     pub length: Option<f64>,
+    /// The table states what places the body (a holder designation or `shank` for a
+    /// turning tool, `reach` for a blade or a drill). **Interpretation:** only then is the
+    /// body probed: a body placed by defaults alone would call crashes on programs whose
+    /// tools are simply not described (a part-off blade deeper than a default reach).
+    pub declared: bool,
 }
 
 /// A tool's non-cutting body: its outline (convex parts, in the cutting outline's frame)
@@ -132,8 +137,9 @@ impl Tool {
 
 impl ToolTable {
     /// The body of the tool that cuts for tool `t` under `hint` (the one
-    /// [`ToolTable::outline_for`] outlines).
-    pub fn body_for(&self, t: u32, hint: ToolHint) -> Body {
+    /// [`ToolTable::outline_for`] outlines), when the table declares it (see
+    /// [`HolderSize::declared`]); a defaulted tool has none.
+    pub fn body_for(&self, t: u32, hint: ToolHint) -> Option<Body> {
         let t_table = if t == 0 {
             self.numbers().first().copied().unwrap_or(0)
         } else {
@@ -145,8 +151,8 @@ impl ToolTable {
             .find(|(n, _)| *n == t_table)
             .map(|(_, s)| *s)
             .unwrap_or_default();
-        let (tool, _) = self.resolve(t, hint);
-        tool.body(size)
+        let (tool, defaulted) = self.resolve(t, hint);
+        (size.declared && defaulted.is_none()).then(|| tool.body(size))
     }
 }
 
@@ -174,6 +180,7 @@ mod tests {
         let b = t.body(HolderSize {
             shank: Some(25.0),
             length: Some(150.0),
+            declared: true,
         });
         assert_eq!(b.name, "holder");
         let (lo, hi) = bbox(&b);
@@ -194,6 +201,7 @@ mod tests {
         let b = t.body(HolderSize {
             shank: Some(20.0),
             length: None,
+            declared: true,
         });
         assert_eq!(b.name, "boring bar");
         let (lo, hi) = bbox(&b);

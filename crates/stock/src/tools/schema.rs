@@ -126,6 +126,7 @@ fn designated(raw: &RawTool) -> Result<Option<Designated>, (&'static str, String
                 tooling_iso::Shank::Bar { diameter, .. } => diameter,
             }),
             length: holder.length,
+            declared: true,
         };
         d.text = format!("{} in {}", iso.designation, holder.designation);
     }
@@ -230,6 +231,10 @@ fn parse_tool(
     }
     let mut designation = None;
     let mut size = HolderSize::default();
+    if matches!(raw.kind.as_str(), "grooving" | "drill") {
+        // a blade's or a drill's holder starts where its stated reach ends
+        size.declared = raw.reach.is_some();
+    }
     let tool = match raw.kind.as_str() {
         "turning" => {
             let iso = designated(raw).map_err(|(field, message)| err(field, message))?;
@@ -287,7 +292,9 @@ fn parse_tool(
                         .transpose()?,
                 },
                 length: iso.as_ref().and_then(|d| d.size.length),
+                declared: false,
             };
+            size.declared = size.shank.is_some();
             designation = iso.map(|d| d.text);
             if insert != Insert::R && entering_angle + insert.included_angle() >= 180.0 {
                 return Err(err("entering_angle", format!("= {entering_angle}: with a {}° insert the trailing edge would point into the part", insert.included_angle())));
