@@ -315,11 +315,13 @@ pub(crate) fn add_threads(
                 column: t.span.column,
                 code: "LS-THREAD-DEPTH".into(),
                 message: format!(
-                    "thread depth error: the thread is cut {:.3} mm too {} (X{:.3} reached, X{:.3} expected)",
+                    "thread depth error: the thread is cut {:.3} mm too {}{}",
                     e.abs(),
                     if e > 0.0 { "deep" } else { "shallow" },
-                    achieved.unwrap_or(f64::NAN),
-                    expected.unwrap_or(f64::NAN),
+                    match (achieved, expected) {
+                        (Some(a), Some(x)) => format!(" (X{a:.3} reached, X{x:.3} expected)"),
+                        _ => String::new(),
+                    },
                 ),
             });
         }
@@ -328,7 +330,7 @@ pub(crate) fn add_threads(
             inside: t.surface == stock::Surface::Bore,
             lead_mm: t.lead,
             x_mm: t.x(),
-            expected_x_mm: expected.unwrap_or(f64::NAN),
+            expected_x_mm: expected,
             pass_depths_mm: t.pass_depths.clone(),
             achieved_x_mm: achieved,
             depth_error_mm: depth_error,

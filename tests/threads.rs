@@ -125,8 +125,8 @@ fn t10_q_not_modal_warns() {
     let last = tp
         .segments
         .iter()
-        .filter(|s| s.motion == expander::Motion::Thread)
-        .last()
+        .rev()
+        .find(|s| s.motion == expander::Motion::Thread)
         .unwrap();
     assert_eq!(last.thread_phase, 0.0);
     for k in 0..6 {

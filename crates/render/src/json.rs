@@ -244,7 +244,7 @@ pub(crate) fn json(report: &Report) -> String {
                 side: if t.inside { "id" } else { "od" },
                 lead_mm: r6(t.lead_mm),
                 x: r6(t.x_mm),
-                expected_x: r6(t.expected_x_mm),
+                expected_x: t.expected_x_mm.and_then(r6),
                 passes: t.pass_depths_mm.len(),
                 pass_depths_mm: t.pass_depths_mm.iter().map(|&d| r6(d)).collect(),
                 achieved_x: t.achieved_x_mm.and_then(r6),

@@ -186,8 +186,8 @@ pub struct ThreadCheck {
     /// Programmed final X (the deepest pass's end): minor diameter (OD), major (ID).
     pub x_mm: f64,
     /// The diameter that should be reached: `--target`'s surface over the thread, else
-    /// [`ThreadCheck::x_mm`].
-    pub expected_x_mm: f64,
+    /// [`ThreadCheck::x_mm`]; `None`: not measurable (no material there).
+    pub expected_x_mm: Option<f64>,
     /// Radial depth of each pass, mm.
     pub pass_depths_mm: Vec<f64>,
     /// Minor (OD) / major (ID) diameter reached in the final section over the thread's
