@@ -235,6 +235,9 @@ impl Run {
     }
 }
 
+/// A body by tool, hint and whether it is mirrored (a rear post).
+type BodyKey = ((u32, u8, u64), bool);
+
 /// Turns segments into sweeps on the grid, in order.
 pub(crate) struct SweepBuilder<'a> {
     grid: &'a Grid,
@@ -245,7 +248,7 @@ pub(crate) struct SweepBuilder<'a> {
     /// exact merging).
     merge_tol: f64,
     outlines: HashMap<((u32, u8, u64), bool), Outline>,
-    bodies: HashMap<((u32, u8, u64), bool), Option<crate::Body>>,
+    bodies: HashMap<BodyKey, Option<crate::Body>>,
     run: Option<Run>,
     /// Body sweeps of the moves of the open run: emitted after the run's own sweep, so
     /// that they meet the stock as it is after the cut.
