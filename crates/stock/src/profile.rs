@@ -125,7 +125,8 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
     }
     // A crossing found by the kernel's sweep first: a tangled outline of 10⁵ points would
     // make the boolean engine split every one of its crossings before the test below.
-    if let Some(x) = geom::ring::self_intersection(&crate::geom::pts(&ring)) {
+    let outline = crate::geom::pts(&ring);
+    if let Some(x) = geom::ring::self_intersection(&outline) {
         return Err(at(
             raw.start.span(),
             format!(
@@ -136,7 +137,7 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
             "list the points once around the outline, without crossing an edge",
         ));
     }
-    let signed = geom::ring::signed_area(&crate::geom::pts(&ring)).abs();
+    let signed = geom::ring::signed_area(&outline).abs();
     let shapes = overlay::clean(&[ring]);
     let area = crate::area(&shapes);
     // A simple outline encloses what its signed area says; one that crosses itself (a

@@ -352,18 +352,9 @@ impl<'a> SweepBuilder<'a> {
                     .collect()
             };
             let done = std::mem::take(&mut self.out);
-            let item = self.begin();
-            self.emit_hulls(&body.outline, &path);
-            let (start, end) = (path[0], path[path.len() - 1]);
-            let (dz, dr) = (end[0] - start[0], end[1] - start[1]);
-            let len = dz.hypot(dr);
-            let dir = if len > 0.0 {
-                [dz / len, dr / len]
-            } else {
-                [0.0, 0.0]
-            };
-            // measured in the section like a rapid (mirrored when it runs below the axis)
-            self.end(item, idx, true, start, dir);
+            // swept and measured like a rapid (convex hulls, the crash rule's depth), then
+            // marked as the body's probe
+            self.emit_path(idx, true, &body.outline, &path);
             if let Some(it) = self.out.items.last_mut() {
                 it.rapid = false;
                 it.body = Some(body.name);
