@@ -294,6 +294,7 @@ pub(crate) fn add_threads(
             });
         }
         let achieved = t.achieved_x(shapes);
+        let form = t.form(shapes);
         let (z0, z1) = t.z_span();
         let sign = match t.surface {
             stock::Surface::Outer => 1.0,
@@ -334,6 +335,8 @@ pub(crate) fn add_threads(
             pass_depths_mm: t.pass_depths.clone(),
             achieved_x_mm: achieved,
             depth_error_mm: depth_error,
+            pitch_diameter_mm: form.map(|f| f.pitch_diameter),
+            included_angle_deg: form.and_then(|f| f.included_angle),
         });
     }
 }

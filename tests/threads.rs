@@ -216,6 +216,11 @@ fn m20_thread_reports_its_minor() {
     assert!((x("x") - 18.05).abs() < 1e-9);
     assert!((x("achieved_x") - 18.05).abs() < 2e-3, "{t:#}");
     assert!(x("depth_error_mm").abs() < 1e-3, "{t:#}");
+    // The sharp 60° tool's last pass leaves a V from the root r9.025 (the compound infeed
+    // keeps every pass on its leading flank): groove and tooth are 0.75 wide each
+    // 0.75 / (2 tan 30°) = 0.649519 above the root, d2 = 2 (9.025 + 0.649519) = 19.349.
+    assert!((x("pitch_diameter") - 19.349038).abs() < 2e-3, "{t:#}");
+    assert!((x("included_angle_deg") - 60.0).abs() < 0.05, "{t:#}");
     let h = [0.4, 0.565685, 0.692820, 0.8, 0.894427, 0.925, 0.975, 0.975];
     let depths: Vec<f64> = t["pass_depths_mm"]
         .as_array()
@@ -313,6 +318,19 @@ fn id_thread_in_a_bore() {
         (t["achieved_x"].as_f64().unwrap() - 30.0).abs() < 2e-3,
         "{t:#}"
     );
+    // The V of the sharp 60° tool from the root r15: groove and tooth are 1.0 wide each
+    // 1 / (2 tan 30°) = 0.866025 below it, D2 = 2 (15 − 0.866025) = 28.268 (ISO basic
+    // D2 28.701: a sharp V at the programmed major leaves the thread small). At the bore
+    // (r13.95) the groove is 2 · 1.05 tan 30° = 1.212 wide, 61 % of the pitch: the angle is
+    // measured between 35 % and 56 %.
+    assert!(
+        (t["pitch_diameter"].as_f64().unwrap() - 28.267949).abs() < 2e-3,
+        "{t:#}"
+    );
+    assert!(
+        (t["included_angle_deg"].as_f64().unwrap() - 60.0).abs() < 0.05,
+        "{t:#}"
+    );
     // the final section, read back from the report (x is the diameter)
     let shapes: Vec<stock::Shape> = j["final"]
         .as_array()
@@ -400,4 +418,16 @@ fn tapered_thread_crests_on_the_cone() {
             at(root)
         );
     }
+    // Pitch diameter at the thread's end (Z−20, root r8.9), measured along lines parallel to
+    // the root cone (slope k = −0.05): the V's flanks (±30°) meet such a line h above the apex
+    // 2h tan 30° / (1 − k² tan² 30°) apart, so half the lead (1.0) is reached at
+    // h = 0.866025 (1 − 0.000833) = 0.865304: d2 = 2 (8.9 + 0.865304) = 19.530608; the
+    // angle 2 atan(tan 30° / (1 − 0.000833)) = 60.041°.
+    let threads = stock::threads(&tp.segments, &tools, &sim.final_shapes);
+    let form = threads[0].form(&sim.final_shapes).unwrap();
+    assert!((form.pitch_diameter - 19.530608).abs() < 2e-3, "{form:?}");
+    assert!(
+        (form.included_angle.unwrap() - 60.041).abs() < 0.005,
+        "{form:?}"
+    );
 }

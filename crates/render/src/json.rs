@@ -113,6 +113,10 @@ struct ThreadJ {
     pass_depths_mm: Vec<Option<f64>>,
     achieved_x: Option<f64>,
     depth_error_mm: Option<f64>,
+    /// Pitch diameter as cut, mm (additive field).
+    pitch_diameter: Option<f64>,
+    /// Included flank angle as cut, degrees (additive field).
+    included_angle_deg: Option<f64>,
 }
 
 #[derive(Serialize)]
@@ -249,6 +253,8 @@ pub(crate) fn json(report: &Report) -> String {
                 pass_depths_mm: t.pass_depths_mm.iter().map(|&d| r6(d)).collect(),
                 achieved_x: t.achieved_x_mm.and_then(r6),
                 depth_error_mm: t.depth_error_mm.and_then(r6),
+                pitch_diameter: t.pitch_diameter_mm.and_then(r6),
+                included_angle_deg: t.included_angle_deg.and_then(r6),
             })
             .collect(),
     };

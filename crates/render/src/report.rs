@@ -195,6 +195,11 @@ pub struct ThreadCheck {
     pub achieved_x_mm: Option<f64>,
     /// Achieved depth minus the expected depth, radial mm (positive: too deep).
     pub depth_error_mm: Option<f64>,
+    /// Pitch diameter of the thread as cut (where groove and tooth are equally wide), mm;
+    /// `None`: not measurable (shorter than a pitch clear of the ends, or too shallow).
+    pub pitch_diameter_mm: Option<f64>,
+    /// Included angle of the groove's flanks as cut, degrees; `None`: not measurable.
+    pub included_angle_deg: Option<f64>,
 }
 
 /// A G75.1 groove the program defines, as its intended outline.

@@ -31,7 +31,7 @@ pub use error::StockError;
 pub use measure::{
     area, deepest_radius, groove_deviation, hausdorff, least_gap, leftover_spot, revolved_volume,
     surface_radius_at, symmetric_difference_area, threads, LeftoverSpot, Reference, Surface,
-    Thread,
+    Thread, ThreadForm,
 };
 pub use outline::Outline;
 pub use overlay::BoolOp;

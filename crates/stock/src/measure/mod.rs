@@ -9,7 +9,7 @@ mod thread;
 pub use groove::groove_deviation;
 pub use leftover::{leftover_spot, LeftoverSpot};
 pub use thread::{
-    deepest_radius, least_gap, surface_radius_at, threads, Reference, Surface, Thread,
+    deepest_radius, least_gap, surface_radius_at, threads, Reference, Surface, Thread, ThreadForm,
 };
 
 use crate::geom::{pts, P};

@@ -140,6 +140,21 @@ pub struct Thread {
     /// OD insert, or inward with an ID insert, whose body then sweeps through the wall or
     /// the core. Known only from two passes at different depths.
     pub wrong_side: bool,
+    /// Number of starts (distinct start angles among the passes); the pitch is lead / starts.
+    pub starts: usize,
+}
+
+/// The form a thread leaves in the section, measured where a thread gauge or the
+/// three-wire method looks: over whole pitches in the middle of the thread.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ThreadForm {
+    /// The diameter at which groove and tooth are equally wide (half a pitch each), mm.
+    pub pitch_diameter: f64,
+    /// The groove's included angle between its flanks, degrees, from the groove's width at
+    /// two heights: where it takes 35 % and 65 % of the pitch (clear of an ISO crest flat of
+    /// P/8 and root flat of P/4), or 5 % inside what it takes at the root and the crest when
+    /// the flats are wider; `None` when that leaves less than 10 % (a shallow thread).
+    pub included_angle: Option<f64>,
 }
 
 impl Thread {
@@ -164,6 +179,115 @@ impl Thread {
             Surface::Bore => self.x() - 2.0 * gap,
         })
     }
+    /// The pitch diameter and flank angle of the thread as cut in `shapes`, measured over
+    /// whole pitches inside the root line's span and the material's, a lead clear of each
+    /// end (where the tool enters and pulls out); `None` when the span holds less than one such pitch or the
+    /// section has no groove of half a pitch between root and crest.
+    pub fn form(&self, shapes: &[Shape]) -> Option<ThreadForm> {
+        let pitch = self.lead / self.starts.max(1) as f64;
+        let (z0, z1) = self.z_span();
+        // where there is material: the passes start and end in the air
+        let (zmin, zmax) = shapes
+            .iter()
+            .flat_map(|s| &s.outer)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                (a.min(p[0]), b.max(p[0]))
+            });
+        let (lo, hi) = (
+            z0.min(z1).max(zmin) + self.lead,
+            z0.max(z1).min(zmax) - self.lead,
+        );
+        let whole = ((hi - lo) / pitch).floor();
+        if !(pitch > 0.0 && whole >= 1.0) {
+            return None;
+        }
+        let window = (lo, lo + whole * pitch);
+        // lines parallel to the root line (a tapered thread's too), `h` above it (radially)
+        let [a, b] = self.root;
+        let slope = if (b[0] - a[0]).abs() < 1e-12 {
+            0.0
+        } else {
+            (b[1] - a[1]) / (b[0] - a[0])
+        };
+        let root_at = move |z: f64| b[1] + slope * (z - b[0]);
+        // the crest's height above the root line over the window (on a cone too)
+        let crest = shapes
+            .iter()
+            .flat_map(|s| std::iter::once(&s.outer).chain(s.holes.iter()))
+            .flatten()
+            .map(|p| p[0])
+            .filter(|z| (window.0..=window.1).contains(z))
+            .chain([window.0, window.1])
+            .filter_map(|z| Some(surface_radius_at(shapes, z, self.surface)? - root_at(z)))
+            .reduce(match self.surface {
+                Surface::Outer => f64::max,
+                Surface::Bore => f64::min,
+            })?;
+        // the groove's share of the window h above the root: small near the root, large at
+        // the crest
+        let groove = |h: f64| 1.0 - material_fraction(shapes, |z| root_at(z) + h, window);
+        // just inside both ends (1 nm, above the grid's snapping): a line on a flat sees
+        // neither flat nor air
+        let nudge = 1e-6 * crest.signum();
+        let (h0, h1) = (nudge, crest - nudge);
+        let pitch_h = height_where(&groove, h0, h1, 0.5)?;
+        // two heights on the flanks, clear of the root's and the crest's flats
+        let (lo_share, hi_share) = ((groove(h0) + 0.05).max(0.35), (groove(h1) - 0.05).min(0.65));
+        let included_angle = (hi_share - lo_share >= 0.1)
+            .then(|| {
+                let lo_h = height_where(&groove, h0, h1, lo_share)?;
+                let hi_h = height_where(&groove, h0, h1, hi_share)?;
+                let widening = (hi_share - lo_share) * pitch / (hi_h - lo_h).abs();
+                Some(2.0 * (widening / 2.0).atan().to_degrees())
+            })
+            .flatten();
+        Some(ThreadForm {
+            pitch_diameter: 2.0 * (b[1] + pitch_h),
+            included_angle,
+        })
+    }
+}
+
+/// The share of `window` (a Z interval) that lies inside the material on the straight line
+/// r = `line`(z) (even-odd over every ring; an edge counts where it crosses the line
+/// half-open).
+fn material_fraction(shapes: &[Shape], line: impl Fn(f64) -> f64, window: (f64, f64)) -> f64 {
+    let above = |p: [f64; 2]| p[1] - line(p[0]);
+    let mut zs: Vec<f64> = shapes
+        .iter()
+        .flat_map(|s| std::iter::once(&s.outer).chain(s.holes.iter()))
+        .flat_map(|ring| {
+            (0..ring.len()).filter_map(|i| {
+                let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+                let (ga, gb) = (above(a), above(b));
+                ((ga > 0.0) != (gb > 0.0)).then(|| a[0] + ga / (ga - gb) * (b[0] - a[0]))
+            })
+        })
+        .collect();
+    zs.sort_by(f64::total_cmp);
+    let inside: f64 = zs
+        .chunks_exact(2)
+        .map(|c| (c[1].min(window.1) - c[0].max(window.0)).max(0.0))
+        .sum();
+    inside / (window.1 - window.0)
+}
+
+/// The height between `root` and `crest` where `groove` (growing from root to crest) takes
+/// `share`, by bisection; `None` when it does not pass `share` there.
+fn height_where(groove: &dyn Fn(f64) -> f64, root: f64, crest: f64, share: f64) -> Option<f64> {
+    let (mut a, mut b) = (root, crest);
+    if !(groove(a) < share && groove(b) > share) {
+        return None;
+    }
+    for _ in 0..60 {
+        let m = 0.5 * (a + b);
+        if groove(m) < share {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    Some(0.5 * (a + b))
 }
 
 /// The threads of a toolpath, in program order (see [`Thread`]); `shapes` is the final
@@ -243,7 +367,11 @@ pub fn threads(segments: &[Segment], tools: &ToolTable, shapes: &[Shape]) -> Vec
                     Surface::Outer => last > first,
                     Surface::Bore => last < first,
                 };
+            let mut phases: Vec<f64> = passes.iter().map(|p| p.thread_phase).collect();
+            phases.sort_by(f64::total_cmp);
+            phases.dedup();
             Thread {
+                starts: phases.len(),
                 wrong_side,
                 span: passes[0].span,
                 surface,
@@ -305,5 +433,86 @@ mod tests {
             deepest_radius(&shapes, -8.0, -1.0, Surface::Bore),
             Some(5.0)
         );
+    }
+
+    /// A bar Φ20 × 20 with 60° V grooves every `pitch` from Z−2 down to Z−18.5, sharp
+    /// roots at radius `root`: the section a sharp threading tool leaves.
+    fn v_threaded(pitch: f64, root: f64, half_angle_deg: f64) -> Vec<Shape> {
+        let h = (10.0 - root) * half_angle_deg.to_radians().tan();
+        let mut outer = vec![[-20.0, 0.0], [0.0, 0.0], [0.0, 10.0]];
+        let mut c = -2.0;
+        while c > -18.6 {
+            outer.extend([[c + h, 10.0], [c, root], [c - h, 10.0]]);
+            c -= pitch;
+        }
+        outer.push([-20.0, 10.0]);
+        vec![Shape {
+            outer,
+            holes: vec![],
+        }]
+    }
+
+    fn thread_along(root: f64, lead: f64, starts: usize) -> Thread {
+        Thread {
+            span: Span::default(),
+            surface: Surface::Outer,
+            lead,
+            root: [[5.0, root], [-19.0, root]], // from the air in front of the face
+            pass_depths: vec![],
+            wrong_side: false,
+            starts,
+        }
+    }
+
+    #[test]
+    fn pitch_diameter_and_flank_angle_of_a_sharp_v_thread() {
+        // M20 × 1.5 cut to X18.05 by a sharp 60° tool: the groove is as wide as the tooth
+        // (0.75) where it is 0.75 / (2 tan 30°) = 0.649519 above the root:
+        // d2 = 2 (9.025 + 0.649519) = 19.349038.
+        let shapes = v_threaded(1.5, 9.025, 30.0);
+        let form = thread_along(9.025, 1.5, 1).form(&shapes).unwrap();
+        assert!((form.pitch_diameter - 19.349038).abs() < 1e-5, "{form:?}");
+        assert!(
+            (form.included_angle.unwrap() - 60.0).abs() < 1e-6,
+            "{form:?}"
+        );
+        // a 55° (Whitworth) tool: d2 = 2 (9.025 + 0.75 / (2 tan 27.5°))
+        let shapes = v_threaded(1.5, 9.025, 27.5);
+        let form = thread_along(9.025, 1.5, 1).form(&shapes).unwrap();
+        let d2 = 2.0 * (9.025 + 0.75 / (2.0 * 27.5f64.to_radians().tan()));
+        assert!((form.pitch_diameter - d2).abs() < 1e-5, "{form:?} vs {d2}");
+        assert!(
+            (form.included_angle.unwrap() - 55.0).abs() < 1e-6,
+            "{form:?}"
+        );
+        // two starts of lead 3 cut the same grooves: the pitch is 1.5 again
+        let shapes = v_threaded(1.5, 9.025, 30.0);
+        let form = thread_along(9.025, 3.0, 2).form(&shapes).unwrap();
+        assert!((form.pitch_diameter - 19.349038).abs() < 1e-5, "{form:?}");
+        // grooves 0.6 of the pitch wide at the crest: the angle from 35 % to 55 %
+        let root = 10.0 - 0.9 / (2.0 * 30f64.to_radians().tan());
+        let form = thread_along(root, 1.5, 1)
+            .form(&v_threaded(1.5, root, 30.0))
+            .unwrap();
+        assert!(
+            (form.included_angle.unwrap() - 60.0).abs() < 1e-6,
+            "{form:?}"
+        );
+        // 0.54 wide at the crest: the angle from 35 % to 49 %
+        let root = 10.0 - 0.81 / (2.0 * 30f64.to_radians().tan());
+        let form = thread_along(root, 1.5, 1)
+            .form(&v_threaded(1.5, root, 30.0))
+            .unwrap();
+        assert!(
+            (form.included_angle.unwrap() - 60.0).abs() < 1e-6,
+            "{form:?}"
+        );
+        assert!(
+            (form.pitch_diameter - 2.0 * (root + 0.75 / (2.0 * 30f64.to_radians().tan()))).abs()
+                < 1e-6
+        );
+        // no groove as wide as half the pitch between root and crest: a scratch
+        let shapes = v_threaded(1.5, 9.9, 30.0);
+        assert_eq!(thread_along(9.9, 1.5, 1).form(&shapes), None);
     }
 }
