@@ -8,9 +8,14 @@ use expander::{Increment, Machine, Options, Toolpath};
 use std::path::Path;
 use std::sync::Arc;
 
-/// Largest input file read (a million-move program is ~20 MB). Larger files are refused
-/// before they are read, so memory stays bounded whatever is given.
+/// Largest program file read (a million-move program is ~20 MB and peaks at ~430 MB, so
+/// 64 MB at ~1.3 GB). Larger files are refused before they are read, so memory stays
+/// bounded whatever is given.
 const MAX_PROGRAM_BYTES: u64 = 64 * 1024 * 1024;
+/// Largest TOML file read (blank, target, tool table, machine profile, variables): the
+/// TOML reader builds a document tree of ~95 bytes per byte of text (a 100 000-vertex blank
+/// profile, 2.6 MB, peaks at 250 MB), so 16 MB (600 000 vertices) stays near 1.5 GB.
+const MAX_TABLE_BYTES: u64 = 16 * 1024 * 1024;
 
 /// A read, parsed and expanded program.
 pub(crate) struct Loaded {
@@ -30,15 +35,26 @@ pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
             "check the path",
         )
     })?;
-    if meta.len() > MAX_PROGRAM_BYTES {
+    let (max, help) = if what == "program" {
+        (
+            MAX_PROGRAM_BYTES,
+            "split the program into subprograms, or check that this is the right file",
+        )
+    } else {
+        (
+            MAX_TABLE_BYTES,
+            "check that this is the right file (a blank or target profile of 600 000 points is more than any drawing needs)",
+        )
+    };
+    if meta.len() > max {
         diag::print_plain(
             &format!(
                 "{what} {} is {} bytes, more than latsim reads ({} MB)",
                 path.display(),
                 meta.len(),
-                MAX_PROGRAM_BYTES / (1024 * 1024)
+                max / (1024 * 1024)
             ),
-            "split the program into subprograms, or check that this is the right file",
+            help,
         );
         return Err(());
     }

@@ -446,3 +446,31 @@ fn a_tangled_blank_profile_is_refused_at_once() {
     assert!(out.stderr.contains("crosses itself near"), "{}", out.stderr);
     assert!(!json.exists());
 }
+
+/// Issue 17: a TOML file larger than 16 MB (the TOML reader's tree takes ~95 bytes a byte)
+/// is refused before it is read, with its size and the limit, exit 2.
+#[test]
+fn a_huge_stock_file_is_refused_before_it_is_read() {
+    let (d, prog) = temp_program("p.nc", GOOD);
+    let big = d.path().join("big.toml");
+    std::fs::File::create(&big)
+        .unwrap()
+        .set_len(17 * 1024 * 1024)
+        .unwrap();
+    let out = latsim(&[
+        "run",
+        prog.to_str().unwrap(),
+        "--stock-file",
+        big.to_str().unwrap(),
+        "--out",
+        d.path().to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(
+        out.stderr.contains("17825792 bytes") && out.stderr.contains("(16 MB)"),
+        "{}",
+        out.stderr
+    );
+    assert_eq!(files_in(d.path()), ["big.toml", "p.nc"]);
+}

@@ -665,7 +665,7 @@ impl<'a> Reader<'a> {
             value: 0.0,
             has_point: true,
             span: at.to(end),
-            expr: Some(expr),
+            expr: Some(Box::new(expr)),
         })
     }
 
@@ -887,7 +887,9 @@ impl<'a> Reader<'a> {
     fn end_block(&mut self) -> Result<(), ParseError> {
         self.finish_word()?;
         if let Some(start) = self.block_start.take() {
-            let words = std::mem::take(&mut self.words);
+            // exactly as long as needed: a million-line program keeps all its blocks
+            let words = self.words.to_vec();
+            self.words.clear();
             let seq = self.seq.take();
             let block_delete = std::mem::replace(&mut self.block_delete, false);
             let delete_level = std::mem::replace(&mut self.delete_level, 0);
@@ -901,7 +903,7 @@ impl<'a> Reader<'a> {
                     block_delete,
                     delete_level,
                     span,
-                    stmt,
+                    stmt: stmt.map(Box::new),
                 };
                 self.program
                     .programs
@@ -1251,5 +1253,24 @@ mod tests {
             .map(|w| w.code_tenths())
             .collect();
         assert_eq!(codes, vec![Some(751), Some(10), Some(0)]);
+    }
+
+    /// Issue 16/17 memory: a million-line program keeps every block and word at once, so
+    /// their size is the peak of a big run (macro parts are boxed; words exactly as many).
+    #[test]
+    fn blocks_and_words_stay_compact() {
+        assert!(
+            std::mem::size_of::<Word>() <= 48,
+            "{}",
+            std::mem::size_of::<Word>()
+        );
+        assert!(
+            std::mem::size_of::<Block>() <= 104,
+            "{}",
+            std::mem::size_of::<Block>()
+        );
+        let p = parse("G01 X1. Z2. F0.1;\nG00 X3.;\n").unwrap();
+        let b = &p.programs[0].blocks;
+        assert_eq!((b[0].words.capacity(), b[1].words.capacity()), (4, 2));
     }
 }

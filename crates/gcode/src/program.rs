@@ -15,8 +15,9 @@ pub struct Word {
     /// Where the word stands (letter through last digit).
     pub span: Span,
     /// The value written as a custom macro B expression (`X#1`, `Z[#2-0.5]`); the
-    /// interpreter evaluates it before the block runs (`value` is 0 until then).
-    pub expr: Option<macro_b::Expr>,
+    /// interpreter evaluates it before the block runs (`value` is 0 until then). Boxed:
+    /// most words have none, and a million-line program holds millions of words.
+    pub expr: Option<Box<macro_b::Expr>>,
 }
 
 impl Word {
@@ -46,8 +47,8 @@ pub struct Block {
     pub span: Span,
     /// A custom macro B statement (`#1 = 2`, `IF […] GOTO 5`, `WHILE […] DO1`, `END1`,
     /// `GOTO 5`): the block then has no words, except Haas `IF [cond] THEN <NC block>`,
-    /// whose NC block's words are the block's words.
-    pub stmt: Option<macro_b::Stmt>,
+    /// whose NC block's words are the block's words. Boxed, as [`Word::expr`].
+    pub stmt: Option<Box<macro_b::Stmt>>,
 }
 
 impl Block {

@@ -29,12 +29,14 @@ use crate::text::{duration, esc, grouped, mm, num, quantity};
 /// Cap on toolpath points embedded for the slider; beyond it only every k-th move is
 /// listed.
 pub(crate) const PATH_POINT_CAP: usize = 200_000;
-/// Cap on the points of all embedded snapshots together.
-const SNAPSHOT_POINT_CAP: usize = 200_000;
+/// Cap on the points of all embedded snapshots together (with the toolpath and the
+/// inline picture, a report of 10^6 moves and 100 000-vertex snapshots stays under 10 MB).
+const SNAPSHOT_POINT_CAP: usize = 100_000;
 /// Cap on the points of each static layer (blank, part, …).
 const LAYER_POINT_CAP: usize = 50_000;
-/// Rows listed per diagnostic or finding table before "… N more".
-const MAX_ROWS: usize = 20_000;
+/// Rows listed per diagnostic or finding table before "… N more" (the JSON lists them
+/// all): 20 000 rows of four tables made a 13 MB page; the page stays under 10 MB.
+const MAX_ROWS: usize = 1_000;
 /// Coordinates beyond this (mm) are clamped in the embedded data.
 const CLAMP_MM: f64 = 1e7;
 /// The drawing is about this many px wide: points closer than a fraction of a px apart

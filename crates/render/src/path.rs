@@ -36,7 +36,64 @@ pub(crate) fn thin_ring(pts: &[[f64; 2]], md: f64) -> Vec<[f64; 2]> {
     while kept.len() > 3 && dist2(kept[0], kept[kept.len() - 1]) <= md2 {
         kept.pop();
     }
+    if md > 0.0 && kept.len() > COLLAPSE_RUN {
+        kept = collapse_runs(&kept, md, 0);
+        kept = collapse_runs(&kept, md, 1);
+    }
     kept
+}
+
+/// A run of more consecutive points than this in one column is collapsed.
+const COLLAPSE_RUN: usize = 4;
+
+/// Min/max decimation (as for waveforms): where more than [`COLLAPSE_RUN`] consecutive
+/// points fall in one column `md` wide across `axis` (0: columns of equal z, 1: rows of equal
+/// r) and the run turns back along the column, only the run's first, lowest, highest and
+/// last points are kept, in path order (a monotone run — an arc near its tangent — is left
+/// as it is, so ordinary parts draw exactly as before). The
+/// run's edges stay inside the column, so the path crosses every level between its lowest
+/// and highest point there: every dropped point is within `md` of the kept path and every
+/// kept edge within `md` of the dropped ones. A sawtooth of 50 000 sub-pixel teeth becomes
+/// four points a column, drawn the same (a band filled and stroked top to bottom).
+fn collapse_runs(pts: &[[f64; 2]], md: f64, axis: usize) -> Vec<[f64; 2]> {
+    let other = 1 - axis;
+    let column = |p: &[f64; 2]| (p[axis] / md).floor();
+    let mut out: Vec<[f64; 2]> = Vec::with_capacity(pts.len());
+    let mut i = 0;
+    while i < pts.len() {
+        let c = column(&pts[i]);
+        let mut j = i + 1;
+        while j < pts.len() && column(&pts[j]) == c {
+            j += 1;
+        }
+        let run = &pts[i..j];
+        let monotone = |up: bool| {
+            run.windows(2)
+                .all(|w| (w[1][other] >= w[0][other]) == up || w[1][other] == w[0][other])
+        };
+        if run.len() > COLLAPSE_RUN && !monotone(true) && !monotone(false) {
+            let (mut lo, mut hi) = (0, 0);
+            for (k, p) in run.iter().enumerate() {
+                if p[other] < run[lo][other] {
+                    lo = k;
+                }
+                if p[other] > run[hi][other] {
+                    hi = k;
+                }
+            }
+            let mut keep = [0, lo, hi, run.len() - 1];
+            keep.sort_unstable();
+            for (n, &k) in keep.iter().enumerate() {
+                if n == 0 || k != keep[n - 1] {
+                    out.push(run[k]);
+                }
+            }
+        } else {
+            out.extend_from_slice(run);
+        }
+        i = j;
+    }
+    out
 }
 
 fn push_pt(d: &mut String, cmd: char, p: [f64; 2], decimals: usize) {
@@ -315,5 +372,57 @@ mod tests {
             1e-6,
         );
         assert_eq!(s, "M0,0L1,0L1,1L0,1Z");
+    }
+
+    /// Distance from `p` to the segment `a`–`b`.
+    fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+        let (dz, dr) = (b[0] - a[0], b[1] - a[1]);
+        let l2 = dz * dz + dr * dr;
+        let t = if l2 == 0.0 {
+            0.0
+        } else {
+            (((p[0] - a[0]) * dz + (p[1] - a[1]) * dr) / l2).clamp(0.0, 1.0)
+        };
+        dist2(p, [a[0] + t * dz, a[1] + t * dr]).sqrt()
+    }
+
+    /// Largest distance from a point of `from` (vertices and edge samples) to the closed
+    /// polyline `to`.
+    fn one_way(from: &[[f64; 2]], to: &[[f64; 2]]) -> f64 {
+        let n = from.len();
+        let mut worst: f64 = 0.0;
+        for i in 0..n {
+            let (a, b) = (from[i], from[(i + 1) % n]);
+            for k in 0..8 {
+                let t = k as f64 / 8.0;
+                let p = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+                let d = (0..to.len())
+                    .map(|j| seg_dist(p, to[j], to[(j + 1) % to.len()]))
+                    .fold(f64::INFINITY, f64::min);
+                worst = worst.max(d);
+            }
+        }
+        worst
+    }
+
+    /// Issue 17: a blank profile of 4 000 sub-pixel teeth (0.002 mm wide, 5 mm tall) on a
+    /// 0.1 mm pixel keeps a few points per column, and the drawn ring stays within two
+    /// collapse widths (0.6 px at `MIN_PX`) of the original both ways.
+    #[test]
+    fn sawtooth_collapses_to_the_picture_resolution() {
+        let mut ring = vec![[-10.0, 0.0], [0.0, 0.0]];
+        for k in 0..=8_000 {
+            let z = -0.001 * k as f64;
+            ring.push([z, if k % 2 == 0 { 40.0 } else { 45.0 }]);
+        }
+        ring.push([-10.0, 40.0]);
+        let md = 0.03;
+        let kept = thin_ring(&ring, md);
+        assert!(kept.len() < 4 * (8.0 / md) as usize + 10, "{}", kept.len());
+        let h = one_way(&ring, &kept).max(one_way(&kept, &ring));
+        assert!(h <= 2.0 * md, "Hausdorff {h}");
+        // a ring with no dense run is left as it was
+        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        assert_eq!(thin_ring(&square, md), square.to_vec());
     }
 }

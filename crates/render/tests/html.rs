@@ -365,3 +365,53 @@ fn rapid_scrapes_are_shown_apart_from_crashes() {
         "the crash's depth 1 mm: {crash_rows}"
     );
 }
+
+/// A sawtooth ring of `teeth` sub-pixel teeth (a 100 000-vertex blank profile of issue 17).
+fn sawtooth(teeth: usize, r0: f64) -> Shape {
+    let mut outer = vec![[-80.0, 0.0], [0.0, 0.0]];
+    for k in 0..=2 * teeth {
+        let z = -80.0 * k as f64 / (2 * teeth) as f64;
+        outer.push([z, if k % 2 == 0 { r0 } else { r0 + 5.0 }]);
+    }
+    Shape {
+        outer,
+        holes: vec![],
+    }
+}
+
+/// Issue 16/17: a report of 10^6 moves with a 100 000-vertex blank, part, target and 32
+/// snapshots of it (issue 17's sawtooth profile), and 30 000 warnings and alarms, makes a
+/// page within 10 MB that still lists the first rows, says how many more there are and
+/// keeps an even selection of the snapshots.
+#[test]
+fn big_report_page_stays_within_ten_megabytes() {
+    let mut r = common::many_segments(1_000_000);
+    r.stock.shapes = vec![sawtooth(50_000, 40.0)];
+    r.final_part = vec![sawtooth(50_000, 38.0)];
+    r.intended = vec![sawtooth(50_000, 37.0)];
+    r.snapshots = (0..=31)
+        .map(|k| Snapshot {
+            after_move: k * 1_000_000 / 31,
+            shapes: vec![sawtooth(50_000, 40.0 - 0.05 * k as f64)],
+        })
+        .collect();
+    let long = "x".repeat(200);
+    r.warnings = (0..30_000)
+        .map(|i| Diagnostic {
+            line: i,
+            column: 1,
+            code: "LS-TEST".into(),
+            message: format!("warning {i} {long}"),
+        })
+        .collect();
+    r.alarms = r.warnings.clone();
+    let page = render::html(&r);
+    assert!(page.len() <= 10_000_000, "{} bytes", page.len());
+    assert_self_contained(&page);
+    assert!(page.contains("warning 999 "));
+    assert!(!page.contains("warning 1000 "));
+    assert!(page.contains("more not listed"), "the count of the rest");
+    let d = data(&page);
+    let snaps = d["snapshots"].as_array().unwrap();
+    assert!(snaps.len() >= 8, "{}", snaps.len());
+}

@@ -297,14 +297,34 @@ pub fn deviation(
     // outside its zone anything (an OD contour says nothing about the bore an ID contour
     // finishes: spec/simulation.md, "The intended shape"). The comparison holds where at
     // least one intent speaks.
-    let world = vec![rect(-FAR, FAR, -FAR, FAR)];
+    //
+    // Everything compared lies in the blank (the final part is cut from it), so the intents
+    // are clipped to the blank's box first: the booleans' grid is fitted to their inputs,
+    // and an intent closed FAR away made it ~0.4 µm, coarser than a fine blank's detail
+    // (a 100 000-vertex sawtooth of 0.0016 mm teeth snapped to near-collinear edges that
+    // took the splitter seconds) — within the blank's box it is ~1000 times finer.
+    let world_box = Rect::of(blank.iter().flat_map(|s| pts(&s.outer))).grown(1.0);
+    if world_box.is_empty() {
+        return out;
+    }
+    let world = vec![rect(
+        world_box.min.z,
+        world_box.max.z,
+        world_box.min.r,
+        world_box.max.r,
+    )];
     let mut part = blank.to_vec();
     let mut zone: Vec<Shape> = vec![];
     for intent in intents {
-        let elsewhere = boolean(&world, &intent.zone, BoolOp::Difference);
-        let keeps = boolean(&intent.part, &elsewhere, BoolOp::Union);
+        let intent_zone = clip_to_box(&intent.zone, &world_box);
+        let elsewhere = boolean(&world, &intent_zone, BoolOp::Difference);
+        let keeps = boolean(
+            &clip_to_box(&intent.part, &world_box),
+            &elsewhere,
+            BoolOp::Union,
+        );
         part = boolean(&part, &keeps, BoolOp::Intersection);
-        zone = boolean(&zone, &intent.zone, BoolOp::Union);
+        zone = boolean(&zone, &intent_zone, BoolOp::Union);
     }
     let should_stay = boolean(&part, &zone, BoolOp::Intersection);
     let final_zone = boolean(final_shapes, &zone, BoolOp::Intersection);
@@ -317,6 +337,65 @@ pub fn deviation(
         g.segments = sweeping(&g.shape, segments, tools, &rear, chord_tol);
     }
     out
+}
+
+/// `shapes` cut to `bx` ring by ring (Sutherland–Hodgman against the box's four sides): the
+/// same region within the box under the non-zero rule (a ring that leaves and re-enters the
+/// box gets zero-width bridges along its sides, which enclose nothing), with every vertex
+/// inside the box kept exactly as it was.
+fn clip_to_box(shapes: &[Shape], bx: &Rect) -> Vec<Shape> {
+    let ring = |r: &[P]| -> Vec<P> {
+        let mut cur: Vec<P> = r.to_vec();
+        // (axis, bound, keep the side >= bound)
+        for (axis, bound, upper) in [
+            (0, bx.min.z, true),
+            (0, bx.max.z, false),
+            (1, bx.min.r, true),
+            (1, bx.max.r, false),
+        ] {
+            if cur.is_empty() {
+                break;
+            }
+            let inside = |p: &P| {
+                if upper {
+                    p[axis] >= bound
+                } else {
+                    p[axis] <= bound
+                }
+            };
+            let mut next = Vec::with_capacity(cur.len() + 4);
+            for i in 0..cur.len() {
+                let (a, b) = (cur[i], cur[(i + 1) % cur.len()]);
+                let (ia, ib) = (inside(&a), inside(&b));
+                if ia {
+                    next.push(a);
+                }
+                if ia != ib {
+                    let t = (bound - a[axis]) / (b[axis] - a[axis]);
+                    let mut q = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+                    q[axis] = bound;
+                    next.push(q);
+                }
+            }
+            cur = next;
+        }
+        cur
+    };
+    shapes
+        .iter()
+        .filter_map(|s| {
+            let outer = ring(&s.outer);
+            (outer.len() >= 3).then(|| Shape {
+                outer,
+                holes: s
+                    .holes
+                    .iter()
+                    .map(|h| ring(h))
+                    .filter(|h| h.len() >= 3)
+                    .collect(),
+            })
+        })
+        .collect()
 }
 
 /// The components of `region` deeper than `tol` from the boundary of `part`. A region
@@ -719,5 +798,115 @@ mod tests {
         ];
         let i = Intent::finishing(&marked, &deep).unwrap();
         assert_eq!(zone_z(&i), (-20.0, 0.0));
+    }
+
+    /// A sawtooth ring: teeth between r 12 and 14, `n` of them from Z0 to Z-20, on a body
+    /// down to the axis.
+    fn sawtooth(n: usize) -> Shape {
+        let mut outer = vec![[-20.0, 0.0], [0.0, 0.0]];
+        for k in 0..=2 * n {
+            let z = -20.0 * k as f64 / (2 * n) as f64;
+            outer.push([z, if k % 2 == 0 { 12.0 } else { 14.0 }]);
+        }
+        Shape {
+            outer,
+            holes: vec![],
+        }
+    }
+
+    /// The comparison as it was before the intents were clipped to the blank's box (the
+    /// world and the intents FAR away, so the grid is fitted to ±FAR).
+    fn deviation_unclipped(blank: &[Shape], final_shapes: &[Shape], intent: &Intent) -> Deviation {
+        let world = vec![rect(-FAR, FAR, -FAR, FAR)];
+        let elsewhere = boolean(&world, &intent.zone, BoolOp::Difference);
+        let keeps = boolean(&intent.part, &elsewhere, BoolOp::Union);
+        let part = boolean(blank, &keeps, BoolOp::Intersection);
+        let zone = boolean(&[], &intent.zone, BoolOp::Union);
+        let should_stay = boolean(&part, &zone, BoolOp::Intersection);
+        let final_zone = boolean(final_shapes, &zone, BoolOp::Intersection);
+        let gone = boolean(&should_stay, final_shapes, BoolOp::Difference);
+        let left = boolean(&final_zone, &part, BoolOp::Difference);
+        Deviation {
+            gouges: findings(gone, &part, 0.01),
+            leftovers: findings(left, &part, 0.01),
+        }
+    }
+
+    /// Issue 17: the intents are clipped to the blank's box before the booleans. On a
+    /// sawtooth blank with a target Φ22 (r 11) OD part, closed far away, and a final part
+    /// with a groove 0.5 mm into the target, gouge and leftovers are those of the unclipped
+    /// comparison (to its coarser grid's precision).
+    #[test]
+    fn clipping_the_intents_to_the_blank_changes_no_finding() {
+        let blank = vec![sawtooth(200)];
+        let target = Intent::target(vec![rect(-FAR, FAR, 0.0, 11.0)]);
+        let groove = rect(-12.0, -8.0, 10.5, 20.0);
+        let final_shapes = boolean(&blank, &[groove], BoolOp::Difference);
+        let new = deviation(
+            &blank,
+            &final_shapes,
+            std::slice::from_ref(&target),
+            0.01,
+            &[],
+            &ToolTable::empty(),
+            0.001,
+        );
+        let old = deviation_unclipped(&blank, &final_shapes, &target);
+        assert_eq!(new.gouges.len(), 1);
+        assert_eq!(new.leftovers.len(), 2);
+        assert_eq!(new.gouges.len(), old.gouges.len());
+        assert_eq!(new.leftovers.len(), old.leftovers.len());
+        // the gouge: 4 mm × 0.5 mm under the target surface
+        assert!(
+            (new.gouges[0].area - 2.0).abs() < 1e-6,
+            "{:?}",
+            new.gouges[0]
+        );
+        assert!((new.gouges[0].depth - 0.5).abs() < 1e-6);
+        for (a, b) in new
+            .gouges
+            .iter()
+            .chain(&new.leftovers)
+            .zip(old.gouges.iter().chain(&old.leftovers))
+        {
+            assert!(
+                (a.area - b.area).abs() < 1e-4 * b.area.max(1.0),
+                "{} {}",
+                a.area,
+                b.area
+            );
+            assert!((a.depth - b.depth).abs() < 1e-3, "{} {}", a.depth, b.depth);
+        }
+        assert!((new.undercut_area() - old.undercut_area()).abs() < 1e-3);
+    }
+
+    /// The box clip keeps a concave ring's area inside the box (a ring leaving and
+    /// re-entering the box is bridged along the box's side, enclosing nothing).
+    #[test]
+    fn box_clip_of_a_concave_ring_is_the_intersection() {
+        let u = Shape {
+            outer: vec![
+                [0.0, 0.0],
+                [10.0, 0.0],
+                [10.0, 10.0],
+                [7.0, 10.0],
+                [7.0, 3.0],
+                [3.0, 3.0],
+                [3.0, 10.0],
+                [0.0, 10.0],
+            ],
+            holes: vec![],
+        };
+        let bx = Rect::new(geom::Pt::new(-1.0, 5.0), geom::Pt::new(11.0, 20.0));
+        let clipped = clip_to_box(std::slice::from_ref(&u), &bx);
+        let exact = boolean(
+            std::slice::from_ref(&u),
+            &[rect(-1.0, 11.0, 5.0, 20.0)],
+            BoolOp::Intersection,
+        );
+        let norm = boolean(&clipped, &[], BoolOp::Union);
+        assert!((area(&norm) - 30.0).abs() < 1e-9, "{}", area(&norm));
+        assert!((area(&exact) - 30.0).abs() < 1e-9);
+        assert_eq!(norm.len(), 2, "two legs: {norm:?}");
     }
 }

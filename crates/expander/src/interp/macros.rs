@@ -161,7 +161,11 @@ impl Macros {
                 .map(|b| Line {
                     seq: b.seq,
                     span: b.span,
-                    body: b.stmt.clone().map_or(Body::Block(()), Body::Stmt),
+                    body: b
+                        .stmt
+                        .as_deref()
+                        .cloned()
+                        .map_or(Body::Block(()), Body::Stmt),
                 })
                 .collect();
             self.programs
