@@ -19,6 +19,8 @@
 
 use std::fmt::Write as _;
 
+mod threads;
+
 use crate::block::verdict_text;
 use crate::layout::{colour, main_window};
 use crate::path::thin_ring;
@@ -652,6 +654,7 @@ pub(crate) fn html(report: &Report) -> String {
         &report.rapid_cuts,
     );
     gouge_table(&mut out, &report.gouges);
+    threads::threads_table(&mut out, &report.threads);
     diag_table(
         &mut out,
         "ls-warnings",

@@ -144,3 +144,58 @@ fn page_holds_title_picture_slider_snapshots_and_findings() {
         assert!(head.ends_with(&format!("({n})")), "{id}: {head}");
     }
 }
+
+/// A program that cuts a thread gets a threads table, one row per thread with what was
+/// measured ("—" where nothing could be); one that cuts none gets no such section.
+#[test]
+fn threads_are_listed_with_their_pitch_diameter() {
+    let mut r = report();
+    let page = render::html(&r);
+    assert!(!page.contains("ls-threads"), "no thread, no table");
+    r.threads = vec![
+        render::ThreadCheck {
+            line: 4,
+            inside: false,
+            lead_mm: 1.5,
+            x_mm: 18.05,
+            expected_x_mm: Some(18.05),
+            pass_depths_mm: vec![0.4, 0.3, 0.275],
+            achieved_x_mm: Some(18.05),
+            depth_error_mm: Some(-1e-7),
+            pitch_diameter_mm: Some(19.349038),
+            included_angle_deg: Some(60.0),
+        },
+        render::ThreadCheck {
+            line: 9,
+            inside: true,
+            lead_mm: 2.0,
+            x_mm: 30.0,
+            ..Default::default()
+        },
+    ];
+    let page = render::html(&r);
+    let dom = tl::parse(&page, tl::ParserOptions::default()).expect("parses");
+    let parser = dom.parser();
+    let head = by_id(&dom, "ls-threads").inner_text(parser);
+    assert!(head.ends_with("(2)"), "{head}");
+    let findings = by_id(&dom, "ls-findings");
+    let rows: Vec<Vec<String>> = inside(parser, findings, "table.thread")
+        .into_iter()
+        .flat_map(|t| inside(parser, t, "tr"))
+        .filter(|tr| tr.attributes().get("data-line").is_some())
+        .map(|tr| {
+            inside(parser, tr, "td")
+                .into_iter()
+                .map(|td| td.inner_text(parser).into_owned())
+                .collect()
+        })
+        .collect();
+    assert_eq!(
+        rows[0],
+        ["4", "OD", "1.5", "3", "18.05", "18.05", "18.05", "0.000", "19.349", "60.00"]
+    );
+    assert_eq!(
+        rows[1],
+        ["9", "ID", "2", "0", "30", "—", "—", "—", "—", "—"]
+    );
+}
