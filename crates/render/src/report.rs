@@ -35,8 +35,9 @@ pub struct PathLine {
     pub points: Vec<[f64; 2]>,
 }
 
-/// A rapid move that ran into stock.
-#[derive(Debug, Clone, PartialEq)]
+/// A rapid move that ran into stock, a tool body that met stock, or a tool that entered
+/// the chuck, its jaws or the tailstock.
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Crash {
     /// Source line of the rapid.
     pub line: u32,
@@ -53,6 +54,21 @@ pub struct Crash {
     /// The tool's non-cutting body that met stock ("holder", "boring bar", …); `None` for
     /// a rapid's cutting edge.
     pub body: Option<String>,
+    /// The workholding the tool entered ("chuck face", "chuck jaw", "tailstock centre",
+    /// "gripped length": cutting the blank inside the jaws); `None`: it met stock.
+    pub obstacle: Option<String>,
+    /// The tool's outline where it met the obstacle or stock (cutting outline and body, as
+    /// convex parts in `[z, r]`), drawn at the crash; empty when unknown.
+    pub tool: Vec<Vec<[f64; 2]>>,
+}
+
+/// A piece of workholding drawn in the picture (light grey, labelled).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Fixture {
+    /// "chuck face", "chuck jaw", "tailstock centre".
+    pub name: String,
+    /// Its section at r ≥ 0.
+    pub shapes: Vec<Shape>,
 }
 
 /// Part material removed that should have stayed.
@@ -172,6 +188,8 @@ pub struct Report {
     pub line_counts: Vec<(u32, u64)>,
     /// The threads the program cuts, checked in the final section (the CLI fills it).
     pub threads: Vec<ThreadCheck>,
+    /// The chuck, jaws and tailstock centre given to the run; empty when none.
+    pub fixture: Vec<Fixture>,
 }
 
 /// One thread (a thread cycle or a run of thread passes) and its depth as cut.

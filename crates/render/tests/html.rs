@@ -341,6 +341,7 @@ fn rapid_scrapes_are_shown_apart_from_crashes() {
         area_mm2: 0.014,
         depth_mm: 0.07,
         body: None,
+        ..Default::default()
     });
     let svg = render::svg(&r);
     assert!(svg.contains("scrape line 9"), "the scrape is labelled");
