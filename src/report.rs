@@ -133,6 +133,12 @@ pub(crate) fn add_crashes(
             c
         })
         .collect();
+    let (outlines, runs) = stock::tool_outlines(tools, segments, &rear);
+    report.tool_outlines = outlines
+        .into_iter()
+        .map(|(edge, body)| render::ToolOutline { edge, body })
+        .collect();
+    report.tool_runs = runs;
     report.fixture = fixture
         .iter()
         .flat_map(|f| f.obstacles.iter())

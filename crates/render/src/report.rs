@@ -190,6 +190,22 @@ pub struct Report {
     pub threads: Vec<ThreadCheck>,
     /// The chuck, jaws and tailstock centre given to the run; empty when none.
     pub fixture: Vec<Fixture>,
+    /// The tools' outlines as mounted, for the HTML player to draw the tool at the current
+    /// move; empty: no tool drawn.
+    pub tool_outlines: Vec<ToolOutline>,
+    /// Which outline each move uses: (index of the first move of a run, index into
+    /// [`Report::tool_outlines`]), in move order.
+    pub tool_runs: Vec<(usize, usize)>,
+}
+
+/// A tool's outline relative to its reference point, `[z, r]`: the cutting outline and the
+/// body (holder, shank, bar), each as convex parts.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ToolOutline {
+    /// The insert, blade or drill.
+    pub edge: Vec<Vec<[f64; 2]>>,
+    /// The non-cutting body (empty when the table states none).
+    pub body: Vec<Vec<[f64; 2]>>,
 }
 
 /// One thread (a thread cycle or a run of thread passes) and its depth as cut.

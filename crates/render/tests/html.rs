@@ -82,7 +82,7 @@ fn tables_list_verdict_summary_and_findings() {
         "1 min 42 s",
         "<th scope=\"row\">tolerance</th><td>0.01 mm</td>",
         "<th scope=\"row\">overcut</th><td>1.00 mm², max 0.2 mm</td>",
-        "Crashes (rapids into stock) <span class=\"count\">(1)</span>",
+        "Crashes (rapids into stock, tool bodies, chuck and tailstock) <span class=\"count\">(1)</span>",
         "Gouges (part material removed) <span class=\"count\">(1)</span>",
         "Warnings <span class=\"count\">(1)</span>",
         "Alarms <span class=\"count\">(0)</span>",

@@ -38,7 +38,7 @@ pub use measure::{
 };
 pub use outline::Outline;
 pub use overlay::BoolOp;
-pub use pose::tool_at_crash;
+pub use pose::{tool_at_crash, tool_outlines};
 pub use profile::profile_from_toml;
 pub use removal::{simulate, Crash, SimOptions, Simulation, CRASH_MIN_AREA};
 pub use section::rear_tools;

@@ -5,7 +5,7 @@
 use crate::geom::{convex_hull, sweep_convex, P};
 use crate::outline::Outline;
 use crate::ToolTable;
-use expander::{Motion, Segment};
+use expander::{Motion, Segment, ToolHint};
 
 /// Bisection steps along the move (2⁻⁴⁰ of its length).
 const STEPS: usize = 40;
@@ -25,12 +25,7 @@ pub fn tool_at_crash(
     body: Option<&str>,
     chord_tol: f64,
 ) -> Vec<Vec<[f64; 2]>> {
-    let flip = rear.contains(&seg.tool);
-    let mount = |o: Outline| if flip { o.mirrored() } else { o };
-    let edge = mount(tools.outline_for(seg.tool, seg.hint).0);
-    let holder = tools
-        .body_for(seg.tool, seg.hint)
-        .map(|b| (b.name, mount(b.outline)));
+    let (edge, holder) = mount(tools, seg.tool, seg.hint, rear.contains(&seg.tool));
     let path: Vec<P> = if seg.motion == Motion::Thread {
         vec![[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]]
     } else {
@@ -81,6 +76,54 @@ pub fn tool_at_crash(
         .chain(holder.iter().flat_map(|(_, o)| o.parts.iter()))
         .map(place)
         .collect()
+}
+
+/// Tool `t` under `hint` as mounted (mirrored about the axis on a rear post, `flip`): its
+/// cutting outline, and its body with the body's name when the table declares one.
+fn mount(
+    tools: &ToolTable,
+    t: u32,
+    hint: ToolHint,
+    flip: bool,
+) -> (Outline, Option<(&'static str, Outline)>) {
+    let m = |o: Outline| if flip { o.mirrored() } else { o };
+    let edge = m(tools.outline_for(t, hint).0);
+    let body = tools.body_for(t, hint).map(|b| (b.name, m(b.outline)));
+    (edge, body)
+}
+
+/// The outline of each move's tool as mounted, for drawing the tool as it moves: the
+/// distinct outlines (cutting outline's parts, body's parts, relative to the reference
+/// point) and, for each run of moves with the same one, (index of its first move, index
+/// of the outline). `rear`: the tools on a rear post ([`crate::rear_tools`]).
+#[allow(clippy::type_complexity)]
+pub fn tool_outlines(
+    tools: &ToolTable,
+    segments: &[Segment],
+    rear: &[u32],
+) -> (
+    Vec<(Vec<Vec<[f64; 2]>>, Vec<Vec<[f64; 2]>>)>,
+    Vec<(usize, usize)>,
+) {
+    let mut outlines: Vec<(Vec<Vec<[f64; 2]>>, Vec<Vec<[f64; 2]>>)> = Vec::new();
+    let mut runs: Vec<(usize, usize)> = Vec::new();
+    let mut last: Option<(u32, ToolHint)> = None;
+    for (i, s) in segments.iter().enumerate() {
+        if last == Some((s.tool, s.hint)) {
+            continue;
+        }
+        last = Some((s.tool, s.hint));
+        let (edge, body) = mount(tools, s.tool, s.hint, rear.contains(&s.tool));
+        let o = (edge.parts, body.map(|(_, b)| b.parts).unwrap_or_default());
+        let k = outlines.iter().position(|x| *x == o).unwrap_or_else(|| {
+            outlines.push(o);
+            outlines.len() - 1
+        });
+        if runs.last().is_none_or(|r| r.1 != k) {
+            runs.push((i, k));
+        }
+    }
+    (outlines, runs)
 }
 
 /// The path's first fraction `t` of its length (at least its start point).
@@ -143,7 +186,7 @@ fn inside_convex(poly: &[P], q: P) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use expander::{Feed, Pt, Span, ToolHint};
+    use expander::{Feed, Pt, Span};
 
     #[test]
     fn a_blade_stops_where_it_first_touches() {
