@@ -288,3 +288,45 @@ fn bad_workholding_is_a_clear_error() {
     assert!(out.stderr.contains("chuck.jaw"), "{}", out.stderr);
     assert!(out.stderr.contains(":3:"), "{}", out.stderr);
 }
+
+#[test]
+fn soft_jaws_take_their_outline() {
+    // soft jaws gripping Ø40 over 20 mm with a lip reaching 5 mm further forward from Ø50:
+    // from the face Z-100 the lip spans Z-80…-75, r 25…45. The blade at X54 (r 27…47) to
+    // Z-78 enters the lip over Z-78…-75, r 27…45: 54 mm², 18 mm deep, met at Z-75 X54.
+    // Hard jaws of the same grip end at Z-80: clean.
+    let (dir, prog) = temp_program("p.nc", rapid_along_z(54.0, -78.0).as_bytes());
+    let tools = dir.path().join("tools.toml");
+    std::fs::write(&tools, BLADE).unwrap();
+    let chuck = dir.path().join("soft.toml");
+    std::fs::write(
+        &chuck,
+        "[chuck]\ngrip = 20\nsoft_jaw = [[0, 40], [20, 40], [20, 50], [25, 50], [25, 90], [0, 90]]\n",
+    )
+    .unwrap();
+    let json = dir.path().join("r.json");
+    let run_with = |c: &str| {
+        let out = latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--stock",
+            "40x100",
+            "--tools",
+            tools.to_str().unwrap(),
+            "--json",
+            json.to_str().unwrap(),
+            "--chuck",
+            c,
+        ]);
+        (
+            out.code,
+            crashes(&serde_json::from_str(&read(&json)).unwrap()),
+        )
+    };
+    let (code, c) = run_with(chuck.to_str().unwrap());
+    assert_eq!((code, c.len()), (1, 1), "{c:?}");
+    let (line, obstacle, _, z, x, area, depth) = c[0].clone();
+    assert_eq!((line, obstacle.as_str()), (4, "chuck jaw"));
+    assert!(near(z, -75.0) && near(x, 54.0) && near(area, 54.0) && near(depth, 18.0));
+    assert_eq!(run_with("grip=20").0, 0);
+}
