@@ -72,7 +72,7 @@ pub(crate) struct Listed {
 }
 
 /// The crashes of a run in program order: the removal's (spec/simulation.md, "Rapids that
-/// cut": deeper than the profile's rapid_cut_tol is a crash, else a rapid scrape, a
+/// cut": deeper than the profile's `rapid_cut_tol` is a crash, else a rapid scrape, a
 /// warning; a body touching stock is always a crash) and the workholding's (always).
 pub(crate) fn crash_list(
     loaded: &Loaded,
