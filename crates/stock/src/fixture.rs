@@ -50,6 +50,9 @@ pub struct Obstacle {
     /// Only cutting moves' cutting outlines are checked against it (the gripped length).
     pub cut_only: bool,
     bbox: Rect,
+    /// Its rings when each is convex and has no hole (a separating-axis test then spares
+    /// the boolean for sweeps that only come near it).
+    convex: Option<Vec<Vec<P>>>,
 }
 
 /// The chuck and tailstock placed against a blank.
@@ -96,12 +99,32 @@ fn shapes_box(shapes: &[Shape]) -> Rect {
 impl Obstacle {
     fn new(name: &'static str, shapes: Vec<Shape>, cut_only: bool) -> Self {
         let bbox = shapes_box(&shapes);
+        let convex = shapes
+            .iter()
+            .all(|s| s.holes.is_empty() && crate::geom::is_convex(&s.outer))
+            .then(|| shapes.iter().map(|s| s.outer.clone()).collect());
         Self {
             name,
             shapes,
             cut_only,
             bbox,
+            convex,
         }
+    }
+
+    /// Whether the sweep (convex pieces, box `sb`) may overlap it with some area: boxes,
+    /// then for a convex obstacle a separating-axis test of every piece near it.
+    fn may_overlap(&self, sweep: &[Shape], sb: &Rect) -> bool {
+        if !sb.intersects(&self.bbox) {
+            return false;
+        }
+        let Some(rings) = &self.convex else {
+            return true;
+        };
+        sweep.iter().any(|piece| {
+            let b = shapes_box(std::slice::from_ref(piece));
+            b.intersects(&self.bbox) && rings.iter().any(|r| convex_overlap(&piece.outer, r))
+        })
     }
 }
 
@@ -192,7 +215,7 @@ impl Fixture {
             let m = mounted
                 .entry((crate::tools::hint_key(seg.tool, seg.hint), flip))
                 .or_insert_with(|| Mounted::new(tools, seg.tool, seg.hint, flip));
-            // a quick test on boxes (folded: the path's |r|)
+            // a quick test on boxes: the path's box plus the tool's, folded about the axis
             let mut reach = Rect::of([seg.from, seg.to]);
             if let Some(a) = seg.arc {
                 let rad = a.center.dist(seg.from);
@@ -201,13 +224,17 @@ impl Fixture {
                     Pt::new(a.center.z + rad, a.center.r + rad),
                 ));
             }
-            let grown = Rect::new(
-                Pt::new(reach.min.z - m.reach, reach.min.r - m.reach),
-                Pt::new(reach.max.z + m.reach, reach.max.r + m.reach),
-            );
+            let (lo, hi) = (reach.min.r + m.bbox.min.r, reach.max.r + m.bbox.max.r);
+            let (rlo, rhi) = if lo >= 0.0 {
+                (lo, hi)
+            } else if hi <= 0.0 {
+                (-hi, -lo)
+            } else {
+                (0.0, hi.max(-lo))
+            };
             let folded = Rect::new(
-                Pt::new(grown.min.z, 0.0),
-                Pt::new(grown.max.z, grown.max.r.abs().max(grown.min.r.abs())),
+                Pt::new(reach.min.z + m.bbox.min.z, rlo),
+                Pt::new(reach.max.z + m.bbox.max.z, rhi),
             );
             if !folded.intersects(&all) {
                 continue;
@@ -225,7 +252,7 @@ impl Fixture {
                 let sb = shapes_box(&sweep);
                 for o in &self.obstacles {
                     let applies = !o.cut_only || (body.is_none() && seg.motion != Motion::Rapid);
-                    if !applies || hit.contains(&o.name) || !sb.intersects(&o.bbox) {
+                    if !applies || hit.contains(&o.name) || !o.may_overlap(&sweep, &sb) {
                         continue;
                     }
                     let overlap = crate::boolean(&sweep, &o.shapes, BoolOp::Intersection);
@@ -241,12 +268,12 @@ impl Fixture {
     }
 }
 
-/// A tool as mounted for the checks: its cutting outline, its body, and how far they reach
-/// from the reference point.
+/// A tool as mounted for the checks: its cutting outline, its body, and the box of both
+/// relative to the reference point.
 struct Mounted {
     edge: Outline,
     body: Option<(&'static str, Outline)>,
-    reach: f64,
+    bbox: Rect,
 }
 
 impl Mounted {
@@ -258,10 +285,14 @@ impl Mounted {
         } else {
             (edge, body)
         };
-        let reach = edge
-            .reach()
-            .max(body.as_ref().map_or(0.0, |(_, o)| o.reach()));
-        Self { edge, body, reach }
+        let bbox = Rect::of(
+            edge.parts
+                .iter()
+                .chain(body.iter().flat_map(|(_, o)| o.parts.iter()))
+                .flatten()
+                .map(|&p| Pt::from(p)),
+        );
+        Self { edge, body, bbox }
     }
 }
 
@@ -287,6 +318,28 @@ fn sweep_shapes(outline: &Outline, path: &[P]) -> Vec<Shape> {
         }
     }
     out
+}
+
+/// Whether two convex polygons (either orientation) share interior: no edge normal of
+/// either separates them (touching counts as separated; the boolean measures the rest).
+fn convex_overlap(a: &[P], b: &[P]) -> bool {
+    let separated = |p: &[P], q: &[P]| {
+        (0..p.len()).any(|i| {
+            let (u, v) = (p[i], p[(i + 1) % p.len()]);
+            let axis = [u[1] - v[1], v[0] - u[0]];
+            let tol = 1e-9 * axis[0].hypot(axis[1]);
+            let span = |x: &[P]| {
+                x.iter()
+                    .map(|w| axis[0] * w[0] + axis[1] * w[1])
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), t| {
+                        (lo.min(t), hi.max(t))
+                    })
+            };
+            let ((plo, phi), (qlo, qhi)) = (span(p), span(q));
+            phi <= qlo + tol || qhi <= plo + tol
+        })
+    };
+    a.len() >= 3 && b.len() >= 3 && !separated(a, b) && !separated(b, a)
 }
 
 /// The crash's contact point (the overlap's point nearest the move's start, folded) and
@@ -399,6 +452,25 @@ mod tests {
         let c = &f.obstacles[2].shapes[0].outer;
         assert!((c[3][0] - (1.0 + 20.0 * 3f64.sqrt())).abs() < 1e-9, "{c:?}");
         assert!((area(&f.obstacles[3].shapes) - 600.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn separating_axes_tell_touching_from_overlapping() {
+        let sq = |z: f64, r: f64| vec![[z, r], [z + 1.0, r], [z + 1.0, r + 1.0], [z, r + 1.0]];
+        assert!(
+            !convex_overlap(&sq(0.0, 0.0), &sq(1.0, 0.0)),
+            "sharing an edge"
+        );
+        assert!(
+            !convex_overlap(&sq(0.0, 0.0), &sq(1.0, 1.0)),
+            "sharing a corner"
+        );
+        assert!(convex_overlap(&sq(0.0, 0.0), &sq(0.999, 0.5)));
+        // a triangle whose hypotenuse only passes the square's corner
+        let tri = vec![[1.0, 1.0], [3.0, 1.0], [1.0, 3.0]];
+        assert!(!convex_overlap(&sq(0.0, 0.0), &tri));
+        let tri = vec![[0.5, 0.5], [3.0, 1.0], [1.0, 3.0]];
+        assert!(convex_overlap(&sq(0.0, 0.0), &tri));
     }
 
     #[test]
