@@ -3,6 +3,7 @@
 use crate::input::Loaded;
 use expander::{Motion, Segment};
 use render::{Crash, Diagnostic, PathKind, PathLine, Report, Shape, StockInfo};
+use std::fmt::Write as _;
 
 fn shape(s: &stock::Shape) -> Shape {
     Shape {
@@ -139,6 +140,12 @@ pub(crate) fn add_crashes(
         .map(|(edge, body)| render::ToolOutline { edge, body })
         .collect();
     report.tool_runs = runs;
+    if let Some(so) = fixture.and_then(|f| f.stick_out) {
+        // "stick-out 15 mm", "stick-out 69.5 mm": three decimals, trailing zeros cut
+        let n = format!("{so:.3}");
+        let n = n.trim_end_matches('0').trim_end_matches('.');
+        let _ = write!(report.stock.description, ", stick-out {n} mm");
+    }
     report.fixture = fixture
         .iter()
         .flat_map(|f| f.obstacles.iter())

@@ -151,6 +151,8 @@ fn facing_into_the_jaws_at_a_too_short_stick_out() {
     let (line, obstacle, body, z, x, area, depth) = c[1].clone();
     assert_eq!((line, obstacle.as_str(), body), (5, "gripped length", None));
     assert!(near(z, -2.5) && near(x, 40.0) && near(area, 30.0) && near(depth, 1.5));
+    let d = v["stock"]["description"].as_str().unwrap();
+    assert!(d.ends_with(", stick-out 1 mm"), "{d}");
     // the removal itself is unchanged: 2.5 × 20
     assert!(near(v["removed_area_mm2"].as_f64().unwrap(), 50.0));
     // held 20 mm (jaws to Z-10, stick-out 10): the same facing is clean

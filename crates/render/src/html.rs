@@ -13,7 +13,9 @@
 //! - `window`: `[zmin, zmax, xmin, xmax]` of the drawing;
 //! - `blank`, `part`, `intended`, `gouges`, `leftovers`: rings `[z, x, z, x, …]`
 //!   (fill even-odd), thinned to what the drawing can show;
-//! - `crashes`: `[line, z, x]`; `snapshots`: `{"after": k, "rings": […]}` in move order.
+//! - `crashes`: `[line, z, x]`; `snapshots`: `{"after": k, "rings": […]}` in move order;
+//! - `fixture`, `tools`, `tool_runs`, `crash_tools`: the workholding and the tool drawn at
+//!   the current move (see `html/tools.rs`).
 //!
 //! Every `<` inside the JSON is written as `\u003c`, so no `</script>` can end the block.
 
