@@ -114,7 +114,11 @@ pub(crate) fn crash_list(
     out
 }
 
-/// The crashes (each with the tool drawn where it hit) and the workholding drawn.
+/// Crashes whose tool is drawn where it hit (the first ones: more would hide the picture).
+const MAX_TOOL_POSES: usize = 20;
+
+/// The crashes (the first [`MAX_TOOL_POSES`] with the tool drawn where it hit), the
+/// workholding drawn, and each move's tool outline for the HTML player.
 pub(crate) fn add_crashes(
     report: &mut Report,
     loaded: &Loaded,
@@ -127,10 +131,13 @@ pub(crate) fn add_crashes(
     let tol = stock::SimOptions::default().chord_tol;
     report.crashes = crashes
         .iter()
-        .map(|l| {
+        .enumerate()
+        .map(|(i, l)| {
             let mut c = l.crash.clone();
-            c.tool =
-                stock::tool_at_crash(tools, &segments[l.segment], &rear, [c.z, c.r], l.body, tol);
+            if i < MAX_TOOL_POSES {
+                let seg = &segments[l.segment];
+                c.tool = stock::tool_at_crash(tools, seg, &rear, [c.z, c.r], l.body, tol);
+            }
             c
         })
         .collect();

@@ -58,7 +58,8 @@ pub struct Crash {
     /// "gripped length": cutting the blank inside the jaws); `None`: it met stock.
     pub obstacle: Option<String>,
     /// The tool's outline where it met the obstacle or stock (cutting outline and body, as
-    /// convex parts in `[z, r]`), drawn at the crash; empty when unknown.
+    /// convex parts in `[z, r]`), drawn at the crash; empty when unknown (the CLI fills
+    /// the first 20 crashes).
     pub tool: Vec<Vec<[f64; 2]>>,
 }
 
@@ -277,7 +278,8 @@ pub enum Verdict {
     Clean,
     /// A controller alarm stopped or corrupted the run.
     Alarm,
-    /// A rapid ran into stock.
+    /// A rapid ran into stock, a tool's body met stock, or a tool entered the chuck, its
+    /// jaws or the tailstock (or cut inside the jaws).
     Crash,
     /// Part material removed (a gouge, or a thread cut deeper than expected by more than
     /// the tolerance).
