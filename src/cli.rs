@@ -198,6 +198,12 @@ pub(crate) struct RunArgs {
     /// `--dxf`: the radius (a true half section) or the diameter.
     #[arg(long, value_enum, value_name = "AXIS", default_value_t = DxfXArg::Radius)]
     pub(crate) dxf_x: DxfXArg,
+    /// Chuck and tailstock, replacing the machine profile's `[chuck]` and `[tailstock]`:
+    /// `grip=20,jaw=25,face=-80,od=200,depth=100,tail=2,quill=40,quill_length=150` (grip:
+    /// the blank length held from its left end or `face`; tail: the centre's tip Z), or a
+    /// TOML file with those tables. A tool entering them, or cutting inside the jaws, crashes.
+    #[arg(long, value_name = "SPEC|F", allow_hyphen_values = true)]
+    pub(crate) chuck: Option<String>,
     /// Deviation tolerance in mm for gouges and leftovers.
     #[arg(long, value_name = "MM", default_value_t = 0.01)]
     pub(crate) tol: f64,

@@ -293,6 +293,38 @@ pub(crate) fn load_tools(path: Option<&Path>) -> Result<stock::ToolTable, ()> {
     stock::ToolTable::from_toml(&text).map_err(|e| print_stock_error(path, &text, &e))
 }
 
+/// The chuck and tailstock: `--chuck` (its compact form, or a file when it holds no `=`),
+/// else the machine profile's.
+pub(crate) fn load_workholding(
+    args: &RunArgs,
+    machine: &Machine,
+) -> Result<expander::Workholding, ()> {
+    let Some(spec) = &args.chuck else {
+        return Ok(machine.workholding.clone());
+    };
+    let help = "give --chuck grip=LENGTH[,jaw=H,face=Z,od=D,depth=L,tail=Z,quill=D,quill_length=L] or a file with [chuck] and [tailstock] tables (README, \"Chuck and tailstock\")";
+    if spec.contains('=') {
+        return expander::Workholding::from_compact(spec)
+            .map_err(|e| diag::print_plain(&e.message, help));
+    }
+    let path = Path::new(spec);
+    let text = read_text(path, "chuck file")?;
+    expander::Workholding::from_toml(&text).map_err(|e| {
+        let src = Source {
+            name: path.display().to_string(),
+            text: text.clone(),
+        };
+        diag::print_line_col(
+            &src,
+            e.line as usize,
+            e.column as usize,
+            "chuck",
+            &e.message,
+            help,
+        );
+    })
+}
+
 /// The blank from `--stock`/`--bore`/`--stock-z` or `--stock-file`.
 pub(crate) fn load_blank(args: &RunArgs) -> Result<stock::Blank, ()> {
     if let Some(path) = &args.stock_file {

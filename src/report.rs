@@ -3,6 +3,7 @@
 use crate::input::Loaded;
 use expander::{Motion, Segment};
 use render::{Crash, Diagnostic, PathKind, PathLine, Report, Shape, StockInfo};
+use std::fmt::Write as _;
 
 fn shape(s: &stock::Shape) -> Shape {
     Shape {
@@ -49,6 +50,120 @@ fn tool_line(tools: &stock::ToolTable, t: u32) -> String {
     }
 }
 
+/// A removal crash as the report shows it.
+fn stock_crash(loaded: &Loaded, c: &stock::Crash) -> Crash {
+    let span = loaded.toolpath.segments[c.segment].span;
+    Crash {
+        line: span.line,
+        column: span.column,
+        z: c.at[0],
+        r: c.at[1],
+        area_mm2: c.area,
+        depth_mm: c.depth,
+        body: c.body.map(str::to_string),
+        ..Crash::default()
+    }
+}
+
+/// A crash of the report with the move that made it and the tool's part that hit.
+pub(crate) struct Listed {
+    pub(crate) segment: usize,
+    pub(crate) crash: Crash,
+    body: Option<&'static str>,
+}
+
+/// The crashes of a run in program order: the removal's (spec/simulation.md, "Rapids that
+/// cut": deeper than the profile's `rapid_cut_tol` is a crash, else a rapid scrape, a
+/// warning; a body touching stock is always a crash) and the workholding's (always).
+pub(crate) fn crash_list(
+    loaded: &Loaded,
+    sim: &stock::Simulation,
+    fixture: &[stock::FixtureCrash],
+) -> Vec<Listed> {
+    let cut_tol = loaded.machine.rapid_cut_tol;
+    let mut out: Vec<Listed> = sim
+        .crashes
+        .iter()
+        .filter(|c| c.body.is_some() || c.depth > cut_tol)
+        .map(|c| Listed {
+            segment: c.segment,
+            crash: stock_crash(loaded, c),
+            body: c.body,
+        })
+        .collect();
+    out.extend(fixture.iter().map(|f| {
+        let span = loaded.toolpath.segments[f.segment].span;
+        Listed {
+            segment: f.segment,
+            crash: Crash {
+                line: span.line,
+                column: span.column,
+                z: f.at[0],
+                r: f.at[1],
+                area_mm2: f.area,
+                depth_mm: f.depth,
+                body: f.body.map(str::to_string),
+                obstacle: Some(f.obstacle.to_string()),
+                tool: Vec::new(),
+            },
+            body: f.body,
+        }
+    }));
+    // stable: at one move, the stock's crash before the workholding's
+    out.sort_by_key(|l| l.segment);
+    out
+}
+
+/// Crashes whose tool is drawn where it hit (the first ones: more would hide the picture).
+const MAX_TOOL_POSES: usize = 20;
+
+/// The crashes (the first [`MAX_TOOL_POSES`] with the tool drawn where it hit), the
+/// workholding drawn, and each move's tool outline for the HTML player.
+pub(crate) fn add_crashes(
+    report: &mut Report,
+    loaded: &Loaded,
+    tools: &stock::ToolTable,
+    crashes: &[Listed],
+    fixture: Option<&stock::Fixture>,
+) {
+    let segments = &loaded.toolpath.segments;
+    let rear = stock::rear_tools(segments);
+    let tol = stock::SimOptions::default().chord_tol;
+    report.crashes = crashes
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            let mut c = l.crash.clone();
+            if i < MAX_TOOL_POSES {
+                let seg = &segments[l.segment];
+                c.tool = stock::tool_at_crash(tools, seg, &rear, [c.z, c.r], l.body, tol);
+            }
+            c
+        })
+        .collect();
+    let (outlines, runs) = stock::tool_outlines(tools, segments, &rear);
+    report.tool_outlines = outlines
+        .into_iter()
+        .map(|(edge, body)| render::ToolOutline { edge, body })
+        .collect();
+    report.tool_runs = runs;
+    if let Some(so) = fixture.and_then(|f| f.stick_out) {
+        // "stick-out 15 mm", "stick-out 69.5 mm": three decimals, trailing zeros cut
+        let n = format!("{so:.3}");
+        let n = n.trim_end_matches('0').trim_end_matches('.');
+        let _ = write!(report.stock.description, ", stick-out {n} mm");
+    }
+    report.fixture = fixture
+        .iter()
+        .flat_map(|f| f.obstacles.iter())
+        .filter(|o| !o.cut_only)
+        .map(|o| render::Fixture {
+            name: o.name.to_string(),
+            shapes: o.shapes.iter().map(shape).collect(),
+        })
+        .collect();
+}
+
 /// Everything a finished run shows.
 pub(crate) fn build(
     loaded: &Loaded,
@@ -59,27 +174,8 @@ pub(crate) fn build(
     tol: f64,
 ) -> Report {
     let tp = &loaded.toolpath;
-    // spec/simulation.md, "Rapids that cut": deeper than the profile's rapid_cut_tol is a
-    // crash, else a rapid scrape (a warning); a body touching stock is always a crash
-    let cut = |c: &stock::Crash| {
-        let span = tp.segments[c.segment].span;
-        Crash {
-            line: span.line,
-            column: span.column,
-            z: c.at[0],
-            r: c.at[1],
-            area_mm2: c.area,
-            depth_mm: c.depth,
-            body: c.body.map(str::to_string),
-        }
-    };
+    let cut = |c: &stock::Crash| stock_crash(loaded, c);
     let cut_tol = loaded.machine.rapid_cut_tol;
-    let crashes: Vec<Crash> = sim
-        .crashes
-        .iter()
-        .filter(|c| c.body.is_some() || c.depth > cut_tol)
-        .map(cut)
-        .collect();
     let rapid_cuts: Vec<Crash> = sim
         .crashes
         .iter()
@@ -128,7 +224,6 @@ pub(crate) fn build(
         },
         final_part: sim.final_shapes.iter().map(shape).collect(),
         toolpath: tp.segments.iter().map(path_line).collect(),
-        crashes,
         rapid_cuts,
         alarms: tp.alarms.iter().map(|d| diagnostic(loaded, d)).collect(),
         warnings,

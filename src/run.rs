@@ -111,6 +111,12 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     inputs.extend(args.stock_file.clone());
     inputs.extend(args.program.machine.clone());
     inputs.extend(args.target.clone());
+    inputs.extend(
+        args.chuck
+            .as_ref()
+            .filter(|c| !c.contains('='))
+            .map(PathBuf::from),
+    );
     let job = |i: usize| {
         guarded(&files[i], files.len() > 1, || {
             run_one(args, &files[i], &stems[i], &inputs, files.len() > 1)
@@ -227,6 +233,19 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         }
         return EXIT_UNUSABLE;
     };
+    let Ok(workholding) = input::load_workholding(args, &loaded.machine) else {
+        return EXIT_UNUSABLE;
+    };
+    let fixture = match stock::Fixture::new(&workholding, &blank) {
+        Ok(f) => f,
+        Err(e) => {
+            diag::print_plain(
+                &e.to_string(),
+                "the jaws hold the blank from the chuck face (default: the blank's left end) over grip mm: check --stock-z, face and grip",
+            );
+            return EXIT_UNUSABLE;
+        }
+    };
     let quiet = args.program.quiet || batch;
     input::print_diagnostics(&loaded, quiet);
 
@@ -252,6 +271,10 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         },
         &mut tick,
     );
+    let fixture_crashes = fixture
+        .as_ref()
+        .map(|f| f.check(&tools, segments, stock::SimOptions::default().chord_tol))
+        .unwrap_or_default();
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
@@ -289,7 +312,9 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
             0.001,
         )
     });
+    let crashes = crate::report::crash_list(&loaded, &sim, &fixture_crashes);
     let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
+    crate::report::add_crashes(&mut report, &loaded, &tools, &crashes, fixture.as_ref());
     crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
     let target = args.target.is_some().then(|| intents[0].part.as_slice());
     crate::report::add_threads(&mut report, &loaded, &tools, &sim, target);
@@ -335,11 +360,8 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     }
 
     if !batch {
-        let cut_tol = loaded.machine.rapid_cut_tol;
-        let crash_at: Vec<String> = sim
-            .crashes
+        let crash_at: Vec<String> = crashes
             .iter()
-            .filter(|c| c.body.is_some() || c.depth > cut_tol)
             .map(|c| loaded.place(segments[c.segment].span))
             .collect();
         let gouge_at: Vec<String> = deviation
@@ -389,12 +411,21 @@ const MAX_PRINTED: usize = 20;
 /// `crash_at`, `gouge_at`), at most [`MAX_PRINTED`] of each.
 fn print_findings(name: &str, crash_at: &[String], gouge_at: &[String], report: &render::Report) {
     for (c, at) in report.crashes.iter().zip(crash_at).take(MAX_PRINTED) {
-        let what = match &c.body {
-            Some(body) => format!("the tool's {body} meets stock"),
-            None => "rapid into stock".to_string(),
+        let what = match (&c.obstacle, &c.body) {
+            (Some(o), _) if o == stock::GRIPPED_LENGTH => {
+                "the tool cuts the blank inside the chuck jaws (gripped length)".to_string()
+            }
+            (Some(o), Some(body)) => format!("the tool's {body} meets the {o}"),
+            (Some(o), None) => format!("the tool's cutting edge meets the {o}"),
+            (None, Some(body)) => format!("the tool's {body} meets stock"),
+            (None, None) => "rapid into stock".to_string(),
+        };
+        let of = match c.obstacle.as_deref() {
+            None | Some(stock::GRIPPED_LENGTH) => "of stock",
+            Some(_) => "of overlap",
         };
         eprintln!(
-            "{at}:{}: crash: {what} at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² of stock",
+            "{at}:{}: crash: {what} at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² {of}",
             c.column,
             c.z,
             2.0 * c.r,

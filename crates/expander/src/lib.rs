@@ -20,6 +20,7 @@ pub mod timing;
 pub mod tnrc;
 pub mod toolpath;
 mod words;
+pub mod workholding;
 
 pub use alarm::Diagnostic;
 pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
@@ -33,3 +34,4 @@ pub use machine::{
 pub use toolpath::{
     Arc, Feed, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,
 };
+pub use workholding::{Chuck, Tailstock, Workholding, WorkholdingError};

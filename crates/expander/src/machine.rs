@@ -34,6 +34,10 @@
 //! peck_retract = 0.5        # G74/G75 chip-break retract, mm
 //! [work_offsets]            # G55..G59 origins relative to G54, [z, x];
 //! g55 = [-50.0, 0.0]        # p1 … p300: G54.1 P1… / Haas G154 P1…
+//! [chuck]                   # chuck and jaws (crate::workholding): grip, face, jaw, od, depth,
+//! grip = 20.0               # soft_jaw; none: no chuck checks
+//! [tailstock]               # tailstock centre: tip, quill, length
+//! tip = 2.0
 //! ```
 
 use crate::Pt;
@@ -310,6 +314,8 @@ pub struct Machine {
     pub drill_return: DrillReturn,
     /// Haas settings.
     pub haas: HaasSettings,
+    /// Chuck and tailstock (`[chuck]`, `[tailstock]`); none by default.
+    pub workholding: crate::Workholding,
 }
 
 impl Default for Machine {
@@ -351,6 +357,7 @@ impl Machine {
             drill_clearance: 1.0,
             drill_return: DrillReturn::Initial,
             haas: HaasSettings::default(),
+            workholding: crate::Workholding::default(),
         }
     }
 
@@ -395,6 +402,8 @@ struct File {
     drill_clearance: Option<Spanned<f64>>,
     drill_return: Option<DrillReturn>,
     haas: Option<HaasFile>,
+    chuck: Option<crate::workholding::ChuckFile>,
+    tailstock: Option<crate::workholding::TailstockFile>,
 }
 
 #[derive(serde::Deserialize)]
@@ -555,6 +564,12 @@ impl Machine {
                 100.0,
                 &mut s.peck_retract,
             )?;
+        }
+        if let Some(c) = file.chuck {
+            m.workholding.chuck = Some(c.read().map_err(|(s, msg)| bad(s, msg))?);
+        }
+        if let Some(t) = file.tailstock {
+            m.workholding.tailstock = Some(t.read().map_err(|(s, msg)| bad(s, msg))?);
         }
         m.machine_zero = m.home;
         if let Some(z) = file.machine_zero {

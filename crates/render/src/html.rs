@@ -13,7 +13,9 @@
 //! - `window`: `[zmin, zmax, xmin, xmax]` of the drawing;
 //! - `blank`, `part`, `intended`, `gouges`, `leftovers`: rings `[z, x, z, x, …]`
 //!   (fill even-odd), thinned to what the drawing can show;
-//! - `crashes`: `[line, z, x]`; `snapshots`: `{"after": k, "rings": […]}` in move order.
+//! - `crashes`: `[line, z, x]`; `snapshots`: `{"after": k, "rings": […]}` in move order;
+//! - `fixture`, `tools`, `tool_runs`, `crash_tools`: the workholding and the tool drawn at
+//!   the current move (see `html/tools.rs`).
 //!
 //! Every `<` inside the JSON is written as `\u003c`, so no `</script>` can end the block.
 
@@ -49,6 +51,10 @@ const DRAW_PX: f64 = 1600.0;
 const STYLE: &str = include_str!("html/page.css");
 /// The slider's script.
 const SCRIPT: &str = include_str!("html/player.js");
+/// The tool and workholding drawing the slider calls (`html/tools.rs` writes its data).
+const TOOLS_SCRIPT: &str = include_str!("html/tools.js");
+
+mod tools;
 
 /// A coordinate for the data block: clamped, rounded to 4 decimals, trailing zeros cut.
 fn c4(v: f64) -> String {
@@ -242,6 +248,7 @@ fn data_json(report: &Report) -> (String, Moves) {
         rings_json(&mut out, &rings(shapes, md, LAYER_POINT_CAP));
         out.push(',');
     }
+    tools::data(&mut out, report);
     out.push_str("\"crashes\":[");
     let crashes: Vec<&Crash> = report
         .crashes
@@ -464,18 +471,25 @@ fn crash_table(out: &mut String, id: &str, title: &str, list: &[Crash]) {
         out.push_str("<p class=\"none\">none</p>\n");
         return;
     }
-    out.push_str("<table class=\"list crash\"><thead><tr><th>line</th><th>col</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th></tr></thead><tbody>\n");
+    out.push_str("<table class=\"list crash\"><thead><tr><th>line</th><th>col</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>what</th></tr></thead><tbody>\n");
     for c in list.iter().take(MAX_ROWS) {
+        let part = c.body.as_deref().unwrap_or("cutting edge");
+        let what = match &c.obstacle {
+            Some(o) => format!("{part} in the {o}"),
+            None if c.body.is_some() => format!("{part} in stock"),
+            None => "rapid in stock".to_string(),
+        };
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
+            "<tr data-line=\"{}\"><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
             c.line,
             c.line,
             c.column,
             pos(c.z),
             pos(2.0 * c.r),
             esc(&quantity(c.area_mm2)),
-            esc(&quantity(c.depth_mm))
+            esc(&quantity(c.depth_mm)),
+            esc(&what)
         );
     }
     out.push_str("</tbody></table>\n");
@@ -559,6 +573,24 @@ fn player_legend(out: &mut String, report: &Report) {
         );
     }
     sw(out, "border-top:4px solid #e0218a", "current move");
+    if !report.tool_outlines.is_empty() {
+        sw(
+            out,
+            "border:1px solid #e0218a;background:rgba(224,33,138,.25)",
+            "tool (insert; holder grey)",
+        );
+    }
+    if !report.fixture.is_empty() {
+        sw(
+            out,
+            &format!(
+                "border:1px solid {};background:{}",
+                colour::FIXTURE_EDGE,
+                colour::FIXTURE
+            ),
+            "chuck, jaws, tailstock",
+        );
+    }
     sw(
         out,
         "border:2px solid #111;border-radius:50%;width:10px",
@@ -644,7 +676,7 @@ pub(crate) fn html(report: &Report) -> String {
     crash_table(
         &mut out,
         "ls-crashes",
-        "Crashes (rapids into stock)",
+        "Crashes (rapids into stock, tool bodies, chuck and tailstock)",
         &report.crashes,
     );
     crash_table(
@@ -668,7 +700,10 @@ pub(crate) fn html(report: &Report) -> String {
         out,
         "<script type=\"application/json\" id=\"ls-data\">{data}</script>"
     );
-    let _ = writeln!(out, "<script>\n{SCRIPT}</script>\n</body>\n</html>");
+    let _ = writeln!(
+        out,
+        "<script>\n{TOOLS_SCRIPT}{SCRIPT}</script>\n</body>\n</html>"
+    );
     out
 }
 

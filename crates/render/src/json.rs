@@ -71,6 +71,9 @@ struct CrashJ {
     depth_mm: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     body: Option<String>,
+    /// The workholding entered (additive field, only when there is one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    obstacle: Option<String>,
 }
 
 impl From<&crate::Crash> for CrashJ {
@@ -83,6 +86,7 @@ impl From<&crate::Crash> for CrashJ {
             area_mm2: r6(c.area_mm2),
             depth_mm: r6(c.depth_mm),
             body: c.body.clone(),
+            obstacle: c.obstacle.clone(),
         }
     }
 }

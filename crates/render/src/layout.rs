@@ -77,6 +77,10 @@ pub(crate) mod colour {
     pub(crate) const MUTED: &str = "#5f6b7a";
     /// Ordinary text.
     pub(crate) const INK: &str = "#1d232b";
+    /// Workholding (chuck, jaws, tailstock centre): light grey, behind everything.
+    pub(crate) const FIXTURE: &str = "#e4e6ea";
+    /// Workholding outline.
+    pub(crate) const FIXTURE_EDGE: &str = "#9aa1ab";
     /// Grid lines.
     pub(crate) const GRID: &str = "#e3e7ed";
 }
@@ -91,6 +95,10 @@ pub(crate) fn main_window(report: &Report) -> Bbox {
     let mut tp = Bbox::of_path(&report.toolpath);
     for c in &report.crashes {
         tp.add([c.z, c.r]);
+    }
+    // the workholding shows where it is near the part (the limit below clips the rest)
+    for f in &report.fixture {
+        tp = tp.union(&Bbox::of_shapes(&f.shapes));
     }
     let base = if part.is_empty() { tp } else { part };
     if base.is_empty() {

@@ -23,6 +23,7 @@
 mod block;
 mod detail;
 mod doc;
+mod fixture;
 mod groove;
 mod html;
 mod json;

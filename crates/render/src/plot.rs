@@ -31,6 +31,7 @@ pub(crate) fn draw_content(
     draw_section(doc, report, v, mirror);
     let thinned = draw_toolpath(doc, report, v, point_cap, toolpath_id);
     draw_deviation_edges(doc, report, v);
+    crate::fixture::draw_crash_tools(doc, report, v);
     thinned
 }
 
@@ -47,6 +48,7 @@ fn draw_section(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
     let md = MIN_PX / v.s;
     let blank = shapes_d(&report.stock.shapes, md);
     let part = shapes_d(&report.final_part, md);
+    crate::fixture::draw_fixture(doc, report, v, mirror);
     if mirror {
         doc.open(
             "g",

@@ -35,8 +35,9 @@ pub struct PathLine {
     pub points: Vec<[f64; 2]>,
 }
 
-/// A rapid move that ran into stock.
-#[derive(Debug, Clone, PartialEq)]
+/// A rapid move that ran into stock, a tool body that met stock, or a tool that entered
+/// the chuck, its jaws or the tailstock.
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Crash {
     /// Source line of the rapid.
     pub line: u32,
@@ -53,6 +54,22 @@ pub struct Crash {
     /// The tool's non-cutting body that met stock ("holder", "boring bar", …); `None` for
     /// a rapid's cutting edge.
     pub body: Option<String>,
+    /// The workholding the tool entered ("chuck face", "chuck jaw", "tailstock centre",
+    /// "gripped length": cutting the blank inside the jaws); `None`: it met stock.
+    pub obstacle: Option<String>,
+    /// The tool's outline where it met the obstacle or stock (cutting outline and body, as
+    /// convex parts in `[z, r]`), drawn at the crash; empty when unknown (the CLI fills
+    /// the first 20 crashes).
+    pub tool: Vec<Vec<[f64; 2]>>,
+}
+
+/// A piece of workholding drawn in the picture (light grey, labelled).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Fixture {
+    /// "chuck face", "chuck jaw", "tailstock centre".
+    pub name: String,
+    /// Its section at r ≥ 0.
+    pub shapes: Vec<Shape>,
 }
 
 /// Part material removed that should have stayed.
@@ -172,6 +189,24 @@ pub struct Report {
     pub line_counts: Vec<(u32, u64)>,
     /// The threads the program cuts, checked in the final section (the CLI fills it).
     pub threads: Vec<ThreadCheck>,
+    /// The chuck, jaws and tailstock centre given to the run; empty when none.
+    pub fixture: Vec<Fixture>,
+    /// The tools' outlines as mounted, for the HTML player to draw the tool at the current
+    /// move; empty: no tool drawn.
+    pub tool_outlines: Vec<ToolOutline>,
+    /// Which outline each move uses: (index of the first move of a run, index into
+    /// [`Report::tool_outlines`]), in move order.
+    pub tool_runs: Vec<(usize, usize)>,
+}
+
+/// A tool's outline relative to its reference point, `[z, r]`: the cutting outline and the
+/// body (holder, shank, bar), each as convex parts.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ToolOutline {
+    /// The insert, blade or drill.
+    pub edge: Vec<Vec<[f64; 2]>>,
+    /// The non-cutting body (empty when the table states none).
+    pub body: Vec<Vec<[f64; 2]>>,
 }
 
 /// One thread (a thread cycle or a run of thread passes) and its depth as cut.
@@ -248,7 +283,8 @@ pub enum Verdict {
     Clean,
     /// A controller alarm stopped or corrupted the run.
     Alarm,
-    /// A rapid ran into stock.
+    /// A rapid ran into stock, a tool's body met stock, or a tool entered the chuck, its
+    /// jaws or the tailstock (or cut inside the jaws).
     Crash,
     /// Part material removed (a gouge, or a thread cut deeper than expected by more than
     /// the tolerance).

@@ -60,6 +60,7 @@ pub(crate) fn svg(report: &Report) -> String {
     doc.open("g", &[("clip-path", "url(#clip-main)".into())]);
     let thinned = draw_content(&mut doc, report, &v, true, MAIN_POINT_CAP, Some("toolpath"));
     centre_line(&mut doc, &v);
+    crate::fixture::label_fixture(&mut doc, report, &v);
     doc.close();
     doc.rect(MAIN, "none", "#2b2f36", 1.2);
     doc.text(
@@ -136,6 +137,15 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
     }
     if !report.crashes.is_empty() {
         items.push((Sw::Marker, "crash"));
+    }
+    if report.crashes.iter().any(|c| !c.tool.is_empty()) {
+        items.push((Sw::Line(colour::CRASH, ""), "tool at crash"));
+    }
+    if !report.fixture.is_empty() {
+        items.push((
+            Sw::Fill(colour::FIXTURE, colour::FIXTURE_EDGE),
+            "chuck, jaws, tailstock",
+        ));
     }
     if !report.rapid_cuts.is_empty() {
         items.push((Sw::Scrape, "rapid scrape"));

@@ -82,7 +82,7 @@ fn tables_list_verdict_summary_and_findings() {
         "1 min 42 s",
         "<th scope=\"row\">tolerance</th><td>0.01 mm</td>",
         "<th scope=\"row\">overcut</th><td>1.00 mm², max 0.2 mm</td>",
-        "Crashes (rapids into stock) <span class=\"count\">(1)</span>",
+        "Crashes (rapids into stock, tool bodies, chuck and tailstock) <span class=\"count\">(1)</span>",
         "Gouges (part material removed) <span class=\"count\">(1)</span>",
         "Warnings <span class=\"count\">(1)</span>",
         "Alarms <span class=\"count\">(0)</span>",
@@ -341,6 +341,7 @@ fn rapid_scrapes_are_shown_apart_from_crashes() {
         area_mm2: 0.014,
         depth_mm: 0.07,
         body: None,
+        ..Default::default()
     });
     let svg = render::svg(&r);
     assert!(svg.contains("scrape line 9"), "the scrape is labelled");

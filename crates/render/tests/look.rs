@@ -98,6 +98,7 @@ fn write_more_pictures() {
         area_mm2: 4.0,
         depth_mm: 1.0,
         body: None,
+        ..Default::default()
     });
     r.leftovers.push(render::Shape {
         outer: vec![[-40.0, 18.0], [-38.0, 18.0], [-38.0, 18.4], [-40.0, 18.4]],

@@ -157,6 +157,7 @@ fn grooves_come_after_findings_and_insets_stay_bounded() {
         area_mm2: 4.0,
         depth_mm: 1.0,
         body: None,
+        ..Default::default()
     });
     let s = render::svg(&r);
     assert!(s.contains("detail 3: gouge"));
@@ -255,6 +256,7 @@ fn leftover_inset_comes_last_and_only_with_room() {
         area_mm2: 4.0,
         depth_mm: 1.0,
         body: None,
+        ..Default::default()
     });
     let s = render::svg(&r);
     assert!(!s.contains(": leftover"));

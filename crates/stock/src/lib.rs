@@ -14,10 +14,12 @@
 mod blank;
 mod deviation;
 mod error;
+mod fixture;
 mod geom;
 mod measure;
 mod outline;
 mod overlay;
+mod pose;
 mod profile;
 mod removal;
 mod section;
@@ -28,6 +30,7 @@ mod tools;
 pub use blank::Blank;
 pub use deviation::{deviation, Deviation, Finding, Intent};
 pub use error::StockError;
+pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH};
 pub use measure::{
     area, deepest_radius, groove_deviation, hausdorff, least_gap, leftover_spot, revolved_volume,
     surface_radius_at, symmetric_difference_area, threads, LeftoverSpot, Reference, Surface,
@@ -35,6 +38,7 @@ pub use measure::{
 };
 pub use outline::Outline;
 pub use overlay::BoolOp;
+pub use pose::{tool_at_crash, tool_outlines};
 pub use profile::profile_from_toml;
 pub use removal::{simulate, Crash, SimOptions, Simulation, CRASH_MIN_AREA};
 pub use section::rear_tools;

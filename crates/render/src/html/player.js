@@ -146,6 +146,7 @@
     ctx.fillRect(0, 0, W, H);
     grid();
     ctx.lineJoin = 'round';
+    if (typeof lsTools !== 'undefined') { lsTools.under(ctx, data, X, Y); }
     // Blank outline (what will be removed shows as the light area).
     ctx.fillStyle = '#fbfaf6';
     ctx.fill(cache.blank, 'evenodd');
@@ -243,6 +244,7 @@
       ctx.setLineDash(m[1] === 0 ? [8, 5] : []);
       ctx.stroke(hp);
       ctx.restore();
+      if (typeof lsTools !== 'undefined') { lsTools.over(ctx, data, m, X, Y); }
       if (m.length >= 5) { marker(X(m[m.length - 2]), Y(m[m.length - 1])); }
       var what = 'line ' + m[2] + ' (' + (KIND[m[1]] || 'feed') + ')';
       text += m[0] === k ? ' \u2014 ' + what : ' \u2014 nearest drawn: move ' + m[0] + ', ' + what;

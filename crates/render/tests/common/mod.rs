@@ -61,7 +61,7 @@ pub(crate) fn groove_bar() -> Report {
             mv(Rapid, 14, &[[-20.0, 14.0], [-20.0, 21.0], [-45.0, 21.0], [-50.0, 12.0]]),
             mv(Rapid, 15, &[[-50.0, 12.0], [-50.0, 25.0], [100.0, 100.0]]),
         ],
-        crashes: vec![Crash { line: 14, column: 1, z: -46.667, r: 18.0, area_mm2: 21.5 , depth_mm: 1.0, body: None}],
+        crashes: vec![Crash { line: 14, column: 1, z: -46.667, r: 18.0, area_mm2: 21.5 , depth_mm: 1.0, body: None, ..Default::default()}],
         rapid_cuts: vec![],
         gouges: vec![Gouge { line: 11, z: -22.5, r: 14.0, area_mm2: 1.0, depth_mm: 0.2 }],
         gouge_shapes: vec![shape(&[[-25.0, 14.0], [-20.0, 14.0], [-20.0, 14.2], [-25.0, 14.2]])],
