@@ -93,8 +93,9 @@ pub(crate) fn main_window(report: &Report) -> Bbox {
         .union(&Bbox::of_shapes(&report.final_part))
         .union(&Bbox::of_shapes(&report.intended));
     let mut tp = Bbox::of_path(&report.toolpath);
+    let mut crashes = Bbox::EMPTY;
     for c in &report.crashes {
-        tp.add([c.z, c.r]);
+        crashes.add([c.z, c.r]);
     }
     // the workholding shows where it is near the part (the limit below clips the rest)
     for f in &report.fixture {
@@ -106,7 +107,13 @@ pub(crate) fn main_window(report: &Report) -> Bbox {
     }
     let size = base.w().max(base.h()).max(1.0);
     let limit = base.grow(0.25 * size);
-    let win = base.union(&tp).intersect(&limit).grow(0.04 * size);
+    // every crash is in the picture (a jaw hit 20 mm above a Φ40 bar), unless absurdly far
+    let crashes = crashes.intersect(&base.grow(size));
+    let win = base
+        .union(&tp)
+        .intersect(&limit)
+        .union(&crashes)
+        .grow(0.04 * size);
     let r = win.rmax.abs().max(win.rmin.abs());
     Bbox::new(win.zmin, win.zmax, -r, r)
 }
@@ -137,6 +144,34 @@ mod tests {
         assert!(w.zmax < 40.0 && w.zmax > 2.0, "{w:?}");
         assert!(w.rmax < 55.0 && w.rmax > 26.0, "{w:?}");
         assert_eq!(w.rmin, -w.rmax);
+    }
+
+    /// A crash on a jaw 20 mm above a Φ40 × 60 bar (beyond the 25 % margin) is in the
+    /// picture; one 1000 mm away is not.
+    #[test]
+    fn crashes_near_the_part_are_in_the_window() {
+        let crash = |z: f64, r: f64| crate::report::Crash {
+            line: 6,
+            z,
+            r,
+            ..Default::default()
+        };
+        let mut r = Report {
+            stock: crate::report::StockInfo {
+                description: String::new(),
+                shapes: vec![Shape {
+                    outer: vec![[-59.0, 0.0], [1.0, 0.0], [1.0, 20.0], [-59.0, 20.0]],
+                    holes: vec![],
+                }],
+            },
+            crashes: vec![crash(-14.0, 40.0)],
+            ..Report::default()
+        };
+        let w = main_window(&r);
+        assert!(w.rmax > 40.0 && w.rmax < 45.0, "{w:?}");
+        r.crashes = vec![crash(-14.0, 1000.0)];
+        let w = main_window(&r);
+        assert!(w.rmax < 85.0, "{w:?}");
     }
 
     #[test]
