@@ -62,6 +62,11 @@ pub struct SimOptions {
     /// most this much wherever it was cut (see the `sweep` module). Arcs take part with
     /// their chord when it lies within `chord_tol − merge_tol` of them.
     pub merge_tol: f64,
+    /// Consecutive feeds of one tool (each starting where the last ended, no rapid in
+    /// between, a tool without a body to probe) are swept as one path of up to 128
+    /// vertices: one ring, the exact Minkowski sum of the outline with the polyline
+    /// (default true). Exact either way; false sweeps each (merged) move on its own.
+    pub feed_paths: bool,
     /// Move counts after which the stock is wanted (see [`Simulation::snapshots`]), taken
     /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
     /// the blank and [`Simulation::final_shapes`].
@@ -73,6 +78,7 @@ impl Default for SimOptions {
         Self {
             chord_tol: 0.001,
             merge_tol: 0.0005,
+            feed_paths: true,
             snapshot_after: Vec::new(),
         }
     }
@@ -711,6 +717,7 @@ pub fn simulate(
     };
     let mut builder = SweepBuilder::new(&grid, clip, tools, tol, merge_tol);
     builder.set_rear(crate::section::rear_tools(segments));
+    builder.set_feed_paths(opts.feed_paths);
     let mut fragments: Vec<Fragment> = Vec::new();
     let mut snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), &stock);
     let mut done = 0;
@@ -1149,11 +1156,14 @@ mod tests {
         assert!(symmetric_difference_area(&sim.final_shapes, &expected) < 1e-6);
     }
 
-    /// Number of cutting sweeps the builder makes of `segs` (with the defaults' chord tolerance).
+    /// Number of cutting sweeps the builder makes of `segs` (with the defaults' chord tolerance),
+    /// without paths of feeds.
     fn sweep_count(tools: &ToolTable, segs: &[Segment], merge_tol: f64) -> usize {
         let bb = Rect::new(geom::Pt::new(-200.0, -200.0), geom::Pt::new(200.0, 200.0));
         let grid = Grid::new(bb.grown(1.0));
         let mut b = SweepBuilder::new(&grid, bb, tools, 0.001, merge_tol);
+        // merging alone (paths of feeds would make one sweep of every path)
+        b.set_feed_paths(false);
         for (i, s) in segs.iter().enumerate() {
             b.push(i, s);
         }
@@ -1201,6 +1211,89 @@ mod tests {
         assert!(h > 0.0, "the merged result is an approximation");
         // the default merges
         assert_eq!(SimOptions::default().merge_tol, 0.0005);
+    }
+
+    /// A path of feeds swept as one ring removes what the moves swept one by one remove:
+    /// a wavy contour of 0.05 mm moves with sharp corners, a reversal and a 180° turn, in
+    /// two passes, then a rapid that ploughs the stock left (the same crash either way).
+    #[test]
+    fn feed_paths_remove_exactly_what_the_single_moves_remove() {
+        let blank = Blank::bar(50.0, 40.0, 0.0, None).unwrap();
+        let wave = |z: f64| 20.0 + 1.5 * (z / 1.7).sin() + 0.4 * (z / 0.3).sin();
+        let mut segs = Vec::new();
+        for (pass, off) in [(0, 2.0), (1, 0.0)] {
+            let n = 600;
+            let pts: Vec<[f64; 2]> = (0..=n)
+                .map(|k| {
+                    let z = 1.0 - 31.0 * f64::from(k) / f64::from(n);
+                    [z, wave(z.min(0.0)) + off]
+                })
+                .collect();
+            segs.push(seg(Motion::Rapid, [5.0, 30.0], [pts[0][0], 30.0]));
+            segs.push(seg(Motion::Feed, [pts[0][0], 30.0], pts[0]));
+            segs.extend(pts.windows(2).map(|w| seg(Motion::Feed, w[0], w[1])));
+            let end = pts[n as usize];
+            // a sharp corner, a reversal back along the path and a 180° turn
+            segs.push(seg(Motion::Feed, end, [end[0], end[1] - 1.0]));
+            segs.push(seg(
+                Motion::Feed,
+                [end[0], end[1] - 1.0],
+                [end[0] + 2.0, end[1] - 1.0],
+            ));
+            segs.push(seg(
+                Motion::Feed,
+                [end[0] + 2.0, end[1] - 1.0],
+                [end[0] + 1.0, end[1] - 1.0],
+            ));
+            segs.push(seg(
+                Motion::Feed,
+                [end[0] + 1.0, end[1] - 1.0],
+                [end[0] + 1.0, 30.0],
+            ));
+            if pass == 1 {
+                segs.push(seg(
+                    Motion::Rapid,
+                    [end[0] + 1.0, 30.0],
+                    [end[0] - 3.0, 10.0],
+                ));
+            }
+            segs.push(seg(Motion::Rapid, [end[0] + 1.0, 30.0], [5.0, 30.0]));
+        }
+        let sim = |feed_paths| {
+            let opts = SimOptions {
+                feed_paths,
+                ..SimOptions::default()
+            };
+            simulate(&blank, &v35(), &segs, &opts, &mut |_| {})
+        };
+        let (paths, single) = (sim(true), sim(false));
+        assert!(single.removed_area > 100.0, "{}", single.removed_area);
+        let xor = symmetric_difference_area(&paths.final_shapes, &single.final_shapes);
+        assert!(xor < 1e-6, "symmetric difference {xor} mm²");
+        let h = hausdorff(&paths.final_shapes, &single.final_shapes);
+        assert!(h < 1e-6, "hausdorff {h}");
+        let verdicts = |s: &Simulation| s.crashes.iter().map(|c| c.segment).collect::<Vec<_>>();
+        assert_eq!(verdicts(&paths), verdicts(&single));
+        assert_eq!(verdicts(&paths).len(), 1);
+        assert!((paths.crashes[0].area - single.crashes[0].area).abs() < 1e-6);
+        // and far fewer sweeps: one ring per path of up to 128 vertices
+        let count = |on: bool| {
+            let bb = Rect::new(geom::Pt::new(-200.0, -200.0), geom::Pt::new(200.0, 200.0));
+            let grid = Grid::new(bb.grown(1.0));
+            let tools = v35();
+            let mut b = SweepBuilder::new(&grid, bb, &tools, 0.001, 0.0005);
+            b.set_feed_paths(on);
+            for (i, s) in segs.iter().enumerate() {
+                b.push(i, s);
+            }
+            b.flush_run();
+            b.take().items.len()
+        };
+        let (with, without) = (count(true), count(false));
+        assert!(
+            with * 5 < without,
+            "{with} sweeps with paths, {without} without"
+        );
     }
 
     #[test]

@@ -56,6 +56,8 @@ const COLLINEAR_TOL: f64 = 1e-9;
 /// Most programmed points one merged run of nearly collinear feeds may hold (each new move
 /// re-checks them all, so this bounds the work per move).
 const MAX_CHAIN: usize = 256;
+/// Most vertices of a path of feeds swept as one ring.
+const MAX_PATH: usize = 128;
 
 /// One unit of removal: the sweep of one move (or of a merged run of collinear feeds).
 #[derive(Debug, Clone)]
@@ -142,6 +144,9 @@ struct Run {
     mid: Vec<P>,
     /// Longest chord a chain may have: the size of the tool's outline, mm.
     max_len: f64,
+    /// Earlier vertices of a feed path swept as one ring with this run (see
+    /// [`SweepBuilder::push_cut`]): the path is `path`, then `a`, then `b`.
+    path: Vec<P>,
 }
 
 impl Run {
@@ -247,6 +252,8 @@ pub(crate) struct SweepBuilder<'a> {
     /// Largest deviation of a merged chain of feeds from the programmed points, mm (0: only
     /// exact merging).
     merge_tol: f64,
+    /// Sweep consecutive feeds as one path (see [`crate::SimOptions::feed_paths`]).
+    feed_paths: bool,
     outlines: HashMap<((u32, u8, u64), bool), Outline>,
     bodies: HashMap<BodyKey, Option<crate::Body>>,
     run: Option<Run>,
@@ -281,6 +288,7 @@ impl<'a> SweepBuilder<'a> {
             tools,
             tol: chord_tol,
             merge_tol: merge_tol.clamp(0.0, chord_tol),
+            feed_paths: true,
             outlines: HashMap::new(),
             bodies: HashMap::new(),
             run: None,
@@ -291,6 +299,11 @@ impl<'a> SweepBuilder<'a> {
             warnings: Vec::new(),
             out: Sweeps::default(),
         }
+    }
+
+    /// Whether consecutive feeds are swept as one path ([`crate::SimOptions::feed_paths`]).
+    pub(crate) fn set_feed_paths(&mut self, on: bool) {
+        self.feed_paths = on;
     }
 
     /// Tools on a rear post ([`crate::section::rear_tools`]).
@@ -425,7 +438,16 @@ impl<'a> SweepBuilder<'a> {
                     }
                 }
             }
-            self.flush_run();
+            // a feed that goes on from where the run ended (same tool, no body to probe
+            // after each move) continues one polyline path, swept as one ring
+            let path = if seg.motion == Motion::Feed {
+                self.continued_path(seg, flip, p)
+            } else {
+                None
+            };
+            if path.is_none() {
+                self.flush_run();
+            }
             if seg.motion == Motion::Feed {
                 let outline = self.outline(seg.tool, seg.hint, flip, idx);
                 let max_len = outline
@@ -440,6 +462,7 @@ impl<'a> SweepBuilder<'a> {
                     last: idx,
                     mid: Vec::new(),
                     max_len,
+                    path: path.unwrap_or_default(),
                 });
                 return true;
             }
@@ -523,6 +546,31 @@ impl<'a> SweepBuilder<'a> {
         Some(pts)
     }
 
+    /// When the feed `seg` (starting at `p`) continues the open run's path: the run is
+    /// taken and its path vertices up to `p` returned. Only for a tool without a body (a
+    /// body's probe must see the stock right after its own move) and up to
+    /// [`MAX_PATH`] vertices.
+    fn continued_path(&mut self, seg: &Segment, flip: bool, p: P) -> Option<Vec<P>> {
+        let run = self.run.as_ref()?;
+        let same = run.tool == seg.tool && run.hint == seg.hint && run.flip == flip;
+        let near = (p[0] - run.b[0]).hypot(p[1] - run.b[1]) <= COLLINEAR_TOL;
+        if !self.feed_paths || !same || !near || run.path.len() + 2 > MAX_PATH {
+            return None;
+        }
+        if self.body(seg.tool, seg.hint, flip).is_some() {
+            return None;
+        }
+        let run = self.run.take()?;
+        let mut path = run.path;
+        for v in [run.a, run.b, p] {
+            if path.last() != Some(&v) {
+                path.push(v);
+            }
+        }
+        path.pop(); // p is the new run's `a`
+        Some(path)
+    }
+
     /// Ends the current merged run, emitting its sweep and then its moves' body probes.
     pub(crate) fn flush_run(&mut self) {
         self.emit_run();
@@ -531,9 +579,17 @@ impl<'a> SweepBuilder<'a> {
 
     /// Ends the current merged run, emitting its sweep.
     fn emit_run(&mut self) {
-        if let Some(run) = self.run.take() {
+        if let Some(mut run) = self.run.take() {
             let outline = self.outline(run.tool, run.hint, run.flip, run.last);
-            self.emit_path(run.last, false, &outline, &[run.a, run.b]);
+            for v in [run.a, run.b] {
+                if run.path.last() != Some(&v) {
+                    run.path.push(v);
+                }
+            }
+            if run.path.len() == 1 {
+                run.path.push(run.b);
+            }
+            self.emit_path(run.last, false, &outline, &run.path);
         }
     }
 
