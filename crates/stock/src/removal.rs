@@ -1214,8 +1214,9 @@ mod tests {
     }
 
     /// A path of feeds swept as one ring removes what the moves swept one by one remove:
-    /// a wavy contour of 0.05 mm moves with sharp corners, a reversal and a 180° turn, in
-    /// two passes, then a rapid that ploughs the stock left (the same crash either way).
+    /// a wavy contour of 0.05 mm moves, two small arcs, sharp corners, a reversal and a
+    /// 180° turn, in two passes, then a rapid that ploughs the stock left (the same crash
+    /// either way).
     #[test]
     fn feed_paths_remove_exactly_what_the_single_moves_remove() {
         let blank = Blank::bar(50.0, 40.0, 0.0, None).unwrap();
@@ -1232,8 +1233,22 @@ mod tests {
             segs.push(seg(Motion::Rapid, [5.0, 30.0], [pts[0][0], 30.0]));
             segs.push(seg(Motion::Feed, [pts[0][0], 30.0], pts[0]));
             segs.extend(pts.windows(2).map(|w| seg(Motion::Feed, w[0], w[1])));
-            let end = pts[n as usize];
-            // a sharp corner, a reversal back along the path and a 180° turn
+            let last = pts[n as usize];
+            // two R0.5 half circles (chorded arcs join the path), then a sharp corner, a
+            // reversal back along the path and a 180° turn
+            let end = [last[0] - 2.0, last[1]];
+            for (k, ccw) in [(0.0, false), (1.0, true)] {
+                let mut arc = seg(
+                    Motion::Feed,
+                    [last[0] - k, last[1]],
+                    [last[0] - k - 1.0, last[1]],
+                );
+                arc.arc = Some(Arc {
+                    center: Pt::new(last[0] - k - 0.5, last[1]),
+                    ccw,
+                });
+                segs.push(arc);
+            }
             segs.push(seg(Motion::Feed, end, [end[0], end[1] - 1.0]));
             segs.push(seg(
                 Motion::Feed,

@@ -147,6 +147,8 @@ struct Run {
     /// Earlier vertices of a feed path swept as one ring with this run (see
     /// [`SweepBuilder::push_cut`]): the path is `path`, then `a`, then `b`.
     path: Vec<P>,
+    /// Length of `path` up to `a`, mm.
+    path_len: f64,
 }
 
 impl Run {
@@ -238,6 +240,10 @@ impl Run {
             }
         }
     }
+}
+
+fn dist(x: P, y: P) -> f64 {
+    (x[0] - y[0]).hypot(x[1] - y[1])
 }
 
 /// A body by tool, hint and whether it is mirrored (a rear post).
@@ -441,7 +447,7 @@ impl<'a> SweepBuilder<'a> {
             // a feed that goes on from where the run ended (same tool, no body to probe
             // after each move) continues one polyline path, swept as one ring
             let path = if seg.motion == Motion::Feed {
-                self.continued_path(seg, flip, p)
+                self.continued_path(seg, flip, p, dist(p, q))
             } else {
                 None
             };
@@ -449,25 +455,45 @@ impl<'a> SweepBuilder<'a> {
                 self.flush_run();
             }
             if seg.motion == Motion::Feed {
-                let outline = self.outline(seg.tool, seg.hint, flip, idx);
-                let max_len = outline
-                    .bbox()
-                    .map_or(0.0, |(lo, hi)| (hi[0] - lo[0]).max(hi[1] - lo[1]));
-                self.run = Some(Run {
-                    tool: seg.tool,
-                    hint: seg.hint,
-                    flip,
-                    a: p,
-                    b: q,
-                    last: idx,
-                    mid: Vec::new(),
-                    max_len,
-                    path: path.unwrap_or_default(),
-                });
+                self.open_run(seg, flip, idx, (p, q), path.unwrap_or_default());
                 return true;
             }
         } else {
-            self.flush_run();
+            // an arc feed joins the path (or starts one) with its chords, and leaves a run
+            // of one point at its end for the feeds after it
+            let chords: Vec<P> = seg
+                .polyline(self.tol)
+                .iter()
+                .map(|pt| [pt.z, pt.r])
+                .collect();
+            let arc_len = chords.windows(2).map(|w| dist(w[0], w[1])).sum();
+            let path = if seg.motion == Motion::Feed {
+                self.continued_path(seg, flip, p, arc_len)
+            } else {
+                None
+            };
+            let path = path.or_else(|| {
+                self.flush_run();
+                let starts = seg.motion == Motion::Feed
+                    && seg.arc.is_some()
+                    && self.feed_paths
+                    && self.body(seg.tool, seg.hint, flip).is_none();
+                starts.then(|| (Vec::new(), 0.0))
+            });
+            if let Some((mut path, len)) = path {
+                for v in chords {
+                    if path.last() != Some(&v) {
+                        path.push(v);
+                    }
+                }
+                if let Some(end) = path.pop() {
+                    self.open_run(seg, flip, idx, (end, end), (path, len + arc_len));
+                    if self.run.as_ref().is_some_and(|r| r.path_len > r.max_len) {
+                        self.flush_run(); // as long as the tool: no feed joins it
+                    }
+                    return true;
+                }
+            }
         }
         let outline = self.outline(seg.tool, seg.hint, flip, idx);
         let rapid = seg.motion == Motion::Rapid;
@@ -546,15 +572,56 @@ impl<'a> SweepBuilder<'a> {
         Some(pts)
     }
 
-    /// When the feed `seg` (starting at `p`) continues the open run's path: the run is
-    /// taken and its path vertices up to `p` returned. Only for a tool without a body (a
-    /// body's probe must see the stock right after its own move) and up to
-    /// [`MAX_PATH`] vertices.
-    fn continued_path(&mut self, seg: &Segment, flip: bool, p: P) -> Option<Vec<P>> {
+    /// Opens a run of the feed `seg` along `a -> b`, after the path vertices `path`.
+    fn open_run(
+        &mut self,
+        seg: &Segment,
+        flip: bool,
+        idx: usize,
+        (a, b): (P, P),
+        (path, path_len): (Vec<P>, f64),
+    ) {
+        let outline = self.outline(seg.tool, seg.hint, flip, idx);
+        let max_len = outline
+            .bbox()
+            .map_or(0.0, |(lo, hi)| (hi[0] - lo[0]).max(hi[1] - lo[1]));
+        self.run = Some(Run {
+            tool: seg.tool,
+            hint: seg.hint,
+            flip,
+            a,
+            b,
+            last: idx,
+            mid: Vec::new(),
+            max_len,
+            path,
+            path_len,
+        });
+    }
+
+    /// When the feed `seg` (starting at `p`, `len` mm long) continues the open run's path:
+    /// the run is taken and its path vertices up to `p` returned, with their length. Only
+    /// for a tool without a body (a body's probe must see the stock right after its own
+    /// move), up to [`MAX_PATH`] vertices and a path no longer than the tool's outline is
+    /// wide (a ring has no separating-axis test: a long one would reach every tile along
+    /// it, where the hulls of long moves are told apart from the stock one by one).
+    fn continued_path(
+        &mut self,
+        seg: &Segment,
+        flip: bool,
+        p: P,
+        len: f64,
+    ) -> Option<(Vec<P>, f64)> {
         let run = self.run.as_ref()?;
         let same = run.tool == seg.tool && run.hint == seg.hint && run.flip == flip;
-        let near = (p[0] - run.b[0]).hypot(p[1] - run.b[1]) <= COLLINEAR_TOL;
-        if !self.feed_paths || !same || !near || run.path.len() + 2 > MAX_PATH {
+        let near = dist(p, run.b) <= COLLINEAR_TOL;
+        let path_len = run.path_len + dist(run.a, run.b);
+        if !self.feed_paths
+            || !same
+            || !near
+            || run.path.len() + 2 > MAX_PATH
+            || path_len + len > run.max_len
+        {
             return None;
         }
         if self.body(seg.tool, seg.hint, flip).is_some() {
@@ -568,7 +635,7 @@ impl<'a> SweepBuilder<'a> {
             }
         }
         path.pop(); // p is the new run's `a`
-        Some(path)
+        Some((path, path_len))
     }
 
     /// Ends the current merged run, emitting its sweep and then its moves' body probes.
