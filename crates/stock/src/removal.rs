@@ -569,7 +569,11 @@ fn touches(poly: &[IPt], convex: bool, shapes: &IShapes, shapes_box: &IBox) -> b
                 } {
                     return true;
                 }
-                if (0..n).any(|i| segments_meet(poly[i], poly[(i + 1) % n], a, b)) {
+                if (0..n).any(|i| {
+                    let (p, q) = (poly[i], poly[(i + 1) % n]);
+                    // the boxes first: a long ring has few edges near any stock edge
+                    IBox::of_segment(p, q).overlaps(&eb) && segments_meet(p, q, a, b)
+                }) {
                     return true;
                 }
             }
