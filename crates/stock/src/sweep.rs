@@ -58,6 +58,10 @@ const COLLINEAR_TOL: f64 = 1e-9;
 const MAX_CHAIN: usize = 256;
 /// Most vertices of a path of feeds swept as one ring.
 const MAX_PATH: usize = 128;
+/// Most total turning of a path of feeds swept as one ring, radians: a staircase of
+/// 0.001 mm steps under G42 (`found/hostile-exit1`) made rings whose outline loops, one a
+/// corner, all overlapped (minutes instead of 10 s).
+const MAX_TURN: f64 = std::f64::consts::FRAC_PI_2;
 
 /// One unit of removal: the sweep of one move (or of a merged run of collinear feeds).
 #[derive(Debug, Clone)]
@@ -149,6 +153,9 @@ struct Run {
     path: Vec<P>,
     /// Length of `path` up to `a`, mm.
     path_len: f64,
+    /// Total turning of the path up to `a` (radians): the ring inserts outline vertices at
+    /// every turn, and the loops of sharp turns overlap each other.
+    turn: f64,
 }
 
 impl Run {
@@ -244,6 +251,13 @@ impl Run {
 
 fn dist(x: P, y: P) -> f64 {
     (x[0] - y[0]).hypot(x[1] - y[1])
+}
+
+/// The angle between two directions, radians (0 when either is zero).
+fn angle(u: P, v: P) -> f64 {
+    let cross = u[0] * v[1] - u[1] * v[0];
+    let dot = u[0] * v[0] + u[1] * v[1];
+    cross.abs().atan2(dot)
 }
 
 /// A body by tool, hint and whether it is mirrored (a rear post).
@@ -447,7 +461,7 @@ impl<'a> SweepBuilder<'a> {
             // a feed that goes on from where the run ended (same tool, no body to probe
             // after each move) continues one polyline path, swept as one ring
             let path = if seg.motion == Motion::Feed {
-                self.continued_path(seg, flip, p, dist(p, q))
+                self.continued_path(seg, flip, p, dist(p, q), ([q[0] - p[0], q[1] - p[1]], 0.0))
             } else {
                 None
             };
@@ -467,8 +481,14 @@ impl<'a> SweepBuilder<'a> {
                 .map(|pt| [pt.z, pt.r])
                 .collect();
             let arc_len = chords.windows(2).map(|w| dist(w[0], w[1])).sum();
+            let dirs: Vec<P> = chords
+                .windows(2)
+                .map(|w| [w[1][0] - w[0][0], w[1][1] - w[0][1]])
+                .collect();
+            let arc_turn: f64 = dirs.windows(2).map(|w| angle(w[0], w[1])).sum();
+            let first = dirs.first().copied().unwrap_or([0.0, 0.0]);
             let path = if seg.motion == Motion::Feed {
-                self.continued_path(seg, flip, p, arc_len)
+                self.continued_path(seg, flip, p, arc_len, (first, arc_turn))
             } else {
                 None
             };
@@ -478,18 +498,28 @@ impl<'a> SweepBuilder<'a> {
                     && seg.arc.is_some()
                     && self.feed_paths
                     && self.body(seg.tool, seg.hint, flip).is_none();
-                starts.then(|| (Vec::new(), 0.0))
+                starts.then(|| (Vec::new(), 0.0, 0.0))
             });
-            if let Some((mut path, len)) = path {
+            if let Some((mut path, len, turn)) = path {
                 for v in chords {
                     if path.last() != Some(&v) {
                         path.push(v);
                     }
                 }
                 if let Some(end) = path.pop() {
-                    self.open_run(seg, flip, idx, (end, end), (path, len + arc_len));
-                    if self.run.as_ref().is_some_and(|r| r.path_len > r.max_len) {
-                        self.flush_run(); // as long as the tool: no feed joins it
+                    self.open_run(
+                        seg,
+                        flip,
+                        idx,
+                        (end, end),
+                        (path, len + arc_len, turn + arc_turn),
+                    );
+                    if self
+                        .run
+                        .as_ref()
+                        .is_some_and(|r| r.path_len > r.max_len || r.turn > MAX_TURN)
+                    {
+                        self.flush_run(); // as long as the tool, or turning: no feed joins it
                     }
                     return true;
                 }
@@ -579,7 +609,7 @@ impl<'a> SweepBuilder<'a> {
         flip: bool,
         idx: usize,
         (a, b): (P, P),
-        (path, path_len): (Vec<P>, f64),
+        (path, path_len, turn): (Vec<P>, f64, f64),
     ) {
         let outline = self.outline(seg.tool, seg.hint, flip, idx);
         let max_len = outline
@@ -596,6 +626,7 @@ impl<'a> SweepBuilder<'a> {
             max_len,
             path,
             path_len,
+            turn,
         });
     }
 
@@ -611,16 +642,25 @@ impl<'a> SweepBuilder<'a> {
         flip: bool,
         p: P,
         len: f64,
-    ) -> Option<(Vec<P>, f64)> {
+        (first, inner_turn): (P, f64),
+    ) -> Option<(Vec<P>, f64, f64)> {
         let run = self.run.as_ref()?;
         let same = run.tool == seg.tool && run.hint == seg.hint && run.flip == flip;
         let near = dist(p, run.b) <= COLLINEAR_TOL;
         let path_len = run.path_len + dist(run.a, run.b);
+        // the direction the path ends with: its last move, or the last chord of an arc
+        let last = if dist(run.a, run.b) > COLLINEAR_TOL {
+            Some([run.b[0] - run.a[0], run.b[1] - run.a[1]])
+        } else {
+            run.path.last().map(|v| [run.a[0] - v[0], run.a[1] - v[1]])
+        };
+        let turn = run.turn + last.map_or(0.0, |d| angle(d, first)) + inner_turn;
         if !self.feed_paths
             || !same
             || !near
             || run.path.len() + 2 > MAX_PATH
             || path_len + len > run.max_len
+            || turn > MAX_TURN
         {
             return None;
         }
@@ -635,7 +675,7 @@ impl<'a> SweepBuilder<'a> {
             }
         }
         path.pop(); // p is the new run's `a`
-        Some((path, path_len))
+        Some((path, path_len, turn - inner_turn))
     }
 
     /// Ends the current merged run, emitting its sweep and then its moves' body probes.
