@@ -7,9 +7,12 @@
 //! - within a strip, sweeps are subtracted in batches of [`BATCH`]: one call removes the
 //!   union of the batch (no sweep-by-sweep subtraction from an ever-growing polygon, no
 //!   single giant call with k² tool-tool intersections);
-//! - sweeps whose box misses a strip's stock box (air cuts) never reach a boolean call,
-//!   and collinear overlapping feeds (pecks) were already merged into one sweep, as were
-//!   chains of nearly collinear short feeds (within [`SimOptions::merge_tol`]).
+//! - sweeps that cannot touch a subtree's stock box (box overlap, then a separating axis)
+//!   never descend into it, and those that miss a tile's stock (air cuts) never reach a
+//!   boolean call;
+//! - collinear overlapping feeds (pecks) were already merged into one sweep, as were
+//!   chains of nearly collinear short feeds (within [`SimOptions::merge_tol`]), and short
+//!   paths of feeds are swept as one ring ([`SimOptions::feed_paths`]).
 //!
 //! Crashes: a rapid whose box meets a strip's stock box flushes that strip's batch (so
 //! the stock is exactly the stock after every earlier move) and intersects its sweep with

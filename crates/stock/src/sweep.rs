@@ -6,6 +6,13 @@
 //! re-cutting the same line) merge into one sweep, exactly: the union of the sweeps of a
 //! convex part along two overlapping collinear intervals is its sweep along their union.
 //!
+//! Consecutive feeds of a tool without a body (each starting where the last ended) form a
+//! path, swept as one ring per convex part: the convolution cycle of [`sweep_chain`], whose
+//! non-zero region is exactly the Minkowski sum with the whole polyline. A path is bounded
+//! (128 vertices, the tool's outline size in length, 90° of turning) so that its ring stays
+//! small and local: one ring instead of many hulls that overlap their neighbours, which
+//! the boolean engine would have to split against each other.
+//!
 //! # Merging nearly collinear feeds (bounded error)
 //!
 //! A chain of short feeds (CAM output: 0.05 mm G01 moves along a curve) is merged into one
