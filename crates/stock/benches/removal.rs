@@ -1,13 +1,21 @@
 //! Removal benchmark on generated programs (plain `Instant`, not a timed test).
 //!
 //! `cargo bench -p stock --bench removal -- [N ...]` (default N = 100000 1000000);
-//! measure peak memory with `/usr/bin/time -v`. Patterns, all on a Φ125 × 110 bar:
+//! `PATTERN=name` runs one pattern, `FEED_PATHS=0` sweeps feeds one by one
+//! (`SimOptions::feed_paths` off); measure peak memory with `/usr/bin/time -v`. Patterns, on a
+//! Φ125 × 110 bar (`g73` on Φ190 × 110):
 //! - `grooves`: G75-like pecking across the bar with a 3 mm blade (grooves stepped by
 //!   2.5 mm so they overlap), pecks fed down and retracted by rapid;
 //! - `roughing`: G90-like passes with a 35° insert down to a shoulder at Z-100;
 //! - `taper`: the same passes ending on a 1:2 taper, so every pass leaves a step;
 //! - `wobble`: like `grooves` but every peck slightly off the groove line, so that no
-//!   moves merge and every sweep goes through the boolean engine.
+//!   moves merge and every sweep goes through the boolean engine;
+//! - `contour`: contour-parallel roughing of a wavy profile (the program of
+//!   `benches/geos_compare.py`): 50 passes, each the finished profile moved out by 0.3 mm,
+//!   n/50 short G01 moves a pass, a sharp 35° insert;
+//! - `g73`: a G73-like pattern repeating cycle: an O0006-like profile (straights, a taper,
+//!   an R20 arc) swept n/8 times, each pass moved by (4, 2) mm / passes toward the part,
+//!   so that every pass leaves a new sliver along the whole profile (55° insert r0.4).
 
 use expander::{Feed, Motion, Pt, Segment, Span};
 use std::time::Instant;
@@ -91,6 +99,63 @@ fn roughing(n: usize, taper: bool) -> Vec<Segment> {
     p.segs
 }
 
+/// The contour pattern's finished profile (as in `benches/geos_compare.py`).
+fn wave(z: f64) -> f64 {
+    35.0 + 3.0 * (z / 6.0).sin() + 1.5 * (z / 2.3).sin()
+}
+
+fn contour(n: usize) -> Vec<Segment> {
+    let passes = 50;
+    let per_pass = (n / passes).saturating_sub(4).max(2);
+    let mut p = Path {
+        at: Pt::new(5.0, 65.0),
+        segs: Vec::with_capacity(n + 8),
+    };
+    for k in 0..passes {
+        let off = 0.3 * (passes - 1 - k) as f64;
+        p.go(Motion::Rapid, 2.0, wave(0.0) + off + 1.0);
+        p.go(Motion::Rapid, 2.0, wave(0.0) + off);
+        for j in 1..=per_pass {
+            let z = 2.0 - 102.0 * j as f64 / per_pass as f64;
+            p.go(Motion::Feed, z, wave(z.min(0.0)) + off);
+        }
+        let z = p.at.z;
+        p.go(Motion::Feed, z, 64.0);
+        p.go(Motion::Rapid, 5.0, 64.0);
+    }
+    p.segs
+}
+
+fn g73(n: usize) -> Vec<Segment> {
+    let passes = (n / 8).max(1);
+    let mut p = Path {
+        at: Pt::new(10.0, 100.0),
+        segs: Vec::with_capacity(n + 8),
+    };
+    for k in 0..passes {
+        let t = 1.0 - (k + 1) as f64 / passes as f64;
+        let (dz, dr) = (4.0 * t, 2.0 * t);
+        p.go(Motion::Rapid, dz + 2.0, 40.0 + dr);
+        p.go(Motion::Feed, dz, 40.0 + dr);
+        p.go(Motion::Feed, dz - 20.0, 40.0 + dr);
+        p.go(Motion::Feed, dz - 30.0, 60.0 + dr);
+        p.go(Motion::Feed, dz - 50.0, 60.0 + dr);
+        // an R20 quarter-ish arc up to r 80 over 20 mm of Z (centre on the chord's right)
+        let (from, to) = (p.at, Pt::new(dz - 70.0, 80.0 + dr));
+        let mut arc = seg(Motion::Feed, from, to);
+        arc.arc = Some(expander::Arc {
+            center: Pt::new(dz - 70.0, 60.0 + dr),
+            ccw: false,
+        });
+        p.segs.push(arc);
+        p.at = to;
+        p.go(Motion::Feed, dz - 80.0, 96.0 + dr); // out past the bar's r 95
+        p.go(Motion::Rapid, dz - 80.0, 100.0);
+        p.go(Motion::Rapid, 10.0, 100.0);
+    }
+    p.segs
+}
+
 fn main() {
     let args: Vec<usize> = std::env::args()
         .skip(1)
@@ -114,23 +179,43 @@ fn main() {
             edge: 11.0,
         },
     )]);
+    let v35_sharp = ToolTable::from_tools(vec![(
+        1,
+        Tool::Turning {
+            insert: Insert::V,
+            nose_radius: 0.0,
+            tip: 3,
+            entering_angle: 93.0,
+            edge: 11.0,
+        },
+    )]);
+    let d55 = ToolTable::from_tools(vec![(1, Tool::DEFAULT)]);
+    let big = Blank::bar(190.0, 110.0, 0.0, None).expect("bar");
     println!(
         "{:<9} {:>9} {:>9} {:>12} {:>9} {:>8} {:>12}",
         "pattern", "moves", "time s", "moves/s", "vertices", "crashes", "removed mm²"
     );
     for &n in &sizes {
-        let cases: Vec<(&str, Vec<Segment>, &ToolTable)> = vec![
-            ("grooves", grooves(n, 0.0), &blade),
-            ("wobble", grooves(n, 0.001), &blade),
-            ("roughing", roughing(n, false), &v35),
-            ("taper", roughing(n, true), &v35),
-        ];
-        for (name, segs, tools) in cases {
+        let names = ["grooves", "wobble", "roughing", "taper", "contour", "g73"];
+        for name in names {
             if only.as_deref().is_some_and(|o| o != name) {
                 continue;
             }
+            // generated one at a time: at 10^6 moves each list is ~100 MB
+            let (segs, tools, blank) = match name {
+                "grooves" => (grooves(n, 0.0), &blade, &blank),
+                "wobble" => (grooves(n, 0.001), &blade, &blank),
+                "roughing" => (roughing(n, false), &v35, &blank),
+                "taper" => (roughing(n, true), &v35, &blank),
+                "contour" => (contour(n), &v35_sharp, &blank),
+                _ => (g73(n), &d55, &big),
+            };
+            let opts = SimOptions {
+                feed_paths: std::env::var("FEED_PATHS").map_or(true, |v| v != "0"),
+                ..SimOptions::default()
+            };
             let t = Instant::now();
-            let sim = simulate(&blank, tools, &segs, &SimOptions::default(), &mut |_| {});
+            let sim = simulate(blank, tools, &segs, &opts, &mut |_| {});
             let dt = t.elapsed().as_secs_f64();
             let verts: usize = sim
                 .final_shapes

@@ -7,9 +7,12 @@
 //! - within a strip, sweeps are subtracted in batches of [`BATCH`]: one call removes the
 //!   union of the batch (no sweep-by-sweep subtraction from an ever-growing polygon, no
 //!   single giant call with k² tool-tool intersections);
-//! - sweeps whose box misses a strip's stock box (air cuts) never reach a boolean call,
-//!   and collinear overlapping feeds (pecks) were already merged into one sweep, as were
-//!   chains of nearly collinear short feeds (within [`SimOptions::merge_tol`]).
+//! - sweeps that cannot touch a subtree's stock box (box overlap, then a separating axis)
+//!   never descend into it, and those that miss a tile's stock (air cuts) never reach a
+//!   boolean call;
+//! - collinear overlapping feeds (pecks) were already merged into one sweep, as were
+//!   chains of nearly collinear short feeds (within [`SimOptions::merge_tol`]), and short
+//!   paths of feeds are swept as one ring ([`SimOptions::feed_paths`]).
 //!
 //! Crashes: a rapid whose box meets a strip's stock box flushes that strip's batch (so
 //! the stock is exactly the stock after every earlier move) and intersects its sweep with
@@ -62,6 +65,11 @@ pub struct SimOptions {
     /// most this much wherever it was cut (see the `sweep` module). Arcs take part with
     /// their chord when it lies within `chord_tol − merge_tol` of them.
     pub merge_tol: f64,
+    /// Consecutive feeds of one tool (each starting where the last ended, no rapid in
+    /// between, a tool without a body to probe) are swept as one path of up to 128
+    /// vertices: one ring, the exact Minkowski sum of the outline with the polyline
+    /// (default true). Exact either way; false sweeps each (merged) move on its own.
+    pub feed_paths: bool,
     /// Move counts after which the stock is wanted (see [`Simulation::snapshots`]), taken
     /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
     /// the blank and [`Simulation::final_shapes`].
@@ -73,6 +81,7 @@ impl Default for SimOptions {
         Self {
             chord_tol: 0.001,
             merge_tol: 0.0005,
+            feed_paths: true,
             snapshot_after: Vec::new(),
         }
     }
@@ -127,9 +136,12 @@ struct Tile {
 
 /// A Z strip, split further (in two, along its longer side) wherever its stock gets
 /// complex, so that no boolean call sees more than about [`MAX_TILE_VERTICES`] of stock.
+/// A split node keeps its children's rectangles and the boxes of their stock (as of their
+/// last flush: the stock only shrinks, so a sweep that misses a box misses the stock under
+/// it), so a sweep that cannot touch a subtree's stock never descends into it.
 enum Node {
     Leaf(Tile),
-    Split(Box<[Self; 2]>, [IBox; 2]),
+    Split(Box<[Self; 2]>, [IBox; 2], [IBox; 2]),
 }
 
 /// Part of a crash seen by one strip.
@@ -288,7 +300,7 @@ impl Tile {
             let it = &sweeps.items[i as usize];
             // air in this tile: the stock only shrinks, so missing the stock of the last
             // flush means missing the stock of this moment
-            if !it.bbox.overlaps(&self.bbox) {
+            if misses_box(sweeps, it, &self.bbox) {
                 continue;
             }
             trim.clear();
@@ -386,7 +398,8 @@ impl Tile {
         };
         let a = child(halves[0], engine);
         let b = child(halves[1], engine);
-        Node::Split(Box::new([a, b]), halves)
+        let boxes = [a.stock_box(), b.stock_box()];
+        Node::Split(Box::new([a, b]), halves, boxes)
     }
 }
 
@@ -416,17 +429,37 @@ impl Node {
                 *self = tile.split(worker.engine);
                 self.process(&list[rest..], ctx, worker);
             }
-            Self::Split(children, rects) => {
-                for (child, rect) in children.iter_mut().zip(rects.iter()) {
+            Self::Split(children, rects, boxes) => {
+                for ((child, rect), sb) in children.iter_mut().zip(rects.iter()).zip(boxes) {
                     let sub: Vec<u32> = list
                         .iter()
                         .copied()
-                        .filter(|&i| ctx.sweeps.items[i as usize].bbox.overlaps(rect))
+                        .filter(|&i| {
+                            let it = &ctx.sweeps.items[i as usize];
+                            it.bbox.overlaps(rect) && !misses_box(ctx.sweeps, it, sb)
+                        })
                         .collect();
                     if !sub.is_empty() {
                         child.process(&sub, ctx, worker);
+                        *sb = child.stock_box();
                     }
                 }
+            }
+        }
+    }
+
+    /// The box of the stock under this node (as of the last flushes).
+    fn stock_box(&self) -> IBox {
+        match self {
+            Self::Leaf(tile) => tile.bbox,
+            Self::Split(_, _, [a, b]) => {
+                let mut u = *a;
+                for p in b.corners() {
+                    if b.min[0] <= b.max[0] {
+                        u.add(p);
+                    }
+                }
+                u
             }
         }
     }
@@ -434,12 +467,69 @@ impl Node {
     fn collect(self, out: &mut Vec<IShapes>) {
         match self {
             Self::Leaf(tile) => out.push(tile.stock),
-            Self::Split(children, _) => {
+            Self::Split(children, ..) => {
                 let [a, b] = *children;
                 a.collect(out);
                 b.collect(out);
             }
         }
+    }
+}
+
+/// True when no polygon of the sweep `it` can share a point with the box `b`: its box
+/// misses `b`, or (for a convex polygon) one of its edges has all of `b` strictly on its
+/// right (a separating axis). Exact; one orientation test an edge, against the corner of
+/// `b` farthest left of it. Cheap enough to run on every tile and tree node a sweep's box
+/// overlaps (a long pass's box covers hundreds of a shoulder's tiles that it misses).
+fn misses_box(sweeps: &Sweeps, it: &Item, b: &IBox) -> bool {
+    if !it.bbox.overlaps(b) {
+        return true;
+    }
+    let single = it.polys.len() == 1;
+    sweeps.polys_flagged_of(it).all(|(poly, convex)| {
+        if !single {
+            let mut pb = IBox::EMPTY;
+            for &p in poly {
+                pb.add(p);
+            }
+            if !pb.overlaps(b) {
+                return true;
+            }
+        }
+        convex && separated(poly, b)
+    })
+}
+
+/// True when an edge of the convex counter-clockwise `poly` has every corner of `b`
+/// strictly on its right.
+fn separated(poly: &[IPt], b: &IBox) -> bool {
+    let n = poly.len();
+    (0..n).any(|i| {
+        let (p, q) = (poly[i], poly[(i + 1) % n]);
+        // the corner maximising cross(q - p, c - p): largest y when the edge runs to +x,
+        // smallest x when it runs to +y
+        let c = IPt::new(
+            if q.y > p.y { b.min[0] } else { b.max[0] },
+            if q.x > p.x { b.max[1] } else { b.min[1] },
+        );
+        right_of(p, q, c)
+    })
+}
+
+/// True when `c` lies strictly right of the directed line `p → q`, exactly: the
+/// determinant in f64 (differences of i32 are exact, the products round by at most
+/// 2⁻⁵³ of their size), the exact [`orient`] only when it is too close to zero to tell.
+fn right_of(p: IPt, q: IPt, c: IPt) -> bool {
+    let d = |a: i32, b: i32| f64::from(a) - f64::from(b);
+    let (l, r) = (d(q.x, p.x) * d(c.y, p.y), d(q.y, p.y) * d(c.x, p.x));
+    let det = l - r;
+    let bound = (l.abs() + r.abs()) * 1e-15;
+    if det < -bound {
+        true
+    } else if det > bound {
+        false
+    } else {
+        orient(p, q, c) < 0
     }
 }
 
@@ -482,7 +572,11 @@ fn touches(poly: &[IPt], convex: bool, shapes: &IShapes, shapes_box: &IBox) -> b
                 } {
                     return true;
                 }
-                if (0..n).any(|i| segments_meet(poly[i], poly[(i + 1) % n], a, b)) {
+                if (0..n).any(|i| {
+                    let (p, q) = (poly[i], poly[(i + 1) % n]);
+                    // the boxes first: a long ring has few edges near any stock edge
+                    IBox::of_segment(p, q).overlaps(&eb) && segments_meet(p, q, a, b)
+                }) {
                     return true;
                 }
             }
@@ -630,6 +724,7 @@ pub fn simulate(
     };
     let mut builder = SweepBuilder::new(&grid, clip, tools, tol, merge_tol);
     builder.set_rear(crate::section::rear_tools(segments));
+    builder.set_feed_paths(opts.feed_paths);
     let mut fragments: Vec<Fragment> = Vec::new();
     let mut snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), &stock);
     let mut done = 0;
@@ -825,6 +920,58 @@ mod tests {
         )])
     }
 
+    /// The one-corner separating-axis test agrees with testing all four corners of the box
+    /// (the rule `touches` used), and the float-filtered orientation with the exact one, on
+    /// pseudo-random convex polygons and boxes, small and near the ends of the i32 grid.
+    #[test]
+    fn one_corner_separation_matches_the_four_corner_test() {
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = |span: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * span as u64 + 1)) as i64 - span
+        };
+        let (mut separated_count, mut total) = (0, 0);
+        for round in 0..4000 {
+            let span = if round % 2 == 0 {
+                50
+            } else {
+                i64::from(i32::MAX)
+            };
+            let pts: Vec<[f64; 2]> = (0..6)
+                .map(|_| [next(span) as f64, next(span) as f64])
+                .collect();
+            let hull: Vec<IPt> = crate::geom::convex_hull(&pts)
+                .iter()
+                .map(|p| IPt::new(p[0] as i32, p[1] as i32))
+                .collect();
+            let (a, b) = (next(span) as i32, next(span) as i32);
+            let (c, d) = (next(span) as i32, next(span) as i32);
+            let bx = IBox {
+                min: [a.min(c), b.min(d)],
+                max: [a.max(c), b.max(d)],
+            };
+            let n = hull.len();
+            let four = (0..n).any(|i| {
+                bx.corners()
+                    .iter()
+                    .all(|&q| orient(hull[i], hull[(i + 1) % n], q) < 0)
+            });
+            assert_eq!(separated(&hull, &bx), four, "{hull:?} {bx:?}");
+            for &q in &bx.corners() {
+                for i in 0..n {
+                    let (p0, p1) = (hull[i], hull[(i + 1) % n]);
+                    assert_eq!(right_of(p0, p1, q), orient(p0, p1, q) < 0);
+                }
+            }
+            separated_count += usize::from(four);
+            total += 1;
+        }
+        // both outcomes occur
+        assert!(separated_count > total / 10 && separated_count < total * 9 / 10);
+    }
+
     #[test]
     fn straight_turning_pass_removes_exactly_the_rectangle() {
         let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();
@@ -1016,11 +1163,14 @@ mod tests {
         assert!(symmetric_difference_area(&sim.final_shapes, &expected) < 1e-6);
     }
 
-    /// Number of cutting sweeps the builder makes of `segs` (with the defaults' chord tolerance).
+    /// Number of cutting sweeps the builder makes of `segs` (with the defaults' chord tolerance),
+    /// without paths of feeds.
     fn sweep_count(tools: &ToolTable, segs: &[Segment], merge_tol: f64) -> usize {
         let bb = Rect::new(geom::Pt::new(-200.0, -200.0), geom::Pt::new(200.0, 200.0));
         let grid = Grid::new(bb.grown(1.0));
         let mut b = SweepBuilder::new(&grid, bb, tools, 0.001, merge_tol);
+        // merging alone (paths of feeds would make one sweep of every path)
+        b.set_feed_paths(false);
         for (i, s) in segs.iter().enumerate() {
             b.push(i, s);
         }
@@ -1068,6 +1218,104 @@ mod tests {
         assert!(h > 0.0, "the merged result is an approximation");
         // the default merges
         assert_eq!(SimOptions::default().merge_tol, 0.0005);
+    }
+
+    /// A path of feeds swept as one ring removes what the moves swept one by one remove:
+    /// a wavy contour of 0.05 mm moves, two small arcs, sharp corners, a reversal and a
+    /// 180° turn, in two passes, then a rapid that ploughs the stock left (the same crash
+    /// either way).
+    #[test]
+    fn feed_paths_remove_exactly_what_the_single_moves_remove() {
+        let blank = Blank::bar(50.0, 40.0, 0.0, None).unwrap();
+        let wave = |z: f64| 20.0 + 1.5 * (z / 1.7).sin() + 0.4 * (z / 0.3).sin();
+        let mut segs = Vec::new();
+        for (pass, off) in [(0, 2.0), (1, 0.0)] {
+            let n = 600;
+            let pts: Vec<[f64; 2]> = (0..=n)
+                .map(|k| {
+                    let z = 1.0 - 31.0 * f64::from(k) / f64::from(n);
+                    [z, wave(z.min(0.0)) + off]
+                })
+                .collect();
+            segs.push(seg(Motion::Rapid, [5.0, 30.0], [pts[0][0], 30.0]));
+            segs.push(seg(Motion::Feed, [pts[0][0], 30.0], pts[0]));
+            segs.extend(pts.windows(2).map(|w| seg(Motion::Feed, w[0], w[1])));
+            let last = pts[n as usize];
+            // two R0.5 half circles (chorded arcs join the path), then a sharp corner, a
+            // reversal back along the path and a 180° turn
+            let end = [last[0] - 2.0, last[1]];
+            for (k, ccw) in [(0.0, false), (1.0, true)] {
+                let mut arc = seg(
+                    Motion::Feed,
+                    [last[0] - k, last[1]],
+                    [last[0] - k - 1.0, last[1]],
+                );
+                arc.arc = Some(Arc {
+                    center: Pt::new(last[0] - k - 0.5, last[1]),
+                    ccw,
+                });
+                segs.push(arc);
+            }
+            segs.push(seg(Motion::Feed, end, [end[0], end[1] - 1.0]));
+            segs.push(seg(
+                Motion::Feed,
+                [end[0], end[1] - 1.0],
+                [end[0] + 2.0, end[1] - 1.0],
+            ));
+            segs.push(seg(
+                Motion::Feed,
+                [end[0] + 2.0, end[1] - 1.0],
+                [end[0] + 1.0, end[1] - 1.0],
+            ));
+            segs.push(seg(
+                Motion::Feed,
+                [end[0] + 1.0, end[1] - 1.0],
+                [end[0] + 1.0, 30.0],
+            ));
+            if pass == 1 {
+                segs.push(seg(
+                    Motion::Rapid,
+                    [end[0] + 1.0, 30.0],
+                    [end[0] - 3.0, 10.0],
+                ));
+            }
+            segs.push(seg(Motion::Rapid, [end[0] + 1.0, 30.0], [5.0, 30.0]));
+        }
+        let sim = |feed_paths| {
+            let opts = SimOptions {
+                feed_paths,
+                ..SimOptions::default()
+            };
+            simulate(&blank, &v35(), &segs, &opts, &mut |_| {})
+        };
+        let (paths, single) = (sim(true), sim(false));
+        assert!(single.removed_area > 100.0, "{}", single.removed_area);
+        let xor = symmetric_difference_area(&paths.final_shapes, &single.final_shapes);
+        assert!(xor < 1e-6, "symmetric difference {xor} mm²");
+        let h = hausdorff(&paths.final_shapes, &single.final_shapes);
+        assert!(h < 1e-6, "hausdorff {h}");
+        let verdicts = |s: &Simulation| s.crashes.iter().map(|c| c.segment).collect::<Vec<_>>();
+        assert_eq!(verdicts(&paths), verdicts(&single));
+        assert_eq!(verdicts(&paths).len(), 1);
+        assert!((paths.crashes[0].area - single.crashes[0].area).abs() < 1e-6);
+        // and far fewer sweeps: one ring per path of up to 128 vertices
+        let count = |on: bool| {
+            let bb = Rect::new(geom::Pt::new(-200.0, -200.0), geom::Pt::new(200.0, 200.0));
+            let grid = Grid::new(bb.grown(1.0));
+            let tools = v35();
+            let mut b = SweepBuilder::new(&grid, bb, &tools, 0.001, 0.0005);
+            b.set_feed_paths(on);
+            for (i, s) in segs.iter().enumerate() {
+                b.push(i, s);
+            }
+            b.flush_run();
+            b.take().items.len()
+        };
+        let (with, without) = (count(true), count(false));
+        assert!(
+            with * 5 < without,
+            "{with} sweeps with paths, {without} without"
+        );
     }
 
     #[test]

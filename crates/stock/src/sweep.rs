@@ -6,6 +6,13 @@
 //! re-cutting the same line) merge into one sweep, exactly: the union of the sweeps of a
 //! convex part along two overlapping collinear intervals is its sweep along their union.
 //!
+//! Consecutive feeds of a tool without a body (each starting where the last ended) form a
+//! path, swept as one ring per convex part: the convolution cycle of [`sweep_chain`], whose
+//! non-zero region is exactly the Minkowski sum with the whole polyline. A path is bounded
+//! (128 vertices, the tool's outline size in length, 90° of turning) so that its ring stays
+//! small and local: one ring instead of many hulls that overlap their neighbours, which
+//! the boolean engine would have to split against each other.
+//!
 //! # Merging nearly collinear feeds (bounded error)
 //!
 //! A chain of short feeds (CAM output: 0.05 mm G01 moves along a curve) is merged into one
@@ -56,6 +63,12 @@ const COLLINEAR_TOL: f64 = 1e-9;
 /// Most programmed points one merged run of nearly collinear feeds may hold (each new move
 /// re-checks them all, so this bounds the work per move).
 const MAX_CHAIN: usize = 256;
+/// Most vertices of a path of feeds swept as one ring.
+const MAX_PATH: usize = 128;
+/// Most total turning of a path of feeds swept as one ring, radians: a staircase of
+/// 0.001 mm steps under G42 (`found/hostile-exit1`) made rings whose outline loops, one a
+/// corner, all overlapped (minutes instead of 10 s).
+const MAX_TURN: f64 = std::f64::consts::FRAC_PI_2;
 
 /// One unit of removal: the sweep of one move (or of a merged run of collinear feeds).
 #[derive(Debug, Clone)]
@@ -142,6 +155,14 @@ struct Run {
     mid: Vec<P>,
     /// Longest chord a chain may have: the size of the tool's outline, mm.
     max_len: f64,
+    /// Earlier vertices of a feed path swept as one ring with this run (see
+    /// [`SweepBuilder::push_cut`]): the path is `path`, then `a`, then `b`.
+    path: Vec<P>,
+    /// Length of `path` up to `a`, mm.
+    path_len: f64,
+    /// Total turning of the path up to `a` (radians): the ring inserts outline vertices at
+    /// every turn, and the loops of sharp turns overlap each other.
+    turn: f64,
 }
 
 impl Run {
@@ -235,6 +256,17 @@ impl Run {
     }
 }
 
+fn dist(x: P, y: P) -> f64 {
+    (x[0] - y[0]).hypot(x[1] - y[1])
+}
+
+/// The angle between two directions, radians (0 when either is zero).
+fn angle(u: P, v: P) -> f64 {
+    let cross = u[0] * v[1] - u[1] * v[0];
+    let dot = u[0] * v[0] + u[1] * v[1];
+    cross.abs().atan2(dot)
+}
+
 /// A body by tool, hint and whether it is mirrored (a rear post).
 type BodyKey = ((u32, u8, u64), bool);
 
@@ -247,6 +279,8 @@ pub(crate) struct SweepBuilder<'a> {
     /// Largest deviation of a merged chain of feeds from the programmed points, mm (0: only
     /// exact merging).
     merge_tol: f64,
+    /// Sweep consecutive feeds as one path (see [`crate::SimOptions::feed_paths`]).
+    feed_paths: bool,
     outlines: HashMap<((u32, u8, u64), bool), Outline>,
     bodies: HashMap<BodyKey, Option<crate::Body>>,
     run: Option<Run>,
@@ -281,6 +315,7 @@ impl<'a> SweepBuilder<'a> {
             tools,
             tol: chord_tol,
             merge_tol: merge_tol.clamp(0.0, chord_tol),
+            feed_paths: true,
             outlines: HashMap::new(),
             bodies: HashMap::new(),
             run: None,
@@ -291,6 +326,11 @@ impl<'a> SweepBuilder<'a> {
             warnings: Vec::new(),
             out: Sweeps::default(),
         }
+    }
+
+    /// Whether consecutive feeds are swept as one path ([`crate::SimOptions::feed_paths`]).
+    pub(crate) fn set_feed_paths(&mut self, on: bool) {
+        self.feed_paths = on;
     }
 
     /// Tools on a rear post ([`crate::section::rear_tools`]).
@@ -425,26 +465,72 @@ impl<'a> SweepBuilder<'a> {
                     }
                 }
             }
-            self.flush_run();
+            // a feed that goes on from where the run ended (same tool, no body to probe
+            // after each move) continues one polyline path, swept as one ring
+            let path = if seg.motion == Motion::Feed {
+                self.continued_path(seg, flip, p, dist(p, q), ([q[0] - p[0], q[1] - p[1]], 0.0))
+            } else {
+                None
+            };
+            if path.is_none() {
+                self.flush_run();
+            }
             if seg.motion == Motion::Feed {
-                let outline = self.outline(seg.tool, seg.hint, flip, idx);
-                let max_len = outline
-                    .bbox()
-                    .map_or(0.0, |(lo, hi)| (hi[0] - lo[0]).max(hi[1] - lo[1]));
-                self.run = Some(Run {
-                    tool: seg.tool,
-                    hint: seg.hint,
-                    flip,
-                    a: p,
-                    b: q,
-                    last: idx,
-                    mid: Vec::new(),
-                    max_len,
-                });
+                self.open_run(seg, flip, idx, (p, q), path.unwrap_or_default());
                 return true;
             }
         } else {
-            self.flush_run();
+            // an arc feed joins the path (or starts one) with its chords, and leaves a run
+            // of one point at its end for the feeds after it
+            let chords: Vec<P> = seg
+                .polyline(self.tol)
+                .iter()
+                .map(|pt| [pt.z, pt.r])
+                .collect();
+            let arc_len = chords.windows(2).map(|w| dist(w[0], w[1])).sum();
+            let dirs: Vec<P> = chords
+                .windows(2)
+                .map(|w| [w[1][0] - w[0][0], w[1][1] - w[0][1]])
+                .collect();
+            let arc_turn: f64 = dirs.windows(2).map(|w| angle(w[0], w[1])).sum();
+            let first = dirs.first().copied().unwrap_or([0.0, 0.0]);
+            let path = if seg.motion == Motion::Feed {
+                self.continued_path(seg, flip, p, arc_len, (first, arc_turn))
+            } else {
+                None
+            };
+            let path = path.or_else(|| {
+                self.flush_run();
+                let starts = seg.motion == Motion::Feed
+                    && seg.arc.is_some()
+                    && self.feed_paths
+                    && self.body(seg.tool, seg.hint, flip).is_none();
+                starts.then(|| (Vec::new(), 0.0, 0.0))
+            });
+            if let Some((mut path, len, turn)) = path {
+                for v in chords {
+                    if path.last() != Some(&v) {
+                        path.push(v);
+                    }
+                }
+                if let Some(end) = path.pop() {
+                    self.open_run(
+                        seg,
+                        flip,
+                        idx,
+                        (end, end),
+                        (path, len + arc_len, turn + arc_turn),
+                    );
+                    if self
+                        .run
+                        .as_ref()
+                        .is_some_and(|r| r.path_len > r.max_len || r.turn > MAX_TURN)
+                    {
+                        self.flush_run(); // as long as the tool, or turning: no feed joins it
+                    }
+                    return true;
+                }
+            }
         }
         let outline = self.outline(seg.tool, seg.hint, flip, idx);
         let rapid = seg.motion == Motion::Rapid;
@@ -523,6 +609,82 @@ impl<'a> SweepBuilder<'a> {
         Some(pts)
     }
 
+    /// Opens a run of the feed `seg` along `a -> b`, after the path vertices `path`.
+    fn open_run(
+        &mut self,
+        seg: &Segment,
+        flip: bool,
+        idx: usize,
+        (a, b): (P, P),
+        (path, path_len, turn): (Vec<P>, f64, f64),
+    ) {
+        let outline = self.outline(seg.tool, seg.hint, flip, idx);
+        let max_len = outline
+            .bbox()
+            .map_or(0.0, |(lo, hi)| (hi[0] - lo[0]).max(hi[1] - lo[1]));
+        self.run = Some(Run {
+            tool: seg.tool,
+            hint: seg.hint,
+            flip,
+            a,
+            b,
+            last: idx,
+            mid: Vec::new(),
+            max_len,
+            path,
+            path_len,
+            turn,
+        });
+    }
+
+    /// When the feed `seg` (starting at `p`, `len` mm long) continues the open run's path:
+    /// the run is taken and its path vertices up to `p` returned, with their length. Only
+    /// for a tool without a body (a body's probe must see the stock right after its own
+    /// move), up to [`MAX_PATH`] vertices and a path no longer than the tool's outline is
+    /// wide (a ring has no separating-axis test: a long one would reach every tile along
+    /// it, where the hulls of long moves are told apart from the stock one by one).
+    fn continued_path(
+        &mut self,
+        seg: &Segment,
+        flip: bool,
+        p: P,
+        len: f64,
+        (first, inner_turn): (P, f64),
+    ) -> Option<(Vec<P>, f64, f64)> {
+        let run = self.run.as_ref()?;
+        let same = run.tool == seg.tool && run.hint == seg.hint && run.flip == flip;
+        let near = dist(p, run.b) <= COLLINEAR_TOL;
+        let path_len = run.path_len + dist(run.a, run.b);
+        // the direction the path ends with: its last move, or the last chord of an arc
+        let last = if dist(run.a, run.b) > COLLINEAR_TOL {
+            Some([run.b[0] - run.a[0], run.b[1] - run.a[1]])
+        } else {
+            run.path.last().map(|v| [run.a[0] - v[0], run.a[1] - v[1]])
+        };
+        let turn = run.turn + last.map_or(0.0, |d| angle(d, first)) + inner_turn;
+        if !self.feed_paths
+            || !same
+            || !near
+            || run.path.len() + 2 > MAX_PATH
+            || path_len + len > run.max_len
+            || turn > MAX_TURN
+        {
+            return None;
+        }
+        if self.body(seg.tool, seg.hint, flip).is_some() {
+            return None;
+        }
+        let run = self.run.take()?;
+        let mut path = run.path;
+        for v in [run.a, run.b, p] {
+            if path.last() != Some(&v) {
+                path.push(v);
+            }
+        }
+        path.pop(); // p is the new run's `a`
+        Some((path, path_len, turn - inner_turn))
+    }
+
     /// Ends the current merged run, emitting its sweep and then its moves' body probes.
     pub(crate) fn flush_run(&mut self) {
         self.emit_run();
@@ -531,9 +693,17 @@ impl<'a> SweepBuilder<'a> {
 
     /// Ends the current merged run, emitting its sweep.
     fn emit_run(&mut self) {
-        if let Some(run) = self.run.take() {
+        if let Some(mut run) = self.run.take() {
             let outline = self.outline(run.tool, run.hint, run.flip, run.last);
-            self.emit_path(run.last, false, &outline, &[run.a, run.b]);
+            for v in [run.a, run.b] {
+                if run.path.last() != Some(&v) {
+                    run.path.push(v);
+                }
+            }
+            if run.path.len() == 1 {
+                run.path.push(run.b);
+            }
+            self.emit_path(run.last, false, &outline, &run.path);
         }
     }
 
