@@ -523,9 +523,9 @@ fn sweeps_over(
     {
         return false;
     }
-    let pts = seg.polyline(chord_tol);
+    let path = seg.polyline(chord_tol);
     let mut sweep: Vec<Shape> = vec![];
-    for w in pts.windows(2) {
+    for w in path.windows(2) {
         let d = [w[1].z - w[0].z, w[1].r - w[0].r];
         for part in &outline.parts {
             let at: Vec<P> = part
@@ -543,12 +543,42 @@ fn sweeps_over(
             }));
         }
     }
+    // Exact shortcuts before the boolean (a G73 of many passes asks this for every pass and
+    // gouge): a part whose box misses the region's cannot overlap it; a (convex) part that
+    // holds every vertex of the region holds the region, and the overlap is its area.
+    sweep.retain(|s| Rect::of(pts(&s.outer)).intersects(bb));
+    if sweep.is_empty() {
+        return false;
+    }
+    if sweep.iter().any(|s| holds_all(&s.outer, &region.outer)) {
+        return area(std::slice::from_ref(region)) > 1e-9;
+    }
     let overlap = area(&boolean(
         &sweep,
         std::slice::from_ref(region),
         BoolOp::Intersection,
     ));
     overlap > 1e-9
+}
+
+/// Whether the convex ring `hull` (either orientation) holds every point of `ring`, its
+/// boundary included.
+fn holds_all(hull: &[P], ring: &[P]) -> bool {
+    let n = hull.len();
+    if n < 3 {
+        return false;
+    }
+    let sign = ring::signed_area(&pts(hull)).signum();
+    if sign == 0.0 {
+        return false;
+    }
+    ring.iter().all(|p| {
+        (0..n).all(|i| {
+            let (a, b) = (hull[i], hull[(i + 1) % n]);
+            let cross = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+            cross * sign >= 0.0
+        })
+    })
 }
 
 /// Box of a ring as (least, greatest) corner.
