@@ -2,7 +2,7 @@
 //! leftovers (material that should be gone), each with its area, depth, position and the
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
-use crate::geom::{convex_hull, pts, sweep_convex, P};
+use crate::geom::{clip_convex, convex_hull, pts, sweep_convex, P};
 use crate::overlay::BoolOp;
 use crate::{area, boolean, Outline, Shape, ToolTable};
 use expander::Segment;
@@ -344,43 +344,7 @@ pub fn deviation(
 /// box gets zero-width bridges along its sides, which enclose nothing), with every vertex
 /// inside the box kept exactly as it was.
 fn clip_to_box(shapes: &[Shape], bx: &Rect) -> Vec<Shape> {
-    let ring = |r: &[P]| -> Vec<P> {
-        let mut cur: Vec<P> = r.to_vec();
-        // (axis, bound, keep the side >= bound)
-        for (axis, bound, upper) in [
-            (0, bx.min.z, true),
-            (0, bx.max.z, false),
-            (1, bx.min.r, true),
-            (1, bx.max.r, false),
-        ] {
-            if cur.is_empty() {
-                break;
-            }
-            let inside = |p: &P| {
-                if upper {
-                    p[axis] >= bound
-                } else {
-                    p[axis] <= bound
-                }
-            };
-            let mut next = Vec::with_capacity(cur.len() + 4);
-            for i in 0..cur.len() {
-                let (a, b) = (cur[i], cur[(i + 1) % cur.len()]);
-                let (ia, ib) = (inside(&a), inside(&b));
-                if ia {
-                    next.push(a);
-                }
-                if ia != ib {
-                    let t = (bound - a[axis]) / (b[axis] - a[axis]);
-                    let mut q = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
-                    q[axis] = bound;
-                    next.push(q);
-                }
-            }
-            cur = next;
-        }
-        cur
-    };
+    let ring = |r: &[P]| clip_convex(r, bx);
     shapes
         .iter()
         .filter_map(|s| {
