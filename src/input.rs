@@ -91,14 +91,10 @@ fn load_machine(args: &ProgramArgs) -> Result<Machine, ()> {
         Some(path) => {
             let text = read_text(path, "machine profile")?;
             Machine::from_toml_for(&text, control).map_err(|e| {
-                let src = Source {
-                    name: path.display().to_string(),
-                    text: text.clone(),
-                };
-                diag::print_line_col(
-                    &src,
-                    e.line as usize,
-                    e.column as usize,
+                print_in_file(
+                    path,
+                    &text,
+                    (e.line, e.column),
                     "machine",
                     &e.message,
                     "see the machine profile keys in README.md",
@@ -310,19 +306,24 @@ pub(crate) fn load_workholding(
     let path = Path::new(spec);
     let text = read_text(path, "chuck file")?;
     expander::Workholding::from_toml(&text).map_err(|e| {
-        let src = Source {
-            name: path.display().to_string(),
-            text: text.clone(),
-        };
-        diag::print_line_col(
-            &src,
-            e.line as usize,
-            e.column as usize,
-            "chuck",
-            &e.message,
-            help,
-        );
+        print_in_file(path, &text, (e.line, e.column), "chuck", &e.message, help);
     })
+}
+
+/// An error at a line and column of a file already read (a machine profile, a chuck file).
+fn print_in_file(
+    path: &Path,
+    text: &str,
+    (line, column): (u32, u32),
+    code: &str,
+    message: &str,
+    help: &str,
+) {
+    let src = Source {
+        name: path.display().to_string(),
+        text: text.to_string(),
+    };
+    diag::print_line_col(&src, line as usize, column as usize, code, message, help);
 }
 
 /// The blank from `--stock`/`--bore`/`--stock-z` or `--stock-file`.
