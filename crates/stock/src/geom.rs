@@ -250,9 +250,72 @@ pub(crate) fn clip_convex(poly: &[P], rect: &Rect) -> Vec<P> {
     cur
 }
 
+/// The part of a ring inside a convex counter-clockwise `hull` (Sutherland–Hodgman against
+/// each of its edges). The subject may be any simple ring, either orientation: the result
+/// may hold zero-width bridges but its signed area is exactly that of the intersection,
+/// with the subject's sign — what [`crate::deviation`] needs to tell whether a convex sweep
+/// overlaps a region without a boolean.
+pub(crate) fn clip_to_hull(poly: &[P], hull: &[P]) -> Vec<P> {
+    let mut cur: Vec<P> = poly.to_vec();
+    let n = hull.len();
+    for i in 0..n {
+        if cur.is_empty() {
+            break;
+        }
+        let (a, b) = (hull[i], hull[(i + 1) % n]);
+        let side = |p: &P| cross(a, b, *p);
+        if cur.iter().all(|p| side(p) >= 0.0) {
+            continue;
+        }
+        let mut next = Vec::with_capacity(cur.len() + 2);
+        for j in 0..cur.len() {
+            let (p, q) = (cur[j], cur[(j + 1) % cur.len()]);
+            let (sp, sq) = (side(&p), side(&q));
+            if sp >= 0.0 {
+                next.push(p);
+            }
+            if (sp >= 0.0) != (sq >= 0.0) {
+                let t = sp / (sp - sq);
+                next.push([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]);
+            }
+        }
+        cur = next;
+    }
+    cur
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An L-shaped ring (area 3) against a unit square hull at the notch corner, and a
+    /// triangle: the clipped areas by hand.
+    #[test]
+    fn clip_to_hull_areas_by_hand() {
+        let signed = |r: &[P]| ring::signed_area(&pts(r));
+        let l = [
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ];
+        let sq = [[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]];
+        // the square over the L's notch: three quarters of it lie in the L
+        assert!((signed(&clip_to_hull(&l, &sq)) - 0.75).abs() < 1e-12);
+        // clockwise subject: the sign follows it
+        let mut cw = l.to_vec();
+        cw.reverse();
+        assert!((signed(&clip_to_hull(&cw, &sq)) + 0.75).abs() < 1e-12);
+        // the triangle (0,0) (2,0) (0,2) lies wholly in the L (its points with x, y > 1
+        // have x + y > 2): its own area
+        let tri = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]];
+        assert!((signed(&clip_to_hull(&l, &tri)) - 2.0).abs() < 1e-12);
+        // far away: nothing
+        let far = [[10.0, 10.0], [11.0, 10.0], [11.0, 11.0]];
+        assert!(clip_to_hull(&l, &far).is_empty());
+    }
 
     #[test]
     fn hull_of_square_with_inner_point_is_ccw_square() {
