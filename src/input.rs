@@ -261,20 +261,24 @@ impl Loaded {
     }
 }
 
-/// Print the interpreter's alarms (always) and warnings (unless quiet).
+/// Print the interpreter's alarms (always) and warnings (unless quiet), the first ten of
+/// each in full: a 4 000-step staircase under G42 raised 4 000 interference alarms, 55 000
+/// lines of terminal output.
 pub(crate) fn print_diagnostics(loaded: &Loaded, quiet: bool) {
-    for a in &loaded.toolpath.alarms {
-        loaded.print(a, false);
-    }
+    const SHOWN: usize = 10;
+    let tp = &loaded.toolpath;
+    let mut lists = vec![("alarms", &tp.alarms, false)];
     if !quiet {
-        const SHOWN: usize = 10;
-        for w in loaded.toolpath.warnings.iter().take(SHOWN) {
-            loaded.print(w, true);
+        lists.push(("warnings", &tp.warnings, true));
+    }
+    for (what, list, warning) in lists {
+        for d in list.iter().take(SHOWN) {
+            loaded.print(d, warning);
         }
-        if loaded.toolpath.warnings.len() > SHOWN {
+        if list.len() > SHOWN {
             eprintln!(
-                "… and {} more warnings (all are in the report)",
-                loaded.toolpath.warnings.len() - SHOWN
+                "… and {} more {what} (all are in the report)",
+                list.len() - SHOWN
             );
         }
     }

@@ -204,6 +204,27 @@ pub(crate) fn build(
             message: message.clone(),
         });
     }
+    // alarms and warnings listed up to a cap; the count of the rest is the last warning
+    warnings.truncate(MAX_LISTED);
+    for (what, n) in [
+        ("alarms", tp.alarms.len()),
+        (
+            "warnings",
+            tp.warnings.len() + rapid_cuts.len() + sim.warnings.len(),
+        ),
+    ] {
+        if n > MAX_LISTED {
+            warnings.push(Diagnostic {
+                line: 0,
+                column: 0,
+                code: "LS-LIST-CAPPED".into(),
+                message: format!(
+                    "{n} {what}: the {MAX_LISTED} first are listed, {} more are not",
+                    n - MAX_LISTED
+                ),
+            });
+        }
+    }
     let mut tool_numbers: Vec<u32> = vec![];
     for s in &tp.segments {
         if !tool_numbers.contains(&s.tool) {
@@ -225,7 +246,12 @@ pub(crate) fn build(
         final_part: sim.final_shapes.iter().map(shape).collect(),
         toolpath: tp.segments.iter().map(path_line).collect(),
         rapid_cuts,
-        alarms: tp.alarms.iter().map(|d| diagnostic(loaded, d)).collect(),
+        alarms: tp
+            .alarms
+            .iter()
+            .take(MAX_LISTED)
+            .map(|d| diagnostic(loaded, d))
+            .collect(),
         warnings,
         tools: {
             let times = expander::timing::per_tool(&tp.segments, &loaded.machine);
@@ -274,7 +300,7 @@ pub(crate) fn build(
 }
 
 /// Most gouges (and leftovers) listed in a report; the count of the rest is a warning.
-const MAX_LISTED: usize = 1_000;
+pub(crate) const MAX_LISTED: usize = 1_000;
 
 /// The deviation findings: gouges (with the first line whose sweep made them), leftovers
 /// (and where the largest is thickest), the intended shapes drawn dashed, and the summary.

@@ -392,7 +392,8 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         report.removed_area_mm2,
         report.removed_volume_mm3,
         report.cycle_time_s,
-        report.alarms.len(),
+        // (the report lists the first alarms only)
+        report.alarms.len() + loaded.toolpath.alarms.len().saturating_sub(crate::report::MAX_LISTED),
         report.crashes.len(),
         deviation.as_ref().map_or(0, |d| d.gouges.len())
     );

@@ -511,3 +511,43 @@ fn naming_the_moves_behind_gouges_stays_fast_with_a_rubbing_holder() {
     // the pecks of line 17 and the face cut of line 4 (the first move sweeping each)
     assert_eq!(gouges, vec![(17, 62.34375), (4, 99.861658)]);
 }
+
+/// found/hostile-exit1: a staircase of 0.001 mm steps under G42 with the default r0.4 nose
+/// raises an interference alarm at every step (4 000). The terminal shows ten in full and
+/// the count of the rest; the JSON lists the first 1 000 and says how many it left out; the
+/// summary line counts them all.
+#[test]
+fn thousands_of_alarms_are_capped_on_the_terminal_and_in_the_report() {
+    let mut text = String::from("O0001;\nG99 M03 S800 T0101;\nG00 X62 Z2;\nG42 G01 X20 Z0 F0.1;\n");
+    for _ in 0..2000 {
+        text.push_str("G01 W-0.001;\nG01 U0.001;\n");
+    }
+    text.push_str("G40 G00 X80;\nM30;\n");
+    let (dir, prog) = temp_program("stairs.nc", text.as_bytes());
+    let json = dir.path().join("r.json");
+    let out = latsim(&[
+        "run",
+        prog.to_str().unwrap(),
+        "--stock",
+        "60x80",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert_eq!(out.stderr.matches("PS041").count(), 10, "{}", out.stderr);
+    assert!(
+        out.stderr.contains("… and 3990 more alarms"),
+        "{}",
+        out.stderr
+    );
+    assert!(out.stdout.contains("4000 alarm(s)"), "{}", out.stdout);
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(report["alarms"].as_array().unwrap().len(), 1000);
+    assert!(report["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w["code"] == "LS-LIST-CAPPED"
+            && w["message"] == "4000 alarms: the 1000 first are listed, 3000 more are not"));
+}
