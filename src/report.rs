@@ -347,9 +347,8 @@ pub(crate) fn add_deviation(
         .take(MAX_LISTED)
         .map(|g| render::Gouge {
             line: g
-                .segments
-                .first()
-                .and_then(|&i| segs.get(i))
+                .made_by
+                .and_then(|i| segs.get(i))
                 .map_or(0, |s| s.span.line),
             z: g.at[0],
             r: g.at[1],

@@ -370,13 +370,10 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
                 d.gouges
                     .iter()
                     .map(|g| {
-                        g.segments
-                            .first()
-                            .and_then(|&i| segments.get(i))
-                            .map_or_else(
-                                || format!("{}:0", loaded.source.name),
-                                |s| loaded.place(s.span),
-                            )
+                        g.made_by.and_then(|i| segments.get(i)).map_or_else(
+                            || format!("{}:0", loaded.source.name),
+                            |s| loaded.place(s.span),
+                        )
                     })
                     .collect()
             })
