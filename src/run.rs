@@ -256,7 +256,13 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
             b.set_position(done as u64);
         }
     };
-    let marks = crate::report::snapshot_marks(segments.len());
+    // the HTML player's snapshots cost a second cut of every sweep: only for an HTML report
+    let html = outputs(args, stem).iter().any(|(_, kind)| *kind == "html");
+    let marks = if html {
+        crate::report::snapshot_marks(segments.len())
+    } else {
+        vec![]
+    };
     let mut snapshot_after = marks.clone();
     snapshot_after.extend(crate::analysis::stock_marks(&loaded));
     snapshot_after.sort_unstable();
@@ -318,7 +324,9 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
     let target = args.target.is_some().then(|| intents[0].part.as_slice());
     crate::report::add_threads(&mut report, &loaded, &tools, &sim, target);
-    report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
+    if html {
+        report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
+    }
 
     // Render every report first, then write them all to disk, then make them visible:
     // a failure anywhere leaves the previous reports as they were.
