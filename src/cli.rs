@@ -187,9 +187,20 @@ pub(crate) struct RunArgs {
     /// Write the self-contained HTML report (picture, tables, move slider) here.
     #[arg(long, value_name = "F")]
     pub(crate) html: Option<PathBuf>,
-    /// Folder for the default outputs <prog>.svg, <prog>.png, <prog>.json (default: current folder).
+    /// Folder for the default outputs <prog>.svg, <prog>.png, <prog>.json, <prog>.html
+    /// (default: current folder).
     #[arg(long, value_name = "DIR")]
     pub(crate) out: Option<PathBuf>,
+    /// Which reports `--out` writes for each program, comma-separated (default: all four);
+    /// `none` writes no file, for a batch whose verdict lines and exit status are all a CI
+    /// gate reads.
+    #[arg(
+        long,
+        value_name = "KINDS",
+        value_delimiter = ',',
+        default_values_t = [ReportKind::Svg, ReportKind::Png, ReportKind::Json, ReportKind::Html]
+    )]
+    pub(crate) reports: Vec<ReportKind>,
     /// Write the final half section (layer PART) and the intended part (layer INTENDED)
     /// as a DXF drawing (DXF version 2000) here.
     #[arg(long, value_name = "F")]
@@ -207,6 +218,34 @@ pub(crate) struct RunArgs {
     /// Deviation tolerance in mm for gouges and leftovers.
     #[arg(long, value_name = "MM", default_value_t = 0.01)]
     pub(crate) tol: f64,
+}
+
+/// `--reports`: a report kind `--out` writes.
+#[derive(Debug, Clone, Copy, ValueEnum, PartialEq, Eq)]
+pub(crate) enum ReportKind {
+    /// The picture as SVG.
+    Svg,
+    /// The picture rasterised.
+    Png,
+    /// The machine-readable report.
+    Json,
+    /// The self-contained page with the move slider.
+    Html,
+    /// No report file.
+    None,
+}
+
+impl std::fmt::Display for ReportKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let name = match self {
+            Self::Svg => "svg",
+            Self::Png => "png",
+            Self::Json => "json",
+            Self::Html => "html",
+            Self::None => "none",
+        };
+        f.write_str(name)
+    }
 }
 
 /// `--dxf-x`: what a DXF drawing's Y is.

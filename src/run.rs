@@ -1,6 +1,6 @@
 //! `latsim run` and `latsim check`.
 
-use crate::cli::{CheckArgs, RunArgs};
+use crate::cli::{CheckArgs, ReportKind, RunArgs};
 use crate::diag;
 use crate::input;
 use crate::write;
@@ -58,12 +58,18 @@ fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
         return explicit;
     }
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    // `--dxf` alone adds the drawing to the four default reports.
-    ["svg", "png", "json", "html"]
-        .into_iter()
-        .map(|kind| (dir.join(format!("{stem}.{kind}")), kind))
-        .chain(explicit)
-        .collect()
+    // `--dxf` alone adds the drawing to the default reports (`--reports`, all four unless told).
+    [
+        (ReportKind::Svg, "svg"),
+        (ReportKind::Png, "png"),
+        (ReportKind::Json, "json"),
+        (ReportKind::Html, "html"),
+    ]
+    .into_iter()
+    .filter(|(k, _)| args.reports.contains(k))
+    .map(|(_, kind)| (dir.join(format!("{stem}.{kind}")), kind))
+    .chain(explicit)
+    .collect()
 }
 
 /// Program files to run: the files given, and the program files inside the folders given
@@ -97,6 +103,13 @@ fn program_files(paths: &[PathBuf]) -> Vec<PathBuf> {
 /// `latsim run`: one program in detail, or several in parallel with one verdict line
 /// each (for CI). The exit status is the worst of them: 2 if any could not be simulated.
 pub(crate) fn run(args: &RunArgs) -> u8 {
+    if args.reports.contains(&ReportKind::None) && args.reports.len() > 1 {
+        diag::print_plain(
+            "--reports none cannot be combined with other report kinds",
+            "give `--reports none` alone, or a list such as `--reports json,svg`",
+        );
+        return EXIT_UNUSABLE;
+    }
     let files = program_files(&args.program.programs);
     if files.is_empty() {
         diag::print_plain(

@@ -233,3 +233,82 @@ fn control_sets_the_power_on_feed_mode_and_is_named_in_the_report() {
     let out = latsim(&["check", prog.to_str().unwrap(), "--control", "siemens"]);
     assert_eq!(out.code, 2, "{}", out.stderr);
 }
+
+/// `--reports` picks which reports `--out` writes for each program: JSON only for a batch
+/// (rasterising the PNG is most of a small program's time), or none (verdict lines and the
+/// exit status only); `none` with another kind is a usage error.
+#[test]
+fn reports_picks_what_out_writes() {
+    let src = tempfile::tempdir().unwrap();
+    for f in ["O0002.nc", "seed004-contour.nc"] {
+        std::fs::copy(asset(&format!("programs/{f}")), src.path().join(f)).unwrap();
+    }
+    let files_in = |d: &std::path::Path| {
+        let mut v: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .flatten()
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    };
+    let run = |reports: &str, out_dir: &std::path::Path| {
+        latsim(&[
+            "run",
+            src.path().to_str().unwrap(),
+            "--stock",
+            "125x110",
+            "--tools",
+            asset("tools/v35-sharp.toml").to_str().unwrap(),
+            "--out",
+            out_dir.to_str().unwrap(),
+            "--reports",
+            reports,
+        ])
+    };
+    let json_only = tempfile::tempdir().unwrap();
+    // (seed004 on this bar ends with a finding: exit 1)
+    let out = run("json", json_only.path());
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert_eq!(out.stdout.lines().count(), 2, "{}", out.stdout);
+    assert_eq!(
+        files_in(json_only.path()),
+        ["O0002.json", "seed004-contour.json"]
+    );
+    let two = tempfile::tempdir().unwrap();
+    assert_eq!(run("svg,json", two.path()).code, 1);
+    assert_eq!(
+        files_in(two.path()),
+        [
+            "O0002.json",
+            "O0002.svg",
+            "seed004-contour.json",
+            "seed004-contour.svg"
+        ]
+    );
+    let none = tempfile::tempdir().unwrap();
+    let out = run("none", none.path());
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert_eq!(out.stdout.lines().count(), 2, "{}", out.stdout);
+    assert!(files_in(none.path()).is_empty());
+    let out = run("none,json", none.path());
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("--reports none"), "{}", out.stderr);
+    // the JSON of a batch is the JSON of the same program run alone with all four reports
+    let alone = tempfile::tempdir().unwrap();
+    let out = latsim(&[
+        "run",
+        src.path().join("O0002.nc").to_str().unwrap(),
+        "--stock",
+        "125x110",
+        "--tools",
+        asset("tools/v35-sharp.toml").to_str().unwrap(),
+        "--out",
+        alone.path().to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert_eq!(
+        std::fs::read(alone.path().join("O0002.json")).unwrap(),
+        std::fs::read(json_only.path().join("O0002.json")).unwrap()
+    );
+}
