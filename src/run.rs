@@ -292,7 +292,14 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     );
     let fixture_crashes = fixture
         .as_ref()
-        .map(|f| f.check(&tools, segments, stock::SimOptions::default().chord_tol))
+        .map(|f| {
+            f.check(
+                &tools,
+                segments,
+                stock::SimOptions::default().chord_tol,
+                &loaded.toolpath.tailstock,
+            )
+        })
         .unwrap_or_default();
     if let Some(b) = &bar {
         b.finish_and_clear();

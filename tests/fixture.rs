@@ -332,3 +332,47 @@ fn soft_jaws_take_their_outline() {
     assert!(near(z, -75.0) && near(x, 54.0) && near(area, 54.0) && near(depth, 18.0));
     assert_eq!(run_with("grip=20").0, 0);
 }
+
+/// The program retracts the tailstock before facing to the centre (GSK980TD M11, Haas
+/// M22): the centre is no obstacle then, so the facing cut of the crash above is clean.
+/// Advanced again (M10 / M21) before the cut, it crashes as before (one line later).
+#[test]
+fn a_retracted_tailstock_is_no_obstacle() {
+    let with = |m: &str| {
+        facing(-0.5, 0.0).replacen("G00 X44. Z5.;\n", &format!("{m}\nG00 X44. Z5.;\n"), 1)
+    };
+    let (code, v) = run(&with("M11;"), "40x100", "grip=30,tail=-1");
+    assert_eq!((code, crashes(&v).len()), (0, 0), "{:?}", crashes(&v));
+    let (code, v) = run(&with("M11;\nM10;"), "40x100", "grip=30,tail=-1");
+    assert_eq!(code, 1);
+    let c = crashes(&v);
+    assert_eq!(
+        (c.len(), c[0].0, c[0].1.as_str()),
+        (1, 7, "tailstock centre"),
+        "{c:?}"
+    );
+    // Haas: M22 retracts, M21 advances (under GSK980TD they are unknown codes)
+    for (m, crashes_expected) in [("M22;", 0), ("M22;\nM21;", 1)] {
+        let (dir, prog) = temp_program("h.nc", with(m).as_bytes());
+        let tools = dir.path().join("tools.toml");
+        std::fs::write(&tools, BLADE).unwrap();
+        let json = dir.path().join("r.json");
+        let out = latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--control",
+            "haas",
+            "--stock",
+            "40x100",
+            "--tools",
+            tools.to_str().unwrap(),
+            "--chuck",
+            "grip=30,tail=-1",
+            "--json",
+            json.to_str().unwrap(),
+        ]);
+        assert_eq!(out.code, crashes_expected, "{m}: {}", out.stderr);
+        let v: Value = serde_json::from_str(&read(&json)).unwrap();
+        assert_eq!(crashes(&v).len(), crashes_expected as usize, "{m}");
+    }
+}

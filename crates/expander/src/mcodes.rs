@@ -21,6 +21,8 @@ pub(crate) enum Effect {
     ChuckCloses,
     /// Thread pull-out chamfer on (`true`, M23) or off (M24), modal (§3.5).
     ThreadChamfer(bool),
+    /// The tailstock advances (`true`: its centre is an obstacle again) or retracts.
+    Tailstock(bool),
 }
 
 /// The control's name and effect of machine function `m`; `None` when its table does not
@@ -44,7 +46,8 @@ pub(crate) fn machine_function(control: Control, m: u32) -> Option<(&'static str
             12 | 13 => Some(("air blast on / off", None)),
             14 => Some(("main spindle brake on (the spindle stops)", SpindleStops)),
             15 => Some(("main spindle brake off", None)),
-            21 | 22 => Some(("tailstock advance / retract", None)),
+            21 => Some(("tailstock advance", Tailstock(true))),
+            22 => Some(("tailstock retract", Tailstock(false))),
             31 | 33 => Some(("chip conveyor forward / stop", None)),
             36 | 37 => Some(("parts catcher up / down", None)),
             38 | 39 => Some(("spindle speed variation on / off", None)),
@@ -58,7 +61,8 @@ pub(crate) fn machine_function(control: Control, m: u32) -> Option<(&'static str
             _ => Option::None,
         },
         Control::Gsk980 => match m {
-            10 | 11 => Some(("tailstock forward / back", None)),
+            10 => Some(("tailstock forward", Tailstock(true))),
+            11 => Some(("tailstock back", Tailstock(false))),
             12 => Some(("chuck clamp", ChuckCloses)),
             13 => Some(("chuck release", ChuckOpens)),
             32 | 33 => Some(("lubrication on / off", None)),

@@ -55,6 +55,9 @@ pub struct Obstacle {
     convex: Option<Vec<Vec<P>>>,
 }
 
+/// The name of the tailstock centre's obstacle.
+const TAILSTOCK: &str = "tailstock centre";
+
 /// The chuck and tailstock placed against a blank.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Fixture {
@@ -180,7 +183,7 @@ impl Fixture {
                 ],
                 holes: Vec::new(),
             };
-            obstacles.push(Obstacle::new("tailstock centre", vec![centre], false));
+            obstacles.push(Obstacle::new(TAILSTOCK, vec![centre], false));
         }
         obstacles.extend(grip_rule);
         Ok(Some(Self {
@@ -190,13 +193,18 @@ impl Fixture {
     }
 
     /// The moves whose tools enter an obstacle (see the module documentation), in program
-    /// order; `chord_tol` chords arcs as the removal does.
+    /// order; `chord_tol` chords arcs as the removal does. `tailstock` are the program's
+    /// tailstock changes (`Toolpath::tailstock`: from segment k on, advanced or not): the
+    /// centre is no obstacle while it is retracted.
     pub fn check(
         &self,
         tools: &ToolTable,
         segments: &[Segment],
         chord_tol: f64,
+        tailstock: &[(usize, bool)],
     ) -> Vec<FixtureCrash> {
+        let mut changes = tailstock.iter().peekable();
+        let mut advanced = true;
         let rear = crate::section::rear_tools(segments);
         let mut mounted: HashMap<((u32, u8, u64), bool), Mounted> = HashMap::new();
         let mut all = Rect::EMPTY;
@@ -205,6 +213,9 @@ impl Fixture {
         }
         let mut out: Vec<FixtureCrash> = Vec::new();
         for (i, seg) in segments.iter().enumerate() {
+            while let Some(&(_, on)) = changes.next_if(|(k, _)| *k <= i) {
+                advanced = on;
+            }
             let finite = [seg.from.z, seg.from.r, seg.to.z, seg.to.r]
                 .iter()
                 .all(|v| v.is_finite() && v.abs() < 1e9);
@@ -251,7 +262,8 @@ impl Fixture {
                 let sweep = sweep_shapes(outline, &path);
                 let sb = shapes_box(&sweep);
                 for o in &self.obstacles {
-                    let applies = !o.cut_only || (body.is_none() && seg.motion != Motion::Rapid);
+                    let applies = (!o.cut_only || (body.is_none() && seg.motion != Motion::Rapid))
+                        && (advanced || o.name != TAILSTOCK);
                     if !applies || hit.contains(&o.name) || !o.may_overlap(&sweep, &sb) {
                         continue;
                     }

@@ -72,7 +72,9 @@ impl Default for Options {
 pub struct Toolpath {
     /// The moves, in order.
     pub segments: Vec<Segment>,
-    /// Controller alarms (at most one: an alarm stops the run).
+    /// Controller alarms. An alarm stops the run, except tool nose radius interference
+    /// (PS041), reported at every block where the offset path would run backwards while
+    /// the path goes on as the control would cut it (spec/tnrc.md).
     pub alarms: Vec<Diagnostic>,
     /// Warnings: the run went on.
     pub warnings: Vec<Diagnostic>,
@@ -84,6 +86,11 @@ pub struct Toolpath {
     pub title: String,
     /// Blocks executed.
     pub blocks: usize,
+    /// Tailstock changes: from segment `k` on, the centre is advanced (`true`) or retracted,
+    /// as M21/M22 (Haas) or M10/M11 (GSK980TD) say. Before the first, it is where the
+    /// machine profile puts it (advanced, when it has a `[tailstock]`). A change inside a
+    /// G41/G42 section takes effect where the section's moves end.
+    pub tailstock: Vec<(usize, bool)>,
     /// Shapes the program defines for itself (G75.1 grooves, G70–G73 finishing shapes).
     pub intended: Vec<crate::Intended>,
     /// Custom macro B: the variables the run read or set, with their final values
@@ -174,6 +181,8 @@ pub(crate) struct Interp<'m> {
     param_mode: bool,
     /// The chuck is open (Haas M11, FANUC builders' M69, GSK M13); warned once per opening.
     chuck_open: bool,
+    /// A tailstock change met inside a G41/G42 section (recorded when it is emitted).
+    pub(crate) tailstock_pending: Option<bool>,
     chuck_warned: bool,
     /// M codes the control's table does not know, already warned about.
     m_warned: Vec<u32>,
@@ -238,6 +247,7 @@ impl<'m> Interp<'m> {
             plane: None,
             param_mode: false,
             chuck_open: false,
+            tailstock_pending: None,
             chuck_warned: false,
             m_warned: vec![],
             noted: vec![],

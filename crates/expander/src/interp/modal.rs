@@ -379,6 +379,14 @@ impl Interp<'_> {
             }
             Some(Effect::ChuckCloses) => self.chuck_open = false,
             Some(Effect::ThreadChamfer(on)) => self.thread_chamfer = on,
+            Some(Effect::Tailstock(engaged)) => {
+                // inside a G41/G42 section the moves are emitted when it ends
+                if self.section.is_some() {
+                    self.tailstock_pending = Some(engaged);
+                } else {
+                    self.out.tailstock.push((self.out.segments.len(), engaged));
+                }
+            }
             Some(Effect::None) | None => {}
         }
         let accepted = known.is_some()

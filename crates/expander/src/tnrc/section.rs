@@ -117,5 +117,8 @@ impl Interp<'_> {
         let c = compensate(&section, side, nose);
         self.out.segments.extend(c.segments);
         self.out.alarms.extend(c.alarms);
+        if let Some(engaged) = self.tailstock_pending.take() {
+            self.out.tailstock.push((self.out.segments.len(), engaged));
+        }
     }
 }
