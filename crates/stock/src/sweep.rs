@@ -727,8 +727,9 @@ impl<'a> SweepBuilder<'a> {
     fn emit_path(&mut self, idx: usize, rapid: bool, outline: &Outline, path: &[P]) {
         let start = path[0];
         let item = self.begin();
-        if path.len() > 2 && !rapid {
-            // a chorded arc: one ring per convex part instead of a hull per chord
+        if path.len() > 2 {
+            // a chorded arc (a feed, or a body probed along one): one ring per convex part
+            // instead of a hull per chord
             for part in &outline.parts {
                 let ring = sweep_chain(part, path);
                 self.add_ring(&ring);
