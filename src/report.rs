@@ -461,16 +461,14 @@ pub(crate) fn add_threads(
     }
 }
 
-/// Programs up to this many moves get stock snapshots for the HTML slider.
-const SNAPSHOT_MAX_MOVES: usize = 5_000;
 /// How many snapshots (besides the blank and the final part).
 const SNAPSHOTS: usize = 30;
 
 /// Move counts after which the simulation keeps the stock for the HTML report's move
-/// slider (taken in the simulation's one pass; each costs a union of the stock tiles, so
-/// only programs up to [`SNAPSHOT_MAX_MOVES`] moves get them).
+/// slider (taken in the simulation's one pass: exactly at these counts up to 5 000 moves,
+/// at the removal's epoch ends nearest after them beyond; `stock::Simulation::snapshots`).
 pub(crate) fn snapshot_marks(moves: usize) -> Vec<usize> {
-    if moves == 0 || moves > SNAPSHOT_MAX_MOVES {
+    if moves == 0 {
         return vec![];
     }
     let mut marks: Vec<usize> = (1..SNAPSHOTS)
@@ -488,7 +486,7 @@ pub(crate) fn snapshots(
     moves: usize,
     sim: &stock::Simulation,
 ) -> Vec<render::Snapshot> {
-    if moves == 0 || moves > SNAPSHOT_MAX_MOVES {
+    if moves == 0 {
         return vec![];
     }
     let mut out = vec![render::Snapshot {

@@ -276,8 +276,9 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     } else {
         vec![]
     };
+    let stock_marks = crate::analysis::stock_marks(&loaded);
     let mut snapshot_after = marks.clone();
-    snapshot_after.extend(crate::analysis::stock_marks(&loaded));
+    snapshot_after.extend(&stock_marks);
     snapshot_after.sort_unstable();
     snapshot_after.dedup();
     let mut sim = stock::simulate(
@@ -325,8 +326,10 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     let Ok(intents) = crate::analysis::intents(args, &loaded, &tools, &stock_at) else {
         return EXIT_UNUSABLE;
     };
-    // the HTML player shows only its own marks
-    sim.snapshots.retain(|(k, _)| marks.contains(k));
+    // the HTML player does not show the stock the intents were read against (the epoch
+    // snapshots of a long program are labelled with their own counts, not the marks)
+    sim.snapshots
+        .retain(|(k, _)| marks.contains(k) || !stock_marks.contains(k));
     let deviation = (!intents.is_empty()).then(|| {
         stock::deviation(
             &blank.shapes,

@@ -120,7 +120,10 @@ pub struct Simulation {
     pub warnings: Vec<(usize, String)>,
     /// (move count k, the stock after the first k moves) for each count asked for in
     /// [`SimOptions::snapshot_after`], ascending. A merged chain of feeds still open at k
-    /// is cut up to its last move so far; the run itself goes on unchanged.
+    /// is cut up to its last move so far; the run itself goes on unchanged. Programs of more
+    /// than 5 000 moves get them at the removal's epoch ends instead: k is then the first
+    /// count at or after the one asked for where all tiles are flushed (one snapshot for
+    /// several counts when they fall in one epoch).
     pub snapshots: Vec<(usize, Vec<Shape>)>,
 }
 
@@ -464,6 +467,17 @@ impl Node {
         }
     }
 
+    /// A copy of the stock of every leaf (for a snapshot).
+    fn gather(&self, out: &mut Vec<IShapes>) {
+        match self {
+            Self::Leaf(tile) => out.push(tile.stock.clone()),
+            Self::Split(children, ..) => {
+                children[0].gather(out);
+                children[1].gather(out);
+            }
+        }
+    }
+
     fn collect(self, out: &mut Vec<IShapes>) {
         match self {
             Self::Leaf(tile) => out.push(tile.stock),
@@ -727,9 +741,19 @@ pub fn simulate(
     builder.set_feed_paths(opts.feed_paths);
     let mut fragments: Vec<Fragment> = Vec::new();
     let mut snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), &stock);
+    // Programs whose snapshots come from epoch ends get about 30 epochs (depending only on
+    // the program's length, so every report of a run reads the same removal).
+    let epoch = if segments.len() > crate::snapshot::EXACT_MAX_MOVES {
+        (segments.len() / 30).clamp(1024, EPOCH)
+    } else {
+        EPOCH
+    };
+    // moves whose cuts are all in the tiles at the last epoch end (a merged run still open
+    // is not: its sweep comes when it ends)
+    let mut cut_moves = 0;
     let mut done = 0;
     while done < segments.len() || done == 0 {
-        let end = (done + EPOCH).min(segments.len());
+        let end = (done + epoch).min(segments.len());
         for (k, seg) in segments[done..end].iter().enumerate() {
             builder.push(done + k, seg);
             snapshots.after_push(done + k + 1, &mut builder);
@@ -794,6 +818,29 @@ pub fn simulate(
         };
         fragments.append(&mut new_frags);
         snapshots.epoch(&sweeps, &mut engine);
+        cut_moves = if builder.has_open_run() {
+            sweeps
+                .items
+                .iter()
+                .filter(|it| it.body.is_none())
+                .map(|it| it.seg + 1)
+                .max()
+                .unwrap_or(cut_moves)
+        } else {
+            end
+        };
+        // (at the last epoch end the stock is the final part, which the caller has anyway)
+        if end < segments.len() {
+            snapshots.at_epoch_end(cut_moves, || {
+                let mut parts: Vec<IShapes> = Vec::new();
+                for m in &strips {
+                    m.lock()
+                        .unwrap_or_else(|e| e.into_inner())
+                        .gather(&mut parts);
+                }
+                engine.union(&parts)
+            });
+        }
         done = end;
         progress(done);
         if segments.is_empty() {
@@ -1346,6 +1393,48 @@ mod tests {
             let h = hausdorff(shapes, &prefix.final_shapes);
             assert!(h <= 0.0005, "after {k} moves: hausdorff {h}");
         }
+        assert_eq!(sim.final_shapes, run(&blank, &v35(), &segs).final_shapes);
+    }
+
+    /// A program of more than 5 000 moves gets its snapshots at epoch ends: 6 400 grooving
+    /// pecks (3 mm blade-like V35 plunges stepped 0.01 mm, each followed by a retract) ask
+    /// for two counts; each snapshot is labelled with the moves it holds (at or after the
+    /// count asked for, before the end) and is the stock of that prefix run.
+    #[test]
+    fn a_long_program_gets_its_snapshots_at_epoch_ends() {
+        let blank = Blank::bar(50.0, 100.0, 0.0, None).unwrap();
+        let mut segs = vec![];
+        for k in 0..3_200 {
+            let z = -1.0 - 0.01 * f64::from(k);
+            segs.push(seg(
+                Motion::Feed,
+                [z, 26.0],
+                [z, 24.0 - 0.0001 * f64::from(k)],
+            ));
+            segs.push(seg(
+                Motion::Rapid,
+                [z, 24.0 - 0.0001 * f64::from(k)],
+                [z - 0.01, 26.0],
+            ));
+        }
+        let opts = SimOptions {
+            snapshot_after: vec![1_000, 4_000],
+            ..SimOptions::default()
+        };
+        let sim = simulate(&blank, &v35(), &segs, &opts, &mut |_| {});
+        let counts: Vec<usize> = sim.snapshots.iter().map(|s| s.0).collect();
+        assert_eq!(counts.len(), 2, "{counts:?}");
+        assert!(
+            counts[0] >= 1_000 && counts[1] >= 4_000 && counts[1] < segs.len(),
+            "{counts:?}"
+        );
+        for (k, shapes) in &sim.snapshots {
+            let prefix = run(&blank, &v35(), &segs[..*k]);
+            let h = hausdorff(shapes, &prefix.final_shapes);
+            assert!(h <= 0.0005, "after {k} moves: hausdorff {h}");
+            assert!((area(shapes) - area(&prefix.final_shapes)).abs() < 1e-6);
+        }
+        // and the removal does not depend on whether snapshots were asked for
         assert_eq!(sim.final_shapes, run(&blank, &v35(), &segs).final_shapes);
     }
 

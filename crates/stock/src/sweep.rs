@@ -708,6 +708,11 @@ impl<'a> SweepBuilder<'a> {
     }
 
     /// Number of sweeps emitted since the last [`SweepBuilder::take`].
+    /// Whether a merged run of feeds is still open (its sweep not yet emitted).
+    pub(crate) fn has_open_run(&self) -> bool {
+        self.run.is_some()
+    }
+
     pub(crate) fn emitted(&self) -> usize {
         self.out.items.len()
     }
