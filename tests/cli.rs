@@ -243,15 +243,6 @@ fn reports_picks_what_out_writes() {
     for f in ["O0002.nc", "seed004-contour.nc"] {
         std::fs::copy(asset(&format!("programs/{f}")), src.path().join(f)).unwrap();
     }
-    let files_in = |d: &std::path::Path| {
-        let mut v: Vec<String> = std::fs::read_dir(d)
-            .unwrap()
-            .flatten()
-            .map(|e| e.file_name().to_string_lossy().into_owned())
-            .collect();
-        v.sort();
-        v
-    };
     let run = |reports: &str, out_dir: &std::path::Path| {
         latsim(&[
             "run",

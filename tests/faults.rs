@@ -4,19 +4,8 @@
 
 mod common;
 use common::*;
-use std::path::Path;
 
 const GOOD: &[u8] = b"G0 X50 Z5\nG1 X40 F100\nG0 X60\nM30\n";
-
-fn files_in(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .flatten()
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
-}
 
 #[test]
 fn a_caret_past_column_65535_is_shown_in_a_window() {

@@ -184,3 +184,14 @@ pub fn seed004_profile() -> stock::Shape {
     ring.extend([p(-35.0, 35.914), p(-35.0, 36.0), p(-40.0, 36.0)]);
     shape(ring)
 }
+
+/// The names of the entries of `dir`, sorted.
+pub fn files_in(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}

@@ -206,9 +206,9 @@ pub(crate) fn sweep_convex(poly: &[P], d: P) -> Vec<P> {
 }
 
 /// Clips a polygon to a box (Sutherland–Hodgman): a convex one stays convex; any ring keeps
-/// the winding number of every point inside the box (the chain sweeps rely on that).
+/// the winding number of every point inside the box (the chain sweeps rely on that). Points
+/// made on a side of the box lie exactly on it.
 pub(crate) fn clip_convex(poly: &[P], rect: &Rect) -> Vec<P> {
-    let mut cur: Vec<P> = poly.to_vec();
     // (axis, bound, keep when coordinate >= bound)
     let planes = [
         (0, rect.min.z, true),
@@ -216,36 +216,10 @@ pub(crate) fn clip_convex(poly: &[P], rect: &Rect) -> Vec<P> {
         (1, rect.min.r, true),
         (1, rect.max.r, false),
     ];
+    let mut cur: Vec<P> = poly.to_vec();
     for (axis, bound, ge) in planes {
-        if cur.is_empty() {
-            break;
-        }
-        let inside = |p: &P| {
-            if ge {
-                p[axis] >= bound
-            } else {
-                p[axis] <= bound
-            }
-        };
-        if cur.iter().all(inside) {
-            continue;
-        }
-        let mut next = Vec::with_capacity(cur.len() + 2);
-        for i in 0..cur.len() {
-            let a = cur[i];
-            let b = cur[(i + 1) % cur.len()];
-            let (ia, ib) = (inside(&a), inside(&b));
-            if ia {
-                next.push(a);
-            }
-            if ia != ib {
-                let t = (bound - a[axis]) / (b[axis] - a[axis]);
-                let mut q = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
-                q[axis] = bound;
-                next.push(q);
-            }
-        }
-        cur = next;
+        let side = |p: &P| if ge { p[axis] - bound } else { bound - p[axis] };
+        cur = clip_half_plane(cur, side, Some((axis, bound)));
     }
     cur
 }
@@ -256,32 +230,38 @@ pub(crate) fn clip_convex(poly: &[P], rect: &Rect) -> Vec<P> {
 /// with the subject's sign — what [`crate::deviation`] needs to tell whether a convex sweep
 /// overlaps a region without a boolean.
 pub(crate) fn clip_to_hull(poly: &[P], hull: &[P]) -> Vec<P> {
-    let mut cur: Vec<P> = poly.to_vec();
     let n = hull.len();
+    let mut cur: Vec<P> = poly.to_vec();
     for i in 0..n {
-        if cur.is_empty() {
-            break;
-        }
         let (a, b) = (hull[i], hull[(i + 1) % n]);
-        let side = |p: &P| cross(a, b, *p);
-        if cur.iter().all(|p| side(p) >= 0.0) {
-            continue;
-        }
-        let mut next = Vec::with_capacity(cur.len() + 2);
-        for j in 0..cur.len() {
-            let (p, q) = (cur[j], cur[(j + 1) % cur.len()]);
-            let (sp, sq) = (side(&p), side(&q));
-            if sp >= 0.0 {
-                next.push(p);
-            }
-            if (sp >= 0.0) != (sq >= 0.0) {
-                let t = sp / (sp - sq);
-                next.push([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]);
-            }
-        }
-        cur = next;
+        cur = clip_half_plane(cur, |p: &P| cross(a, b, *p), None);
     }
     cur
+}
+
+/// One Sutherland–Hodgman step: the points of `poly` where `side` ≥ 0, with the crossings
+/// of its edges; `snap` puts a crossing exactly on an axis-parallel line (axis, value).
+fn clip_half_plane(poly: Vec<P>, side: impl Fn(&P) -> f64, snap: Option<(usize, f64)>) -> Vec<P> {
+    if poly.iter().all(|p| side(p) >= 0.0) {
+        return poly;
+    }
+    let mut next = Vec::with_capacity(poly.len() + 2);
+    for j in 0..poly.len() {
+        let (p, q) = (poly[j], poly[(j + 1) % poly.len()]);
+        let (sp, sq) = (side(&p), side(&q));
+        if sp >= 0.0 {
+            next.push(p);
+        }
+        if (sp >= 0.0) != (sq >= 0.0) {
+            let t = sp / (sp - sq);
+            let mut x = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
+            if let Some((axis, value)) = snap {
+                x[axis] = value;
+            }
+            next.push(x);
+        }
+    }
+    next
 }
 
 #[cfg(test)]
