@@ -301,18 +301,10 @@ fn thread_leads_below_the_chord_tolerance_are_swept_continuously() {
         ("h1.nc", "G99 M03 S500\nG00 X40 Z2\nG32 Z-2 F0.001\nM30\n"),
         ("h2.nc", "G99 M03 S500\nG00 X40 Z2\nG32 Z0 F0.0001\nM30\n"),
     ] {
-        let (dir, prog) = temp_program(name, text.as_bytes());
-        let json = dir.path().join("r.json");
-        let out = latsim(&[
-            "run",
-            prog.to_str().unwrap(),
-            "--stock",
-            "60x80",
-            "--json",
-            json.to_str().unwrap(),
-        ]);
+        let (_dir, prog) = temp_program(name, text.as_bytes());
+        let (out, report) = run_json(&prog, &["--stock", "60x80"]);
         assert_eq!(out.code, 0, "{name}: {}", out.stderr);
-        let report = std::fs::read_to_string(&json).unwrap();
+        let report = report.unwrap().to_string();
         assert!(report.contains("swept continuously"), "{name}: {report}");
     }
 }
@@ -473,23 +465,19 @@ fn a_huge_stock_file_is_refused_before_it_is_read() {
 #[test]
 fn naming_the_moves_behind_gouges_stays_fast_with_a_rubbing_holder() {
     let found = root().join("tests/found");
-    let dir = tempfile::tempdir().unwrap();
-    let json = dir.path().join("r.json");
-    let out = latsim(&[
-        "run",
-        found.join("run-slow-deviation.nc").to_str().unwrap(),
-        "--stock",
-        "40x30",
-        "--tools",
-        found.join("fuzz-run-tools.toml").to_str().unwrap(),
-        "--target",
-        found.join("shaft-target.toml").to_str().unwrap(),
-        "--json",
-        json.to_str().unwrap(),
-    ]);
+    let (out, report) = run_json(
+        &found.join("run-slow-deviation.nc"),
+        &[
+            "--stock",
+            "40x30",
+            "--tools",
+            found.join("fuzz-run-tools.toml").to_str().unwrap(),
+            "--target",
+            found.join("shaft-target.toml").to_str().unwrap(),
+        ],
+    );
     assert_eq!(out.code, 1, "{}", out.stderr);
-    let report: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let report = report.unwrap();
     assert_eq!(report["crashes"].as_array().unwrap().len(), 426);
     let gouges: Vec<(i64, f64)> = report["gouges"]
         .as_array()
@@ -512,16 +500,8 @@ fn thousands_of_alarms_are_capped_on_the_terminal_and_in_the_report() {
         text.push_str("G01 W-0.001;\nG01 U0.001;\n");
     }
     text.push_str("G40 G00 X80;\nM30;\n");
-    let (dir, prog) = temp_program("stairs.nc", text.as_bytes());
-    let json = dir.path().join("r.json");
-    let out = latsim(&[
-        "run",
-        prog.to_str().unwrap(),
-        "--stock",
-        "60x80",
-        "--json",
-        json.to_str().unwrap(),
-    ]);
+    let (_dir, prog) = temp_program("stairs.nc", text.as_bytes());
+    let (out, report) = run_json(&prog, &["--stock", "60x80"]);
     assert_eq!(out.code, 1, "{}", out.stderr);
     assert_eq!(out.stderr.matches("PS041").count(), 10, "{}", out.stderr);
     assert!(
@@ -530,8 +510,7 @@ fn thousands_of_alarms_are_capped_on_the_terminal_and_in_the_report() {
         out.stderr
     );
     assert!(out.stdout.contains("4000 alarm(s)"), "{}", out.stdout);
-    let report: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let report = report.unwrap();
     assert_eq!(report["alarms"].as_array().unwrap().len(), 1000);
     assert!(report["warnings"]
         .as_array()

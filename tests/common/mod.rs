@@ -195,3 +195,18 @@ pub fn files_in(dir: &Path) -> Vec<String> {
     v.sort();
     v
 }
+
+/// `latsim run prog <args> --json <a temporary file>`: the outcome and the JSON report,
+/// when one was written.
+pub fn run_json(prog: &Path, args: &[&str]) -> (Out, Option<serde_json::Value>) {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("r.json");
+    let mut all = vec!["run", prog.to_str().unwrap()];
+    all.extend_from_slice(args);
+    all.extend(["--json", json.to_str().unwrap()]);
+    let out = latsim(&all);
+    let report = std::fs::read_to_string(&json)
+        .ok()
+        .map(|t| serde_json::from_str(&t).expect("the report is JSON"));
+    (out, report)
+}

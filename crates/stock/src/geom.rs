@@ -268,19 +268,22 @@ fn clip_half_plane(poly: Vec<P>, side: impl Fn(&P) -> f64, snap: Option<(usize, 
 mod tests {
     use super::*;
 
+    /// An L of area 3: the unit squares at (0,0), (1,0) and (0,1).
+    const L_SHAPE: [P; 6] = [
+        [0.0, 0.0],
+        [2.0, 0.0],
+        [2.0, 1.0],
+        [1.0, 1.0],
+        [1.0, 2.0],
+        [0.0, 2.0],
+    ];
+
     /// An L-shaped ring (area 3) against a unit square hull at the notch corner, and a
     /// triangle: the clipped areas by hand.
     #[test]
     fn clip_to_hull_areas_by_hand() {
         let signed = |r: &[P]| ring::signed_area(&pts(r));
-        let l = [
-            [0.0, 0.0],
-            [2.0, 0.0],
-            [2.0, 1.0],
-            [1.0, 1.0],
-            [1.0, 2.0],
-            [0.0, 2.0],
-        ];
+        let l = L_SHAPE;
         let sq = [[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]];
         // the square over the L's notch: three quarters of it lie in the L
         assert!((signed(&clip_to_hull(&l, &sq)) - 0.75).abs() < 1e-12);
@@ -426,14 +429,7 @@ mod tests {
 
     #[test]
     fn l_shape_splits_into_convex_parts_of_the_same_area() {
-        let l = [
-            [0.0, 0.0],
-            [2.0, 0.0],
-            [2.0, 1.0],
-            [1.0, 1.0],
-            [1.0, 2.0],
-            [0.0, 2.0],
-        ];
+        let l = L_SHAPE;
         let parts = convex_parts(&l);
         assert!(parts.len() > 1);
         let total: f64 = parts
