@@ -390,7 +390,7 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
                     geom::Pt::new(at[0] - h, at[1] - h),
                     geom::Pt::new(at[0] + h, at[1] + h),
                 );
-                if !(depth > tol) || thin(&clip_to_box(std::slice::from_ref(&shape), &near)) {
+                if depth <= tol || thin(&clip_to_box(std::slice::from_ref(&shape), &near)) {
                     return None;
                 }
             }
