@@ -194,13 +194,8 @@ pub(crate) struct RunArgs {
     /// Which reports `--out` writes for each program, comma-separated (default: all four);
     /// `none` writes no file, for a batch whose verdict lines and exit status are all a CI
     /// gate reads.
-    #[arg(
-        long,
-        value_name = "KINDS",
-        value_delimiter = ',',
-        default_values_t = [ReportKind::Svg, ReportKind::Png, ReportKind::Json, ReportKind::Html]
-    )]
-    pub(crate) reports: Vec<ReportKind>,
+    #[arg(long, value_name = "KINDS", value_delimiter = ',')]
+    pub(crate) reports: Option<Vec<ReportKind>>,
     /// Write the final half section (layer PART) and the intended part (layer INTENDED)
     /// as a DXF drawing (DXF version 2000) here.
     #[arg(long, value_name = "F")]
@@ -233,19 +228,6 @@ pub(crate) enum ReportKind {
     Html,
     /// No report file.
     None,
-}
-
-impl std::fmt::Display for ReportKind {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let name = match self {
-            Self::Svg => "svg",
-            Self::Png => "png",
-            Self::Json => "json",
-            Self::Html => "html",
-            Self::None => "none",
-        };
-        f.write_str(name)
-    }
 }
 
 /// `--dxf-x`: what a DXF drawing's Y is.

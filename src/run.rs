@@ -66,7 +66,7 @@ fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
         (ReportKind::Html, "html"),
     ]
     .into_iter()
-    .filter(|(k, _)| args.reports.contains(k))
+    .filter(|(k, _)| args.reports.as_ref().is_none_or(|r| r.contains(k)))
     .map(|(_, kind)| (dir.join(format!("{stem}.{kind}")), kind))
     .chain(explicit)
     .collect()
@@ -103,12 +103,27 @@ fn program_files(paths: &[PathBuf]) -> Vec<PathBuf> {
 /// `latsim run`: one program in detail, or several in parallel with one verdict line
 /// each (for CI). The exit status is the worst of them: 2 if any could not be simulated.
 pub(crate) fn run(args: &RunArgs) -> u8 {
-    if args.reports.contains(&ReportKind::None) && args.reports.len() > 1 {
-        diag::print_plain(
-            "--reports none cannot be combined with other report kinds",
-            "give `--reports none` alone, or a list such as `--reports json,svg`",
-        );
-        return EXIT_UNUSABLE;
+    if let Some(kinds) = &args.reports {
+        let named_files = [&args.svg, &args.png, &args.json, &args.html]
+            .iter()
+            .any(|f| f.is_some());
+        let problem = if kinds.contains(&ReportKind::None) && kinds.len() > 1 {
+            Some((
+                "--reports none cannot be combined with other report kinds",
+                "give `--reports none` alone, or a list such as `--reports json,svg`",
+            ))
+        } else if named_files {
+            Some((
+                "--reports picks what --out writes; --svg, --png, --json and --html name their files themselves",
+                "give either --out DIR --reports KINDS, or the files you want with --json F, --svg F, …",
+            ))
+        } else {
+            None
+        };
+        if let Some((message, help)) = problem {
+            diag::print_plain(message, help);
+            return EXIT_UNUSABLE;
+        }
     }
     let files = program_files(&args.program.programs);
     if files.is_empty() {

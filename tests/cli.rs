@@ -285,6 +285,24 @@ fn reports_picks_what_out_writes() {
     let out = run("none,json", none.path());
     assert_eq!(out.code, 2, "{}", out.stderr);
     assert!(out.stderr.contains("--reports none"), "{}", out.stderr);
+    // it picks what --out writes: with a file named by --json it is refused, not ignored
+    let out = latsim(&[
+        "run",
+        src.path().join("O0002.nc").to_str().unwrap(),
+        "--stock",
+        "125x110",
+        "--json",
+        none.path().join("x.json").to_str().unwrap(),
+        "--reports",
+        "svg",
+    ]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(
+        out.stderr.contains("--reports picks what --out writes"),
+        "{}",
+        out.stderr
+    );
+    assert!(files_in(none.path()).is_empty());
     // the JSON of a batch is the JSON of the same program run alone with all four reports
     let alone = tempfile::tempdir().unwrap();
     let out = latsim(&[
