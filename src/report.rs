@@ -52,15 +52,28 @@ fn tool_line(tools: &stock::ToolTable, t: u32) -> String {
 
 /// A removal crash as the report shows it.
 fn stock_crash(loaded: &Loaded, c: &stock::Crash) -> Crash {
-    let span = loaded.toolpath.segments[c.segment].span;
+    crash_at(loaded, c.segment, c.at, c.area, c.depth, c.body)
+}
+
+/// A crash at `segment`'s line: where the tool met stock or an obstacle, how much and how
+/// deep, and the tool body that did (none for the cutting outline).
+fn crash_at(
+    loaded: &Loaded,
+    segment: usize,
+    at: [f64; 2],
+    area_mm2: f64,
+    depth_mm: f64,
+    body: Option<&str>,
+) -> Crash {
+    let span = loaded.toolpath.segments[segment].span;
     Crash {
         line: span.line,
         column: span.column,
-        z: c.at[0],
-        r: c.at[1],
-        area_mm2: c.area,
-        depth_mm: c.depth,
-        body: c.body.map(str::to_string),
+        z: at[0],
+        r: at[1],
+        area_mm2,
+        depth_mm,
+        body: body.map(str::to_string),
         ..Crash::default()
     }
 }
@@ -91,23 +104,13 @@ pub(crate) fn crash_list(
             body: c.body,
         })
         .collect();
-    out.extend(fixture.iter().map(|f| {
-        let span = loaded.toolpath.segments[f.segment].span;
-        Listed {
-            segment: f.segment,
-            crash: Crash {
-                line: span.line,
-                column: span.column,
-                z: f.at[0],
-                r: f.at[1],
-                area_mm2: f.area,
-                depth_mm: f.depth,
-                body: f.body.map(str::to_string),
-                obstacle: Some(f.obstacle.to_string()),
-                tool: Vec::new(),
-            },
-            body: f.body,
-        }
+    out.extend(fixture.iter().map(|f| Listed {
+        segment: f.segment,
+        crash: Crash {
+            obstacle: Some(f.obstacle.to_string()),
+            ..crash_at(loaded, f.segment, f.at, f.area, f.depth, f.body)
+        },
+        body: f.body,
     }));
     // stable: at one move, the stock's crash before the workholding's
     out.sort_by_key(|l| l.segment);
