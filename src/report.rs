@@ -156,6 +156,11 @@ pub(crate) fn add_crashes(
         let n = n.trim_end_matches('0').trim_end_matches('.');
         let _ = write!(report.stock.description, ", stick-out {n} mm");
     }
+    if fixture.is_some_and(|f| f.obstacles.iter().any(|o| o.name == "tailstock centre")) {
+        if let Some(moves) = tailstock_moves(loaded) {
+            let _ = write!(report.stock.description, "; {moves}");
+        }
+    }
     report.fixture = fixture
         .iter()
         .flat_map(|f| f.obstacles.iter())
@@ -165,6 +170,32 @@ pub(crate) fn add_crashes(
             shapes: o.shapes.iter().map(shape).collect(),
         })
         .collect();
+}
+
+/// Where the program moves the tailstock (M21/M22, M10/M11), for the stock's description:
+/// the picture draws the centre advanced, so a retract must be said ("tailstock retracted
+/// before line 4"); the first two changes are named. None when it never moves.
+fn tailstock_moves(loaded: &Loaded) -> Option<String> {
+    let segments = &loaded.toolpath.segments;
+    let changes: Vec<String> = loaded
+        .toolpath
+        .tailstock
+        .iter()
+        .filter_map(|&(k, advanced)| {
+            let line = segments.get(k)?.span.line;
+            let what = if advanced { "advanced" } else { "retracted" };
+            Some(format!("{what} before line {line}"))
+        })
+        .collect();
+    match changes.len() {
+        0 => None,
+        1 | 2 => Some(format!("tailstock {}", changes.join(", "))),
+        n => Some(format!(
+            "tailstock {}, … {} more changes",
+            changes[..2].join(", "),
+            n - 2
+        )),
+    }
 }
 
 /// Everything a finished run shows.

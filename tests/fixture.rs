@@ -343,6 +343,12 @@ fn a_retracted_tailstock_is_no_obstacle() {
     };
     let (code, v) = run(&with("M11;"), "40x100", "grip=30,tail=-1");
     assert_eq!((code, crashes(&v).len()), (0, 0), "{:?}", crashes(&v));
+    // the picture draws the centre advanced: the stock's description says it moved
+    let description = v["stock"]["description"].as_str().unwrap();
+    assert!(
+        description.ends_with("; tailstock retracted before line 4"),
+        "{description}"
+    );
     let (code, v) = run(&with("M11;\nM10;"), "40x100", "grip=30,tail=-1");
     assert_eq!(code, 1);
     let c = crashes(&v);
