@@ -11,4 +11,8 @@ mkdir -p corpus/toml_tools corpus/toml_machine corpus/toml_profile
 cp ../assets/tools/*.toml corpus/toml_tools/
 cp ../assets/machines/*.toml corpus/toml_machine/
 cp ../assets/blanks/*.toml ../assets/targets/*.toml corpus/toml_profile/
+mkdir -p corpus/chuck
+printf 'grip=30,tail=-1' >corpus/chuck/compact
+printf 'grip=45,jaw=20,face=-80,od=200,depth=100,tail=1,quill=40,quill_length=150' >corpus/chuck/compact-all
+cp ../assets/corpus/gsk980/jaws-grip45.toml corpus/chuck/
 echo "seeded: $(ls corpus | wc -l) targets"
