@@ -161,7 +161,7 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     {
         diag::print_plain(
             "--svg, --png, --json, --html and --dxf name one file: they take one program",
-            "with several programs use --out DIR: each gets <prog>.svg, .png, .json and .html there",
+            "with several programs use --out DIR: each gets <prog>.svg, .png, .json and .html there (or those --reports picks)",
         );
         return EXIT_UNUSABLE;
     }
