@@ -396,20 +396,28 @@ pub(crate) fn add_deviation(
         .take(MAX_LISTED)
         .map(|g| shape(&g.shape))
         .collect();
-    let leftovers: Vec<stock::Shape> = d
-        .leftovers
+    let leftovers = &d.leftovers[..d.leftovers.len().min(MAX_LISTED)];
+    // the detail view looks where the largest leftover is deepest: the depth the summary
+    // gives, measured to the same boundary (the intended part's, walls a profile drops
+    // included)
+    report.leftover_spot = leftovers
         .iter()
-        .take(MAX_LISTED)
-        .map(|g| g.shape.clone())
-        .collect();
-    report.leftover_spot =
-        stock::leftover_spot(&leftovers, &intended).map(|s| render::LeftoverSpot {
-            leftover: s.leftover,
-            centre: s.centre,
-            thickness: s.thickest.map(|t| t.2),
-            measure: s.thickest.map(|(from, to, _)| [from, to]),
+        .enumerate()
+        .filter(|(_, l)| l.at.iter().chain(&l.nearest).all(|v| v.is_finite()))
+        .max_by(|a, b| a.1.area.total_cmp(&b.1.area))
+        .map(|(i, l)| {
+            let measured = l.depth.is_finite();
+            render::LeftoverSpot {
+                leftover: i,
+                centre: [
+                    (l.at[0] + l.nearest[0]) / 2.0,
+                    (l.at[1] + l.nearest[1]) / 2.0,
+                ],
+                thickness: measured.then_some(l.depth),
+                measure: measured.then_some([l.at, l.nearest]),
+            }
         });
-    report.leftovers = leftovers.iter().map(shape).collect();
+    report.leftovers = leftovers.iter().map(|l| shape(&l.shape)).collect();
     report.deviation = Some(render::Deviation {
         overcut_area_mm2: d.overcut_area(),
         undercut_area_mm2: d.undercut_area(),

@@ -240,3 +240,44 @@ fn a_compensated_contour_is_the_intent() {
     let under = d["max_undercut_mm"].as_f64().unwrap();
     assert!((under - (36.0 - 35.914) / 2.0).abs() < 0.002, "{d}");
 }
+
+/// The leftover detail view gives the depth the summary gives. Haas `inch-pin-g76`: the
+/// r0.4 finishing nose leaves its fillet in the sharp inside corner at the Φ22.86 shoulder
+/// (at most r(1 − 1/√2) = 0.117 mm from the corner's two edges, sampled on the chords).
+/// The finishing shape's retract up that wall is no part of the profile, so a measure
+/// against the drawn outline (which lacks the wall) said 0.397 mm, the fillet's height.
+#[test]
+fn the_leftover_detail_gives_the_summarys_depth() {
+    let dir = tempfile::tempdir().unwrap();
+    let (json, svg) = (dir.path().join("r.json"), dir.path().join("r.svg"));
+    let out = latsim(&[
+        "run",
+        &a("corpus/haas/inch-pin-g76.nc"),
+        "--control",
+        "haas",
+        "--stock",
+        "25.4x60",
+        "--tools",
+        &a("corpus/tools/shop.toml"),
+        "--json",
+        json.to_str().unwrap(),
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let v: serde_json::Value = serde_json::from_str(&read(&json)).unwrap();
+    let max = v["deviation"]["max_undercut_mm"].as_f64().unwrap();
+    let hand = 0.4 * (1.0 - 1.0 / 2f64.sqrt());
+    assert!(max <= hand + 1e-3 && max > hand - 0.01, "{max}");
+    let svg = read(&svg);
+    let title = svg
+        .split("leftover up to ")
+        .nth(1)
+        .and_then(|t| t.split(" mm").next())
+        .expect("a leftover detail view");
+    let shown: f64 = title.parse().unwrap();
+    assert!(
+        (shown - max).abs() <= 0.0005,
+        "detail says {title} mm, summary {max} mm"
+    );
+}

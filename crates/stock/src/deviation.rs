@@ -245,6 +245,9 @@ pub struct Finding {
     pub depth: f64,
     /// The deepest point, (z, r).
     pub at: [f64; 2],
+    /// The point of the intended part's boundary nearest `at` (its depth is measured to
+    /// it); `at` itself when the comparison has no boundary.
+    pub nearest: [f64; 2],
     /// The first segment whose tool sweep overlaps the region (gouges only): the move that
     /// made it, named in the report.
     pub made_by: Option<usize>,
@@ -384,7 +387,7 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
                 |s: &[Shape]| 2.0 * area(s) < 0.1 * tol * s.iter().map(perimeter).sum::<f64>();
             if thin(std::slice::from_ref(&shape)) {
                 // the part within the depth (at least the tolerance) of the deepest point
-                let (depth, at) = deepest(&shape, &boundary);
+                let (depth, at, _) = deepest(&shape, &boundary);
                 let h = depth.min(FAR).max(tol);
                 let near = Rect::new(
                     geom::Pt::new(at[0] - h, at[1] - h),
@@ -394,12 +397,13 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
                     return None;
                 }
             }
-            let (depth, at) = deepest(&shape, &boundary);
+            let (depth, at, nearest) = deepest(&shape, &boundary);
             (depth > tol && a > 0.0).then_some(Finding {
                 shape,
                 area: a,
                 depth,
                 at,
+                nearest,
                 made_by: None,
             })
         })
@@ -424,10 +428,13 @@ fn perimeter(shape: &Shape) -> f64 {
 
 /// The point of `shape` farthest from the boundary of `part`, sampled at the vertices, the
 /// edge midpoints and the centroid of each ring (enough for the thin regions gouges and
-/// leftovers are; a thick region is reported at least as deep as its samples). Distances
-/// to the boundary come from parry2d-f64's edge tree (infinite without a boundary).
-fn deepest(shape: &Shape, boundary: &EdgeIndex) -> (f64, [f64; 2]) {
-    let mut best = (0.0, shape.outer.first().copied().unwrap_or([0.0, 0.0]));
+/// leftovers are; a thick region is reported at least as deep as its samples): its
+/// distance, the point, and the boundary point nearest it. Distances to the boundary come
+/// from parry2d-f64's edge tree (infinite without a boundary, the nearest point then the
+/// point itself).
+fn deepest(shape: &Shape, boundary: &EdgeIndex) -> (f64, P, P) {
+    let first = shape.outer.first().copied().unwrap_or([0.0, 0.0]);
+    let mut best = (0.0, first, first);
     for ring in std::iter::once(&shape.outer).chain(&shape.holes) {
         let n = ring.len();
         let mut samples: Vec<P> = Vec::with_capacity(2 * n + 1);
@@ -445,9 +452,11 @@ fn deepest(shape: &Shape, boundary: &EdgeIndex) -> (f64, [f64; 2]) {
             }
         }
         for p in samples {
-            let d = boundary.nearest(p.into()).map_or(f64::INFINITY, |(d, _)| d);
+            let (d, q) = boundary
+                .nearest(p.into())
+                .map_or((f64::INFINITY, p), |(d, q)| (d, q.to_array()));
             if d > best.0 {
-                best = (d, p);
+                best = (d, p, q);
             }
         }
     }

@@ -32,9 +32,8 @@ pub use deviation::{deviation, Deviation, Finding, Intent};
 pub use error::StockError;
 pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH};
 pub use measure::{
-    area, deepest_radius, groove_deviation, hausdorff, least_gap, leftover_spot, revolved_volume,
-    surface_radius_at, symmetric_difference_area, threads, LeftoverSpot, Reference, Surface,
-    Thread, ThreadForm,
+    area, deepest_radius, groove_deviation, hausdorff, least_gap, revolved_volume,
+    surface_radius_at, symmetric_difference_area, threads, Reference, Surface, Thread, ThreadForm,
 };
 pub use outline::Outline;
 pub use overlay::BoolOp;

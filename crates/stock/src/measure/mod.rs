@@ -1,13 +1,12 @@
 //! Measures on shape sets: area, volume of revolution, symmetric difference, Hausdorff;
 //! and the measures the reports show of the findings: how far a groove strays
-//! ([`groove`]) and where the largest leftover is thickest ([`leftover`]).
+//! ([`groove`]) and how deep threads were cut ([`thread`]). (Where a leftover is thickest
+//! is the deviation's own deepest point, `Finding::at` and `nearest`.)
 
 mod groove;
-mod leftover;
 mod thread;
 
 pub use groove::groove_deviation;
-pub use leftover::{leftover_spot, LeftoverSpot};
 pub use thread::{
     deepest_radius, least_gap, surface_radius_at, threads, Reference, Surface, Thread, ThreadForm,
 };
