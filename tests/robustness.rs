@@ -114,6 +114,9 @@ fn hostile_files_through_the_cli() {
         b"O1\nM98 P1\n",
         &[0xef, 0xbb, 0xbf, b'G', b'0', b' ', b'X', b'1', b'0', b'\n'],
         b"G0 X-100000000 Z100000000\n",
+        // found/hostile-timeout shrunk: a G73 of many passes over small arcs (R9999 over 40
+        // R0.5 arcs took > 60 s; here 200 passes over 10)
+        b"G99 M3 S800 T0101\nG0 X64 Z2\nG73 U5 W0 R200\nG73 P10 Q20 U0 W0 F0.2\nN10 G0 X20 Z0\nG2 W-1 R0.5\nG3 W-1 R0.5\nG2 W-1 R0.5\nG3 W-1 R0.5\nG2 W-1 R0.5\nG3 W-1 R0.5\nG2 W-1 R0.5\nG3 W-1 R0.5\nG2 W-1 R0.5\nG3 W-1 R0.5\nN20 G1 X64\nM30\n",
     ];
     for (k, bytes) in cases.iter().enumerate() {
         let (dir, prog) = common::temp_program(&format!("h{k}.nc"), bytes);
