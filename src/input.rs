@@ -197,10 +197,12 @@ pub(crate) fn load_program(
         );
         return Err(());
     }
-    let library = if args.lib.is_empty() {
+    // Haas `M98 (path)` looks next to the main program even without --lib
+    let library = if args.lib.is_empty() && machine.control != expander::Control::Haas {
         None
     } else {
-        match Folders::scan(&args.lib, source.text.len(), read) {
+        let home = path.parent().unwrap_or(Path::new("."));
+        match Folders::scan(&args.lib, home, source.text.len(), read) {
             Ok(f) => Some(Arc::new(f)),
             Err(e) => {
                 diag::print_plain(&e, "give --lib the folder that holds the subprogram files");

@@ -6,6 +6,9 @@
 //! .iso .txt .gcode`, any case); failing that, as the file whose first program number is
 //! 1234 (every other file is read once for that, at most [`MAX_SCAN_BYTES`] in all).
 //!
+//! A Haas `M98 (path)` names a file relative to the main program's folder
+//! ([`Folders::home`]); a path that leaves it (absolute, a drive, `..`) is refused.
+//!
 //! Each file read gets a byte range of its own after the main file's (its spans are
 //! shifted into it, `gcode::Program::shift_spans`), so a diagnostic or a segment made by a
 //! subprogram names its own file and line: [`Folders::place`].
@@ -29,6 +32,8 @@ const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
 pub(crate) struct Folders {
     /// Program files, in folder order then name order.
     files: Vec<PathBuf>,
+    /// The main program's folder, where `M98 (path)` looks.
+    home: PathBuf,
     /// How the files are read: as the main program (macro B, decimal comma).
     read: gcode::ReadOptions,
     state: Mutex<State>,
@@ -45,9 +50,11 @@ struct State {
 }
 
 impl Folders {
-    /// List the folders. `main_len`: the main file's length (library ranges start after it).
+    /// List the folders. `main_len`: the main file's length (library ranges start after it);
+    /// `home`: the main program's folder.
     pub(crate) fn scan(
         dirs: &[PathBuf],
+        home: &Path,
         main_len: usize,
         read: gcode::ReadOptions,
     ) -> Result<Self, String> {
@@ -73,6 +80,7 @@ impl Folders {
         }
         Ok(Self {
             files,
+            home: home.to_path_buf(),
             read,
             state: Mutex::new(State {
                 next_base: main_len + 1,
@@ -182,6 +190,50 @@ impl expander::Library for Folders {
             None => Ok(None),
         }
     }
+
+    fn has_folders(&self) -> bool {
+        !self.files.is_empty()
+    }
+
+    fn file(&self, path: &str) -> Result<Arc<Program>, String> {
+        let full = self.home.join(inside(path)?);
+        if !full.is_file() {
+            return Err(format!(
+                "no file {} (the path is read from the main program's folder)",
+                full.display()
+            ));
+        }
+        let mut state = self
+            .state
+            .lock()
+            .map_err(|_| "library lock poisoned".to_string())?;
+        self.load(&mut state, &full)
+    }
+}
+
+/// An `M98 (path)` as a path inside the main program's folder: `/` or `\` separate folders;
+/// an empty path, an absolute one, a drive (`C:`) or a `..` is refused with the reason.
+fn inside(path: &str) -> Result<PathBuf, String> {
+    if path.is_empty() {
+        return Err("the comment after M98 names no file".into());
+    }
+    if path.starts_with(['/', '\\']) || path.contains(':') {
+        return Err("an absolute path: give the path from the main program's folder".into());
+    }
+    let mut rel = PathBuf::new();
+    for part in path.split(['/', '\\']) {
+        match part.trim() {
+            "" | "." => {}
+            ".." => {
+                return Err("the path leaves the main program's folder ('..')".into());
+            }
+            p => rel.push(p),
+        }
+    }
+    if rel.as_os_str().is_empty() {
+        return Err("the comment after M98 names no file".into());
+    }
+    Ok(rel)
 }
 
 fn is_nc(p: &Path) -> bool {
@@ -237,6 +289,30 @@ mod tests {
             ("Oabc.nc", None),
         ] {
             assert_eq!(number_in_name(Path::new(name)), n, "{name}");
+        }
+    }
+
+    #[test]
+    fn m98_paths_stay_in_the_main_folder() {
+        assert_eq!(inside("sub.nc"), Ok(PathBuf::from("sub.nc")));
+        assert_eq!(
+            inside("subs/O00101.nc"),
+            Ok(PathBuf::from("subs/O00101.nc"))
+        );
+        assert_eq!(
+            inside("subs\\./O00101.nc"),
+            Ok(PathBuf::from("subs/O00101.nc"))
+        );
+        for bad in [
+            "",
+            "/etc/passwd",
+            "\\x.nc",
+            "C:/x.nc",
+            "../x.nc",
+            "a/../../x.nc",
+            "./",
+        ] {
+            assert!(inside(bad).is_err(), "{bad}");
         }
     }
 }

@@ -1,6 +1,6 @@
 //! Subprograms that live outside the main program's file (`--lib DIR`, spec/dialects.md §3.6,
 //! issue 11). The interpreter asks a [`Library`] for an O number it does not find in the
-//! file; the CLI implements it over folders. The programs it hands back keep the spans of
+//! file, and for the file a Haas `M98 (path)` names; the CLI implements it over folders. The programs it hands back keep the spans of
 //! their own file (the CLI places each file's byte offsets in a range of its own, so a
 //! diagnostic or a segment in a subprogram points at that file's line).
 
@@ -11,6 +11,19 @@ pub trait Library: Send + Sync {
     /// The parsed file that holds `O<number>`; `Ok(None)` when no library has it, `Err` with
     /// the reason when the file that should hold it cannot be read or parsed.
     fn find(&self, number: u32) -> Result<Option<Arc<gcode::Program>>, String>;
+
+    /// Whether [`Library::find`] searches any folder (`--lib` given); `false` for a library
+    /// that only resolves paths.
+    fn has_folders(&self) -> bool {
+        true
+    }
+
+    /// The parsed file a Haas `M98 (path)` names, relative to the main program's folder;
+    /// `Err` with the reason when the path leaves that folder or the file cannot be read
+    /// or parsed.
+    fn file(&self, path: &str) -> Result<Arc<gcode::Program>, String> {
+        Err(format!("no folder to look for {path} in"))
+    }
 }
 
 /// A shared [`Library`] in the interpreter's options (compared by identity).

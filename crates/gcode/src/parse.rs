@@ -198,6 +198,8 @@ struct Reader<'a> {
     unexpected_control: (usize, Span),
     /// The macro statement of the current block.
     stmt: Option<Stmt>,
+    /// The first comment after an `M98` of the current block (Haas `M98 (path)`).
+    call_text: Option<(String, Span)>,
 }
 
 impl<'a> Reader<'a> {
@@ -213,6 +215,7 @@ impl<'a> Reader<'a> {
                     number: None,
                     span: Span::default(),
                     blocks: vec![],
+                    call_texts: vec![],
                 }],
                 notes: vec![],
             },
@@ -226,6 +229,7 @@ impl<'a> Reader<'a> {
             flow_control: (0, Span::default()),
             unexpected_control: (0, Span::default()),
             stmt: None,
+            call_text: None,
         }
     }
 
@@ -767,11 +771,30 @@ impl<'a> Reader<'a> {
             self.note(open, "'%' inside a comment: read on as text (a FANUC control stops reading the file at a %)");
         }
         let stop = self.offset() + body.len();
-        while self.offset() < stop && self.next().is_some() {}
+        let mut last = open;
+        while self.offset() < stop {
+            let Some((span, _)) = self.next() else { break };
+            last = span;
+        }
+        if self.call_text.is_none() && self.m98_read() {
+            let text = body.strip_suffix([')', '）']).unwrap_or(body).trim();
+            self.call_text = Some((text.to_string(), open.to(last)));
+        }
         if end.is_none() {
             self.note(open, "comment not closed on this line: read as a comment to the end of the line; close it with ')'");
         }
         Ok(())
+    }
+
+    /// Whether the current block holds `M98` so far (as a word, or being read).
+    fn m98_read(&self) -> bool {
+        let m98 = |letter: char, value: f64| letter == 'M' && value == 98.0;
+        self.words
+            .iter()
+            .any(|w| w.expr.is_none() && m98(w.letter, w.value))
+            || self.pending.as_ref().is_some_and(|p| {
+                parse_number(&p.text).is_some_and(|(v, point)| !point && m98(p.letter, v))
+            })
     }
 
     fn finish_word(&mut self) -> Result<(), ParseError> {
@@ -870,6 +893,7 @@ impl<'a> Reader<'a> {
                         number: Some(number),
                         span,
                         blocks: vec![],
+                        call_texts: vec![],
                     });
                 }
             }
@@ -894,6 +918,7 @@ impl<'a> Reader<'a> {
             let block_delete = std::mem::replace(&mut self.block_delete, false);
             let delete_level = std::mem::replace(&mut self.delete_level, 0);
             let stmt = self.stmt.take();
+            let call_text = self.call_text.take();
             if !words.is_empty() || seq.is_some() || stmt.is_some() {
                 let span = start.to(self.block_end);
                 let block = Block {
@@ -905,12 +930,19 @@ impl<'a> Reader<'a> {
                     span,
                     stmt: stmt.map(Box::new),
                 };
-                self.program
+                let sub = self
+                    .program
                     .programs
                     .last_mut()
-                    .expect("always one program")
-                    .blocks
-                    .push(block);
+                    .expect("always one program");
+                if let Some((text, span)) = call_text {
+                    sub.call_texts.push(crate::CallText {
+                        block: sub.blocks.len(),
+                        text,
+                        span,
+                    });
+                }
+                sub.blocks.push(block);
             }
         }
         self.words.clear();
@@ -918,6 +950,7 @@ impl<'a> Reader<'a> {
         self.block_delete = false;
         self.delete_level = 0;
         self.stmt = None;
+        self.call_text = None;
         Ok(())
     }
 }

@@ -75,6 +75,31 @@ pub struct Subprogram {
     pub span: Span,
     /// The blocks.
     pub blocks: Vec<Block>,
+    /// The first comment after `M98` in a block, for those blocks only, by block index
+    /// (ascending): Haas `M98 (path/O00001.nc)` calls the file the comment names. A side
+    /// table, so the blocks of a million-line program do not each carry comment text.
+    pub call_texts: Vec<CallText>,
+}
+
+impl Subprogram {
+    /// The comment after `M98` in block `block`, if it has one.
+    pub fn call_text(&self, block: usize) -> Option<&CallText> {
+        self.call_texts
+            .binary_search_by_key(&block, |c| c.block)
+            .ok()
+            .map(|k| &self.call_texts[k])
+    }
+}
+
+/// A comment written after `M98` (see [`Subprogram::call_texts`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CallText {
+    /// Index of the block in its O program.
+    pub block: usize,
+    /// The text between the parentheses, trimmed.
+    pub text: String,
+    /// Where the comment stands, parentheses included.
+    pub span: Span,
 }
 
 /// A note the reader made while accepting something unusual.
@@ -111,6 +136,9 @@ impl Program {
         let shift = |s: &mut Span| s.offset += by;
         for p in &mut self.programs {
             shift(&mut p.span);
+            for c in &mut p.call_texts {
+                shift(&mut c.span);
+            }
             for b in &mut p.blocks {
                 shift(&mut b.span);
                 if let Some(s) = &mut b.seq_span {

@@ -7,6 +7,8 @@
 //!   `L` overrides the count); Haas P is the program number (5 digits), `L` the repeats.
 //! - A called program is looked for in the file, then in the `--lib` folders
 //!   ([`crate::Library`]); nowhere is alarm PS078 at the call.
+//! - `M98 (path/O00001.nc)` (Haas): call the first program of the file the comment names,
+//!   relative to the main program's folder ([`crate::Library::file`]); `L` repeats.
 //! - `M97 P n [L k]` (Haas): call the blocks from `N n` of the same program until M99.
 //! - `M99 P n`: FANUC returns to `N n` of the caller; Haas branches to `N n` of the program
 //!   it is in and does not return. M99 in a Haas main program loops to its start: run once,
@@ -17,7 +19,7 @@
 use super::{alarm, Interp};
 use crate::words::{whole_in, Words};
 use crate::{Control, Diagnostic, Span};
-use gcode::{Block, Program, Word};
+use gcode::{Block, CallText, Program, Word};
 use std::sync::Arc;
 
 /// FANUC's subprogram nesting limit.
@@ -29,6 +31,11 @@ const MAX_NESTING_HAAS: u32 = 9;
 pub(super) enum Callee {
     /// An O program by number (M98, G65).
     Program(u32),
+    /// An O program by number, called by the `G66` modal call after a move: its blocks do
+    /// not trigger the modal call again.
+    Modal(u32),
+    /// The first program of a file, by its path (Haas `M98 (path)`).
+    File(String),
     /// The blocks from this N number of the calling program (Haas M97).
     Local(u32),
 }
@@ -167,7 +174,7 @@ impl Interp<'_> {
                         Target::Here(sub, from) => (program, *sub, *from),
                         Target::Library(p, sub) => (&**p, *sub, 0),
                     };
-                    let level = self.enter_call(locals);
+                    let level = self.enter_call(locals, matches!(callee, Callee::Modal(_)));
                     for _ in 0..times {
                         match self.run(called, sub, from, depth + 1)? {
                             Exit::End => return Ok(Exit::End),
@@ -220,7 +227,8 @@ impl Interp<'_> {
                 let from = seq_index(blocks, seq, span, "M97 calls")?;
                 return Ok(Target::Here(index, from));
             }
-            Callee::Program(n) => n,
+            Callee::File(ref path) => return self.file(path, span),
+            Callee::Program(n) | Callee::Modal(n) => n,
         };
         if let Some(sub) = program
             .programs
@@ -230,7 +238,7 @@ impl Interp<'_> {
             return Ok(Target::Here(sub, 0));
         }
         let help = "add the subprogram after M30 in the same file, or give the folder that holds it with --lib DIR";
-        let Some(lib) = &self.opts.library else {
+        let Some(lib) = self.opts.library.as_ref().filter(|l| l.0.has_folders()) else {
             return Err(alarm(
                 span,
                 "PS078",
@@ -263,11 +271,32 @@ impl Interp<'_> {
         }
     }
 
+    /// The file a Haas `M98 (path)` calls: its first program, from its first block.
+    fn file(&self, path: &str, span: Span) -> Result<Target, Diagnostic> {
+        let help = "give the path of a program file in the main program's folder, e.g. M98 (subs/O00101.nc)";
+        let program = match &self.opts.library {
+            Some(lib) => lib.0.file(path),
+            None => Err("no folder of the main program to look in".to_string()),
+        }
+        .map_err(|why| alarm(span, "PS078", format!("M98 ({path}): {why}"), help))?;
+        if program.programs.is_empty() {
+            return Err(alarm(
+                span,
+                "PS078",
+                format!("M98 ({path}): the file holds no program"),
+                help,
+            ));
+        }
+        Ok(Target::Library(program, 0))
+    }
+
     /// The M codes that act after the motion: M05, M09, the program end, M97, M98 and M99.
+    /// `path`: the comment after the block's M98 (Haas `M98 (path)`).
     pub(super) fn m_codes_after(
         &mut self,
         after: &[(u32, &Word)],
         used: &mut Words,
+        path: Option<&CallText>,
         mut flow: Flow,
     ) -> Result<Flow, Diagnostic> {
         for &(m, w) in after {
@@ -276,7 +305,7 @@ impl Interp<'_> {
                 9 => {}
                 2 | 30 => flow = Flow::End,
                 97 => flow = m97(w, used)?,
-                98 => flow = m98(w, used, self.machine.control == Control::Haas)?,
+                98 => flow = m98(w, used, self.machine.control == Control::Haas, path)?,
                 99 => flow = m99(w, used, self.machine.control == Control::Haas)?,
                 _ => {}
             }
@@ -285,8 +314,22 @@ impl Interp<'_> {
     }
 }
 
-/// M98 P[count]number [L count] (FANUC/GSK), M98 P number [L count] (Haas): the call.
-fn m98(w: &Word, used: &mut Words, haas: bool) -> Result<Flow, Diagnostic> {
+/// M98 P[count]number [L count] (FANUC/GSK), M98 P number [L count] or M98 (path) [L count]
+/// (Haas): the call.
+fn m98(
+    w: &Word,
+    used: &mut Words,
+    haas: bool,
+    path: Option<&CallText>,
+) -> Result<Flow, Diagnostic> {
+    if let Some(path) = path.filter(|_| haas && !used.has('P')) {
+        return Ok(Flow::Call {
+            callee: Callee::File(path.text.clone()),
+            times: repeats(used)?.unwrap_or(1),
+            span: w.span,
+            locals: None,
+        });
+    }
     let p = used.take('P').ok_or_else(|| {
         alarm(
             w.span,

@@ -4,10 +4,11 @@
 //! evaluated into a working copy of its program just before it runs (a vacant value drops
 //! the address, §5.2), together with the finishing shape a G70–G73 block reads (and a Haas
 //! `IF [cond] THEN <NC block>` runs its words when the condition holds); `G65` becomes a
-//! call with a new local level; the system variables read the interpreter's state. At the end the run's variables and the lines run more than once go into the
-//! toolpath.
+//! call with a new local level; `G66` sets a modal call made the same way after every later
+//! block that moves an axis, until `G67`; the system variables read the interpreter's state.
+//! At the end the run's variables and the lines run more than once go into the toolpath.
 
-use super::flow::Flow;
+use super::flow::{Callee, Flow};
 use super::{alarm, Interp, MotionMode};
 use crate::{Diagnostic, Pt, Span};
 use gcode::{Block, Program, Subprogram, Word};
@@ -35,6 +36,26 @@ pub(crate) struct Macros {
     /// from 0 in their own file, so they need their own slots).
     bases: Vec<(usize, usize)>,
     limits: macro_b::Limits,
+    /// The modal call in force (`G66`), until `G67`.
+    modal: Option<ModalCall>,
+    /// Calls made by the modal call that are running: their blocks (and the blocks of what
+    /// they call) do not trigger it again, as on FANUC.
+    in_modal: u32,
+}
+
+/// A `G66 P… [L…] args` in force: its arguments were evaluated at the `G66` block.
+struct ModalCall {
+    number: u32,
+    times: u32,
+    locals: Box<Locals>,
+    /// The `G66` block.
+    span: Span,
+}
+
+/// What a call entered, for [`Interp::leave_call`].
+pub(super) struct Level {
+    locals: bool,
+    modal: bool,
 }
 
 /// The interpreter as the system variables see it (§5.7); `span` is the block being run.
@@ -135,6 +156,8 @@ impl Macros {
             last_loop: None,
             bases: vec![],
             limits: options.limits,
+            modal: None,
+            in_modal: 0,
         };
         m.base(program)?;
         Ok(m)
@@ -329,14 +352,17 @@ impl Macros {
         Ok(())
     }
 
-    /// The locals a `G65` block passes, its program number and repeat count.
+    /// The locals a `G65` or `G66` block (`code` 650 or 660) passes, its program number and
+    /// repeat count.
     fn g65(
         &mut self,
         b: &Block,
+        code: i32,
         increment: f64,
         sys: &mut dyn System,
         notes: &mut Vec<(Span, String)>,
     ) -> Result<(u32, u32, Locals), Diagnostic> {
+        let name = if code == 660 { "G66" } else { "G65" };
         let mut args = Vec::new();
         let (mut number, mut times) = (None, 1);
         for w in &b.words {
@@ -356,23 +382,23 @@ impl Macros {
                 None => Err(alarm(
                     w.span,
                     "LS-VACANT",
-                    format!("G65 {what}: the variable is vacant"),
+                    format!("{name} {what}: the variable is vacant"),
                     "give the variable a value before this block",
                 )),
                 _ => Err(alarm(
                     w.span,
                     "PS078",
-                    format!("G65 {what} {} is not a whole number 0 … {max}", value),
-                    "write e.g. G65 P9010 L1 A1. B2.",
+                    format!("{name} {what} {} is not a whole number 0 … {max}", value),
+                    format!("write e.g. {name} P9010 L1 A1. B2."),
                 )),
             };
             match w.letter {
-                'G' if w.code_tenths() == Some(650) && w.expr.is_none() => {}
+                'G' if w.code_tenths() == Some(code) && w.expr.is_none() => {}
                 'G' => {
                     return Err(alarm(
                         w.span,
                         "PS0115",
-                        "a G65 block holds only P, L and the arguments",
+                        format!("a {name} block holds only P, L and the arguments"),
                         "put other G codes on a block of their own",
                     ))
                 }
@@ -389,8 +415,10 @@ impl Macros {
             alarm(
                 b.span,
                 "PS078",
-                "G65 without P",
-                "write G65 P<program number> and the arguments, e.g. G65 P9010 A1. B2.",
+                format!("{name} without P"),
+                format!(
+                    "write {name} P<program number> and the arguments, e.g. {name} P9010 A1. B2."
+                ),
             )
         })?;
         let locals = macro_b::g65_locals(&args).map_err(diagnostic)?;
@@ -398,11 +426,11 @@ impl Macros {
     }
 }
 
-/// Whether the block calls a macro: a plain `G65` word.
-fn is_g65(b: &Block) -> bool {
+/// Whether the block has a plain `G<code/10>` word (`code` in tenths: 650 is G65).
+fn has_code(b: &Block, code: i32) -> bool {
     b.words
         .iter()
-        .any(|w| w.letter == 'G' && w.expr.is_none() && w.code_tenths() == Some(650))
+        .any(|w| w.letter == 'G' && w.expr.is_none() && w.code_tenths() == Some(code))
 }
 
 /// The G70–G73 cycles that read a finishing shape `P`…`Q` of the program.
@@ -515,10 +543,10 @@ impl Interp<'_> {
                 return Ok(flow);
             }
         }
-        if is_g65(b) {
+        if let Some(code) = [650, 660].into_iter().find(|&c| has_code(b, c)) {
             let mut notes = vec![];
             let (number, times, locals) =
-                m.g65(b, increment, &mut Sys { it: self, span }, &mut notes)?;
+                m.g65(b, code, increment, &mut Sys { it: self, span }, &mut notes)?;
             for (at, note) in notes {
                 self.warn(
                     at,
@@ -527,39 +555,117 @@ impl Interp<'_> {
                     "write the argument with a decimal point to pass it as written",
                 );
             }
-            return Ok(Flow::Call {
-                callee: super::flow::Callee::Program(number),
-                times,
-                span,
-                locals: Some(Box::new(locals)),
-            });
-        }
-        let Some(mut work) = m.work[index].take() else {
-            return self.block(sub, i);
-        };
-        let flow = m
-            .evaluate_for(sub, &mut work, i, increment, &mut Sys { it: self, span })
-            .map_err(diagnostic)
-            .and_then(|()| self.block(&work, i));
-        m.work[index] = Some(work);
-        flow
-    }
-
-    /// Enter a `G65` level (its locals) for a call; returns whether one was entered.
-    pub(super) fn enter_call(&mut self, locals: Option<Box<Locals>>) -> bool {
-        match (locals, self.macros.as_mut()) {
-            (Some(locals), Some(m)) => {
-                m.state.vars.push_level(*locals);
-                true
+            let locals = Box::new(locals);
+            if code == 650 {
+                return Ok(Flow::Call {
+                    callee: Callee::Program(number),
+                    times,
+                    span,
+                    locals: Some(locals),
+                });
             }
-            _ => false,
+            if let Some(earlier) = &m.modal {
+                return Err(alarm(
+                    span,
+                    "LS-NOT-SIMULATED",
+                    format!(
+                        "G66 while the modal call of line {} is in force: nested modal calls are not simulated",
+                        earlier.span.line
+                    ),
+                    "cancel the first modal call with G67 before this G66",
+                ));
+            }
+            m.modal = Some(ModalCall {
+                number,
+                times,
+                locals,
+                span,
+            });
+            return Ok(Flow::Next);
         }
+        if has_code(b, 670) {
+            if let Some(w) = b
+                .words
+                .iter()
+                .find(|w| w.letter != 'G' || w.code_tenths() != Some(670))
+            {
+                return Err(alarm(
+                    w.span,
+                    "PS0115",
+                    "a G67 block cancels the modal call and holds nothing else",
+                    "put G67 on a block of its own",
+                ));
+            }
+            m.modal = None;
+            return Ok(Flow::Next);
+        }
+        let flow = match m.work[index].take() {
+            None => self.block(sub, i),
+            Some(mut work) => {
+                let flow = m
+                    .evaluate_for(sub, &mut work, i, increment, &mut Sys { it: self, span })
+                    .map_err(diagnostic)
+                    .and_then(|()| self.block(&work, i));
+                m.work[index] = Some(work);
+                flow
+            }
+        }?;
+        self.modal_call(m, flow, span)
     }
 
-    /// Leave the `G65` level entered for a call.
-    pub(super) fn leave_call(&mut self, entered: bool) {
-        if let (true, Some(m)) = (entered, self.macros.as_mut()) {
-            m.state.vars.pop_level();
+    /// After a block that moved an axis while `G66` is in force (and outside the macro the
+    /// modal call runs): the call, with the arguments of the `G66` block.
+    fn modal_call(&self, m: &Macros, flow: Flow, span: Span) -> Result<Flow, Diagnostic> {
+        let Some(call) = m.modal.as_ref().filter(|_| self.moved && m.in_modal == 0) else {
+            return Ok(flow);
+        };
+        if !matches!(flow, Flow::Next) {
+            return Err(alarm(
+                span,
+                "LS-NOT-SIMULATED",
+                "a block that moves under G66 and also calls, returns or ends: the order of the move, the modal call and the M code is not simulated",
+                "put the M98/M99/M30 on a block of its own",
+            ));
+        }
+        Ok(Flow::Call {
+            callee: Callee::Modal(call.number),
+            times: call.times,
+            span,
+            locals: Some(call.locals.clone()),
+        })
+    }
+
+    /// Enter a call: a `G65`/`G66` level (its locals) and, for the modal call, the blocks
+    /// that do not trigger it.
+    pub(super) fn enter_call(&mut self, locals: Option<Box<Locals>>, modal: bool) -> Level {
+        let Some(m) = self.macros.as_mut() else {
+            return Level {
+                locals: false,
+                modal: false,
+            };
+        };
+        if modal {
+            m.in_modal += 1;
+        }
+        let level = Level {
+            locals: locals.is_some(),
+            modal,
+        };
+        if let Some(locals) = locals {
+            m.state.vars.push_level(*locals);
+        }
+        level
+    }
+
+    /// Leave what [`Interp::enter_call`] entered.
+    pub(super) fn leave_call(&mut self, level: Level) {
+        if let Some(m) = self.macros.as_mut() {
+            if level.locals {
+                m.state.vars.pop_level();
+            }
+            if level.modal {
+                m.in_modal -= 1;
+            }
         }
     }
 

@@ -200,6 +200,8 @@ pub(crate) struct Interp<'m> {
     pub(crate) drill_return: crate::DrillReturn,
     /// Custom macro B's variables and program structure, when it is on.
     macros: Option<Box<macros::Macros>>,
+    /// The last block was a motion block with an axis word: what triggers a `G66` modal call.
+    moved: bool,
 }
 
 /// A controller alarm.
@@ -256,6 +258,7 @@ impl<'m> Interp<'m> {
             thread_phase: 0.0,
             drill_return: machine.drill_return,
             macros: None,
+            moved: false,
         }
     }
 
@@ -335,6 +338,7 @@ impl<'m> Interp<'m> {
     /// Execute one block: its modal words, its one action, then its flow words.
     fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
         let b = &sub.blocks[index];
+        self.moved = false;
         if self.param_mode {
             // G10 L50 … G11: parameter data, not a program.
             self.param_mode = !self.has_g(b, |t| t == G11);
@@ -405,6 +409,7 @@ impl<'m> Interp<'m> {
                 } else {
                     self.start_compensation(b)?;
                     self.motion_block(b, &mut used)?;
+                    self.moved = ['X', 'Z', 'U', 'W'].iter().any(|&l| b.has(l));
                     if self.section.is_some() && (self.comp.is_none() || self.offset == 0) {
                         // This block was the cancel block.
                         self.flush_compensation();
@@ -415,7 +420,7 @@ impl<'m> Interp<'m> {
         if let Some(offset) = deferred_offset {
             self.offset = offset;
         }
-        let flow = self.m_codes_after(&after, &mut used, flow)?;
+        let flow = self.m_codes_after(&after, &mut used, sub.call_text(index), flow)?;
         used.check_all_used()?;
         Ok(flow)
     }
