@@ -22,6 +22,7 @@ mod overlay;
 mod pose;
 mod profile;
 mod removal;
+mod ring_air;
 mod section;
 mod snapshot;
 mod sweep;

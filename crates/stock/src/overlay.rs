@@ -219,12 +219,13 @@ pub(crate) fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
 
 /// Closed segments [a, b] and [c, d] share a point.
 pub(crate) fn segments_meet(a: IPt, b: IPt, c: IPt, d: IPt) -> bool {
-    let (o1, o2, o3, o4) = (
-        orient(a, b, c),
-        orient(a, b, d),
-        orient(c, d, a),
-        orient(c, d, b),
-    );
+    let (o1, o2) = (orient(a, b, c), orient(a, b, d));
+    if o1 * o2 > 0 {
+        // [c, d] lies strictly on one side of the line through a and b (the usual case for
+        // a box overlap: half the orientation tests)
+        return false;
+    }
+    let (o3, o4) = (orient(c, d, a), orient(c, d, b));
     if o1 * o2 < 0 && o3 * o4 < 0 {
         return true;
     }

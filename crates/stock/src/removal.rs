@@ -22,6 +22,7 @@ use crate::geom::{pts, P};
 use crate::overlay::{
     convex_contains, orient, point_in_ring, segments_meet, winds, Engine, Grid, IBox, IPt, IShapes,
 };
+use crate::ring_air;
 use crate::snapshot::Snapshots;
 use crate::sweep::{Item, SweepBuilder, Sweeps};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
@@ -70,6 +71,11 @@ pub struct SimOptions {
     /// vertices: one ring, the exact Minkowski sum of the outline with the polyline
     /// (default true). Exact either way; false sweeps each (merged) move on its own.
     pub feed_paths: bool,
+    /// A ring (a path or chorded arc swept as one, see `feed_paths`) is told apart from a
+    /// tile's or subtree's stock box by its edges, a few box tests for most of them
+    /// (default true). Exact either way; false tries every tile its box overlaps with the
+    /// ring's full edge test (the behaviour before round 6 of PERFORMANCE.md).
+    pub ring_air: bool,
     /// Move counts after which the stock is wanted (see [`Simulation::snapshots`]), taken
     /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
     /// the blank and [`Simulation::final_shapes`].
@@ -82,6 +88,7 @@ impl Default for SimOptions {
             chord_tol: 0.001,
             merge_tol: 0.0005,
             feed_paths: true,
+            ring_air: true,
             snapshot_after: Vec::new(),
         }
     }
@@ -178,6 +185,9 @@ struct Trimmed {
     rings: Vec<std::ops::Range<usize>>,
     /// Per ring: whether it came from a convex polygon (see `Sweeps::polys_flagged_of`).
     convex: Vec<bool>,
+    /// Rings (not convex) are trimmed with the tests of [`trim_to_box`] for rings
+    /// ([`SimOptions::ring_air`]).
+    ring_air: bool,
 }
 
 impl Trimmed {
@@ -187,10 +197,26 @@ impl Trimmed {
         self.convex.clear();
     }
 
-    /// Appends `poly` trimmed to `b` (nothing when its overlap with `b` has no area).
-    fn push(&mut self, (poly, convex): (&[IPt], bool), b: &IBox) {
+    /// Appends `poly` trimmed to `b` (nothing when its overlap with `b` has no area); `runs`
+    /// are a ring's run boxes ([`ring_air::run_boxes`]).
+    fn push(&mut self, (poly, convex, runs): (&[IPt], bool, &[IBox]), b: &IBox) {
         let start = self.pts.len();
-        trim_to_box(poly, b, &mut self.pts);
+        if self.ring_air && !convex {
+            // a run strictly on one outer side of `b` keeps its first vertex only: the
+            // closed triangles of the vertices dropped lie on that side (see trim_to_box)
+            let n = poly.len();
+            let verts = runs.iter().enumerate().flat_map(|(j, rb)| {
+                let (lo, hi) = (j * ring_air::RUN, ((j + 1) * ring_air::RUN).min(n));
+                let away = rb.max[0] < b.min[0]
+                    || rb.min[0] > b.max[0]
+                    || rb.max[1] < b.min[1]
+                    || rb.min[1] > b.max[1];
+                poly[lo..if away { lo + 1 } else { hi }].iter().copied()
+            });
+            trim_to_box(verts, b, &mut self.pts, true);
+        } else {
+            trim_to_box(poly.iter().copied(), b, &mut self.pts, false);
+        }
         if self.pts.len() > start {
             self.rings.push(start..self.pts.len());
             self.convex.push(convex);
@@ -212,14 +238,33 @@ impl Trimmed {
 /// the chord `a → c` and all of `b` lies on or left of it: the winding number changes only
 /// inside the open triangle `a k c`, which is then disjoint from `b`. Exact integer
 /// orientation tests, valid for any ring (a grid-snapped hull may be slightly non-convex).
+/// For a `ring` (a path's convolution cycle, whose loops and back-and-forth runs the rule
+/// above keeps: an R20 arc's ring of 512 vertices kept ~150 against a 0.05 mm box), `k` is
+/// also dropped when `a`, `k`, `c` lie strictly on one outer side of `b` (left of its least
+/// z, …) or `k` strictly left of the chord and all of `b` strictly right of it: the closed
+/// triangle is then disjoint from `b` (the same ring keeps 0–6 vertices).
 /// Nothing is appended when fewer than three vertices are left (no area inside `b`).
-fn trim_to_box(poly: &[IPt], b: &IBox, out: &mut Vec<IPt>) {
+fn trim_to_box(poly: impl Iterator<Item = IPt>, b: &IBox, out: &mut Vec<IPt>, ring: bool) {
     let corners = b.corners();
+    let outside = |a: IPt, k: IPt, c: IPt| {
+        let all = |f: &dyn Fn(IPt) -> bool| f(a) && f(k) && f(c);
+        all(&|p| p.x < b.min[0])
+            || all(&|p| p.x > b.max[0])
+            || all(&|p| p.y < b.min[1])
+            || all(&|p| p.y > b.max[1])
+    };
     let removable = |a: IPt, k: IPt, c: IPt| {
-        orient(a, c, k) < 0 && corners.iter().all(|&q| orient(a, c, q) >= 0)
+        if ring && outside(a, k, c) {
+            return true;
+        }
+        match orient(a, c, k) {
+            o if o < 0 => corners.iter().all(|&q| orient(a, c, q) >= 0),
+            o if o > 0 => ring && corners.iter().all(|&q| orient(a, c, q) < 0),
+            _ => false,
+        }
     };
     let start = out.len();
-    for &v in poly {
+    for v in poly {
         out.push(v);
         while out.len() - start >= 3 {
             let l = out.len();
@@ -258,7 +303,7 @@ impl Tile {
         let items = &sweeps.items;
         trim.clear();
         for &i in &self.pending {
-            for p in sweeps.polys_flagged_of(&items[i as usize]) {
+            for p in sweeps.polys_with_runs_of(&items[i as usize]) {
                 trim.push(p, &self.bbox);
             }
         }
@@ -295,7 +340,11 @@ impl Tile {
     /// the tile grew too complex and must split first.
     fn process(&mut self, list: &[u32], ctx: &Ctx, worker: &mut Worker) -> Option<usize> {
         let sweeps = ctx.sweeps;
-        let mut trim = Trimmed::default();
+        let mut trim = Trimmed {
+            ring_air: ctx.ring_air,
+            ..Trimmed::default()
+        };
+        let mut runs = Vec::new();
         for (k, &i) in list.iter().enumerate() {
             if self.verts > MAX_TILE_VERTICES && self.pending.is_empty() && self.splittable(ctx) {
                 return Some(k);
@@ -303,17 +352,20 @@ impl Tile {
             let it = &sweeps.items[i as usize];
             // air in this tile: the stock only shrinks, so missing the stock of the last
             // flush means missing the stock of this moment
-            if misses_box(sweeps, it, &self.bbox) {
+            if misses_box(ctx, it, &self.bbox) {
                 continue;
             }
             trim.clear();
-            for p in sweeps.polys_flagged_of(it) {
+            for p in sweeps.polys_with_runs_of(it) {
                 trim.push(p, &self.bbox);
             }
-            if !trim
-                .iter_flagged()
-                .any(|(p, convex)| touches(p, convex, &self.stock, &self.bbox))
-            {
+            if !trim.iter_flagged().any(|(p, convex)| {
+                if convex || !ctx.ring_air {
+                    touches(p, convex, &self.stock, &self.bbox)
+                } else {
+                    ring_air::touches(p, &self.stock, &self.bbox, &mut runs)
+                }
+            }) {
                 continue;
             }
             if it.body.is_some() {
@@ -342,7 +394,7 @@ impl Tile {
             return;
         }
         trim.clear();
-        for p in ctx.sweeps.polys_flagged_of(it) {
+        for p in ctx.sweeps.polys_with_runs_of(it) {
             trim.push(p, &self.bbox);
         }
         let overlap = worker.engine.intersection(&self.stock, trim.iter());
@@ -413,6 +465,8 @@ struct Ctx<'a> {
     min_tile: i64,
     /// The epoch's sweeps.
     sweeps: &'a Sweeps,
+    /// Rings get their exact air tests ([`SimOptions::ring_air`]).
+    ring_air: bool,
 }
 
 /// What one worker thread writes to: its boolean engine and the rapid cuts it found.
@@ -439,7 +493,7 @@ impl Node {
                         .copied()
                         .filter(|&i| {
                             let it = &ctx.sweeps.items[i as usize];
-                            it.bbox.overlaps(rect) && !misses_box(ctx.sweeps, it, sb)
+                            it.bbox.overlaps(rect) && !misses_box(ctx, it, sb)
                         })
                         .collect();
                     if !sub.is_empty() {
@@ -492,26 +546,34 @@ impl Node {
 
 /// True when no polygon of the sweep `it` can share a point with the box `b`: its box
 /// misses `b`, or (for a convex polygon) one of its edges has all of `b` strictly on its
-/// right (a separating axis). Exact; one orientation test an edge, against the corner of
-/// `b` farthest left of it. Cheap enough to run on every tile and tree node a sweep's box
-/// overlaps (a long pass's box covers hundreds of a shoulder's tiles that it misses).
-fn misses_box(sweeps: &Sweeps, it: &Item, b: &IBox) -> bool {
+/// right (a separating axis), or (for a ring) no edge meets `b` and `b` lies outside it
+/// ([`ring_air::misses`]). Exact; one orientation test an edge of a hull, against the corner
+/// of `b` farthest left of it; box tests first for a ring's edges. Cheap enough to run on
+/// every tile and tree node a sweep's box overlaps (a long pass's box covers hundreds of a
+/// shoulder's tiles that it misses).
+fn misses_box(ctx: &Ctx, it: &Item, b: &IBox) -> bool {
     if !it.bbox.overlaps(b) {
         return true;
     }
     let single = it.polys.len() == 1;
-    sweeps.polys_flagged_of(it).all(|(poly, convex)| {
-        if !single {
-            let mut pb = IBox::EMPTY;
-            for &p in poly {
-                pb.add(p);
+    ctx.sweeps
+        .polys_with_runs_of(it)
+        .all(|(poly, convex, runs)| {
+            if !single {
+                let mut pb = IBox::EMPTY;
+                for &p in poly {
+                    pb.add(p);
+                }
+                if !pb.overlaps(b) {
+                    return true;
+                }
             }
-            if !pb.overlaps(b) {
-                return true;
+            if convex {
+                separated(poly, b)
+            } else {
+                ctx.ring_air && ring_air::misses(poly, runs, b)
             }
-        }
-        convex && separated(poly, b)
-    })
+        })
 }
 
 /// True when an edge of the convex counter-clockwise `poly` has every corner of `b`
@@ -780,6 +842,7 @@ pub fn simulate(
             grid: &grid,
             min_tile,
             sweeps: &sweeps,
+            ring_air: opts.ring_air,
         };
         let work = |engine: &mut Engine| {
             let mut worker = Worker {
@@ -1515,5 +1578,143 @@ mod tests {
             area(&sim.final_shapes)
         );
         assert_eq!(calls.last(), Some(&segs.len()));
+    }
+
+    /// The ring's touch test (one winding test a stock ring, run boxes) answers as the
+    /// edge-by-edge test did, on random rings and stock rings (touching and collinear
+    /// cases included: small integer coordinates).
+    #[test]
+    fn ring_touches_matches_the_edge_by_edge_test() {
+        use crate::ring_air::tests::{random_ring, Rng};
+        let mut rng = Rng(0x1234_5678_9abc_def1);
+        let (mut hits, mut total) = (0, 0);
+        let mut runs = Vec::new();
+        for _ in 0..20_000 {
+            let ring = random_ring(&mut rng);
+            if ring.len() < 3 {
+                continue;
+            }
+            let shapes: IShapes = (0..1 + rng.next(1).unsigned_abs())
+                .map(|_| {
+                    let (x, y) = (rng.next(24) as i32, rng.next(24) as i32);
+                    let outer: Vec<IPt> = (0..3 + rng.next(2).unsigned_abs())
+                        .map(|_| IPt::new(x + rng.next(5) as i32, y + rng.next(5) as i32))
+                        .collect();
+                    vec![outer]
+                })
+                .collect();
+            let sb = bbox_of(&shapes);
+            let old = touches(&ring, false, &shapes, &sb);
+            assert_eq!(
+                ring_air::touches(&ring, &shapes, &sb, &mut runs),
+                old,
+                "{ring:?} {shapes:?}"
+            );
+            hits += usize::from(old);
+            total += 1;
+        }
+        assert!(
+            hits > total / 10 && hits < total * 9 / 10,
+            "{hits} of {total}"
+        );
+    }
+
+    /// A ring trimmed to a box with the ring rules (whole runs outside first) winds as the
+    /// ring does at every integer point inside the box off both rings' edges (on the box's
+    /// sides the first rule's chords may run: a difference of no area), keeps a subset of
+    /// its vertices, and keeps far fewer than the first rule alone.
+    #[test]
+    fn ring_trim_keeps_the_winding_inside_the_box() {
+        use crate::ring_air::tests::{random_box, random_ring, Rng};
+        let mut rng = Rng(0x0bad_cafe_dead_beef);
+        let on_edge = |p: IPt, r: &[IPt]| {
+            (0..r.len()).any(|i| segments_meet(r[i], r[(i + 1) % r.len()], p, p))
+        };
+        let (mut kept, mut kept_plain) = (0, 0);
+        for _ in 0..3_000 {
+            let ring = random_ring(&mut rng);
+            if ring.len() < 3 {
+                continue;
+            }
+            let b = random_box(&mut rng);
+            let mut runs = Vec::new();
+            ring_air::run_boxes(&ring, &mut runs);
+            let mut trim = Trimmed {
+                ring_air: true,
+                ..Trimmed::default()
+            };
+            trim.push((&ring, false, &runs), &b);
+            let t: Vec<IPt> = trim.iter().next().map(<[IPt]>::to_vec).unwrap_or_default();
+            assert!(t.iter().all(|p| ring.contains(p)));
+            for x in b.min[0] + 1..b.max[0] {
+                for y in b.min[1] + 1..b.max[1] {
+                    let p = IPt::new(x, y);
+                    if !on_edge(p, &ring) && !on_edge(p, &t) {
+                        let wt = t.len() >= 3 && winds(p, &t);
+                        assert_eq!(wt, winds(p, &ring), "{p:?} {ring:?} {b:?} -> {t:?}");
+                    }
+                }
+            }
+            let mut plain = Vec::new();
+            trim_to_box(ring.iter().copied(), &b, &mut plain, false);
+            kept += t.len();
+            kept_plain += plain.len();
+        }
+        assert!(
+            kept * 2 < kept_plain,
+            "{kept} vertices kept, {kept_plain} without the ring rules"
+        );
+    }
+
+    /// Arcs swept as rings over a tube with a sawtooth of 3 000 teeth (split into tiles
+    /// about 1.2 mm long, many wholly inside an R10 arc's sweep without meeting one of its
+    /// edges, others in its box but outside it): the removal with the rings' air tests
+    /// equals the one without (every tile tried with the ring's full edge test), so no tile
+    /// an arc cuts was skipped; then a rapid that crashes into what is left.
+    #[test]
+    fn ring_air_tests_remove_exactly_what_every_tile_test_removes() {
+        let mut outline = vec![[-30.0, 28.0], [0.0, 28.0]];
+        outline.extend((0..=3000).map(|k| [-0.01 * f64::from(k), 30.0 + 0.02 * f64::from(k % 2)]));
+        let blank = Blank::from_rings(&[outline], "sawtooth tube");
+        let mut segs = Vec::new();
+        for pass in 0..6 {
+            let (z0, r0) = (-4.0 - 0.37 * f64::from(pass), 31.5 - 0.3 * f64::from(pass));
+            segs.push(seg(Motion::Rapid, [5.0, 40.0], [z0, 40.0]));
+            segs.push(seg(Motion::Feed, [z0, 40.0], [z0, r0]));
+            // a lower R10 half circle, an upper R2.5 one, then out
+            let mut a = seg(Motion::Feed, [z0, r0], [z0 - 20.0, r0]);
+            a.arc = Some(Arc {
+                center: Pt::new(z0 - 10.0, r0),
+                ccw: false,
+            });
+            let mut b = seg(Motion::Feed, [z0 - 20.0, r0], [z0 - 25.0, r0]);
+            b.arc = Some(Arc {
+                center: Pt::new(z0 - 22.5, r0),
+                ccw: true,
+            });
+            segs.extend([a, b]);
+            segs.push(seg(Motion::Feed, [z0 - 25.0, r0], [z0 - 25.0, 40.0]));
+        }
+        segs.push(seg(Motion::Rapid, [5.0, 40.0], [-1.0, 29.0]));
+        let sim = |ring_air| {
+            let opts = SimOptions {
+                ring_air,
+                ..SimOptions::default()
+            };
+            simulate(&blank, &v35(), &segs, &opts, &mut |_| {})
+        };
+        let (with, without) = (sim(true), sim(false));
+        assert!(without.removed_area > 40.0, "{}", without.removed_area);
+        let xor = symmetric_difference_area(&with.final_shapes, &without.final_shapes);
+        assert!(xor < 1e-9, "symmetric difference {xor} mm²");
+        assert!((with.removed_area - without.removed_area).abs() < 1e-9);
+        let verdicts = |s: &Simulation| {
+            s.crashes
+                .iter()
+                .map(|c| (c.segment, c.area))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(verdicts(&with), verdicts(&without));
+        assert_eq!(verdicts(&with).len(), 1);
     }
 }

@@ -101,6 +101,10 @@ pub(crate) struct Sweeps {
     /// Per polygon: convex (a hull or a stamp), else a chain sweep's ring whose positive
     /// winding is the sweep (see [`sweep_chain`]); convexity shortcuts skip those.
     convex: Vec<bool>,
+    /// Per polygon: its run boxes in `run_boxes` (a ring's, see [`crate::ring_air`]; none for a
+    /// convex polygon).
+    runs: Vec<Range<u32>>,
+    run_boxes: Vec<IBox>,
     /// The sweeps, in program order.
     pub(crate) items: Vec<Item>,
 }
@@ -109,10 +113,14 @@ impl Sweeps {
     /// Appends the sweeps of `other` after these.
     fn append(&mut self, other: Self) {
         let (dp, dq) = (self.pts.len() as u32, self.polys.len() as u32);
+        let db = self.run_boxes.len() as u32;
         self.pts.extend(other.pts);
         self.polys
             .extend(other.polys.into_iter().map(|r| r.start + dp..r.end + dp));
         self.convex.extend(other.convex);
+        self.runs
+            .extend(other.runs.into_iter().map(|r| r.start + db..r.end + db));
+        self.run_boxes.extend(other.run_boxes);
         self.items.extend(other.items.into_iter().map(|mut it| {
             it.polys = it.polys.start + dq..it.polys.end + dq;
             it
@@ -136,6 +144,26 @@ impl Sweeps {
             .iter()
             .zip(&self.convex[r])
             .map(|(p, &c)| (&self.pts[p.start as usize..p.end as usize], c))
+    }
+
+    /// The polygons of one item, each with whether it is convex and its run boxes (a
+    /// ring's, see [`crate::ring_air`]).
+    pub(crate) fn polys_with_runs_of(
+        &self,
+        it: &Item,
+    ) -> impl Iterator<Item = (&[IPt], bool, &[IBox])> + Clone {
+        let r = it.polys.start as usize..it.polys.end as usize;
+        self.polys[r.clone()]
+            .iter()
+            .zip(&self.convex[r.clone()])
+            .zip(&self.runs[r])
+            .map(|((p, &c), b)| {
+                (
+                    &self.pts[p.start as usize..p.end as usize],
+                    c,
+                    &self.run_boxes[b.start as usize..b.end as usize],
+                )
+            })
     }
 }
 
@@ -830,6 +858,11 @@ impl<'a> SweepBuilder<'a> {
         self.out.pts.extend(poly.iter().map(|&p| grid.to_int(p)));
         self.out.polys.push(start..self.out.pts.len() as u32);
         self.out.convex.push(convex);
+        let b = self.out.run_boxes.len() as u32;
+        if !convex {
+            crate::ring_air::run_boxes(&self.out.pts[start as usize..], &mut self.out.run_boxes);
+        }
+        self.out.runs.push(b..self.out.run_boxes.len() as u32);
     }
 
     fn end(&mut self, (first, _): (u32, f64), idx: usize, rapid: bool, start: P, dir: P) {
