@@ -260,22 +260,22 @@ pub(crate) fn point_in_ring(p: IPt, ring: &[IPt]) -> bool {
 /// exact). Points on the ring may go either way.
 pub(crate) fn winds(p: IPt, ring: &[IPt]) -> bool {
     let n = ring.len();
-    let mut w = 0i32;
-    for i in 0..n {
-        let (a, b) = (ring[i], ring[(i + 1) % n]);
-        let side = || {
-            i128::from(b.x - a.x) * i128::from(p.y - a.y)
-                - i128::from(p.x - a.x) * i128::from(b.y - a.y)
-        };
-        if a.y <= p.y {
-            if b.y > p.y && side() > 0 {
-                w += 1;
-            }
-        } else if b.y <= p.y && side() < 0 {
-            w -= 1;
-        }
+    (0..n)
+        .map(|i| winding_step(p, ring[i], ring[(i + 1) % n]))
+        .sum::<i32>()
+        != 0
+}
+
+/// What the edge `a → b` adds to the winding number of `p`: +1 crossing upward with `p` on
+/// its left, −1 downward with `p` on its right, else 0 (exact, in i128).
+pub(crate) fn winding_step(p: IPt, a: IPt, b: IPt) -> i32 {
+    let d = |u: i32, v: i32| i128::from(i64::from(u) - i64::from(v));
+    let side = || d(b.x, a.x) * d(p.y, a.y) - d(p.x, a.x) * d(b.y, a.y);
+    if a.y <= p.y {
+        i32::from(b.y > p.y && side() > 0)
+    } else {
+        -i32::from(b.y <= p.y && side() < 0)
     }
-    w != 0
 }
 
 /// A reusable boolean engine (keeps its buffers between calls).

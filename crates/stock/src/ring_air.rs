@@ -11,7 +11,7 @@
 //! one point of the box winds zero (a box that meets no edge lies in one face of the ring's
 //! arrangement, where the winding number is constant). Exact integer tests, no tolerance.
 
-use crate::overlay::{orient, segments_meet, winds, IBox, IPt, IShapes};
+use crate::overlay::{orient, segments_meet, winding_step, winds, IBox, IPt, IShapes};
 
 /// Edges of a ring under one run box (measured on the `g73` bench pattern: see
 /// PERFORMANCE.md, round 6).
@@ -75,16 +75,7 @@ fn winds_by_runs(p: IPt, ring: &[IPt], runs: &[IBox]) -> bool {
             continue;
         }
         for k in j * RUN..((j + 1) * RUN).min(n) {
-            let (a, b) = (ring[k], ring[(k + 1) % n]);
-            let d = |u: i32, v: i32| i128::from(i64::from(u) - i64::from(v));
-            let side = || d(b.x, a.x) * d(p.y, a.y) - d(p.x, a.x) * d(b.y, a.y);
-            if a.y <= p.y {
-                if b.y > p.y && side() > 0 {
-                    w += 1;
-                }
-            } else if b.y <= p.y && side() < 0 {
-                w -= 1;
-            }
+            w += winding_step(p, ring[k], ring[(k + 1) % n]);
         }
     }
     w != 0
