@@ -41,7 +41,7 @@ EOF
     esac
     t() {
       /usr/bin/time -f "%e %M" -o "$dir/t" "$bin" run "$dir/$p.nc" "${stock[@]}" "$@" --quiet >/dev/null 2>&1 || true
-      read -r s kb <"$dir/t"
+      read -r s kb < <(tail -1 "$dir/t")
       printf ' %s | %s |' "$s" "$((kb / 1024))"
     }
     json=$(t --json "$dir/o.json")
