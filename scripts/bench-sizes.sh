@@ -7,7 +7,8 @@
 #   contour   contour-parallel roughing of a wavy profile (benches/geos_compare.py's program)
 #   grooving  G01 plunges stepped 0.1 mm along Z with rapid retracts (3 moves a peck)
 #   zigzag    G01 back and forth along Z, every move cutting a sliver (scripts/zigzag.py cut)
-#   g73       O0006's G73 on its casting with as many passes as make the size (7 moves a pass)
+#   g73       O0006's G73 on its casting with as many passes as make the size (7 moves a pass;
+#             at most R9999, the control's limit: about 70 000 moves)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${1:-target/release/latsim}
@@ -33,7 +34,8 @@ out.append("M30;")
 print("\n".join(out))
 EOF
   python3 scripts/zigzag.py "$n" cut >"$dir/zigzag.nc"
-  sed "s/g73 u1.0 w1.0 r3 /g73 u1.0 w1.0 r$((n / 7)) /" assets/programs/O0006.nc >"$dir/g73.nc"
+  passes=$((n / 7 < 9999 ? n / 7 : 9999))
+  sed "s/g73 u1.0 w1.0 r3 /g73 u1.0 w1.0 r$passes /" assets/programs/O0006.nc >"$dir/g73.nc"
   for p in contour grooving zigzag g73; do
     case $p in
       g73) stock=(--stock-file assets/blanks/o0006-casting.toml) ;;
