@@ -145,6 +145,15 @@ impl IBox {
     }
 
     /// Box of the segment `[a, b]`.
+    /// The box of some points (EMPTY for none).
+    pub(crate) fn of(points: impl IntoIterator<Item = IPt>) -> Self {
+        let mut b = Self::EMPTY;
+        for p in points {
+            b.add(p);
+        }
+        b
+    }
+
     pub(crate) fn of_segment(a: IPt, b: IPt) -> Self {
         Self {
             min: [a.x.min(b.x), a.y.min(b.y)],

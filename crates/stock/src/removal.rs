@@ -167,15 +167,7 @@ struct Fragment {
 }
 
 fn bbox_of(shapes: &IShapes) -> IBox {
-    let mut b = IBox::EMPTY;
-    for s in shapes {
-        if let Some(outer) = s.first() {
-            for &p in outer {
-                b.add(p);
-            }
-        }
-    }
-    b
+    IBox::of(shapes.iter().filter_map(|s| s.first()).flatten().copied())
 }
 
 /// Polygons trimmed to a box (see [`trim_to_box`]), stored flat.
@@ -207,10 +199,7 @@ impl Trimmed {
             let n = poly.len();
             let verts = runs.iter().enumerate().flat_map(|(j, rb)| {
                 let (lo, hi) = (j * ring_air::RUN, ((j + 1) * ring_air::RUN).min(n));
-                let away = rb.max[0] < b.min[0]
-                    || rb.min[0] > b.max[0]
-                    || rb.max[1] < b.min[1]
-                    || rb.min[1] > b.max[1];
+                let away = !rb.overlaps(b);
                 poly[lo..if away { lo + 1 } else { hi }].iter().copied()
             });
             trim_to_box(verts, b, &mut self.pts, true);
@@ -559,14 +548,8 @@ fn misses_box(ctx: &Ctx, it: &Item, b: &IBox) -> bool {
     ctx.sweeps
         .polys_with_runs_of(it)
         .all(|(poly, convex, runs)| {
-            if !single {
-                let mut pb = IBox::EMPTY;
-                for &p in poly {
-                    pb.add(p);
-                }
-                if !pb.overlaps(b) {
-                    return true;
-                }
+            if !single && !IBox::of(poly.iter().copied()).overlaps(b) {
+                return true;
             }
             if convex {
                 separated(poly, b)
@@ -613,10 +596,7 @@ fn right_of(p: IPt, q: IPt, c: IPt) -> bool {
 /// crosses an edge of the other, or a vertex of one lies in the other (for a chain sweep's
 /// ring, `convex` false: a point of non-zero winding).
 fn touches(poly: &[IPt], convex: bool, shapes: &IShapes, shapes_box: &IBox) -> bool {
-    let mut pb = IBox::EMPTY;
-    for &p in poly {
-        pb.add(p);
-    }
+    let pb = IBox::of(poly.iter().copied());
     let n = poly.len();
     if !pb.overlaps(shapes_box) {
         return false;

@@ -24,11 +24,7 @@ pub(crate) fn run_boxes(ring: &[IPt], out: &mut Vec<IBox>) {
     let mut i = 0;
     while i < n {
         let end = (i + RUN).min(n);
-        let mut b = IBox::EMPTY;
-        for k in i..=end {
-            b.add(ring[k % n]);
-        }
-        out.push(b);
+        out.push(IBox::of((i..=end).map(|k| ring[k % n])));
         i = end;
     }
 }
@@ -95,10 +91,7 @@ pub(crate) fn touches(
     shapes_box: &IBox,
     runs: &mut Vec<IBox>,
 ) -> bool {
-    let mut rb = IBox::EMPTY;
-    for &p in ring {
-        rb.add(p);
-    }
+    let rb = IBox::of(ring.iter().copied());
     if !rb.overlaps(shapes_box) {
         return false;
     }
@@ -220,10 +213,7 @@ pub(crate) mod tests {
         let square = [[-2.0, -2.0], [2.0, -2.0], [2.0, 2.0], [-2.0, 2.0]];
         let ring = int_ring(&square, &[[0.0, 0.0], [20.0, 0.0], [20.0, 20.0]]);
         let runs = runs_of(&ring);
-        let mut rb = IBox::EMPTY;
-        for &p in &ring {
-            rb.add(p);
-        }
+        let rb = IBox::of(ring.iter().copied());
         let bx = |x0, y0, x1, y1| IBox {
             min: [x0, y0],
             max: [x1, y1],
@@ -260,10 +250,7 @@ pub(crate) mod tests {
             let b = random_box(&mut rng);
             let m = misses(&ring, &runs_of(&ring), &b);
             assert_eq!(m, !meets(&ring, &b), "{ring:?} {b:?}");
-            let mut rb = IBox::EMPTY;
-            for &p in &ring {
-                rb.add(p);
-            }
+            let rb = IBox::of(ring.iter().copied());
             missed += usize::from(m);
             in_box_missed += usize::from(m && rb.overlaps(&b));
             total += 1;

@@ -90,20 +90,16 @@ impl Snapshots {
         }
     }
 
-    /// Whether a snapshot is due at an epoch end where the stock holds the cuts of the
-    /// first `moves` moves (epoch mode only).
-    pub(crate) fn due(&self, moves: usize) -> bool {
-        !self.exact && self.marks.clone().next().is_some_and(|k| k <= moves)
-    }
-
     /// At an epoch end (epoch mode): `stock()` is the stock holding the cuts of the first
     /// `moves` moves; it is taken once for all the counts asked for up to `moves`.
     pub(crate) fn at_epoch_end(&mut self, moves: usize, stock: impl FnOnce() -> IShapes) {
-        if !self.due(moves) {
-            return;
+        let mut due = false;
+        while !self.exact && self.marks.next_if(|&k| k <= moves).is_some() {
+            due = true;
         }
-        while self.marks.next_if(|&k| k <= moves).is_some() {}
-        self.out.push((moves, stock()));
+        if due {
+            self.out.push((moves, stock()));
+        }
     }
 
     fn cut(&mut self, sweeps: &Sweeps, items: std::ops::Range<usize>, engine: &mut Engine) {
