@@ -383,22 +383,25 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
         .into_iter()
         .filter_map(|shape| {
             let a = area(std::slice::from_ref(&shape));
+            let (depth, at, nearest) = deepest(&shape, &boundary);
+            let deep_with_area = depth > tol && a > 0.0;
+            if !deep_with_area {
+                return None;
+            }
             let thin =
                 |s: &[Shape]| 2.0 * area(s) < 0.1 * tol * s.iter().map(perimeter).sum::<f64>();
             if thin(std::slice::from_ref(&shape)) {
                 // the part within the depth (at least the tolerance) of the deepest point
-                let (depth, at, _) = deepest(&shape, &boundary);
-                let h = depth.min(FAR).max(tol);
+                let h = depth.min(FAR);
                 let near = Rect::new(
                     geom::Pt::new(at[0] - h, at[1] - h),
                     geom::Pt::new(at[0] + h, at[1] + h),
                 );
-                if depth <= tol || thin(&clip_to_box(std::slice::from_ref(&shape), &near)) {
+                if thin(&clip_to_box(std::slice::from_ref(&shape), &near)) {
                     return None;
                 }
             }
-            let (depth, at, nearest) = deepest(&shape, &boundary);
-            (depth > tol && a > 0.0).then_some(Finding {
+            Some(Finding {
                 shape,
                 area: a,
                 depth,
