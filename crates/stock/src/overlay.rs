@@ -300,8 +300,20 @@ pub(crate) struct Engine {
 /// 0.009 mm apart, an insert in a PCLNR holder: 1 332 moves) that took 2.2 s in release,
 /// the fragment splitter 0.38 s. Measured neutral elsewhere (stock bench at 10⁴ and 10⁵,
 /// the 10⁵ zig-zag, O0006 r9999; same results bit for bit); 200 points was slower on the
-/// zig-zag, 1 500 kept half the gain.
+/// zig-zag, 1 500 kept half the gain. From 2 000 to 32 000 edges the automatic choice is
+/// its tree splitter, which took 513 ms to join the 274 tiles (20 691 points) of a
+/// 2·10⁴-move cutting zig-zag; the fragment splitter 8 ms. Hence every call, the unions
+/// and the float booleans of the measures included, chooses by [`solver_for`].
 const FRAG_FROM: usize = 600;
+
+/// The edge splitter for a call of `points` points (see [`FRAG_FROM`]).
+fn solver_for(points: usize) -> Solver {
+    if points >= FRAG_FROM {
+        Solver::FRAG
+    } else {
+        Solver::AUTO
+    }
+}
 
 impl Engine {
     /// A fresh engine.
@@ -321,11 +333,7 @@ impl Engine {
         let clips: Vec<&[IPt]> = clips.into_iter().collect();
         let points = subj.iter().flatten().map(Vec::len).sum::<usize>()
             + clips.iter().map(|c| c.len()).sum::<usize>();
-        let ov = if points >= FRAG_FROM {
-            &mut self.frag
-        } else {
-            &mut self.ov
-        };
+        let ov = self.overlay_for(points);
         ov.clear();
         ov.add_source(subj, ShapeType::Subject);
         for c in clips {
@@ -354,11 +362,22 @@ impl Engine {
 
     /// Union of several shape sets (shared edges between neighbours dissolve).
     pub(crate) fn union(&mut self, parts: &[IShapes]) -> IShapes {
-        self.ov.clear();
+        let points = parts.iter().flatten().flatten().map(Vec::len).sum();
+        let ov = self.overlay_for(points);
+        ov.clear();
         for p in parts {
-            self.ov.add_source(p, ShapeType::Subject);
+            ov.add_source(p, ShapeType::Subject);
         }
-        self.ov.overlay(OverlayRule::Subject, FillRule::NonZero)
+        ov.overlay(OverlayRule::Subject, FillRule::NonZero)
+    }
+
+    /// The overlay (and so the splitter) for a call of `points` points.
+    fn overlay_for(&mut self, points: usize) -> &mut Overlay<i32> {
+        if points >= FRAG_FROM {
+            &mut self.frag
+        } else {
+            &mut self.ov
+        }
     }
 }
 
@@ -397,7 +416,11 @@ pub(crate) fn clean(rings: &[Vec<P>]) -> Vec<Shape> {
     if rings.is_empty() {
         return Vec::new();
     }
-    to_shapes(FloatOverlay::with_subj(&rings).overlay(OverlayRule::Subject, FillRule::NonZero))
+    let solver = solver_for(rings.iter().map(Vec::len).sum());
+    to_shapes(
+        FloatOverlay::with_subj_custom(&rings, Default::default(), solver)
+            .overlay(OverlayRule::Subject, FillRule::NonZero),
+    )
 }
 
 /// Float boolean between two shape sets on a grid fitted to both (for measures).
@@ -412,7 +435,11 @@ pub(crate) fn boolean(a: &[Shape], b: &[Shape], rule: BoolOp) -> Vec<Shape> {
         BoolOp::Intersection => OverlayRule::Intersect,
         BoolOp::Union => OverlayRule::Union,
     };
-    to_shapes(FloatOverlay::with_subj_and_clip(&a, &b).overlay(rule, FillRule::NonZero))
+    let points = [&a, &b].into_iter().flatten().flatten().map(Vec::len).sum();
+    to_shapes(
+        FloatOverlay::with_subj_and_clip_custom(&a, &b, Default::default(), solver_for(points))
+            .overlay(rule, FillRule::NonZero),
+    )
 }
 
 /// The boolean operations offered on float shapes.

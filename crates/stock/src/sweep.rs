@@ -53,6 +53,7 @@ use geom::distance::point_segment;
 use geom::Rect;
 use std::collections::HashMap;
 use std::ops::Range;
+use std::sync::Arc;
 
 /// Most stamps one thread move may make before it is swept continuously instead, with a
 /// warning (a real thread has a few hundred: 200 mm at 0.5 mm lead is 400; stamps that all
@@ -309,8 +310,9 @@ pub(crate) struct SweepBuilder<'a> {
     merge_tol: f64,
     /// Sweep consecutive feeds as one path (see [`crate::SimOptions::feed_paths`]).
     feed_paths: bool,
-    outlines: HashMap<((u32, u8, u64), bool), Outline>,
-    bodies: HashMap<BodyKey, Option<crate::Body>>,
+    /// Shared, not copied: every segment asks for its tool's outline (and body) once or more.
+    outlines: HashMap<((u32, u8, u64), bool), Arc<Outline>>,
+    bodies: HashMap<BodyKey, Option<Arc<crate::Body>>>,
     run: Option<Run>,
     /// Body sweeps of the moves of the open run: emitted after the run's own sweep, so
     /// that they meet the stock as it is after the cut.
@@ -368,7 +370,7 @@ impl<'a> SweepBuilder<'a> {
 
     /// The outline of tool `t` under `hint` (mirrored about the axis when `flip`), warning
     /// once per tool (and hint) when defaulted.
-    fn outline(&mut self, t: u32, hint: ToolHint, flip: bool, idx: usize) -> Outline {
+    fn outline(&mut self, t: u32, hint: ToolHint, flip: bool, idx: usize) -> Arc<Outline> {
         let key = (crate::tools::hint_key(t, hint), flip);
         if let Some(o) = self.outlines.get(&key) {
             return o.clone();
@@ -379,26 +381,26 @@ impl<'a> SweepBuilder<'a> {
                 self.warnings.push((idx, w));
             }
         }
-        let o = if flip { o.mirrored() } else { o };
-        self.outlines.insert(key, o.clone());
+        let o = Arc::new(if flip { o.mirrored() } else { o });
+        self.outlines.insert(key, Arc::clone(&o));
         o
     }
 
     /// The body of tool `t` under `hint`, mirrored about the axis when `flip`.
-    fn body(&mut self, t: u32, hint: ToolHint, flip: bool) -> Option<crate::Body> {
+    fn body(&mut self, t: u32, hint: ToolHint, flip: bool) -> Option<Arc<crate::Body>> {
         let key = (crate::tools::hint_key(t, hint), flip);
         self.bodies
             .entry(key)
             .or_insert_with(|| {
                 let b = self.tools.body_for(t, hint)?;
-                Some(if flip {
+                Some(Arc::new(if flip {
                     crate::Body {
                         outline: b.outline.mirrored(),
                         name: b.name,
                     }
                 } else {
                     b
-                })
+                }))
             })
             .clone()
     }
