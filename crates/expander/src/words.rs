@@ -11,11 +11,17 @@ pub(crate) struct Words<'b> {
 }
 
 impl<'b> Words<'b> {
-    pub(crate) fn new(block: &'b Block) -> Self {
-        Self {
-            block,
-            used: vec![false; block.words.len()],
-        }
+    /// The words of `block`, none used yet; `used` is a buffer to fill (a million-line
+    /// program would otherwise allocate and free one for every block).
+    pub(crate) fn new(block: &'b Block, mut used: Vec<bool>) -> Self {
+        used.clear();
+        used.resize(block.words.len(), false);
+        Self { block, used }
+    }
+
+    /// The buffer back, for the next block.
+    pub(crate) fn into_buffer(self) -> Vec<bool> {
+        self.used
     }
 
     /// The word with this letter, marked used.

@@ -202,6 +202,8 @@ pub(crate) struct Interp<'m> {
     macros: Option<Box<macros::Macros>>,
     /// The last block was a motion block with an axis word: what triggers a `G66` modal call.
     moved: bool,
+    /// The used-word flags of the block being run (one buffer for all blocks).
+    used_buffer: Vec<bool>,
 }
 
 /// A controller alarm.
@@ -259,6 +261,7 @@ impl<'m> Interp<'m> {
             drill_return: machine.drill_return,
             macros: None,
             moved: false,
+            used_buffer: Vec::new(),
         }
     }
 
@@ -344,7 +347,7 @@ impl<'m> Interp<'m> {
             self.param_mode = !self.has_g(b, |t| t == G11);
             return Ok(Flow::Next);
         }
-        let mut used = Words::new(b);
+        let mut used = Words::new(b, std::mem::take(&mut self.used_buffer));
         let inch = self.has_g(b, |t| t == G20) || (self.inch && !self.has_g(b, |t| t == G21));
         used.check_domain(if inch { 25.4 } else { 1.0 })?;
         if self.retained.g75_1.is_some() && !self.has_g(b, |t| t == G75_1) {
@@ -422,6 +425,7 @@ impl<'m> Interp<'m> {
         }
         let flow = self.m_codes_after(&after, &mut used, sub.call_text(index), flow)?;
         used.check_all_used()?;
+        self.used_buffer = used.into_buffer();
         Ok(flow)
     }
 }
