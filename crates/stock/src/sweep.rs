@@ -317,6 +317,10 @@ pub(crate) struct SweepBuilder<'a> {
     /// Shared, not copied: every segment asks for its tool's outline (and body) once or more.
     outlines: HashMap<((u32, u8, u64), bool), Arc<Outline>>,
     bodies: HashMap<BodyKey, Option<Arc<crate::Body>>>,
+    /// The last lookups: consecutive segments nearly always share their tool, and a hash
+    /// of the key for every segment showed in profiles.
+    last_outline: Option<(BodyKey, Arc<Outline>)>,
+    last_body: Option<(BodyKey, Option<Arc<crate::Body>>)>,
     run: Option<Run>,
     /// Body sweeps of the moves of the open run: emitted after the run's own sweep, so
     /// that they meet the stock as it is after the cut.
@@ -352,6 +356,8 @@ impl<'a> SweepBuilder<'a> {
             feed_paths: true,
             outlines: HashMap::new(),
             bodies: HashMap::new(),
+            last_outline: None,
+            last_body: None,
             run: None,
             held: Sweeps::default(),
             rear: Vec::new(),
@@ -376,8 +382,14 @@ impl<'a> SweepBuilder<'a> {
     /// once per tool (and hint) when defaulted.
     fn outline(&mut self, t: u32, hint: ToolHint, flip: bool, idx: usize) -> Arc<Outline> {
         let key = (crate::tools::hint_key(t, hint), flip);
+        if let Some((k, o)) = &self.last_outline {
+            if *k == key {
+                return Arc::clone(o);
+            }
+        }
         if let Some(o) = self.outlines.get(&key) {
-            return o.clone();
+            self.last_outline = Some((key, Arc::clone(o)));
+            return Arc::clone(o);
         }
         let (o, warning) = self.tools.outline_for(t, hint);
         if let Some(w) = warning {
@@ -387,13 +399,20 @@ impl<'a> SweepBuilder<'a> {
         }
         let o = Arc::new(if flip { o.mirrored() } else { o });
         self.outlines.insert(key, Arc::clone(&o));
+        self.last_outline = Some((key, Arc::clone(&o)));
         o
     }
 
     /// The body of tool `t` under `hint`, mirrored about the axis when `flip`.
     fn body(&mut self, t: u32, hint: ToolHint, flip: bool) -> Option<Arc<crate::Body>> {
         let key = (crate::tools::hint_key(t, hint), flip);
-        self.bodies
+        if let Some((k, b)) = &self.last_body {
+            if *k == key {
+                return b.clone();
+            }
+        }
+        let body = self
+            .bodies
             .entry(key)
             .or_insert_with(|| {
                 let b = self.tools.body_for(t, hint)?;
@@ -406,7 +425,9 @@ impl<'a> SweepBuilder<'a> {
                     b
                 }))
             })
-            .clone()
+            .clone();
+        self.last_body = Some((key, body.clone()));
+        body
     }
 
     /// Adds segment number `idx`: the sweep of its cutting outline, then the probe of its
