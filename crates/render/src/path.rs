@@ -1,7 +1,7 @@
 //! SVG path data in mm, written by hand (f64, enough decimals for sub-micron detail),
 //! thinned to what the picture can show.
 
-use std::collections::HashSet;
+use foldhash::{HashSet, HashSetExt};
 use std::fmt::Write as _;
 
 use crate::report::{PathKind, PathLine, Shape};
@@ -184,6 +184,8 @@ struct KindWriter {
     /// A subpath start not yet written: only flushed once a line follows it.
     pending_move: Option<[f64; 2]>,
     points: usize,
+    /// Write the path text; else only count the points it would have.
+    write: bool,
 }
 
 impl KindWriter {
@@ -205,10 +207,14 @@ impl KindWriter {
                 continue;
             }
             if let Some(m) = self.pending_move.take() {
-                push_pt(&mut self.d, 'M', m, PATH_DECIMALS);
+                if self.write {
+                    push_pt(&mut self.d, 'M', m, PATH_DECIMALS);
+                }
                 self.points += 1;
             }
-            push_pt(&mut self.d, 'L', *p, PATH_DECIMALS);
+            if self.write {
+                push_pt(&mut self.d, 'L', *p, PATH_DECIMALS);
+            }
             self.points += 1;
             self.last = Some(*p);
         }
@@ -239,31 +245,34 @@ fn key(l: &PathLine, grid: f64) -> Option<Key> {
     Some((kind, [a[0], a[1], m[0], m[1], b[0], b[1]]))
 }
 
-fn one_pass(lines: &[PathLine], min_dist: f64, window: &Bbox, stride: usize) -> ToolpathD {
+/// The segments a view draws: those touching `window`, each re-cut move (same kind and
+/// quantised points, see [`key`]) once. Independent of the stride, so found once.
+fn candidates<'a>(lines: &'a [PathLine], min_dist: f64, window: &Bbox) -> Vec<&'a PathLine> {
+    let mut seen: HashSet<Key> = HashSet::new();
+    lines
+        .iter()
+        .filter(|l| {
+            if l.points.is_empty() {
+                return false;
+            }
+            let mut b = Bbox::EMPTY;
+            for p in &l.points {
+                b.add(*p);
+            }
+            b.overlaps(window) && key(l, min_dist).is_none_or(|k| seen.insert(k))
+        })
+        .collect()
+}
+
+/// Every `stride`-th candidate, thinned; only counted unless `write` (the path text of a
+/// million moves is written once, for the stride finally chosen).
+fn one_pass(cands: &[&PathLine], min_dist: f64, stride: usize, write: bool) -> ToolpathD {
     let md2 = min_dist * min_dist;
     let mut w: [KindWriter; 3] = Default::default();
-    let mut seen: HashSet<Key> = HashSet::new();
-    let mut nth = 0usize;
-    for l in lines {
-        if l.points.is_empty() {
-            continue;
-        }
-        let mut b = Bbox::EMPTY;
-        for p in &l.points {
-            b.add(*p);
-        }
-        if !b.overlaps(window) {
-            continue;
-        }
-        if let Some(k) = key(l, min_dist) {
-            if !seen.insert(k) {
-                continue;
-            }
-        }
-        nth += 1;
-        if !(nth - 1).is_multiple_of(stride) {
-            continue;
-        }
+    for k in &mut w {
+        k.write = write;
+    }
+    for l in cands.iter().step_by(stride) {
         let i = match l.kind {
             PathKind::Rapid => 0,
             PathKind::Feed => 1,
@@ -295,15 +304,17 @@ pub(crate) fn toolpath_d(
     } else {
         1e-6
     };
-    let mut out = one_pass(lines, min_dist, window, 1);
+    let cands = candidates(lines, min_dist, window);
+    let mut stride = 1;
+    let mut points = one_pass(&cands, min_dist, stride, false).points;
     let mut tries = 0;
-    while out.points > cap && tries < 40 {
-        let ratio = out.points as f64 / cap.max(1) as f64;
-        let stride = ((out.stride as f64 * ratio).ceil() as usize).max(out.stride + 1);
-        out = one_pass(lines, min_dist, window, stride);
+    while points > cap && tries < 40 {
+        let ratio = points as f64 / cap.max(1) as f64;
+        stride = ((stride as f64 * ratio).ceil() as usize).max(stride + 1);
+        points = one_pass(&cands, min_dist, stride, false).points;
         tries += 1;
     }
-    out
+    one_pass(&cands, min_dist, stride, true)
 }
 
 #[cfg(test)]
