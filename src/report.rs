@@ -37,7 +37,11 @@ fn path_line(seg: &Segment) -> PathLine {
     PathLine {
         kind,
         line: seg.span.line,
-        points: seg.polyline(0.01).into_iter().map(|p| [p.z, p.r]).collect(),
+        // a straight move without the intermediate polyline (one allocation a move, not two)
+        points: match seg.arc {
+            None => vec![[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]],
+            Some(_) => seg.polyline(0.01).into_iter().map(|p| [p.z, p.r]).collect(),
+        },
     }
 }
 
