@@ -71,7 +71,26 @@ pub fn parse(source: &str) -> Result<Program, ParseError> {
 
 /// Read a whole program text with options.
 pub fn parse_with(source: &str, options: ReadOptions) -> Result<Program, ParseError> {
+    check_length(source.len())?;
     Reader::new(source, options).run()
+}
+
+/// Spans hold byte offsets as `u32` (a million-line program holds millions of them), so a
+/// longer text is refused here rather than given wrong places.
+fn check_length(len: usize) -> Result<(), ParseError> {
+    if u32::try_from(len).is_ok() {
+        return Ok(());
+    }
+    Err(ParseError::new(
+        Span {
+            line: 1,
+            column: 1,
+            offset: 0,
+            len: 0,
+        },
+        format!("the program text is {len} bytes, more than the reader takes (4 GiB)"),
+        "split the program into files of at most 4 GiB",
+    ))
 }
 
 /// Macro B words that are letters only; any other run of two letters after `;` is prose.
@@ -329,8 +348,8 @@ impl<'a> Reader<'a> {
         let span = Span {
             line: self.line,
             column: self.column,
-            offset,
-            len: c.len_utf8(),
+            offset: offset as u32,
+            len: c.len_utf8() as u32,
         };
         if c == '\n' {
             self.line += 1;
@@ -373,8 +392,8 @@ impl<'a> Reader<'a> {
                             start = Span {
                                 line: self.line,
                                 column: self.column + 1,
-                                offset,
-                                len: c.len_utf8(),
+                                offset: offset as u32,
+                                len: c.len_utf8() as u32,
                             };
                         }
                         let end = self.skip_line();
@@ -463,7 +482,7 @@ impl<'a> Reader<'a> {
                 c if (c == '#' || c.is_ascii_alphabetic())
                     && self.options.macros.is_some()
                     && self.at_statement_start()
-                    && macro_b::starts_statement(&self.src[span.offset..]) =>
+                    && macro_b::starts_statement(&self.src[span.offset as usize..]) =>
                 {
                     self.finish_word()?;
                     self.statement(span)?;
@@ -603,7 +622,7 @@ impl<'a> Reader<'a> {
         Span {
             line: self.line,
             column: self.column + 1,
-            offset,
+            offset: offset as u32,
             len: 0,
         }
     }
@@ -611,7 +630,7 @@ impl<'a> Reader<'a> {
     /// A macro statement from `start` (already read) to the end of the block.
     fn statement(&mut self, start: Span) -> Result<(), ParseError> {
         self.mark(start);
-        let text = self.block_text(start.offset).trim_end();
+        let text = self.block_text(start.offset as usize).trim_end();
         let options = match self.options.macros {
             Some(Dialect::Haas) => macro_b::Options::haas(),
             _ => macro_b::Options::fanuc(),
@@ -619,8 +638,8 @@ impl<'a> Reader<'a> {
         let stmt = macro_b::parse_stmt(text, start, &options)?;
         // Haas `IF [cond] THEN <NC block>`: the block's words are read as words
         let end = match &stmt.kind {
-            macro_b::StmtKind::IfThenBlock { text_span, .. } => text_span.offset,
-            _ => start.offset + text.len(),
+            macro_b::StmtKind::IfThenBlock { text_span, .. } => text_span.offset as usize,
+            _ => start.offset as usize + text.len(),
         };
         self.consume_to(end);
         self.stmt = Some(stmt);
@@ -661,9 +680,9 @@ impl<'a> Reader<'a> {
             ));
         }
         let base = self.next_span();
-        let text = self.block_text(base.offset);
+        let text = self.block_text(base.offset as usize);
         let (expr, used) = macro_b::parse_operand(text, base)?;
-        let end = self.consume_to(base.offset + used).unwrap_or(at);
+        let end = self.consume_to(base.offset as usize + used).unwrap_or(at);
         self.push_word(Word {
             letter,
             value: 0.0,
@@ -1288,17 +1307,26 @@ mod tests {
         assert_eq!(codes, vec![Some(751), Some(10), Some(0)]);
     }
 
+    #[test]
+    fn a_text_over_4_gib_is_refused_not_misplaced() {
+        assert!(check_length(u32::MAX as usize).is_ok());
+        let e = check_length(u32::MAX as usize + 1).unwrap_err();
+        assert!(e.message.contains("4294967296 bytes"), "{}", e.message);
+        assert_eq!((e.span.line, e.span.column), (1, 1));
+    }
+
     /// Issue 16/17 memory: a million-line program keeps every block and word at once, so
     /// their size is the peak of a big run (macro parts are boxed; words exactly as many).
     #[test]
     fn blocks_and_words_stay_compact() {
+        assert_eq!(std::mem::size_of::<Span>(), 16);
         assert!(
-            std::mem::size_of::<Word>() <= 48,
+            std::mem::size_of::<Word>() <= 40,
             "{}",
             std::mem::size_of::<Word>()
         );
         assert!(
-            std::mem::size_of::<Block>() <= 104,
+            std::mem::size_of::<Block>() <= 80,
             "{}",
             std::mem::size_of::<Block>()
         );

@@ -406,8 +406,8 @@ impl Src<'_> {
         Span {
             line,
             column,
-            offset: self.base.offset + start,
-            len: end - start,
+            offset: self.base.offset + start as u32,
+            len: (end - start) as u32,
         }
     }
 }
