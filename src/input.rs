@@ -258,7 +258,13 @@ impl Loaded {
     fn print(&self, d: &expander::Diagnostic, warning: bool) {
         let (src, offset) = self.source_at(d.span.offset as usize);
         diag::print_at(
-            &src, offset, d.span.len as usize, d.code, &d.message, &d.help, warning,
+            &src,
+            offset,
+            d.span.len as usize,
+            d.code,
+            &d.message,
+            &d.help,
+            warning,
         );
     }
 }

@@ -8,7 +8,9 @@ use std::time::Instant;
 fn main() {
     let mut args = std::env::args().skip(1);
     let path = args.next().expect("usage: parse_time FILE [RUNS]");
-    let runs: usize = args.next().map_or(5, |r| r.parse().expect("RUNS is a number"));
+    let runs: usize = args
+        .next()
+        .map_or(5, |r| r.parse().expect("RUNS is a number"));
     let text = std::fs::read_to_string(&path).expect("a UTF-8 program file");
     for (name, macros) in [("plain", None), ("macro", Some(macro_b::Dialect::Fanuc))] {
         let options = ReadOptions {
