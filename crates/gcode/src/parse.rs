@@ -500,7 +500,7 @@ impl<'a> Reader<'a> {
                     if self.pos < self.no_prose_before {
                         // a part of a rest already found no prose (see the field)
                     } else if !is_prose(rest) {
-                        if !rest.contains('(') {
+                        if !rest.as_bytes().contains(&b'(') {
                             self.no_prose_before = self.pos + rest.len();
                         }
                     } else {
@@ -948,13 +948,13 @@ impl<'a> Reader<'a> {
                 )
             }
         })?;
+        // digits before the point, signs and leading zeros aside
         let whole_digits = text
-            .split('.')
-            .next()
-            .unwrap_or("")
-            .trim_start_matches(['+', '-'])
-            .trim_start_matches('0')
-            .len();
+            .bytes()
+            .take_while(|&b| b != b'.')
+            .skip_while(|&b| b == b'+' || b == b'-')
+            .skip_while(|&b| b == b'0')
+            .count();
         if whole_digits > MAX_WHOLE_DIGITS {
             return Err(ParseError::new(
                 span,
@@ -1098,13 +1098,17 @@ fn whole(value: f64, has_point: bool, span: Span, letter: char) -> Result<u32, P
 
 /// `[+-]? (digits [. digits*] | . digits)`; returns the value and whether a point was written.
 fn parse_number(text: &str) -> Option<(f64, bool)> {
-    let body = text.strip_prefix(['+', '-']).unwrap_or(text);
+    let bytes = text.as_bytes();
+    let body = match bytes.first() {
+        Some(b'+' | b'-') => &bytes[1..],
+        _ => bytes,
+    };
     let mut digits = 0;
     let mut points = 0;
-    for c in body.chars() {
-        match c {
-            '0'..='9' => digits += 1,
-            '.' => points += 1,
+    for &b in body {
+        match b {
+            b'0'..=b'9' => digits += 1,
+            b'.' => points += 1,
             _ => return None,
         }
     }

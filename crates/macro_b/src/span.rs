@@ -19,6 +19,7 @@ pub struct Span {
 
 impl Span {
     /// The smallest span covering both `self` and `other` (same source assumed).
+    #[inline]
     pub fn to(self, other: Self) -> Self {
         let (a, b) = if self.offset <= other.offset {
             (self, other)
