@@ -384,6 +384,7 @@ impl<'a> Reader<'a> {
         }
     }
 
+    #[inline]
     fn next(&mut self) -> Option<(Span, char)> {
         let c = self.peek()?;
         let offset = self.pos;
@@ -403,6 +404,7 @@ impl<'a> Reader<'a> {
         Some((span, c))
     }
 
+    #[inline]
     fn peek(&self) -> Option<char> {
         let &b = self.src.as_bytes().get(self.pos)?;
         if b.is_ascii() {
