@@ -178,8 +178,8 @@ pub(crate) fn load_program(
     let program = gcode::parse_with(&source.text, read).map_err(|e| {
         diag::print_at(
             &source,
-            e.span.offset,
-            e.span.len,
+            e.span.offset as usize,
+            e.span.len as usize,
             "parse",
             &e.message,
             &e.help,
@@ -251,14 +251,20 @@ impl Loaded {
 
     /// `file:line` of a span, for terminal lines (the file a subprogram came from).
     pub(crate) fn place(&self, span: expander::Span) -> String {
-        let (src, _) = self.source_at(span.offset);
+        let (src, _) = self.source_at(span.offset as usize);
         format!("{}:{}", src.name, span.line)
     }
 
     fn print(&self, d: &expander::Diagnostic, warning: bool) {
-        let (src, offset) = self.source_at(d.span.offset);
+        let (src, offset) = self.source_at(d.span.offset as usize);
         diag::print_at(
-            &src, offset, d.span.len, d.code, &d.message, &d.help, warning,
+            &src,
+            offset,
+            d.span.len as usize,
+            d.code,
+            &d.message,
+            &d.help,
+            warning,
         );
     }
 }

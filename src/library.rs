@@ -114,6 +114,12 @@ impl Folders {
             return Ok(Arc::clone(p));
         }
         let text = read(path)?;
+        let base = file_base(state.next_base, text.len()).ok_or_else(|| {
+            format!(
+                "{}: the main program and the --lib files read for it pass 4 GiB of text, more than one run reads",
+                path.display()
+            )
+        })?;
         let mut program = gcode::parse_with(&text, self.read).map_err(|e| {
             format!(
                 "{}:{}:{}: {}",
@@ -123,14 +129,13 @@ impl Folders {
                 e.message
             )
         })?;
-        let base = state.next_base;
         program.shift_spans(base);
-        state.next_base = base + text.len() + 1;
+        state.next_base = base as usize + text.len() + 1;
         let program = Arc::new(program);
         let name = path.display().to_string();
         state.read.push((
             path.to_path_buf(),
-            base,
+            base as usize,
             Source { name, text },
             Arc::clone(&program),
         ));
@@ -236,6 +241,14 @@ fn inside(path: &str) -> Result<PathBuf, String> {
     Ok(rel)
 }
 
+/// Where a file of `len` bytes starts in the run's byte range, if all of it stays within
+/// `u32` (the offsets of [`gcode::Span`]).
+fn file_base(next_base: usize, len: usize) -> Option<u32> {
+    let base = u32::try_from(next_base).ok()?;
+    base.checked_add(u32::try_from(len).ok()?)?;
+    Some(base)
+}
+
 fn is_nc(p: &Path) -> bool {
     p.extension()
         .and_then(|e| e.to_str())
@@ -276,6 +289,15 @@ fn read(path: &Path) -> Result<String, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn file_ranges_stay_within_span_offsets() {
+        assert_eq!(file_base(10, 5), Some(10));
+        let max = u32::MAX as usize;
+        assert_eq!(file_base(max - 5, 5), Some(u32::MAX - 5));
+        assert_eq!(file_base(max - 5, 6), None);
+        assert_eq!(file_base(max + 1, 0), None);
+    }
 
     #[test]
     fn numbers_in_file_names() {

@@ -15,7 +15,11 @@ fn shape(s: &stock::Shape) -> Shape {
 /// A diagnostic for the report; one raised in a `--lib` file names that file first (the
 /// report's line and column are that file's).
 fn diagnostic(loaded: &Loaded, d: &expander::Diagnostic) -> Diagnostic {
-    let message = match loaded.library.as_ref().and_then(|l| l.place(d.span.offset)) {
+    let message = match loaded
+        .library
+        .as_ref()
+        .and_then(|l| l.place(d.span.offset as usize))
+    {
         Some((src, _)) => format!("in {}: {}", src.name, d.message),
         None => d.message.clone(),
     };

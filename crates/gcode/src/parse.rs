@@ -1,4 +1,7 @@
-//! The reader: one pass over the characters, tracking line and column.
+//! The reader: one pass over the characters, tracking line and column. It walks the bytes
+//! and decodes a character only where one is not ASCII; a word's number is a slice of the
+//! source (copied only when written in pieces, `Q5 000`), so a million-line program costs
+//! one allocation per block: its words.
 //!
 //! Lexical rules (spec/language.md): a block ends at a newline or `;`; letters are
 //! case-insensitive; white space is ignored everywhere, also inside a word (`Q5 000`);
@@ -71,7 +74,26 @@ pub fn parse(source: &str) -> Result<Program, ParseError> {
 
 /// Read a whole program text with options.
 pub fn parse_with(source: &str, options: ReadOptions) -> Result<Program, ParseError> {
+    check_length(source.len())?;
     Reader::new(source, options).run()
+}
+
+/// Spans hold byte offsets as `u32` (a million-line program holds millions of them), so a
+/// longer text is refused here rather than given wrong places.
+fn check_length(len: usize) -> Result<(), ParseError> {
+    if u32::try_from(len).is_ok() {
+        return Ok(());
+    }
+    Err(ParseError::new(
+        Span {
+            line: 1,
+            column: 1,
+            offset: 0,
+            len: 0,
+        },
+        format!("the program text is {len} bytes, more than the reader takes (4 GiB)"),
+        "split the program into files of at most 4 GiB",
+    ))
 }
 
 /// Macro B words that are letters only; any other run of two letters after `;` is prose.
@@ -86,28 +108,42 @@ const KEYWORDS: [&str; 37] = [
 /// not a macro keyword (in a program every letter is followed by its number).
 fn is_prose(rest: &str) -> bool {
     let mut depth = 0;
-    let mut run = String::new();
-    let flush = |run: &mut String| {
-        let prose = run.len() >= 2 && !KEYWORDS.contains(&run.to_ascii_uppercase().as_str());
-        run.clear();
-        prose
+    // the run of letters (a comment inside does not break it); only its first
+    // `LONGEST_KEYWORD + 1` letters are kept, enough to tell a keyword from prose
+    let mut run = [0u8; LONGEST_KEYWORD + 1];
+    let mut len = 0;
+    let prose = |run: &[u8], len: usize| {
+        len >= 2
+            && (len > LONGEST_KEYWORD
+                || !KEYWORDS
+                    .iter()
+                    .any(|k| k.as_bytes().eq_ignore_ascii_case(&run[..len])))
     };
-    for c in rest.chars() {
-        match c {
-            '(' => depth += 1,
-            ')' if depth > 0 => depth -= 1,
+    for &b in rest.as_bytes() {
+        match b {
+            b'(' => depth += 1,
+            b')' if depth > 0 => depth -= 1,
             _ if depth > 0 => {}
-            c if !c.is_ascii() => return true,
-            c if c.is_ascii_alphabetic() => run.push(c),
+            b if !b.is_ascii() => return true,
+            b if b.is_ascii_alphabetic() => {
+                if len < run.len() {
+                    run[len] = b;
+                }
+                len += 1;
+            }
             _ => {
-                if flush(&mut run) {
+                if prose(&run, len) {
                     return true;
                 }
+                len = 0;
             }
         }
     }
-    flush(&mut run)
+    prose(&run, len)
 }
+
+/// The longest of [`KEYWORDS`].
+const LONGEST_KEYWORD: usize = 5;
 
 /// Whether a line holds a program number or an address word (outside comments): a letter
 /// followed by a number, or `:` followed by digits.
@@ -171,17 +207,34 @@ enum ControlKind {
     Unexpected,
 }
 
+/// A word being read: its letter, and its number so far.
 struct PendingWord {
     letter: char,
     start: Span,
     end: Span,
-    text: String,
+    /// The number as a byte range of the source, while it is written in one piece.
+    text: std::ops::Range<usize>,
+    /// The number is in [`Reader::number`] instead (written in pieces, or a decimal comma).
+    copied: bool,
+}
+
+impl PendingWord {
+    fn new(letter: char, at: Span) -> Self {
+        Self {
+            letter,
+            start: at,
+            end: at,
+            text: 0..0,
+            copied: false,
+        }
+    }
 }
 
 struct Reader<'a> {
     src: &'a str,
     options: ReadOptions,
-    chars: std::iter::Peekable<std::str::CharIndices<'a>>,
+    /// Byte offset of the next character.
+    pos: usize,
     line: u32,
     column: u32,
     program: Program,
@@ -191,6 +244,11 @@ struct Reader<'a> {
     block_start: Option<Span>,
     block_end: Span,
     pending: Option<PendingWord>,
+    /// The number of the pending word when it is not one slice of the source.
+    number: String,
+    /// A `;` before this offset needs no prose test: it is on a line whose rest after an
+    /// earlier `;` was no prose and held no `(`, and so is every later part of it.
+    no_prose_before: usize,
     delete_level: u8,
     /// Flow-control bytes dropped, and the first one's place.
     flow_control: (usize, Span),
@@ -207,7 +265,7 @@ impl<'a> Reader<'a> {
         Self {
             src,
             options,
-            chars: src.char_indices().peekable(),
+            pos: 0,
             line: 1,
             column: 0,
             program: Program {
@@ -225,6 +283,8 @@ impl<'a> Reader<'a> {
             block_start: None,
             block_end: Span::default(),
             pending: None,
+            number: String::new(),
+            no_prose_before: 0,
             delete_level: 0,
             flow_control: (0, Span::default()),
             unexpected_control: (0, Span::default()),
@@ -234,15 +294,16 @@ impl<'a> Reader<'a> {
     }
 
     /// Byte offset of the next character.
-    fn offset(&mut self) -> usize {
-        self.chars.peek().map_or(self.src.len(), |&(o, _)| o)
+    fn offset(&self) -> usize {
+        self.pos
     }
 
     /// The rest of the current line, not consumed.
-    fn rest_of_line(&mut self) -> &'a str {
+    fn rest_of_line(&self) -> &'a str {
         let start = self.offset();
         let rest = &self.src[start..];
-        &rest[..rest.find('\n').unwrap_or(rest.len())]
+        let end = rest.bytes().position(|b| b == b'\n');
+        &rest[..end.unwrap_or(rest.len())]
     }
 
     fn note(&mut self, span: Span, message: impl Into<String>) {
@@ -290,7 +351,7 @@ impl<'a> Reader<'a> {
                 "text after the closing % is not read (a control stops at %)",
             );
         }
-        while self.next().is_some() {}
+        self.pos = self.src.len();
     }
 
     /// Count a dropped control byte.
@@ -323,14 +384,18 @@ impl<'a> Reader<'a> {
         }
     }
 
+    #[inline]
     fn next(&mut self) -> Option<(Span, char)> {
-        let (offset, c) = self.chars.next()?;
+        let c = self.peek()?;
+        let offset = self.pos;
+        self.pos += c.len_utf8();
         self.column += 1;
+        // the text is at most u32::MAX bytes (`check_length`)
         let span = Span {
             line: self.line,
             column: self.column,
-            offset,
-            len: c.len_utf8(),
+            offset: offset as u32,
+            len: c.len_utf8() as u32,
         };
         if c == '\n' {
             self.line += 1;
@@ -339,8 +404,78 @@ impl<'a> Reader<'a> {
         Some((span, c))
     }
 
-    fn peek(&mut self) -> Option<char> {
-        self.chars.peek().map(|&(_, c)| c)
+    #[inline]
+    fn peek(&self) -> Option<char> {
+        let &b = self.src.as_bytes().get(self.pos)?;
+        if b.is_ascii() {
+            Some(char::from(b))
+        } else {
+            self.src[self.pos..].chars().next()
+        }
+    }
+
+    /// The number text of a pending word.
+    fn number_text(&self, p: &PendingWord) -> &str {
+        if p.copied {
+            &self.number
+        } else {
+            &self.src[p.text.clone()]
+        }
+    }
+
+    /// Add a character to the pending word's number (`at`: where it was read; `,` stands
+    /// there for a decimal comma read as `.`). The number stays a slice of the source while
+    /// it is written in one piece.
+    fn push_number(&mut self, c: char, at: Span) {
+        let Some(p) = &mut self.pending else { return };
+        p.end = at;
+        let offset = at.offset as usize;
+        if !p.copied {
+            let in_place = self.src.as_bytes()[offset] == c as u8;
+            if in_place && p.text.is_empty() {
+                p.text = offset..offset + 1;
+                return;
+            }
+            if in_place && p.text.end == offset {
+                p.text.end += 1;
+                return;
+            }
+            self.number.clear();
+            self.number.push_str(&self.src[p.text.clone()]);
+            p.copied = true;
+        }
+        self.number.push(c);
+    }
+
+    /// The digits, point and signs right after an address letter, read in one go (the
+    /// common case; the character loop reads the rest and says when a number is too long).
+    fn scan_number(&mut self) {
+        let bytes = self.src.as_bytes();
+        let start = self.pos;
+        let mut end = start;
+        while end < bytes.len()
+            && end - start < MAX_NUMBER_CHARS
+            && matches!(bytes[end], b'0'..=b'9' | b'.' | b'+' | b'-')
+        {
+            end += 1;
+        }
+        if end == start {
+            return;
+        }
+        let n = (end - start) as u32;
+        let last = Span {
+            line: self.line,
+            column: self.column + n,
+            offset: (end - 1) as u32,
+            len: 1,
+        };
+        self.column += n;
+        self.pos = end;
+        if let Some(p) = &mut self.pending {
+            p.text = start..end;
+            p.end = last;
+        }
+        self.block_end = last;
     }
 
     fn mark(&mut self, span: Span) {
@@ -364,17 +499,23 @@ impl<'a> Reader<'a> {
                 ';' => {
                     self.end_block()?;
                     let rest = self.rest_of_line();
-                    if is_prose(rest) {
+                    if self.pos < self.no_prose_before {
+                        // a part of a rest already found no prose (see the field)
+                    } else if !is_prose(rest) {
+                        if !rest.as_bytes().contains(&b'(') {
+                            self.no_prose_before = self.pos + rest.len();
+                        }
+                    } else {
                         let mut start = span;
                         while self.peek().is_some_and(|c| c == ' ' || c == '\t') {
                             self.next();
                         }
-                        if let Some(&(offset, c)) = self.chars.peek() {
+                        if let Some(c) = self.peek() {
                             start = Span {
                                 line: self.line,
                                 column: self.column + 1,
-                                offset,
-                                len: c.len_utf8(),
+                                offset: self.pos as u32,
+                                len: c.len_utf8() as u32,
                             };
                         }
                         let end = self.skip_line();
@@ -387,12 +528,7 @@ impl<'a> Reader<'a> {
                 ' ' | '\t' | '\r' | '\u{3000}' => {}
                 '(' | '（' => self.skip_comment(span)?,
                 ':' if self.block_is_empty() && self.peek().is_some_and(|c| c.is_ascii_digit()) => {
-                    self.pending = Some(PendingWord {
-                        letter: 'O',
-                        start: span,
-                        end: span,
-                        text: String::new(),
-                    });
+                    self.pending = Some(PendingWord::new('O', span));
                     self.mark(span);
                 }
                 '"' => {
@@ -402,25 +538,20 @@ impl<'a> Reader<'a> {
                         "quoted text belongs in a comment ( … )",
                     ))
                 }
-                ',' if self
-                    .pending
-                    .as_ref()
-                    .is_some_and(|p| p.text.ends_with(|c: char| c.is_ascii_digit()))
-                    && self.peek().is_some_and(|c| c.is_ascii_digit()) =>
+                ',' if self.pending.as_ref().is_some_and(|p| {
+                    self.number_text(p).ends_with(|c: char| c.is_ascii_digit())
+                }) && self.peek().is_some_and(|c| c.is_ascii_digit()) =>
                 {
                     if !self.options.decimal_comma {
                         let p = self.pending.as_ref().expect("checked");
-                        let shown = format!("{}{},", p.letter, p.text);
+                        let shown = format!("{}{},", p.letter, self.number_text(p));
                         return Err(ParseError::new(
                             span,
                             format!("decimal comma in {shown}…"),
                             "write the decimal point as '.', or read the whole file with --decimal-comma",
                         ));
                     }
-                    if let Some(p) = &mut self.pending {
-                        p.text.push('.');
-                        p.end = span;
-                    }
+                    self.push_number('.', span);
                 }
                 '/' if self.peek() == Some('/') => {
                     self.finish_word()?;
@@ -463,7 +594,7 @@ impl<'a> Reader<'a> {
                 c if (c == '#' || c.is_ascii_alphabetic())
                     && self.options.macros.is_some()
                     && self.at_statement_start()
-                    && macro_b::starts_statement(&self.src[span.offset..]) =>
+                    && macro_b::starts_statement(&self.src[span.offset as usize..]) =>
                 {
                     self.finish_word()?;
                     self.statement(span)?;
@@ -489,36 +620,30 @@ impl<'a> Reader<'a> {
                     let letter = c.to_ascii_uppercase();
                     if self.options.macros.is_some() && self.expression_follows() {
                         self.expression_word(letter, span)?;
+                        self.mark(span);
                     } else {
-                        self.pending = Some(PendingWord {
-                            letter,
-                            start: span,
-                            end: span,
-                            text: String::new(),
-                        });
+                        self.pending = Some(PendingWord::new(letter, span));
+                        self.mark(span);
+                        self.scan_number();
                     }
-                    self.mark(span);
                 }
                 c if c.is_ascii_digit() || c == '.' || c == '+' || c == '-' => {
-                    match &mut self.pending {
-                        Some(p) => {
-                            if p.text.len() >= MAX_NUMBER_CHARS {
-                                return Err(ParseError::new(
-                                    p.start.to(span),
-                                    format!("number of address {} is too long", p.letter),
-                                    NUMBER_HELP,
-                                ));
-                            }
-                            p.text.push(c);
-                            p.end = span;
-                            self.block_end = span;
-                        }
-                        None => return Err(ParseError::new(
+                    let Some(p) = &self.pending else {
+                        return Err(ParseError::new(
                             span,
                             format!("number '{c}' without an address letter"),
                             "every number belongs to a word such as X100. or Z-5 — add the letter",
-                        )),
+                        ));
+                    };
+                    if self.number_text(p).len() >= MAX_NUMBER_CHARS {
+                        return Err(ParseError::new(
+                            p.start.to(span),
+                            format!("number of address {} is too long", p.letter),
+                            NUMBER_HELP,
+                        ));
                     }
+                    self.push_number(c, span);
+                    self.block_end = span;
                 }
                 c if !c.is_ascii() && !c.is_control() => {
                     // Manuals print annotations after the block without parentheses
@@ -603,7 +728,7 @@ impl<'a> Reader<'a> {
         Span {
             line: self.line,
             column: self.column + 1,
-            offset,
+            offset: offset as u32,
             len: 0,
         }
     }
@@ -611,7 +736,7 @@ impl<'a> Reader<'a> {
     /// A macro statement from `start` (already read) to the end of the block.
     fn statement(&mut self, start: Span) -> Result<(), ParseError> {
         self.mark(start);
-        let text = self.block_text(start.offset).trim_end();
+        let text = self.block_text(start.offset as usize).trim_end();
         let options = match self.options.macros {
             Some(Dialect::Haas) => macro_b::Options::haas(),
             _ => macro_b::Options::fanuc(),
@@ -619,8 +744,8 @@ impl<'a> Reader<'a> {
         let stmt = macro_b::parse_stmt(text, start, &options)?;
         // Haas `IF [cond] THEN <NC block>`: the block's words are read as words
         let end = match &stmt.kind {
-            macro_b::StmtKind::IfThenBlock { text_span, .. } => text_span.offset,
-            _ => start.offset + text.len(),
+            macro_b::StmtKind::IfThenBlock { text_span, .. } => text_span.offset as usize,
+            _ => start.offset as usize + text.len(),
         };
         self.consume_to(end);
         self.stmt = Some(stmt);
@@ -629,8 +754,18 @@ impl<'a> Reader<'a> {
 
     /// Whether the value after an address letter is a macro expression: `#…`, `[…]`, a
     /// function (`ROUND[…]`), each possibly after a sign.
-    fn expression_follows(&mut self) -> bool {
+    fn expression_follows(&self) -> bool {
         let at = self.offset();
+        let next = &self.src.as_bytes()[at..];
+        let unsigned = next.strip_prefix(b"-").or_else(|| next.strip_prefix(b"+"));
+        if unsigned
+            .unwrap_or(next)
+            .first()
+            .is_some_and(|b| b.is_ascii_digit() || *b == b'.')
+        {
+            // a number, the common case: no `#`, `[` or function name
+            return false;
+        }
         let rest = self.block_text(at);
         let t = rest.trim_start_matches([' ', '\t']);
         let t = t
@@ -640,13 +775,9 @@ impl<'a> Reader<'a> {
         if t.starts_with(['#', '[']) {
             return true;
         }
-        let name: String = t
-            .chars()
-            .take_while(char::is_ascii_alphabetic)
-            .map(|c| c.to_ascii_uppercase())
-            .collect();
-        Func::from_name(&name).is_some()
-            && t[name.len()..]
+        let name_len = t.bytes().take_while(u8::is_ascii_alphabetic).count();
+        Func::from_name(&t[..name_len].to_ascii_uppercase()).is_some()
+            && t[name_len..]
                 .trim_start_matches([' ', '\t'])
                 .starts_with('[')
     }
@@ -661,9 +792,9 @@ impl<'a> Reader<'a> {
             ));
         }
         let base = self.next_span();
-        let text = self.block_text(base.offset);
+        let text = self.block_text(base.offset as usize);
         let (expr, used) = macro_b::parse_operand(text, base)?;
-        let end = self.consume_to(base.offset + used).unwrap_or(at);
+        let end = self.consume_to(base.offset as usize + used).unwrap_or(at);
         self.push_word(Word {
             letter,
             value: 0.0,
@@ -793,7 +924,8 @@ impl<'a> Reader<'a> {
             .iter()
             .any(|w| w.expr.is_none() && m98(w.letter, w.value))
             || self.pending.as_ref().is_some_and(|p| {
-                parse_number(&p.text).is_some_and(|(v, point)| !point && m98(p.letter, v))
+                parse_number(self.number_text(p))
+                    .is_some_and(|(v, point)| !point && m98(p.letter, v))
             })
     }
 
@@ -802,8 +934,9 @@ impl<'a> Reader<'a> {
             return Ok(());
         };
         let span = p.start.to(p.end);
-        let (value, has_point) = parse_number(&p.text).ok_or_else(|| {
-            if p.text.is_empty() {
+        let text = self.number_text(&p);
+        let (value, has_point) = parse_number(text).ok_or_else(|| {
+            if text.is_empty() {
                 ParseError::new(
                     span,
                     format!("address {} has no value", p.letter),
@@ -812,19 +945,18 @@ impl<'a> Reader<'a> {
             } else {
                 ParseError::new(
                     span,
-                    format!("malformed number '{}' after {}", p.text, p.letter),
+                    format!("malformed number '{}' after {}", text, p.letter),
                     "a number is an optional sign, digits and at most one decimal point, e.g. -17.639 or 100.",
                 )
             }
         })?;
-        let whole_digits = p
-            .text
-            .split('.')
-            .next()
-            .unwrap_or("")
-            .trim_start_matches(['+', '-'])
-            .trim_start_matches('0')
-            .len();
+        // digits before the point, signs and leading zeros aside
+        let whole_digits = text
+            .bytes()
+            .take_while(|&b| b != b'.')
+            .skip_while(|&b| b == b'+' || b == b'-')
+            .skip_while(|&b| b == b'0')
+            .count();
         if whole_digits > MAX_WHOLE_DIGITS {
             return Err(ParseError::new(
                 span,
@@ -968,13 +1100,17 @@ fn whole(value: f64, has_point: bool, span: Span, letter: char) -> Result<u32, P
 
 /// `[+-]? (digits [. digits*] | . digits)`; returns the value and whether a point was written.
 fn parse_number(text: &str) -> Option<(f64, bool)> {
-    let body = text.strip_prefix(['+', '-']).unwrap_or(text);
+    let bytes = text.as_bytes();
+    let body = match bytes.first() {
+        Some(b'+' | b'-') => &bytes[1..],
+        _ => bytes,
+    };
     let mut digits = 0;
     let mut points = 0;
-    for c in body.chars() {
-        match c {
-            '0'..='9' => digits += 1,
-            '.' => points += 1,
+    for &b in body {
+        match b {
+            b'0'..=b'9' => digits += 1,
+            b'.' => points += 1,
             _ => return None,
         }
     }
@@ -1288,17 +1424,82 @@ mod tests {
         assert_eq!(codes, vec![Some(751), Some(10), Some(0)]);
     }
 
+    #[test]
+    fn numbers_written_in_pieces_keep_their_spans() {
+        // a number in one piece is a slice of the source; in pieces it is copied
+        let p = parse("G1 X1 2.5(c)0\u{11}1 Z-3\n").unwrap();
+        let w = &p.programs[0].blocks[0].words;
+        assert_eq!((w[1].value, w[1].has_point), (12.501, true));
+        assert_eq!(
+            (w[1].span.column, w[1].span.offset, w[1].span.len),
+            (4, 3, 12)
+        );
+        assert_eq!((w[2].value, w[2].span.column, w[2].span.len), (-3.0, 17, 3));
+        let comma = ReadOptions {
+            decimal_comma: true,
+            ..ReadOptions::default()
+        };
+        let p = parse_with("X1 2,5 Z3,25", comma).unwrap();
+        let w = &p.programs[0].blocks[0].words;
+        assert_eq!((w[0].value, w[1].value), (12.5, 3.25));
+        assert_eq!((w[0].span.len, w[1].span.len), (6, 5));
+        let e = parse_with("X1,2,3", comma).unwrap_err();
+        assert!(
+            e.message.contains("malformed number '1.2.3'"),
+            "{}",
+            e.message
+        );
+        // the 21st character of a number is refused where it stands, in one piece or not
+        let e = parse("X123456789012345678901").unwrap_err();
+        assert!(e.message.contains("too long"), "{}", e.message);
+        assert_eq!((e.span.column, e.span.len), (1, 22));
+        let e = parse("X1234567890 1234567890 1").unwrap_err();
+        assert_eq!((e.span.column, e.span.len), (1, 24));
+        // after a full-width space and comment, columns count characters
+        let e = parse("\u{3000}（注）X1 Y").unwrap_err();
+        assert_eq!((e.span.column, e.span.offset), (8, 15));
+    }
+
+    #[test]
+    fn prose_after_a_later_semicolon_of_the_same_line() {
+        // the rest after the first ';' is no prose, so neither is the rest after the second
+        let p = parse("G0 X1;G1 Z2;G3 X4\n").unwrap();
+        assert_eq!((p.programs[0].blocks.len(), p.notes.len()), (3, 0));
+        // but inside '(' the first test saw no prose where the second does
+        let p = parse("G0 X1; G1 ((x) ; ab\nG0 X2").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 3);
+        assert!(notes(&p)[0].contains("after ';'"), "{:?}", notes(&p));
+        // a keyword is not prose, a longer run of letters is, through a comment too
+        assert!(!is_prose(" WHILE [#1 LT 2] DO1"));
+        assert!(is_prose(" WHILEX"));
+        assert!(is_prose(" A(x)B1"));
+        assert!(!is_prose(" A(xyz)1"));
+        assert_eq!(
+            KEYWORDS.iter().map(|k| k.len()).max(),
+            Some(LONGEST_KEYWORD)
+        );
+    }
+
+    #[test]
+    fn a_text_over_4_gib_is_refused_not_misplaced() {
+        assert!(check_length(u32::MAX as usize).is_ok());
+        let e = check_length(u32::MAX as usize + 1).unwrap_err();
+        assert!(e.message.contains("4294967296 bytes"), "{}", e.message);
+        assert_eq!((e.span.line, e.span.column), (1, 1));
+    }
+
     /// Issue 16/17 memory: a million-line program keeps every block and word at once, so
     /// their size is the peak of a big run (macro parts are boxed; words exactly as many).
     #[test]
     fn blocks_and_words_stay_compact() {
+        assert_eq!(std::mem::size_of::<Span>(), 16);
         assert!(
-            std::mem::size_of::<Word>() <= 48,
+            std::mem::size_of::<Word>() <= 40,
             "{}",
             std::mem::size_of::<Word>()
         );
         assert!(
-            std::mem::size_of::<Block>() <= 104,
+            std::mem::size_of::<Block>() <= 80,
             "{}",
             std::mem::size_of::<Block>()
         );

@@ -131,8 +131,9 @@ impl Program {
     }
     /// Move every span's byte offset by `by` (lines and columns stay): a caller that reads
     /// several files (subprograms in `--lib` folders) gives each file a byte range of its own
-    /// and finds the file of a span by its offset.
-    pub fn shift_spans(&mut self, by: usize) {
+    /// and finds the file of a span by its offset. The caller keeps the shifted offsets
+    /// within `u32` (see [`Span`]).
+    pub fn shift_spans(&mut self, by: u32) {
         let shift = |s: &mut Span| s.offset += by;
         for p in &mut self.programs {
             shift(&mut p.span);

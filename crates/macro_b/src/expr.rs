@@ -406,8 +406,8 @@ impl Src<'_> {
         Span {
             line,
             column,
-            offset: self.base.offset + start,
-            len: end - start,
+            offset: self.base.offset + start as u32,
+            len: (end - start) as u32,
         }
     }
 }
@@ -1106,15 +1106,10 @@ pub fn starts_statement(text: &str) -> bool {
     if t.starts_with('#') {
         return true;
     }
-    let word: String = t
-        .chars()
-        .take_while(char::is_ascii_alphabetic)
-        .map(|c| c.to_ascii_uppercase())
-        .collect();
-    matches!(
-        word.as_str(),
-        "IF" | "WHILE" | "WH" | "DO" | "END" | "GOTO" | "ELSE" | "ENDIF"
-    )
+    let word = &t[..t.bytes().take_while(u8::is_ascii_alphabetic).count()];
+    ["IF", "WHILE", "WH", "DO", "END", "GOTO", "ELSE", "ENDIF"]
+        .iter()
+        .any(|k| k.eq_ignore_ascii_case(word))
 }
 
 #[cfg(test)]

@@ -876,15 +876,15 @@ mod tests {
                 line: line_no,
                 column: 1,
                 offset,
-                len: raw.len(),
+                len: raw.len() as u32,
             };
             let base = Span {
                 line: line_no,
                 column: col,
-                offset: offset + (col as usize - 1),
+                offset: offset + (col - 1),
                 len: 0,
             };
-            offset += raw.len() + 1;
+            offset += raw.len() as u32 + 1;
             if body.is_empty() {
                 continue;
             }

@@ -24,7 +24,7 @@
 //! let text = ["#1 = 0", "WHILE [#1 LT 3] DO1", "#1 = #1 + 1", "END1"];
 //! let mut lines: Vec<Line<&str>> = Vec::new();
 //! for (i, t) in text.iter().enumerate() {
-//!     let at = Span { line: i as u32 + 1, column: 1, offset: 0, len: t.len() };
+//!     let at = Span { line: i as u32 + 1, column: 1, offset: 0, len: t.len() as u32 };
 //!     let stmt = parse_stmt(t, at, &opts).unwrap();
 //!     lines.push(Line { seq: None, span: at, body: Body::Stmt(stmt) });
 //! }

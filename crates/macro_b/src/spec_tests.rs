@@ -20,14 +20,14 @@ fn read(src: &str, options: &Options) -> Result<Vec<MacroProgram<Nc>>> {
         let base = |at: usize| Span {
             line: line_no,
             column: raw[..at].chars().count() as u32 + 1,
-            offset: line_offset + at,
+            offset: (line_offset + at) as u32,
             len: 0,
         };
         let span = Span {
             line: line_no,
             column: 1,
-            offset,
-            len: raw.len(),
+            offset: offset as u32,
+            len: raw.len() as u32,
         };
         offset += raw.len() + 1;
         let text = raw.trim_end().trim_end_matches(';').trim_end();
