@@ -1043,8 +1043,9 @@ impl<'a> Reader<'a> {
     fn end_block(&mut self) -> Result<(), ParseError> {
         self.finish_word()?;
         if let Some(start) = self.block_start.take() {
-            // exactly as long as needed: a million-line program keeps all its blocks
-            let words = self.words.to_vec();
+            // exactly as long as needed, and no capacity word: a million-line program keeps
+            // all its blocks
+            let words: Box<[Word]> = self.words.as_slice().into();
             self.words.clear();
             let seq = self.seq.take();
             let block_delete = std::mem::replace(&mut self.block_delete, false);
@@ -1499,12 +1500,12 @@ mod tests {
             std::mem::size_of::<Word>()
         );
         assert!(
-            std::mem::size_of::<Block>() <= 80,
+            std::mem::size_of::<Block>() <= 72,
             "{}",
             std::mem::size_of::<Block>()
         );
         let p = parse("G01 X1. Z2. F0.1;\nG00 X3.;\n").unwrap();
         let b = &p.programs[0].blocks;
-        assert_eq!((b[0].words.capacity(), b[1].words.capacity()), (4, 2));
+        assert_eq!((b[0].words.len(), b[1].words.len()), (4, 2));
     }
 }

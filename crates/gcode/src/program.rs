@@ -34,7 +34,7 @@ impl Word {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Block {
     /// Words in the order written, without the N word and comments.
-    pub words: Vec<Word>,
+    pub words: Box<[Word]>,
     /// The sequence number (`N14`), if any.
     pub seq: Option<u32>,
     /// Span of the N word, if any.

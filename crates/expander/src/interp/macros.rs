@@ -302,14 +302,14 @@ impl Macros {
         increment: f64,
         sys: &mut dyn System,
     ) -> Result<(), MacroError> {
-        to.words.clear();
+        let mut words = Vec::with_capacity(from.words.len());
         for w in &from.words {
             let Some(e) = &w.expr else {
-                to.words.push(w.clone());
+                words.push(w.clone());
                 continue;
             };
             if let Some((value, has_point)) = self.word_value(w, e, increment, sys)? {
-                to.words.push(Word {
+                words.push(Word {
                     value,
                     has_point,
                     expr: None,
@@ -317,6 +317,7 @@ impl Macros {
                 });
             }
         }
+        to.words = words.into_boxed_slice();
         Ok(())
     }
 
