@@ -169,20 +169,28 @@ pub(crate) fn add_crashes(
             let _ = write!(report.stock.description, "; {moves}");
         }
     }
+    // the picture shows the part at the end: a centre the program leaves retracted is drawn
+    // where it stood, and its label says so
+    let retracted = loaded.toolpath.tailstock.last().is_some_and(|c| !c.1);
     report.fixture = fixture
         .iter()
         .flat_map(|f| f.obstacles.iter())
         .filter(|o| !o.cut_only)
         .map(|o| render::Fixture {
-            name: o.name.to_string(),
+            name: if retracted && o.name == "tailstock centre" {
+                "tailstock centre (retracted)".to_string()
+            } else {
+                o.name.to_string()
+            },
             shapes: o.shapes.iter().map(shape).collect(),
         })
         .collect();
 }
 
 /// Where the program moves the tailstock (M21/M22, M10/M11), for the stock's description:
-/// the picture draws the centre advanced, so a retract must be said ("tailstock retracted
-/// before line 4"); the first two changes are named. None when it never moves.
+/// the picture draws the centre where it stands advanced, so a retract must be said
+/// ("tailstock retracted before line 4"); the first two changes are named. None when it
+/// never moves.
 fn tailstock_moves(loaded: &Loaded) -> Option<String> {
     let segments = &loaded.toolpath.segments;
     let changes: Vec<String> = loaded

@@ -382,3 +382,42 @@ fn a_retracted_tailstock_is_no_obstacle() {
         assert_eq!(crashes(&v).len(), crashes_expected as usize, "{m}");
     }
 }
+
+/// The picture shows the part at the end of the program: a tailstock centre the program
+/// leaves retracted is labelled so (it is drawn where it stood advanced); one advanced again
+/// keeps its plain label.
+#[test]
+fn a_centre_left_retracted_is_labelled_retracted() {
+    let program = |m: &str| {
+        facing(-0.5, 0.0).replacen("G00 X44. Z5.;\n", &format!("{m}\nG00 X44. Z5.;\n"), 1)
+    };
+    for (m, retracted) in [("M11;", true), ("M11;\nM10;", false), ("", false)] {
+        let (dir, prog) = temp_program("p.nc", program(m).as_bytes());
+        let tools = dir.path().join("tools.toml");
+        std::fs::write(&tools, BLADE).unwrap();
+        let svg = dir.path().join("r.svg");
+        let out = latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--stock",
+            "40x100",
+            "--tools",
+            tools.to_str().unwrap(),
+            "--chuck",
+            "grip=30,tail=-1",
+            "--svg",
+            svg.to_str().unwrap(),
+            "-q",
+        ]);
+        assert!(out.code == 0 || out.code == 1, "{}", out.stderr);
+        let text = read(&svg);
+        assert!(
+            text.contains(">tailstock centre"),
+            "{m:?}: no tailstock label"
+        );
+        // on one line where there is room, else "(retracted)" on a second
+        let label = text.contains(">tailstock centre (retracted)<")
+            || text.contains(">tailstock centre<") && text.contains(">(retracted)<");
+        assert_eq!(label, retracted, "{m:?}");
+    }
+}

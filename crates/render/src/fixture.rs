@@ -61,8 +61,17 @@ pub(crate) fn label_fixture(doc: &mut Doc, report: &Report, v: &View) {
         let (y0, y1) = (v.y(b.rmax), v.y(b.rmin));
         let w = crate::text::width(&f.name, FS_SMALL);
         let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+        // "tailstock centre (retracted)" may go on two lines, split before the bracket
+        let two = f.name.split_once(" (").map(|(a, b)| (a, format!("({b}")));
+        let two_w = two.as_ref().map_or(f64::INFINITY, |(a, b)| {
+            crate::text::width(a, FS_SMALL).max(crate::text::width(b, FS_SMALL))
+        });
         if x1 - x0 >= w + 4.0 && y1 - y0 >= FS_SMALL + 2.0 {
             doc.text(cx, cy + FS_SMALL * 0.35, FS_SMALL, "middle", LABEL, &f.name);
+        } else if x1 - x0 >= two_w + 4.0 && y1 - y0 >= 2.4 * FS_SMALL + 2.0 {
+            let (a, b) = two.as_ref().expect("a finite width");
+            doc.text(cx, cy - FS_SMALL * 0.25, FS_SMALL, "middle", LABEL, a);
+            doc.text(cx, cy + FS_SMALL * 0.95, FS_SMALL, "middle", LABEL, b);
         } else if y1 - y0 >= w + 4.0 && x1 - x0 >= FS_SMALL + 2.0 {
             // a tall narrow part (a jaw seen small): the name runs upward
             doc.text_el(
