@@ -359,28 +359,34 @@ fn a_retracted_tailstock_is_no_obstacle() {
     );
     // Haas: M22 retracts, M21 advances (under GSK980TD they are unknown codes)
     for (m, crashes_expected) in [("M22;", 0), ("M22;\nM21;", 1)] {
-        let (dir, prog) = temp_program("h.nc", with(m).as_bytes());
-        let tools = dir.path().join("tools.toml");
-        std::fs::write(&tools, BLADE).unwrap();
-        let json = dir.path().join("r.json");
-        let out = latsim(&[
-            "run",
-            prog.to_str().unwrap(),
-            "--control",
-            "haas",
-            "--stock",
-            "40x100",
-            "--tools",
-            tools.to_str().unwrap(),
-            "--chuck",
-            "grip=30,tail=-1",
-            "--json",
-            json.to_str().unwrap(),
-        ]);
-        assert_eq!(out.code, crashes_expected, "{m}: {}", out.stderr);
-        let v: Value = serde_json::from_str(&read(&json)).unwrap();
+        let (code, json) = run_with_centre(&with(m), &["--control", "haas"], "r.json");
+        assert_eq!(code, crashes_expected, "{m}");
+        let v: Value = serde_json::from_str(&json).unwrap();
         assert_eq!(crashes(&v).len(), crashes_expected as usize, "{m}");
     }
+}
+
+/// Runs `program` on a Ø40 × 100 bar held 30 mm, the centre's tip at Z-1, with the blade
+/// table and `extra` arguments, writing the report `name` (its kind by the extension);
+/// returns the exit code and the report's text.
+fn run_with_centre(program: &str, extra: &[&str], name: &str) -> (i32, String) {
+    let (dir, prog) = temp_program("p.nc", program.as_bytes());
+    let tools = dir.path().join("tools.toml");
+    std::fs::write(&tools, BLADE).unwrap();
+    let report = dir.path().join(name);
+    let kind = format!("--{}", name.rsplit('.').next().unwrap());
+    let mut args = vec![prog.to_str().unwrap(), "--stock", "40x100"];
+    args.extend([
+        "--tools",
+        tools.to_str().unwrap(),
+        "--chuck",
+        "grip=30,tail=-1",
+    ]);
+    args.extend([kind.as_str(), report.to_str().unwrap(), "-q"]);
+    args.extend(extra);
+    let out = latsim(&[&["run"], &args[..]].concat());
+    assert!(out.code == 0 || out.code == 1, "{}", out.stderr);
+    (out.code, read(&report))
 }
 
 /// The picture shows the part at the end of the program: a tailstock centre the program
@@ -392,25 +398,7 @@ fn a_centre_left_retracted_is_labelled_retracted() {
         facing(-0.5, 0.0).replacen("G00 X44. Z5.;\n", &format!("{m}\nG00 X44. Z5.;\n"), 1)
     };
     for (m, retracted) in [("M11;", true), ("M11;\nM10;", false), ("", false)] {
-        let (dir, prog) = temp_program("p.nc", program(m).as_bytes());
-        let tools = dir.path().join("tools.toml");
-        std::fs::write(&tools, BLADE).unwrap();
-        let svg = dir.path().join("r.svg");
-        let out = latsim(&[
-            "run",
-            prog.to_str().unwrap(),
-            "--stock",
-            "40x100",
-            "--tools",
-            tools.to_str().unwrap(),
-            "--chuck",
-            "grip=30,tail=-1",
-            "--svg",
-            svg.to_str().unwrap(),
-            "-q",
-        ]);
-        assert!(out.code == 0 || out.code == 1, "{}", out.stderr);
-        let text = read(&svg);
+        let (_, text) = run_with_centre(&program(m), &[], "r.svg");
         assert!(
             text.contains(">tailstock centre"),
             "{m:?}: no tailstock label"
