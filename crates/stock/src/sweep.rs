@@ -300,8 +300,8 @@ fn angle(u: P, v: P) -> f64 {
     cross.abs().atan2(dot)
 }
 
-/// A body by tool, hint and whether it is mirrored (a rear post).
-type BodyKey = ((u32, u8, u64), bool);
+/// A tool's outline or body by tool, hint and whether it is mirrored (a rear post).
+type ToolKey = ((u32, u8, u64), bool);
 
 /// Turns segments into sweeps on the grid, in order.
 pub(crate) struct SweepBuilder<'a> {
@@ -315,12 +315,12 @@ pub(crate) struct SweepBuilder<'a> {
     /// Sweep consecutive feeds as one path (see [`crate::SimOptions::feed_paths`]).
     feed_paths: bool,
     /// Shared, not copied: every segment asks for its tool's outline (and body) once or more.
-    outlines: HashMap<((u32, u8, u64), bool), Arc<Outline>>,
-    bodies: HashMap<BodyKey, Option<Arc<crate::Body>>>,
+    outlines: HashMap<ToolKey, Arc<Outline>>,
+    bodies: HashMap<ToolKey, Option<Arc<crate::Body>>>,
     /// The last lookups: consecutive segments nearly always share their tool, and a hash
     /// of the key for every segment showed in profiles.
-    last_outline: Option<(BodyKey, Arc<Outline>)>,
-    last_body: Option<(BodyKey, Option<Arc<crate::Body>>)>,
+    last_outline: Option<(ToolKey, Arc<Outline>)>,
+    last_body: Option<(ToolKey, Option<Arc<crate::Body>>)>,
     run: Option<Run>,
     /// Body sweeps of the moves of the open run: emitted after the run's own sweep, so
     /// that they meet the stock as it is after the cut.
