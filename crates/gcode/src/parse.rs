@@ -844,10 +844,12 @@ impl<'a> Reader<'a> {
 
     /// Skip to the end of the line (the newline itself ends the block). Returns the last span.
     fn skip_line(&mut self) -> Span {
+        // nothing to skip: an empty span here (not at the start of the file), so that
+        // `span.to(skip_line())` stays on the line
         let mut last = Span {
             line: self.line,
             column: self.column,
-            offset: 0,
+            offset: self.offset() as u32,
             len: 0,
         };
         while let Some(c) = self.peek() {
@@ -1145,6 +1147,20 @@ fn parse_number(text: &str) -> Option<(f64, bool)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Text outside parentheses that ends its line is noted where it stands (the note ran
+    /// from the start of the file when nothing followed the character).
+    #[test]
+    fn a_note_for_text_at_the_end_of_a_line_stays_on_it() {
+        let p = parse("O0001\nG0 X50. Z2.\nG1 Z-5. F0.2 \u{e9}\nG0 X60.\nM30\n").unwrap();
+        let n = &p.notes[0];
+        assert_eq!(
+            (n.span.line, n.span.column, n.span.offset, n.span.len),
+            (3, 14, 31, 2),
+            "{:?}",
+            n.span
+        );
+    }
 
     /// The fast path gives `str::parse`'s value bit for bit, sign of zero included.
     #[test]
