@@ -164,7 +164,11 @@ pub(crate) fn add_crashes(
         let n = n.trim_end_matches('0').trim_end_matches('.');
         let _ = write!(report.stock.description, ", stick-out {n} mm");
     }
-    if fixture.is_some_and(|f| f.obstacles.iter().any(|o| o.name == "tailstock centre")) {
+    if fixture.is_some_and(|f| {
+        f.obstacles
+            .iter()
+            .any(|o| o.name == stock::TAILSTOCK_CENTRE)
+    }) {
         if let Some(moves) = tailstock_moves(loaded) {
             let _ = write!(report.stock.description, "; {moves}");
         }
@@ -177,8 +181,8 @@ pub(crate) fn add_crashes(
         .flat_map(|f| f.obstacles.iter())
         .filter(|o| !o.cut_only)
         .map(|o| render::Fixture {
-            name: if retracted && o.name == "tailstock centre" {
-                "tailstock centre (retracted)".to_string()
+            name: if retracted && o.name == stock::TAILSTOCK_CENTRE {
+                format!("{} (retracted)", stock::TAILSTOCK_CENTRE)
             } else {
                 o.name.to_string()
             },
@@ -532,7 +536,7 @@ pub(crate) fn snapshot_marks(moves: usize) -> Vec<usize> {
     if moves == 0 {
         return vec![];
     }
-    let count = if moves > 5_000 {
+    let count = if moves > stock::SNAPSHOT_EXACT_MAX_MOVES {
         SNAPSHOTS_LONG
     } else {
         SNAPSHOTS

@@ -56,7 +56,7 @@ pub struct Obstacle {
 }
 
 /// The name of the tailstock centre's obstacle.
-const TAILSTOCK: &str = "tailstock centre";
+pub const TAILSTOCK_CENTRE: &str = "tailstock centre";
 
 /// The chuck and tailstock placed against a blank.
 #[derive(Debug, Clone, PartialEq)]
@@ -183,7 +183,7 @@ impl Fixture {
                 ],
                 holes: Vec::new(),
             };
-            obstacles.push(Obstacle::new(TAILSTOCK, vec![centre], false));
+            obstacles.push(Obstacle::new(TAILSTOCK_CENTRE, vec![centre], false));
         }
         obstacles.extend(grip_rule);
         Ok(Some(Self {
@@ -263,7 +263,7 @@ impl Fixture {
                 let sb = shapes_box(&sweep);
                 for o in &self.obstacles {
                     let applies = (!o.cut_only || (body.is_none() && seg.motion != Motion::Rapid))
-                        && (advanced || o.name != TAILSTOCK);
+                        && (advanced || o.name != TAILSTOCK_CENTRE);
                     if !applies || hit.contains(&o.name) || !o.may_overlap(&sweep, &sb) {
                         continue;
                     }

@@ -31,7 +31,7 @@ mod tools;
 pub use blank::Blank;
 pub use deviation::{deviation, Deviation, Finding, Intent};
 pub use error::StockError;
-pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH};
+pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH, TAILSTOCK_CENTRE};
 pub use measure::{
     area, deepest_radius, groove_deviation, hausdorff, least_gap, revolved_volume,
     surface_radius_at, symmetric_difference_area, threads, Reference, Surface, Thread, ThreadForm,
@@ -42,6 +42,7 @@ pub use pose::{tool_at_crash, tool_outlines};
 pub use profile::profile_from_toml;
 pub use removal::{simulate, Crash, SimOptions, Simulation, CRASH_MIN_AREA};
 pub use section::rear_tools;
+pub use snapshot::EXACT_MAX_MOVES as SNAPSHOT_EXACT_MAX_MOVES;
 pub use tools::{AxisDir, Body, GroovingBlade, HolderSize, Insert, ThreadSide, Tool, ToolTable};
 
 /// A polygon with holes in (z, r): `outer` counter-clockwise, `holes` clockwise; rings are

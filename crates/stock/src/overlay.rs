@@ -144,7 +144,6 @@ impl IBox {
         self.max = [self.max[0].max(p.x), self.max[1].max(p.y)];
     }
 
-    /// Box of the segment `[a, b]`.
     /// The box of some points (EMPTY for none).
     pub(crate) fn of(points: impl IntoIterator<Item = IPt>) -> Self {
         let mut b = Self::EMPTY;
@@ -154,6 +153,7 @@ impl IBox {
         b
     }
 
+    /// Box of the segment `[a, b]`.
     pub(crate) fn of_segment(a: IPt, b: IPt) -> Self {
         Self {
             min: [a.x.min(b.x), a.y.min(b.y)],

@@ -175,7 +175,7 @@ fn bbox_of(shapes: &IShapes) -> IBox {
 struct Trimmed {
     pts: Vec<IPt>,
     rings: Vec<std::ops::Range<usize>>,
-    /// Per ring: whether it came from a convex polygon (see `Sweeps::polys_flagged_of`).
+    /// Per ring: whether it came from a convex polygon (see `Sweeps::polys_with_runs_of`).
     convex: Vec<bool>,
     /// Rings (not convex) are trimmed with the tests of [`trim_to_box`] for rings
     /// ([`SimOptions::ring_air`]).
@@ -187,6 +187,13 @@ impl Trimmed {
         self.pts.clear();
         self.rings.clear();
         self.convex.clear();
+    }
+
+    /// Appends every polygon of the sweep `it`, trimmed to `b`.
+    fn push_sweep(&mut self, sweeps: &Sweeps, it: &Item, b: &IBox) {
+        for p in sweeps.polys_with_runs_of(it) {
+            self.push(p, b);
+        }
     }
 
     /// Appends `poly` trimmed to `b` (nothing when its overlap with `b` has no area); `runs`
@@ -292,9 +299,7 @@ impl Tile {
         let items = &sweeps.items;
         trim.clear();
         for &i in &self.pending {
-            for p in sweeps.polys_with_runs_of(&items[i as usize]) {
-                trim.push(p, &self.bbox);
-            }
+            trim.push_sweep(sweeps, &items[i as usize], &self.bbox);
         }
         self.stock = engine.difference(&self.stock, trim.iter());
         self.bbox = bbox_of(&self.stock);
@@ -308,8 +313,8 @@ impl Tile {
         sweeps.polys_of(it).all(|rp| {
             self.pending.iter().rev().any(|&j| {
                 sweeps
-                    .polys_flagged_of(&sweeps.items[j as usize])
-                    .any(|(pp, convex)| convex && convex_contains(pp, rp))
+                    .polys_with_runs_of(&sweeps.items[j as usize])
+                    .any(|(pp, convex, _)| convex && convex_contains(pp, rp))
             })
         })
     }
@@ -345,9 +350,7 @@ impl Tile {
                 continue;
             }
             trim.clear();
-            for p in sweeps.polys_with_runs_of(it) {
-                trim.push(p, &self.bbox);
-            }
+            trim.push_sweep(sweeps, it, &self.bbox);
             if !trim.iter_flagged().any(|(p, convex)| {
                 if convex || !ctx.ring_air {
                     touches(p, convex, &self.stock, &self.bbox)
@@ -383,9 +386,7 @@ impl Tile {
             return;
         }
         trim.clear();
-        for p in ctx.sweeps.polys_with_runs_of(it) {
-            trim.push(p, &self.bbox);
-        }
+        trim.push_sweep(ctx.sweeps, it, &self.bbox);
         let overlap = worker.engine.intersection(&self.stock, trim.iter());
         let a = ctx.grid.area(&overlap);
         if a > 0.0 {

@@ -10,7 +10,7 @@
 //! after each count asked for, labelled with the moves it holds.
 
 /// Longest program whose snapshots are taken exactly at their counts.
-pub(crate) const EXACT_MAX_MOVES: usize = 5_000;
+pub const EXACT_MAX_MOVES: usize = 5_000;
 
 use crate::overlay::{Engine, IShapes};
 use crate::sweep::{SweepBuilder, Sweeps};

@@ -134,18 +134,6 @@ impl Sweeps {
             .map(|r| &self.pts[r.start as usize..r.end as usize])
     }
 
-    /// The polygons of one item, each with whether it is convex.
-    pub(crate) fn polys_flagged_of(
-        &self,
-        it: &Item,
-    ) -> impl Iterator<Item = (&[IPt], bool)> + Clone {
-        let r = it.polys.start as usize..it.polys.end as usize;
-        self.polys[r.clone()]
-            .iter()
-            .zip(&self.convex[r])
-            .map(|(p, &c)| (&self.pts[p.start as usize..p.end as usize], c))
-    }
-
     /// The polygons of one item, each with whether it is convex and its run boxes (a
     /// ring's, see [`crate::ring_air`]).
     pub(crate) fn polys_with_runs_of(
