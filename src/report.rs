@@ -519,6 +519,8 @@ pub(crate) fn add_threads(
             depth_error_mm: depth_error,
             pitch_diameter_mm: form.map(|f| f.pitch_diameter),
             included_angle_deg: form.and_then(|f| f.included_angle),
+            z_start_mm: z0,
+            z_end_mm: z1,
         });
     }
 }

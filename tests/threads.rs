@@ -221,6 +221,9 @@ fn m20_thread_reports_its_minor() {
     // 0.75 / (2 tan 30°) = 0.649519 above the root, d2 = 2 (9.025 + 0.649519) = 19.349.
     assert!((x("pitch_diameter") - 19.349038).abs() < 2e-3, "{t:#}");
     assert!((x("included_angle_deg") - 60.0).abs() < 0.05, "{t:#}");
+    // the deepest pass's threading move runs from the cycle's start Z5 to where the
+    // chamfer (P..10..: 1.0 lead) pulls out, 1.5 before Z-25
+    assert_eq!((x("z_start"), x("z_end")), (5.0, -23.5), "{t:#}");
     let h = [0.4, 0.565685, 0.692820, 0.8, 0.894427, 0.925, 0.975, 0.975];
     let depths: Vec<f64> = t["pass_depths_mm"]
         .as_array()
@@ -235,6 +238,37 @@ fn m20_thread_reports_its_minor() {
             "pass {k}: {d} vs {want}: {depths:?}"
         );
     }
+}
+
+/// The picture zooms on the thread's teeth: an inset titled with what was reached, the
+/// expected minor diameter and the pitch diameter labelled on their lines.
+#[test]
+fn m20_thread_gets_a_detail_view() {
+    let (dir, path) = common::temp_program("thread.nc", M20.as_bytes());
+    let svg = dir.path().join("out.svg");
+    let tools = common::asset("tools/thread60.toml");
+    let out = common::latsim(&[
+        "run",
+        path.to_str().unwrap(),
+        "--stock",
+        "20x40",
+        "--tools",
+        tools.to_str().unwrap(),
+        "--svg",
+        svg.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let s = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        s.contains("detail 1: thread line 4, lead 1.5: X18.05 reached, 60°</text>"),
+        "{}",
+        s.lines()
+            .filter(|l| l.contains("detail"))
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+    assert!(s.contains("expected Φ18.05") && s.contains("pitch Φ19.349"));
 }
 
 /// The same program cut to X17.65 against a target drawing the thread's minor at Φ18.05

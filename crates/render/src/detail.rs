@@ -1,7 +1,7 @@
 //! Detail views: a zoomed, framed inset around each crash, gouge and G75.1 groove, then
-//! one for the largest leftover (at most three; crashes first, then gouges, grooves and
-//! the leftover — findings win when room is short), stacked at the top of the right
-//! column.
+//! one for the largest leftover, then one for each thread (at most three; crashes first,
+//! then gouges, grooves, the leftover and threads — findings win when room is short),
+//! stacked at the top of the right column.
 //!
 //! The leftover view is centred on the leftover's thickest place (the report's
 //! [`crate::LeftoverSpot`], measured by the simulator) with a window about ten times its thickness, so that a thin
@@ -13,13 +13,18 @@
 //! toolpath), with its principal corners labelled `P1 Z30.00 Φ50.00` (see
 //! [`crate::groove`] for the corners and the labels' places; the deviation in the title
 //! is the report's [`Groove::deviation_mm`]).
+//!
+//! A thread view shows four leads around the middle of the deepest pass (the whole thread
+//! when it is shorter), from below the root to above the crest, so that the teeth as cut
+//! can be read: the diameter the thread should reach dashed, the pitch diameter dotted,
+//! each labelled, and what the simulator measured in the title.
 
 use crate::doc::{marker, Doc};
 use crate::groove;
 use crate::layout::{colour, FS_SMALL, RIGHT_TOP, RIGHT_W, RIGHT_X};
 use crate::path::shapes_d;
 use crate::plot::{axes, centre_line, draw_content, draw_shapes, MIN_PX};
-use crate::report::{Groove, Report, Shape};
+use crate::report::{Groove, Report, Shape, ThreadCheck};
 use crate::scale::{Bbox, View};
 use crate::text::{chars_fitting, num, truncate, width};
 
@@ -47,6 +52,8 @@ enum Kind<'a> {
     /// The largest leftover, with where its thickness is measured (`[from, to]`); the
     /// title gets the Z range shown once the view is fitted.
     Leftover(Option<[[f64; 2]; 2]>),
+    /// A thread, with the window that shows its teeth.
+    Thread(&'a ThreadCheck, Bbox),
 }
 
 struct Finding<'a> {
@@ -62,6 +69,7 @@ impl Finding<'_> {
     fn window(&self) -> Bbox {
         match &self.kind {
             Kind::Groove(_, ring) => groove_window(ring),
+            Kind::Thread(_, window) => *window,
             _ => Bbox::new(
                 self.z - self.half,
                 self.z + self.half,
@@ -75,7 +83,7 @@ impl Finding<'_> {
     /// their window needs at the inset's width).
     fn plot_h(&self, max_h: f64) -> f64 {
         match &self.kind {
-            Kind::Groove(..) => {
+            Kind::Groove(..) | Kind::Thread(..) => {
                 let w = self.window();
                 (w.h() * PLOT_W / w.w().max(1e-9)).clamp(MIN_PLOT_H, max_h)
             }
@@ -164,8 +172,78 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
             out.push(f);
         }
     }
+    for t in &report.threads {
+        if out.len() >= MAX_DETAILS {
+            break;
+        }
+        if let Some(window) = thread_window(t) {
+            out.push(Finding {
+                title: thread_title(t),
+                z: 0.0,
+                r: 0.0,
+                half: 0.0,
+                kind: Kind::Thread(t, window),
+            });
+        }
+    }
     out.truncate(MAX_DETAILS);
     out
+}
+
+/// The radial depth the thread's teeth are drawn for: the passes' infeeds added up, else
+/// the ISO depth of a 60° thread (0.6134 of the lead) when no infeed was measured.
+fn thread_depth(t: &ThreadCheck) -> f64 {
+    let sum: f64 = t.pass_depths_mm.iter().filter(|d| d.is_finite()).sum();
+    if sum > 1e-6 {
+        sum
+    } else {
+        0.6134 * t.lead_mm
+    }
+}
+
+/// Four leads around the middle of the root line (the whole thread with half a lead either
+/// side when it is shorter), radially from the root to the crest with a third of the depth
+/// as margin; `None` for a thread without a lead or a place.
+fn thread_window(t: &ThreadCheck) -> Option<Bbox> {
+    let lead = t.lead_mm;
+    let finite = [lead, t.z_start_mm, t.z_end_mm, t.x_mm]
+        .iter()
+        .all(|v| v.is_finite());
+    if !(finite && lead > 0.0) {
+        return None;
+    }
+    let (z0, z1) = (t.z_start_mm.min(t.z_end_mm), t.z_start_mm.max(t.z_end_mm));
+    let half_w = (2.0 * lead).min((z1 - z0) / 2.0 + 0.5 * lead);
+    let zc = (z0 + z1) / 2.0;
+    let depth = thread_depth(t);
+    // the crest is away from the axis on an outside thread, toward it in a bore
+    let root = t.x_mm / 2.0;
+    let crest = if t.inside { root - depth } else { root + depth };
+    let mut rs = vec![root, crest];
+    rs.extend(
+        t.achieved_x_mm
+            .iter()
+            .chain(&t.expected_x_mm)
+            .map(|x| x / 2.0),
+    );
+    let rmin = rs.iter().copied().fold(f64::INFINITY, f64::min);
+    let rmax = rs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let m = depth / 3.0;
+    Some(Bbox::new(zc - half_w, zc + half_w, rmin - m, rmax + m))
+}
+
+/// `thread line 14, lead 1.5: X18.05 reached, 60°` (the flanks' included angle; the
+/// expected diameter is labelled on its line inside the view).
+fn thread_title(t: &ThreadCheck) -> String {
+    let mut s = format!("thread line {}, lead {}", t.line, num(t.lead_mm, 3));
+    match t.achieved_x_mm.filter(|a| a.is_finite()) {
+        Some(a) => s += &format!(": X{} reached", num(a, 3)),
+        None => s += ": no material cut",
+    }
+    if let Some(a) = t.included_angle_deg.filter(|a| a.is_finite()) {
+        s += &format!(", {}°", num(a, 1));
+    }
+    s
 }
 
 /// The view of the largest leftover, zoomed on its thickest place: `half` is five times
@@ -253,6 +331,11 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
                 centre_line(doc, &v);
                 groove_ring(doc, &v, g.line, ring);
             }
+            Kind::Thread(t, _) => {
+                draw_shapes(doc, report, &v, false);
+                centre_line(doc, &v);
+                thread_lines(doc, &v, t);
+            }
             kind => {
                 draw_content(doc, report, &v, false, DETAIL_POINT_CAP, None);
                 centre_line(doc, &v);
@@ -287,6 +370,50 @@ fn thickness_mark(doc: &mut Doc, v: &View, m: [[f64; 2]; 2]) {
     doc.line(a, b, colour::INK, 1.5, "");
     for p in [a, b] {
         doc.circle(p, 2.5, colour::INK, "none", 0.0);
+    }
+    doc.close();
+}
+
+/// The diameter the thread should reach (dashed, intended colour) and its pitch diameter
+/// as cut (dotted), across the inset, each labelled at its left end.
+fn thread_lines(doc: &mut Doc, v: &View, t: &ThreadCheck) {
+    let lines = [
+        (t.expected_x_mm, "expected", colour::INTENDED, "6 4"),
+        (t.pitch_diameter_mm, "pitch", colour::INK, "2 3"),
+    ];
+    doc.open("g", &[("class", "thread-lines".into())]);
+    for (x, what, stroke, dash) in lines {
+        let Some(x) = x.filter(|x| x.is_finite()) else {
+            continue;
+        };
+        let y = v.y(x / 2.0);
+        if !(v.px[1]..=v.bottom()).contains(&y) {
+            continue;
+        }
+        doc.line([v.px[0], y], [v.right(), y], stroke, 1.4, dash);
+        let label = format!("{what} Φ{}", num(x, 3));
+        let w = width(&label, FS_CORNER) * 0.92 + 8.0;
+        // above the line, unless that leaves the inset
+        let top = if y - CORNER_BOX_H - 2.0 >= v.px[1] {
+            y - CORNER_BOX_H - 2.0
+        } else {
+            y + 2.0
+        };
+        doc.label_box(
+            [v.px[0] + 4.0, top, w, CORNER_BOX_H],
+            2.0,
+            0.88,
+            stroke,
+            0.8,
+        );
+        doc.text(
+            v.px[0] + 4.0 + w / 2.0,
+            top + CORNER_BOX_H - 4.0,
+            FS_CORNER,
+            "middle",
+            colour::INK,
+            &label,
+        );
     }
     doc.close();
 }
@@ -385,4 +512,72 @@ fn corner_labels(doc: &mut Doc, v: &View, ring: &[[f64; 2]]) {
         );
     }
     doc.close();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn m20() -> ThreadCheck {
+        ThreadCheck {
+            line: 4,
+            lead_mm: 1.5,
+            x_mm: 18.05,
+            expected_x_mm: Some(18.05),
+            achieved_x_mm: Some(18.05),
+            pass_depths_mm: vec![0.4, 0.3, 0.275],
+            z_start_mm: -2.0,
+            z_end_mm: -30.0,
+            ..Default::default()
+        }
+    }
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() < 1e-9
+    }
+
+    /// Four leads around the middle of the root line; radially root to crest (the passes'
+    /// 0.975 mm) with a third of that as margin.
+    #[test]
+    fn a_long_thread_shows_four_leads_in_its_middle() {
+        let w = thread_window(&m20()).expect("a window");
+        assert!(close(w.zmin, -19.0) && close(w.zmax, -13.0), "{w:?}");
+        assert!(close(w.rmin, 9.025 - 0.325), "{w:?}");
+        assert!(close(w.rmax, 9.025 + 0.975 + 0.325), "{w:?}");
+    }
+
+    /// A thread shorter than four leads is shown whole with half a lead either side; an
+    /// inside thread's crest is toward the axis.
+    #[test]
+    fn a_short_or_inside_thread_is_framed_whole() {
+        let mut t = m20();
+        t.z_start_mm = -2.0;
+        t.z_end_mm = -4.0;
+        let w = thread_window(&t).expect("a window");
+        assert!(close(w.zmin, -4.75) && close(w.zmax, -1.25), "{w:?}");
+        t.inside = true;
+        t.x_mm = 30.0;
+        t.expected_x_mm = Some(30.0);
+        t.achieved_x_mm = Some(29.9);
+        let w = thread_window(&t).expect("a window");
+        assert!(close(w.rmax, 15.0 + 0.325), "{w:?}");
+        assert!(close(w.rmin, 15.0 - 0.975 - 0.325), "{w:?}");
+        // no infeed measured: the ISO depth of the lead
+        t.pass_depths_mm.clear();
+        let w = thread_window(&t).expect("a window");
+        assert!(
+            close(w.rmin, 15.0 - 0.6134 * 1.5 * (1.0 + 1.0 / 3.0)),
+            "{w:?}"
+        );
+    }
+
+    #[test]
+    fn a_thread_without_lead_or_place_has_no_view() {
+        for (lead, z) in [(0.0, -2.0), (f64::NAN, -2.0), (-1.0, -2.0), (1.5, f64::NAN)] {
+            let mut t = m20();
+            t.lead_mm = lead;
+            t.z_start_mm = z;
+            assert!(thread_window(&t).is_none(), "lead {lead}, z {z}");
+        }
+    }
 }

@@ -121,6 +121,9 @@ struct ThreadJ {
     pitch_diameter: Option<f64>,
     /// Included flank angle as cut, degrees (additive field).
     included_angle_deg: Option<f64>,
+    /// Z where the deepest pass starts and ends (additive fields).
+    z_start: Option<f64>,
+    z_end: Option<f64>,
 }
 
 #[derive(Serialize)]
@@ -259,6 +262,8 @@ pub(crate) fn json(report: &Report) -> String {
                 depth_error_mm: t.depth_error_mm.and_then(r6),
                 pitch_diameter: t.pitch_diameter_mm.and_then(r6),
                 included_angle_deg: t.included_angle_deg.and_then(r6),
+                z_start: r6(t.z_start_mm),
+                z_end: r6(t.z_end_mm),
             })
             .collect(),
     };

@@ -235,6 +235,11 @@ pub struct ThreadCheck {
     pub pitch_diameter_mm: Option<f64>,
     /// Included angle of the groove's flanks as cut, degrees; `None`: not measurable.
     pub included_angle_deg: Option<f64>,
+    /// Z where the deepest pass starts and ends (the programmed root line), mm: where the
+    /// picture's thread detail looks.
+    pub z_start_mm: f64,
+    /// See [`ThreadCheck::z_start_mm`].
+    pub z_end_mm: f64,
 }
 
 /// A G75.1 groove the program defines, as its intended outline.

@@ -164,6 +164,8 @@ fn threads_are_listed_with_their_pitch_diameter() {
             depth_error_mm: Some(-1e-7),
             pitch_diameter_mm: Some(19.349038),
             included_angle_deg: Some(60.0),
+            z_start_mm: -2.0,
+            z_end_mm: -30.0,
         },
         render::ThreadCheck {
             line: 9,

@@ -287,3 +287,84 @@ fn sub_pixel_gouge_still_draws() {
         &edge[..80.min(edge.len())]
     );
 }
+
+fn m20_thread() -> render::ThreadCheck {
+    render::ThreadCheck {
+        line: 4,
+        lead_mm: 1.5,
+        x_mm: 18.05,
+        expected_x_mm: Some(18.05),
+        achieved_x_mm: Some(18.05),
+        pass_depths_mm: vec![0.4, 0.3, 0.275],
+        pitch_diameter_mm: Some(19.349038),
+        included_angle_deg: Some(60.0),
+        z_start_mm: -2.0,
+        z_end_mm: -30.0,
+        ..Default::default()
+    }
+}
+
+/// A thread gets an inset of its teeth with the expected and pitch diameters labelled,
+/// after the findings; when they take the three places, it is left out.
+#[test]
+fn a_thread_gets_an_inset_after_the_findings() {
+    let mut r = common::groove_bar();
+    r.crashes.clear();
+    r.gouges.clear();
+    r.gouge_shapes.clear();
+    r.threads.push(m20_thread());
+    let s = render::svg(&r);
+    assert!(
+        s.contains("detail 1: thread line 4, lead 1.5: X18.05 reached, 60°</text>"),
+        "thread title"
+    );
+    assert!(s.contains(r#"class="thread-lines""#));
+    assert!(s.contains("expected Φ18.05"));
+    assert!(s.contains("pitch Φ19.349"));
+    // Nothing cut there: said so, and no pitch line without a pitch diameter.
+    let mut r2 = r.clone();
+    r2.threads[0].achieved_x_mm = None;
+    r2.threads[0].pitch_diameter_mm = None;
+    r2.threads[0].included_angle_deg = None;
+    let s2 = render::svg(&r2);
+    assert!(s2.contains("detail 1: thread line 4, lead 1.5: no material cut</text>"));
+    assert!(!s2.contains("pitch Φ"));
+    // Crash, gouge and a groove take the three places.
+    let mut r3 = common::groove_bar();
+    r3.threads.push(m20_thread());
+    r3.grooves.push(render::Groove {
+        line: 9,
+        ring: vec![[-20.0, 18.0], [-20.0, 14.0], [-25.0, 14.0], [-25.0, 18.0]],
+        deviation_mm: Some(0.0),
+    });
+    let s3 = render::svg(&r3);
+    assert!(s3.contains("detail 3: groove line 9"));
+    assert!(!s3.contains("thread line 4"));
+}
+
+#[test]
+fn odd_threads_do_not_panic() {
+    let nan = f64::NAN;
+    for (lead, z0, x) in [
+        (nan, -2.0, 18.0),
+        (0.0, -2.0, 18.0),
+        (1.5, nan, 18.0),
+        (1.5, -2.0, nan),
+        (1e300, -1e300, 1e300),
+        (1e-12, -2.0, 18.0),
+    ] {
+        let mut r = common::groove_bar();
+        let mut t = m20_thread();
+        t.lead_mm = lead;
+        t.z_start_mm = z0;
+        t.x_mm = x;
+        t.pass_depths_mm = vec![nan, 1e300];
+        r.threads = vec![t];
+        let s = render::svg(&r);
+        assert!(
+            !s.contains("NaN") && !s.contains("inf"),
+            "lead {lead} z {z0} x {x}"
+        );
+        render::png(&r).expect("renders");
+    }
+}
