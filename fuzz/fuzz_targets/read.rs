@@ -3,12 +3,6 @@
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| {
-    let text = String::from_utf8_lossy(data);
-    for decimal_comma in [false, true] {
-        for macros in [None, Some(macro_b::Dialect::Fanuc), Some(macro_b::Dialect::Haas)] {
-            let options = gcode::ReadOptions { decimal_comma, macros };
-            let _ = gcode::parse_with(&text, options);
-        }
-    }
-});
+include!("../bodies/read.rs");
+
+fuzz_target!(|data: &[u8]| body(data));

@@ -2,8 +2,6 @@
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| {
-    if let Ok(text) = std::str::from_utf8(data) {
-        let _ = expander::Machine::from_toml(text);
-    }
-});
+include!("../bodies/toml_machine.rs");
+
+fuzz_target!(|data: &[u8]| body(data));

@@ -2,10 +2,6 @@
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| {
-    if let Ok(text) = std::str::from_utf8(data) {
-        if let Ok(blank) = stock::Blank::from_profile_toml(text, 0.001) {
-            let _ = stock::area(&blank.shapes);
-        }
-    }
-});
+include!("../bodies/toml_profile.rs");
+
+fuzz_target!(|data: &[u8]| body(data));

@@ -2,12 +2,6 @@
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| {
-    if let Ok(text) = std::str::from_utf8(data) {
-        if let Ok(table) = stock::ToolTable::from_toml(text) {
-            for t in table.numbers() {
-                let _ = table.outline(t);
-            }
-        }
-    }
-});
+include!("../bodies/toml_tools.rs");
+
+fuzz_target!(|data: &[u8]| body(data));
