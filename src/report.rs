@@ -308,7 +308,7 @@ pub(crate) fn build(
             .collect(),
         warnings,
         tools: {
-            let times = expander::timing::per_tool(&tp.segments, &loaded.machine);
+            let times = expander::timing::per_tool(tp, &loaded.machine);
             tool_numbers
                 .iter()
                 .map(|&t| {
@@ -332,7 +332,7 @@ pub(crate) fn build(
             .iter()
             .filter(|s| s.motion == Motion::Rapid)
             .count(),
-        cycle_time_s: expander::timing::cycle_time(&tp.segments, tp.dwell_s, &loaded.machine),
+        cycle_time_s: expander::timing::cycle_time(tp, &loaded.machine),
         tolerance_mm: tol,
         grooves: tp
             .intended

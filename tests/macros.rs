@@ -415,9 +415,9 @@ fn values_into_addresses() {
     // T#5 with 202.4 is T0202
     assert_eq!(s.tool, 2);
     assert!(
-        matches!(s.feed, expander::Feed::PerRev { feed, .. } if (feed - 0.25).abs() < 1e-12),
+        matches!(tp.feeds.get(s.feed), expander::Feed::PerRev { feed, .. } if (feed - 0.25).abs() < 1e-12),
         "{:?}",
-        s.feed
+        tp.feeds.get(s.feed)
     );
 }
 

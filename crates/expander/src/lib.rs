@@ -32,6 +32,6 @@ pub use machine::{
     ProfileError, RapidPath, ShortT, Units,
 };
 pub use toolpath::{
-    Arc, Feed, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,
+    Arc, Feed, FeedId, Feeds, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,
 };
 pub use workholding::{Chuck, Tailstock, Workholding, WorkholdingError};

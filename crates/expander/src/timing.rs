@@ -1,16 +1,21 @@
 //! Cycle time: rapids at the machine's rates, feeds per minute or per revolution
 //! (G96 follows the diameter, clamped), plus dwells.
 
-use crate::{Feed, Machine, Segment, Spindle};
+use crate::{Feed, Machine, Segment, Spindle, Toolpath};
 
-/// Time of one segment in seconds. Per-revolution feeds with the spindle at 0 rev/min
-/// cannot be timed and count 0 (the interpreter has already warned about them).
-pub fn segment_time(seg: &Segment, machine: &Machine) -> f64 {
+/// Time of one segment of `tp` in seconds. Per-revolution feeds with the spindle at 0
+/// rev/min cannot be timed and count 0 (the interpreter has already warned about them).
+pub fn segment_time(tp: &Toolpath, seg: &Segment, machine: &Machine) -> f64 {
+    time_at_feed(seg, tp.feeds.get(seg.feed), machine)
+}
+
+/// Time of `seg` at `feed`, s.
+fn time_at_feed(seg: &Segment, feed: Feed, machine: &Machine) -> f64 {
     let len = seg.length();
     if len == 0.0 {
         return 0.0;
     }
-    match seg.feed {
+    match feed {
         Feed::Rapid => {
             // Each axis at its own rate; the slower axis decides.
             let tz = (seg.to.z - seg.from.z).abs() / machine.rapid_z;
@@ -52,20 +57,20 @@ pub fn rpm_css(vc: f64, r: f64, max_rpm: f64) -> f64 {
     (1000.0 * vc / (std::f64::consts::PI * d)).min(max_rpm)
 }
 
-/// Total cycle time of a toolpath, s.
-pub fn cycle_time(segments: &[Segment], dwell_s: f64, machine: &Machine) -> f64 {
-    segments
+/// Total cycle time of a toolpath with its dwells, s.
+pub fn cycle_time(tp: &Toolpath, machine: &Machine) -> f64 {
+    tp.segments
         .iter()
-        .map(|s| segment_time(s, machine))
+        .map(|s| segment_time(tp, s, machine))
         .sum::<f64>()
-        + dwell_s
+        + tp.dwell_s
 }
 
 /// Cutting and rapid time per tool number, in order of first use (dwells not included).
-pub fn per_tool(segments: &[Segment], machine: &Machine) -> Vec<(u32, f64)> {
+pub fn per_tool(tp: &Toolpath, machine: &Machine) -> Vec<(u32, f64)> {
     let mut out: Vec<(u32, f64)> = vec![];
-    for s in segments {
-        let t = segment_time(s, machine);
+    for s in &tp.segments {
+        let t = segment_time(tp, s, machine);
         match out.iter_mut().find(|(tool, _)| *tool == s.tool) {
             Some((_, sum)) => *sum += t,
             None => out.push((s.tool, t)),
@@ -79,8 +84,11 @@ mod tests {
     use super::*;
     use crate::{Motion, Pt, Span};
 
-    fn seg(from: Pt, to: Pt, feed: Feed) -> Segment {
-        Segment {
+    /// A toolpath of the one feed move `from -> to`.
+    fn seg(from: Pt, to: Pt, feed: Feed) -> Toolpath {
+        let mut tp = Toolpath::default();
+        let feed = tp.feeds.id(feed).unwrap();
+        tp.segments.push(Segment {
             motion: Motion::Feed,
             from,
             to,
@@ -91,7 +99,8 @@ mod tests {
             thread_phase: 0.0,
             feed,
             span: Span::default(),
-        }
+        });
+        tp
     }
 
     #[test]
@@ -102,7 +111,7 @@ mod tests {
             Pt::new(-100.0, 10.0),
             Feed::PerMinute(200.0),
         );
-        assert!((segment_time(&s, &m) - 30.0).abs() < 1e-9);
+        assert!((cycle_time(&s, &m) - 30.0).abs() < 1e-9);
         let s = seg(
             Pt::new(0.0, 10.0),
             Pt::new(-30.0, 10.0),
@@ -111,7 +120,7 @@ mod tests {
                 spindle: Spindle::Rpm(600.0),
             },
         );
-        assert!((segment_time(&s, &m) - 30.0).abs() < 1e-9);
+        assert!((cycle_time(&s, &m) - 30.0).abs() < 1e-9);
     }
 
     #[test]
@@ -130,6 +139,6 @@ mod tests {
             },
         );
         let n = 1000.0 * 150.0 / (std::f64::consts::PI * 100.0);
-        assert!((segment_time(&s, &m) - 250.0 / n * 60.0).abs() < 1e-6);
+        assert!((cycle_time(&s, &m) - 250.0 / n * 60.0).abs() < 1e-6);
     }
 }

@@ -15,7 +15,7 @@ fn run(src: &str) -> Toolpath {
 
 /// One readable line per segment, for snapshots.
 fn listing(tp: &Toolpath) -> String {
-    common::listing(tp, |s| format!("F{:?}", s.feed))
+    common::listing(tp, |s| format!("F{:?}", tp.feeds.get(s.feed)))
 }
 
 #[test]

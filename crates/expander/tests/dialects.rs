@@ -133,8 +133,13 @@ fn g94_g95_are_feed_modes_in_b_and_g98_g99_the_drilling_return() {
         "M3 S500\nG0 X52 Z2\nG94 G01 Z3 F300\nG95 G99 G01 Z4 F0.2\nM30\n",
     );
     assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
-    assert_eq!(tp.segments[1].feed, expander::Feed::PerMinute(300.0));
-    assert!(matches!(tp.segments[2].feed, expander::Feed::PerRev { feed, .. } if feed == 0.2));
+    assert_eq!(
+        tp.feeds.get(tp.segments[1].feed),
+        expander::Feed::PerMinute(300.0)
+    );
+    assert!(
+        matches!(tp.feeds.get(tp.segments[2].feed), expander::Feed::PerRev { feed, .. } if feed == 0.2)
+    );
 }
 
 #[test]

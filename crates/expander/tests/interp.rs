@@ -52,7 +52,7 @@ fn modal_motion_and_feed_carry_over() {
         kinds,
         vec![Motion::Feed, Motion::Feed, Motion::Rapid, Motion::Rapid]
     );
-    assert_eq!(tp.segments[1].feed, Feed::PerMinute(150.0));
+    assert_eq!(tp.feeds.get(tp.segments[1].feed), Feed::PerMinute(150.0));
 }
 
 #[test]
@@ -69,7 +69,7 @@ fn arc_with_ik_centre() {
 fn feed_modes_and_spindle() {
     let tp = run("G99 G96 S150 M3\nG50 S2000\nG0 X40 Z2\nG1 Z-10 F0.2\nG97 S800\nG1 Z-20\nG98 G1 Z-30 F100\n");
     assert_eq!(
-        tp.segments[1].feed,
+        tp.feeds.get(tp.segments[1].feed),
         Feed::PerRev {
             feed: 0.2,
             spindle: Spindle::Css {
@@ -79,13 +79,13 @@ fn feed_modes_and_spindle() {
         }
     );
     assert_eq!(
-        tp.segments[2].feed,
+        tp.feeds.get(tp.segments[2].feed),
         Feed::PerRev {
             feed: 0.2,
             spindle: Spindle::Rpm(800.0)
         }
     );
-    assert_eq!(tp.segments[3].feed, Feed::PerMinute(100.0));
+    assert_eq!(tp.feeds.get(tp.segments[3].feed), Feed::PerMinute(100.0));
 }
 
 #[test]
@@ -95,7 +95,10 @@ fn power_on_feed_mode_comes_from_the_profile() {
         ..Machine::default()
     };
     let tp = run_with("M3 S500\nG1 X20 Z0 F0.1\n", &m, &Options::default());
-    assert!(matches!(tp.segments[0].feed, Feed::PerRev { .. }));
+    assert!(matches!(
+        tp.feeds.get(tp.segments[0].feed),
+        Feed::PerRev { .. }
+    ));
 }
 
 #[test]
@@ -340,7 +343,7 @@ fn g70_applies_s_t_and_feed_modes_written_in_the_shape() {
     let cut = tp.segments.iter().find(|s| s.span.line == 5).unwrap();
     assert_eq!(cut.tool, 2);
     assert_eq!(
-        cut.feed,
+        tp.feeds.get(cut.feed),
         Feed::PerRev {
             feed: 0.2,
             spindle: Spindle::Css {

@@ -18,7 +18,7 @@
 //!   an R20 arc) swept n/8 times, each pass moved by (4, 2) mm / passes toward the part,
 //!   so that every pass leaves a new sliver along the whole profile (55° insert r0.4).
 
-use expander::{Feed, Motion, Pt, Segment, Span};
+use expander::{FeedId, Motion, Pt, Segment, Span};
 use std::time::Instant;
 use stock::{area, simulate, Blank, Insert, SimOptions, Tool, ToolTable};
 
@@ -32,7 +32,7 @@ fn seg(motion: Motion, from: Pt, to: Pt) -> Segment {
         hint: expander::ToolHint::Table,
         lead: 0.0,
         thread_phase: 0.0,
-        feed: Feed::Rapid,
+        feed: FeedId::default(),
         span: Span::default(),
     }
 }

@@ -186,7 +186,7 @@ fn inside_convex(poly: &[P], q: P) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use expander::{Feed, Pt, Span};
+    use expander::{FeedId, Pt, Span};
 
     #[test]
     fn a_blade_stops_where_it_first_touches() {
@@ -206,7 +206,7 @@ mod tests {
             hint: ToolHint::Table,
             lead: 0.0,
             thread_phase: 0.0,
-            feed: Feed::Rapid,
+            feed: FeedId::default(),
             span: Span::default(),
         };
         let parts = tool_at_crash(&tools, &seg, &[], [0.0, 5.5], None, 0.001);

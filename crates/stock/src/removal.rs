@@ -970,7 +970,7 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
 mod tests {
     use super::*;
     use crate::{hausdorff, symmetric_difference_area, Insert, Tool};
-    use expander::{Arc, Feed, Motion, Pt, Span};
+    use expander::{Arc, FeedId, Motion, Pt, Span};
 
     fn seg(motion: Motion, from: [f64; 2], to: [f64; 2]) -> Segment {
         Segment {
@@ -982,7 +982,7 @@ mod tests {
             hint: expander::ToolHint::Table,
             lead: 0.0,
             thread_phase: 0.0,
-            feed: Feed::Rapid,
+            feed: FeedId::default(),
             span: Span::default(),
         }
     }

@@ -68,7 +68,7 @@ pub fn rear_tools(segments: &[Segment]) -> Vec<u32> {
 mod tests {
     use super::*;
     use crate::geom::pts;
-    use expander::{Feed, Span};
+    use expander::{FeedId, Span};
 
     fn seg(tool: u32, from: [f64; 2], to: [f64; 2]) -> Segment {
         Segment {
@@ -80,7 +80,7 @@ mod tests {
             hint: expander::ToolHint::Table,
             lead: 0.0,
             thread_phase: 0.0,
-            feed: Feed::Rapid,
+            feed: FeedId::default(),
             span: Span::default(),
         }
     }

@@ -125,7 +125,7 @@ impl FinishingShape {
                 hint: crate::ToolHint::Table,
                 lead: 0.0,
                 thread_phase: 0.0,
-                feed: crate::Feed::Rapid,
+                feed: crate::FeedId::default(), // only its polyline is used
                 span: e.span,
             };
             pts.extend(seg.polyline(tol).into_iter().skip(1));

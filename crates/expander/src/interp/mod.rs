@@ -72,6 +72,8 @@ impl Default for Options {
 pub struct Toolpath {
     /// The moves, in order.
     pub segments: Vec<Segment>,
+    /// The feeds the segments' [`Segment::feed`] ids stand for.
+    pub feeds: crate::Feeds,
     /// Controller alarms. An alarm stops the run, except tool nose radius interference
     /// (PS041), reported at every block where the offset path would run backwards while
     /// the path goes on as the control would cut it (spec/tnrc.md).

@@ -170,6 +170,14 @@ impl Interp<'_> {
             ));
         }
         let feed = self.feed_for(span, motion)?;
+        let feed = self.out.feeds.id(feed).ok_or_else(|| {
+            alarm(
+                span,
+                "LS-TOO-LONG",
+                "the program uses more than 2^32 different feeds",
+                "split the program",
+            )
+        })?;
         let seg = Segment {
             motion,
             from: self.pos,

@@ -356,7 +356,7 @@ fn interference(s: &Segment, what: &str) -> Diagnostic {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Feed, Motion, Span, ToolHint};
+    use crate::{Motion, Span, ToolHint};
 
     fn line(from: Pt, to: Pt) -> Segment {
         Segment {
@@ -368,7 +368,7 @@ mod tests {
             hint: ToolHint::Table,
             lead: 0.0,
             thread_phase: 0.0,
-            feed: Feed::PerMinute(100.0),
+            feed: crate::FeedId::default(),
             span: Span::default(),
         }
     }
