@@ -55,6 +55,9 @@ pub struct Feeds {
     list: Vec<Feed>,
     /// The index of each feed, keyed by its bits (an `f64` is not `Hash`).
     index: std::collections::HashMap<[u64; 4], u32>,
+    /// The two feeds asked for last (most recent first): a program alternates between a
+    /// rapid and a feed, and these spare the hash of nearly every segment.
+    recent: [Option<([u64; 4], u32)>; 2],
 }
 
 impl Feeds {
@@ -62,12 +65,24 @@ impl Feeds {
     /// a program can expand to).
     pub fn id(&mut self, feed: Feed) -> Option<FeedId> {
         let key = feed_bits(feed);
-        if let Some(&i) = self.index.get(&key) {
-            return Some(FeedId(i));
+        match self.recent {
+            [Some((k, i)), _] if k == key => return Some(FeedId(i)),
+            [first, Some((k, i))] if k == key => {
+                self.recent = [Some((k, i)), first];
+                return Some(FeedId(i));
+            }
+            _ => {}
         }
-        let i = u32::try_from(self.list.len()).ok()?;
-        self.list.push(feed);
-        self.index.insert(key, i);
+        let i = match self.index.get(&key) {
+            Some(&i) => i,
+            None => {
+                let i = u32::try_from(self.list.len()).ok()?;
+                self.list.push(feed);
+                self.index.insert(key, i);
+                i
+            }
+        };
+        self.recent = [Some((key, i)), self.recent[0]];
         Some(FeedId(i))
     }
 
