@@ -10,6 +10,7 @@
 mod alarm;
 pub mod arc;
 mod codes;
+mod corner;
 mod cycles;
 mod dialect;
 mod interp;

@@ -101,8 +101,11 @@ impl<'b> Words<'b> {
                 Err(Diagnostic::new(
                     w.span,
                     "LS-WORD-UNUSED",
-                    format!("address {} has no meaning in this block", w.letter),
-                    "remove the word, or use the code that takes it (e.g. R with G02/G03)",
+                    format!(
+                        "address {} has no meaning in this block",
+                        gcode::address(w.letter)
+                    ),
+                    unused_help(w.letter),
                 ))
             }
         }
@@ -117,4 +120,15 @@ impl<'b> Words<'b> {
 /// Whether a word is a whole number (written without a decimal point) within `lo ..= hi`.
 pub(crate) fn whole_in(w: &Word, lo: f64, hi: f64) -> bool {
     !w.has_point && (lo..=hi).contains(&w.value)
+}
+
+/// What to change about an unused word.
+fn unused_help(letter: char) -> &'static str {
+    match letter {
+        'c' | 'r' => {
+            "a chamfer ,C or round ,R stands on a G01 line that moves, and the next move is a G01"
+        }
+        'a' => "a line's angle ,A is not read yet: give both end coordinates of the line",
+        _ => "remove the word, or use the code that takes it (e.g. R with G02/G03)",
+    }
 }

@@ -9,4 +9,4 @@ mod program;
 
 pub use macro_b::Span;
 pub use parse::{parse, parse_with, ParseError, ReadOptions};
-pub use program::{Block, CallText, Note, Program, Subprogram, Word};
+pub use program::{address, Block, CallText, Note, Program, Subprogram, Word};

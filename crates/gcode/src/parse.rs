@@ -14,7 +14,7 @@
 //! text after `;` that is not a program is a comment, a nested or unclosed comment is read
 //! the way the author meant it — each with a note the report shows.
 
-use crate::{Block, Note, Program, Span, Subprogram, Word};
+use crate::{address, Block, Note, Program, Span, Subprogram, Word};
 use macro_b::{Dialect, Func, MacroError, Stmt};
 
 /// A reading error: where, what, and what to change.
@@ -553,6 +553,23 @@ impl<'a> Reader<'a> {
                     }
                     self.push_number('.', span);
                 }
+                ',' if self.comma_address().is_some() => {
+                    self.finish_word()?;
+                    let letter = self.comma_address().expect("checked");
+                    // the spaces and the letter after the comma
+                    while self.peek().is_some_and(|c| c == ' ' || c == '\t') {
+                        self.next();
+                    }
+                    self.next();
+                    if self.options.macros.is_some() && self.expression_follows() {
+                        self.expression_word(letter, span)?;
+                        self.mark(span);
+                    } else {
+                        self.pending = Some(PendingWord::new(letter, span));
+                        self.mark(span);
+                        self.scan_number();
+                    }
+                }
                 '/' if self.peek() == Some('/') => {
                     self.finish_word()?;
                     self.skip_line();
@@ -828,18 +845,28 @@ impl<'a> Reader<'a> {
         };
         if letter != 'G' && letter != 'M' && !g65() {
             if let Some(first) = self.words.iter().find(|w| w.letter == letter) {
+                let a = address(letter);
                 return Err(ParseError::new(
                     word.span,
                     format!(
-                        "address {letter} given twice in one block (first at {})",
+                        "address {a} given twice in one block (first at {})",
                         first.span
                     ),
-                    format!("remove one of the two {letter} words"),
+                    format!("remove one of the two {a} words"),
                 ));
             }
         }
         self.words.push(word);
         Ok(())
+    }
+
+    /// After a `,` just read: the address of a direct drawing dimension (`,C1.`, `,R2.`,
+    /// `,A30.`, spaces allowed before the letter), as its lower-case letter (see
+    /// [`Word::letter`]); `None` for anything else (a decimal comma is followed by a digit).
+    fn comma_address(&self) -> Option<char> {
+        let rest = self.src[self.pos..].trim_start_matches([' ', '\t']);
+        let c = rest.chars().next()?.to_ascii_lowercase();
+        matches!(c, 'c' | 'r' | 'a').then_some(c)
     }
 
     /// Skip to the end of the line (the newline itself ends the block). Returns the last span.
@@ -941,13 +968,17 @@ impl<'a> Reader<'a> {
             if text.is_empty() {
                 ParseError::new(
                     span,
-                    format!("address {} has no value", p.letter),
-                    format!("write a number right after {}, e.g. {}0", p.letter, p.letter),
+                    format!("address {} has no value", address(p.letter)),
+                    format!(
+                        "write a number right after {}, e.g. {}0",
+                        address(p.letter),
+                        address(p.letter)
+                    ),
                 )
             } else {
                 ParseError::new(
                     span,
-                    format!("malformed number '{}' after {}", text, p.letter),
+                    format!("malformed number '{}' after {}", text, address(p.letter)),
                     "a number is an optional sign, digits and at most one decimal point, e.g. -17.639 or 100.",
                 )
             }
@@ -964,7 +995,7 @@ impl<'a> Reader<'a> {
                 span,
                 format!(
                     "number of address {} has {whole_digits} digits before the point",
-                    p.letter
+                    address(p.letter)
                 ),
                 NUMBER_HELP,
             ));

@@ -5,7 +5,9 @@ use crate::Span;
 /// An address letter with its number, e.g. `X100.` or `G75.1`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Word {
-    /// Upper-case address letter.
+    /// Upper-case address letter; lower-case `c`, `r`, `a` stand for the comma addresses
+    /// `,C` `,R` `,A` of direct drawing dimensions (spec/dialects.md §6.5), so that no code
+    /// looking for `C` (an axis) or `R` finds them. [`address`] writes either as read.
     pub letter: char,
     /// The value as written (calculator type: `X100` is 100.0).
     pub value: f64,
@@ -18,6 +20,15 @@ pub struct Word {
     /// interpreter evaluates it before the block runs (`value` is 0 until then). Boxed:
     /// most words have none, and a million-line program holds millions of words.
     pub expr: Option<Box<macro_b::Expr>>,
+}
+
+/// An address as written: `X`, or `,C` for the comma address stored as `c`.
+pub fn address(letter: char) -> String {
+    if letter.is_ascii_lowercase() {
+        format!(",{}", letter.to_ascii_uppercase())
+    } else {
+        letter.to_string()
+    }
 }
 
 impl Word {

@@ -19,6 +19,7 @@
 
 use super::Cycle;
 use crate::arc::ArcWords;
+use crate::corner::{self, CornerKind};
 use crate::tnrc::Side;
 use crate::{Arc, Diagnostic, Pt, Span};
 use gcode::{Block, Word};
@@ -229,9 +230,18 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
         ns_span: blocks[0].span,
         comp: None,
         comp_from: 0,
+        corner: None,
     };
     for (k, b) in blocks.iter().enumerate() {
         r.block(b, k == 0)?;
+    }
+    if let Some((_, _, word, line)) = r.corner {
+        let end = blocks[blocks.len() - 1].span.line;
+        return Err(corner::without_line(
+            word,
+            line,
+            &format!("the finishing shape ends (line {end})"),
+        ));
     }
     if r.elements.is_empty() {
         return Err(Diagnostic::new(
@@ -271,6 +281,9 @@ struct Reader {
     ns_span: Span,
     comp: Option<Side>,
     comp_from: usize,
+    /// A line with `,C`/`,R` whose corner waits for the next line: its element, the
+    /// corner, the word and its line.
+    corner: Option<(usize, CornerKind, Span, u32)>,
 }
 
 /// The alarm for a code not allowed inside a finishing shape.
@@ -338,9 +351,12 @@ impl Reader {
         let mut to = self.pos;
         let (mut x_given, mut z_given) = (false, false);
         let mut arc_words = ArcWords::default();
+        let (mut chamfer, mut round) = (None, None);
         for w in b.words.iter() {
             let v = w.value * self.unit;
             match w.letter {
+                'c' if self.mode == 10 => chamfer = Some(w),
+                'r' if self.mode == 10 => round = Some(w),
                 'G' | 'M' => {}
                 'S' => self.modes.s = Some(w.value),
                 'T' if !w.has_point && (0.0..=9999.0).contains(&w.value) => {
@@ -370,7 +386,7 @@ impl Reader {
                         "LS-WORD-UNUSED",
                         format!(
                             "address {} has no meaning in this block of the finishing shape",
-                            w.letter
+                            gcode::address(w.letter)
                         ),
                         "remove the word, or use the code that takes it (e.g. R with G02/G03)",
                     ))
@@ -380,6 +396,15 @@ impl Reader {
         if first {
             self.ns_moves = (x_given, z_given);
             self.ns_span = b.span;
+        }
+        let corner = corner::corner_word(chamfer, round, self.unit)?;
+        if let (Some((_, word)), true) = (corner, to.dist(self.pos) < 1e-12) {
+            return Err(Diagnostic::new(
+                word,
+                "LS-CORNER",
+                "a chamfer or round on a G01 that does not move",
+                "put ,C or ,R on the line that ends at the corner",
+            ));
         }
         if !x_given && !z_given {
             if let Some(alarm) = arc_words.without_end_point() {
@@ -399,7 +424,7 @@ impl Reader {
             None
         };
         if to.dist(from) > 1e-12 {
-            self.elements.push(ShapeElement {
+            let mut element = ShapeElement {
                 from,
                 to,
                 arc,
@@ -407,7 +432,33 @@ impl Reader {
                 feed: self.feed,
                 modes: self.modes,
                 span: b.span,
-            });
+            };
+            if let Some((k, kind, word, line)) = self.corner.take() {
+                if element.rapid || element.arc.is_some() {
+                    let what = if element.rapid { "a rapid" } else { "an arc" };
+                    return Err(corner::without_line(
+                        word,
+                        line,
+                        &format!("{what} comes (line {})", b.span.line),
+                    ));
+                }
+                // the line before ends where the piece starts; the piece is of its block
+                let before = self.elements[k];
+                let piece = corner::piece(before.from, before.to, element.to, kind)
+                    .map_err(|why| corner::impossible(word, line, &why))?;
+                self.elements[k].to = piece.start;
+                self.elements.push(ShapeElement {
+                    from: piece.start,
+                    to: piece.end,
+                    arc: piece.arc,
+                    ..before
+                });
+                element.from = piece.end;
+            }
+            self.elements.push(element);
+            if let Some((kind, word)) = corner {
+                self.corner = Some((self.elements.len() - 1, kind, word, b.span.line));
+            }
         }
         self.pos = to;
         Ok(())

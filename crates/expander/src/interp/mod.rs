@@ -9,6 +9,7 @@
 //! compensation buffer in `crate::tnrc`.
 
 mod actions;
+mod corner;
 mod cycle;
 mod dialect_words;
 mod flow;
@@ -122,6 +123,9 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
         let mut result = it
             .prepare_macros(program)
             .and_then(|()| it.run(program, 0, 0, 0));
+        if let (Ok(_), Some(p)) = (&result, it.corner.take()) {
+            result = Err(it.corner_without_line(&p, "the program ends"));
+        }
         it.flush_compensation();
         if result.is_ok() && it.retained.g75_1.is_some() {
             let span = program
@@ -198,6 +202,8 @@ pub(crate) struct Interp<'m> {
     /// Start shift of the thread moves being pushed, a fraction of the lead (the Q of the
     /// G32/G92/G76 block; 0 otherwise).
     thread_phase: f64,
+    /// A G01 line with `,C`/`,R` waiting for the next line (spec/dialects.md §6.5).
+    corner: Option<corner::PendingCorner>,
     /// Return level of the drilling cycles (the profile's; G98/G99 in systems B/C set it).
     pub(crate) drill_return: crate::DrillReturn,
     /// Custom macro B's variables and program structure, when it is on.
@@ -260,6 +266,7 @@ impl<'m> Interp<'m> {
             frames: frame::Frames::new(machine),
             thread_chamfer: true,
             thread_phase: 0.0,
+            corner: None,
             drill_return: machine.drill_return,
             macros: None,
             moved: false,

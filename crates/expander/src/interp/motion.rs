@@ -157,6 +157,31 @@ impl Interp<'_> {
         lead: f64,
         hint: crate::ToolHint,
     ) -> Result<(), Diagnostic> {
+        if let Some(p) = &self.corner {
+            let what = match (motion, arc) {
+                (Motion::Rapid, _) => "a rapid comes",
+                (Motion::Thread, _) => "a thread move comes",
+                (Motion::Feed, Some(_)) => "an arc comes",
+                (Motion::Feed, None) => "a cycle's move comes",
+            };
+            return Err(self.corner_without_line(p, &format!("{what} (line {})", span.line)));
+        }
+        let seg = self.segment(span, motion, to, arc, lead, hint)?;
+        self.emit(seg);
+        Ok(())
+    }
+
+    /// The segment from the present position to `to`, with the feed, tool and thread
+    /// phase in force (not emitted).
+    pub(super) fn segment(
+        &mut self,
+        span: Span,
+        motion: Motion,
+        to: Pt,
+        arc: Option<Arc>,
+        lead: f64,
+        hint: crate::ToolHint,
+    ) -> Result<Segment, Diagnostic> {
         let buffered = self.section.as_ref().map_or(0, |s| s.2.len());
         if self.out.segments.len() + buffered >= self.opts.max_segments {
             return Err(alarm(
@@ -178,7 +203,7 @@ impl Interp<'_> {
                 "split the program",
             )
         })?;
-        let seg = Segment {
+        Ok(Segment {
             motion,
             from: self.pos,
             to,
@@ -193,13 +218,16 @@ impl Interp<'_> {
             },
             feed,
             span,
-        };
+        })
+    }
+
+    /// Emit a segment: into the compensation section when one is open, else the toolpath.
+    pub(super) fn emit(&mut self, seg: Segment) {
+        self.pos = seg.to;
         match &mut self.section {
             Some((_, _, buf)) => buf.push(seg),
             None => self.out.segments.push(seg),
         }
-        self.pos = to;
-        Ok(())
     }
 
     pub(super) fn rapid(&mut self, b: &Block, to: Pt) -> Result<(), Diagnostic> {
@@ -236,13 +264,27 @@ impl Interp<'_> {
         } else {
             ArcWords::default()
         };
+        let corner = if self.motion == MotionMode::Line {
+            self.corner_word(used)?
+        } else {
+            None
+        };
         let Some(to) = self.target(used)? else {
             return arc_words.without_end_point().map_or(Ok(()), Err);
         };
         match self.motion {
             MotionMode::Rapid => self.rapid(b, to),
-            MotionMode::Line | MotionMode::Thread if to.dist(self.pos) < 1e-12 => Ok(()),
-            MotionMode::Line => self.push(b, Motion::Feed, to, None, 0.0),
+            MotionMode::Line if to.dist(self.pos) < 1e-12 => match corner {
+                Some((_, word)) => Err(alarm(
+                    word,
+                    "LS-CORNER",
+                    "a chamfer or round on a G01 that does not move",
+                    "put ,C or ,R on the line that ends at the corner",
+                )),
+                None => Ok(()),
+            },
+            MotionMode::Thread if to.dist(self.pos) < 1e-12 => Ok(()),
+            MotionMode::Line => self.feed_line(b.span, to, corner),
             MotionMode::Thread => {
                 let lead = self.feed * self.unit();
                 self.thread_phase = crate::cycles::thread_start_angle(used)? / 360.0;

@@ -1,0 +1,188 @@
+//! Direct drawing dimensions on G01 (spec/dialects.md §6.5): `,C c` replaces the corner at
+//! a line's end point, between it and the next G01 line, by a chamfer whose ends are `c`
+//! from the corner along each line; `,R r` by an arc of radius `r` tangent to both. The
+//! geometry and the words, for the interpreter (`interp/corner.rs`) and the finishing
+//! shapes of G70–G73 (`cycles/contour.rs`).
+
+use crate::{Arc, Diagnostic, Pt, Span};
+use gcode::Word;
+
+/// What replaces the corner.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum CornerKind {
+    /// `,C c`: a straight chamfer, `c` from the corner along each line.
+    Chamfer(f64),
+    /// `,R r`: a tangent arc of radius `r`.
+    Round(f64),
+}
+
+/// Where the corner piece starts and ends, and its arc (`None`: a chamfer).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct CornerPiece {
+    pub(crate) start: Pt,
+    pub(crate) end: Pt,
+    pub(crate) arc: Option<Arc>,
+}
+
+/// The piece replacing the corner `b` between the lines `a -> b` and `b -> c`; `Err` says
+/// why there is none.
+pub(crate) fn piece(a: Pt, b: Pt, c: Pt, kind: CornerKind) -> Result<CornerPiece, String> {
+    let (len1, len2) = (a.dist(b), b.dist(c));
+    let (u1, u2) = ((b - a).unit(), (c - b).unit());
+    let turn = u1.cross(u2);
+    if turn.abs() < 1e-9 {
+        return Err(if u1.dot(u2) > 0.0 {
+            "the two lines are in line: there is no corner".into()
+        } else {
+            "the next line goes straight back: there is no corner".into()
+        });
+    }
+    let (d, what) = match kind {
+        CornerKind::Chamfer(c) => (c, "chamfer"),
+        // the tangent points are r·tan(θ/2) from the corner, θ the angle turned
+        CornerKind::Round(r) => (r * (turn.atan2(u1.dot(u2)).abs() / 2.0).tan(), "round"),
+    };
+    if d > len1 + 1e-9 || d > len2 + 1e-9 {
+        return Err(format!(
+            "the {what} needs {d:.4} mm of each line, but the lines are {len1:.4} and {len2:.4} mm long"
+        ));
+    }
+    let (start, end) = (b - u1 * d, b + u2 * d);
+    let arc = match kind {
+        CornerKind::Chamfer(_) => None,
+        CornerKind::Round(r) => {
+            // the centre is on the inside of the turn: left of the first line on a left turn
+            let normal = if turn > 0.0 { u1.perp() } else { -u1.perp() };
+            Some(Arc {
+                center: start + normal * r,
+                ccw: turn > 0.0,
+            })
+        }
+    };
+    Ok(CornerPiece { start, end, arc })
+}
+
+/// The corner a G01 block asks for with its `,C` and `,R` words (already taken from the
+/// block); an error for both, or for a size that is not positive. `unit`: mm per unit.
+pub(crate) fn corner_word(
+    c: Option<&Word>,
+    r: Option<&Word>,
+    unit: f64,
+) -> Result<Option<(CornerKind, Span)>, Diagnostic> {
+    let (w, kind): (_, fn(f64) -> CornerKind) = match (c, r) {
+        (None, None) => return Ok(None),
+        (Some(c), Some(r)) => {
+            return Err(Diagnostic::new(
+                r.span,
+                "LS-CORNER",
+                format!("both ,C and ,R on one block (,C at {})", c.span),
+                "a corner is either chamfered (,C) or rounded (,R): keep one",
+            ))
+        }
+        (Some(c), None) => (c, CornerKind::Chamfer),
+        (None, Some(r)) => (r, CornerKind::Round),
+    };
+    let size = w.value * unit;
+    if !(size.is_finite() && size > 0.0) {
+        return Err(Diagnostic::new(
+            w.span,
+            "LS-CORNER",
+            format!("{}{} is not a size", gcode::address(w.letter), w.value),
+            "give the chamfer or radius in mm (inch under G20), greater than 0",
+        ));
+    }
+    Ok(Some((kind(size), w.span)))
+}
+
+/// The alarm for a corner whose piece cannot be made (`why`), at its word.
+pub(crate) fn impossible(word: Span, line: u32, why: &str) -> Diagnostic {
+    Diagnostic::new(
+        word,
+        "LS-CORNER",
+        format!("the corner at the end of line {line} cannot be made: {why}"),
+        "make the chamfer or radius smaller, or the lines longer",
+    )
+}
+
+/// The alarm for a corner still waiting when `what` comes instead of a G01 line.
+pub(crate) fn without_line(word: Span, line: u32, what: &str) -> Diagnostic {
+    Diagnostic::new(
+        word,
+        "LS-CORNER",
+        format!("the chamfer or round at the end of line {line} needs a G01 line next, but {what}"),
+        "follow a block with ,C or ,R by the G01 line of the corner's other side",
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: Pt, b: Pt) -> bool {
+        a.dist(b) < 1e-12
+    }
+
+    /// Up X20 → X30 at Z0, then along −Z: `,C1.` cuts the corner (Z0, r15) from (0, 14) to
+    /// (−1, 15).
+    #[test]
+    fn a_chamfer_is_c_from_the_corner_along_each_line() {
+        let p = piece(
+            Pt::new(0.0, 10.0),
+            Pt::new(0.0, 15.0),
+            Pt::new(-20.0, 15.0),
+            CornerKind::Chamfer(1.0),
+        )
+        .unwrap();
+        assert!(close(p.start, Pt::new(0.0, 14.0)) && close(p.end, Pt::new(-1.0, 15.0)));
+        assert_eq!(p.arc, None);
+    }
+
+    /// Along −Z at r15 into a shoulder up to r20 at Z−20: `,R2.` is the fillet from
+    /// (−18, 15) to (−20, 17) about (−18, 17), clockwise (a right turn); a 60° turn puts
+    /// the tangent points r·tan 30° from the corner.
+    #[test]
+    fn a_round_is_tangent_to_both_lines() {
+        let p = piece(
+            Pt::new(-1.0, 15.0),
+            Pt::new(-20.0, 15.0),
+            Pt::new(-20.0, 20.0),
+            CornerKind::Round(2.0),
+        )
+        .unwrap();
+        assert!(close(p.start, Pt::new(-18.0, 15.0)) && close(p.end, Pt::new(-20.0, 17.0)));
+        let arc = p.arc.unwrap();
+        assert!(close(arc.center, Pt::new(-18.0, 17.0)) && !arc.ccw);
+        // a left turn of 60°: (0,0) → (10,0) → (10 + 5, 5√3)
+        let c = Pt::new(15.0, 5.0 * 3f64.sqrt());
+        let p = piece(
+            Pt::new(0.0, 0.0),
+            Pt::new(10.0, 0.0),
+            c,
+            CornerKind::Round(3.0),
+        )
+        .unwrap();
+        let t = 3.0 * (30f64.to_radians()).tan();
+        assert!(close(p.start, Pt::new(10.0 - t, 0.0)));
+        assert!(close(
+            p.end,
+            Pt::new(10.0, 0.0) + (c - Pt::new(10.0, 0.0)).unit() * t
+        ));
+        let arc = p.arc.unwrap();
+        assert!(arc.ccw && close(arc.center, Pt::new(10.0 - t, 3.0)));
+        assert!((arc.center.dist(p.end) - 3.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn no_corner_no_piece() {
+        let (a, b) = (Pt::new(0.0, 10.0), Pt::new(-5.0, 10.0));
+        for (c, kind, why) in [
+            (Pt::new(-9.0, 10.0), CornerKind::Chamfer(1.0), "in line"),
+            (Pt::new(3.0, 10.0), CornerKind::Round(1.0), "straight back"),
+            (Pt::new(-5.0, 10.5), CornerKind::Chamfer(1.0), "lines are"),
+            (Pt::new(-5.0, 20.0), CornerKind::Chamfer(6.0), "lines are"),
+        ] {
+            let e = piece(a, b, c, kind).unwrap_err();
+            assert!(e.contains(why), "{e}");
+        }
+    }
+}
