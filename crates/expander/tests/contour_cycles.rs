@@ -263,3 +263,29 @@ fn g73_with_9999_passes() {
         (10.3, 200.5)
     );
 }
+
+/// A G70 whose shape is kept after M30 (a common FANUC layout) goes on with the block after
+/// the G70, as the control does: the retract and the thread after it run; the shape's own
+/// blocks run only inside the G70. A shape right after its cycle block is skipped after it.
+#[test]
+fn g70_with_its_shape_after_m30_goes_on_after_the_g70() {
+    let src = "G99 M03 S600 T0101\nG00 X30 Z2\nG70 P100 Q200\nG00 X50 Z50\nG00 X28 Z4\nG92 X23 Z-20 F2\nG00 X60\nM30\nN100 G00 X18\nG01 Z-10 F0.1\nN200 X30\n";
+    let tp = run(src);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert!(tp.warnings.is_empty(), "{:?}", tp.warnings);
+    let lines: Vec<u32> = tp.segments.iter().map(|s| s.span.line).collect();
+    // rapid to A; the shape (9, 10, 11) and the rapid back to A (the G70 block, 3); 4 and 5;
+    // the G92 cycle (4 moves, line 6); 7
+    assert_eq!(lines, [2, 9, 10, 11, 3, 4, 5, 6, 6, 6, 6, 7], "{lines:?}");
+    assert_eq!(
+        tp.segments
+            .iter()
+            .filter(|s| s.motion == Motion::Thread)
+            .count(),
+        1
+    );
+    // the shape right after the cycle block: not run a second time as ordinary moves
+    let inline = "G99 M03 S600 T0101\nG00 X30 Z2\nG70 P100 Q200\nN100 G00 X18\nG01 Z-10 F0.1\nN200 X30\nG00 X50 Z50\nM30\n";
+    let lines: Vec<u32> = run(inline).segments.iter().map(|s| s.span.line).collect();
+    assert_eq!(lines, [2, 4, 5, 6, 3, 7], "{lines:?}");
+}

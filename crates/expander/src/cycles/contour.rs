@@ -108,9 +108,15 @@ pub struct FinishingShape {
 impl FinishingShape {
     /// Where the program continues after the cycle: after nf when the shape follows the
     /// cycle block (GSK seed 003 and FANUC: the shape is not run again as ordinary motion),
-    /// else the next block (a shape written before the cycle was already run in its place).
-    pub(crate) fn resume_at(&self, cycle_index: usize) -> Option<usize> {
-        (self.ns_index > cycle_index).then_some(self.nf_index + 1)
+    /// else the next block (a shape written before the cycle was already run in its place;
+    /// one kept after M30/M02/M99, where the program's flow never reaches it, is no more in
+    /// the way than one before).
+    pub(crate) fn resume_at(&self, cycle_index: usize, blocks: &[Block]) -> Option<usize> {
+        let between = blocks
+            .get(cycle_index + 1..self.ns_index)
+            .unwrap_or_default();
+        let follows = self.ns_index > cycle_index && !between.iter().any(ends_flow);
+        follows.then_some(self.nf_index + 1)
     }
 
     /// The intended contour for the analysis: A, then B … C with arcs chorded at `tol`.
@@ -194,6 +200,13 @@ fn find(c: &Cycle, n: u32, at: Span) -> Result<usize, Diagnostic> {
         ));
     }
     Ok(i)
+}
+
+/// A block after which the flow does not go on to the next: M02, M30 (end) or M99 (return).
+fn ends_flow(b: &Block) -> bool {
+    b.words
+        .iter()
+        .any(|w| w.letter == 'M' && !w.has_point && matches!(w.value as i64, 2 | 30 | 99))
 }
 
 /// Find and read the finishing shape P(ns)..Q(nf) of the cycle block.

@@ -7,7 +7,8 @@
 //! S, T and G96–G99 inside the shape are put in force from their block on.
 //! G41/G42 in the shape (or in force at G70) compensate the pass: the move A → B is the
 //! start-up, the rapid back to A the cancel (spec/tnrc.md). The program continues
-//! after nf when the shape follows the G70 block, else after the G70 block (FANUC).
+//! after nf when the shape follows the G70 block in the program's flow, else after the
+//! G70 block (FANUC; a shape kept after M30 is not in the flow).
 
 use super::{contour, passes};
 use super::{Cycle, Move, Output};
@@ -22,7 +23,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     moves.push(Move::rapid(shape.start));
     let mut out = Output {
         moves,
-        resume_at: shape.resume_at(c.index),
+        resume_at: shape.resume_at(c.index, &c.program.blocks),
         warnings: std::mem::take(&mut shape.notes),
         comp: Some(shape.comp),
         comp_from: if shape.comp.is_some() {

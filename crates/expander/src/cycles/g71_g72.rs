@@ -133,7 +133,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     moves.push(Move::rapid(shape.start));
     let mut out = Output {
         moves,
-        resume_at: shape.resume_at(c.index),
+        resume_at: shape.resume_at(c.index, &c.program.blocks),
         warnings: vec![],
         ..Output::default()
     };

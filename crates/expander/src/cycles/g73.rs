@@ -66,7 +66,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         }
     };
     out.moves = rough_passes(&shape, (di, dk, d), (du, dw));
-    out.resume_at = shape.resume_at(c.index);
+    out.resume_at = shape.resume_at(c.index, &c.program.blocks);
     out.intended.push((
         crate::IntendedKind::FinishingContour,
         shape.intended_path(0.001),
@@ -103,7 +103,7 @@ fn haas_block(c: &mut Cycle) -> Result<Output, Diagnostic> {
     let shape = contour::read(c)?;
     let mut out = Output {
         moves: rough_passes(&shape, (di, dk, d), (du, dw)),
-        resume_at: shape.resume_at(c.index),
+        resume_at: shape.resume_at(c.index, &c.program.blocks),
         ..Output::default()
     };
     out.intended.push((
