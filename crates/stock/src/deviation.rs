@@ -84,10 +84,8 @@ impl Intent {
     /// The comparison is limited to the shape's Z span (its X span for facing).
     ///
     /// Only the profile bounds the part (spec, "The intended shape"); `stock` is the stock
-    /// when the cycle began. For an OD or ID shape, leading moves along Z that run in front
-    /// of that stock (a lead-in `G00 X20` at Z2, `G01 Z0` to a faced front) are dropped; a
-    /// diameter reached straight from the approach starts where the stock starts; trailing
-    /// moves off the last diameter that end beyond the stock are dropped.
+    /// when the cycle began, and what the shape runs through before it first touches that
+    /// stock, and after it last leaves it, is approach and retract ([`in_contact`]).
     pub fn finishing(path: &[[f64; 2]], stock: &[Shape]) -> Option<Self> {
         let (a, shape) = path.split_first()?;
         let (lo, hi) = bbox(shape);
@@ -100,11 +98,7 @@ impl Intent {
         } else {
             return None;
         };
-        let shape = match toward {
-            Toward::MinusR | Toward::PlusR => profile_only(shape, toward == Toward::MinusR, stock),
-            _ => shape.to_vec(),
-        };
-        Self::open_path(&shape, toward)
+        Self::open_path(&in_contact(shape, stock), toward)
     }
 
     /// A contour cut under G41/G42: the part lies on the side of the path away from the
@@ -112,8 +106,10 @@ impl Intent {
     /// toward the side the path's normals on the part side point to on average (below for
     /// OD turning, above for ID boring, left for facing); the comparison is limited to the
     /// path's Z span (its X span when closed along Z). As for a finishing shape, approach
-    /// and retract along an OD or ID contour are no part (`stock`: when the contour began).
+    /// and retract are no part (`stock`: when the contour began), also when deciding the
+    /// side: a retract off the last diameter would otherwise turn an OD contour into a face.
     pub fn compensated(path: &[[f64; 2]], part_on_left: bool, stock: &[Shape]) -> Option<Self> {
+        let path = in_contact(path, stock);
         let mut n = [0.0, 0.0];
         for w in path.windows(2) {
             let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
@@ -131,10 +127,6 @@ impl Intent {
             Toward::MinusZ
         } else {
             Toward::PlusZ
-        };
-        let path = match toward {
-            Toward::MinusR | Toward::PlusR => profile_only(path, toward == Toward::MinusR, stock),
-            _ => path.to_vec(),
         };
         Self::open_path(&path, toward)
     }
@@ -175,63 +167,169 @@ impl Intent {
     }
 }
 
-/// The profile of an OD (`od`) or ID turning shape without its approach and retract
-/// (see [`Intent::finishing`]): the stock under a leading Z move (above it, ID) is what
-/// the shape would claim there; none means the move runs in front of the stock.
-fn profile_only(shape: &[P], od: bool, stock: &[Shape]) -> Vec<P> {
-    const EPS: f64 = 1e-6;
-    let along_z = |a: P, b: P| (a[1] - b[1]).abs() <= EPS && (a[0] - b[0]).abs() > EPS;
-    // the stock on the part side of a line of radius r between z0 and z1
-    let under = |z0: f64, z1: f64, r: f64| {
-        let slab = if od {
-            rect(z0.min(z1), z0.max(z1), -FAR, r)
-        } else {
-            rect(z0.min(z1), z0.max(z1), r, FAR)
-        };
-        boolean(stock, &[slab], BoolOp::Intersection)
-    };
-    let mut s = shape.to_vec();
+/// How near a path must come to the stock to touch it, mm: a path run on the stock's
+/// surface (a G70 after roughing to size) touches it; one in the air a rapid's clearance
+/// away does not.
+const CONTACT: f64 = 1e-3;
+
+/// The stretch of `path` that is profile (spec/simulation.md, "The intended shape": approach
+/// and retract are no part), judged against `stock`, the stock when the path began:
+/// - leading segments that do not touch the stock (a lead-in along Z to a faced front, an
+///   approach along the chamfer's own line) are dropped; when none was, the first segment
+///   starts where it first touches the stock (a diameter reached straight from the
+///   approach starts at the stock's front), else at its programmed vertex (a face marked by
+///   `G01 Z0` stays at Z0, so a face cut too deep before is still found);
+/// - trailing moves off the last diameter that end beyond the stock's radial extent are
+///   dropped (also where they cut the corner on the way), and trailing segments that no
+///   longer touch the stock, and the end of the last one past its last contact.
+///
+/// A segment touches where its band of ±[`CONTACT`] meets the stock. Empty when the path
+/// never touches the stock.
+fn in_contact(path: &[P], stock: &[Shape]) -> Vec<P> {
+    let mut s = path.to_vec();
     let mut dropped = false;
-    while s.len() > 2 && along_z(s[0], s[1]) {
-        let material = under(s[0][0], s[1][0], s[0][1]);
-        if area(&material) > EPS * (s[1][0] - s[0][0]).abs().max(1.0) {
-            if !dropped {
-                // straight from the approach: the diameter starts at the stock's front
-                let toward_minus_z = s[1][0] < s[0][0];
-                let (mlo, mhi) = bbox(
-                    &material
-                        .iter()
-                        .flat_map(|m| m.outer.clone())
-                        .collect::<Vec<_>>(),
-                );
-                let front = if toward_minus_z { mhi[0] } else { mlo[0] };
-                if (front - s[0][0]) * (s[1][0] - s[0][0]) > 0.0 {
-                    s[0][0] = front;
+    while s.len() >= 2 {
+        match contact(s[0], s[1], stock) {
+            Some((t, _)) if (1.0 - t) * dist(s[0], s[1]) > 2.0 * CONTACT => {
+                if !dropped && t * dist(s[0], s[1]) > CONTACT {
+                    s[0] = lerp(s[0], s[1], t);
                 }
-            }
-            break;
-        }
-        s.remove(0);
-        dropped = true;
-    }
-    // trailing moves away from the part that end beyond the stock
-    let all: Vec<P> = stock.iter().flat_map(|m| m.outer.clone()).collect();
-    if !all.is_empty() {
-        let (slo, shi) = bbox(&all);
-        while s.len() > 2 {
-            let (p, q) = (s[s.len() - 2], s[s.len() - 1]);
-            let off = if od {
-                q[1] > p[1] + EPS && q[1] >= shi[1] - EPS
-            } else {
-                q[1] < p[1] - EPS && q[1] <= slo[1] + EPS
-            };
-            if !off {
                 break;
             }
-            s.pop();
+            _ => {
+                s.remove(0);
+                dropped = true;
+            }
         }
     }
+    let all: Vec<P> = stock.iter().flat_map(|m| m.outer.clone()).collect();
+    if all.is_empty() {
+        return vec![];
+    }
+    let (lo, hi) = bbox(&all);
+    const EPS: f64 = 1e-6;
+    while s.len() > 2 {
+        let (p, q) = (s[s.len() - 2], s[s.len() - 1]);
+        let off = (q[1] > p[1] + EPS && q[1] >= hi[1] - EPS)
+            || (q[1] < p[1] - EPS && q[1] <= lo[1] + EPS);
+        if !off {
+            break;
+        }
+        s.pop();
+    }
+    while s.len() >= 2 {
+        let (a, b) = (s[s.len() - 2], s[s.len() - 1]);
+        match contact(a, b, stock) {
+            Some((_, t)) if t * dist(a, b) > 2.0 * CONTACT => {
+                if (1.0 - t) * dist(a, b) > CONTACT {
+                    let last = s.len() - 1;
+                    s[last] = lerp(a, b, t);
+                }
+                break;
+            }
+            _ => {
+                s.pop();
+            }
+        }
+    }
+    if s.len() < 2 {
+        s.clear();
+    }
     s
+}
+
+/// Where the segment `a -> b` touches `stock`: the first and last parameter (0 at `a`, 1 at
+/// `b`) where it is inside the stock, exactly where it crosses the stock's edges; where it
+/// only runs along or grazes the stock, where its band of ±[`CONTACT`] meets it. `None`
+/// when it misses.
+fn contact(a: P, b: P, stock: &[Shape]) -> Option<(f64, f64)> {
+    let len = dist(a, b);
+    if len <= 0.0 {
+        return None;
+    }
+    let span = |ts: &mut dyn Iterator<Item = f64>| {
+        ts.fold(None, |acc: Option<(f64, f64)>, t| match acc {
+            None => Some((t, t)),
+            Some((lo, hi)) => Some((lo.min(t), hi.max(t))),
+        })
+    };
+    // the segment itself: its ends inside, its crossings of the edges
+    let inside = |p: P| stock.iter().any(|m| shape_contains(m, p));
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let cross = |u: [f64; 2], v: [f64; 2]| u[0] * v[1] - u[1] * v[0];
+    let mut ts: Vec<f64> = vec![];
+    if inside(a) {
+        ts.push(0.0);
+    }
+    if inside(b) {
+        ts.push(1.0);
+    }
+    for ring in stock
+        .iter()
+        .flat_map(|m| std::iter::once(&m.outer).chain(&m.holes))
+    {
+        for (k, &c) in ring.iter().enumerate() {
+            let e = ring[(k + 1) % ring.len()];
+            let f = [e[0] - c[0], e[1] - c[1]];
+            let denom = cross(d, f);
+            if denom.abs() < 1e-15 {
+                continue;
+            }
+            let ca = [c[0] - a[0], c[1] - a[1]];
+            let (t, u) = (cross(ca, f) / denom, cross(ca, d) / denom);
+            if (0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u) {
+                ts.push(t);
+            }
+        }
+    }
+    let crossing = span(&mut ts.iter().copied());
+    if let Some((lo, hi)) = crossing {
+        // a real entry: the segment's own points inside between two parameters
+        if hi > lo && inside(lerp(a, b, (lo + hi) / 2.0)) {
+            return crossing;
+        }
+    }
+    // along or near the stock: the band
+    let u = [d[0] / len, d[1] / len];
+    let n = [-u[1] * CONTACT, u[0] * CONTACT];
+    let e = [u[0] * CONTACT, u[1] * CONTACT];
+    let band = Shape {
+        outer: vec![
+            [a[0] - e[0] - n[0], a[1] - e[1] - n[1]],
+            [b[0] + e[0] - n[0], b[1] + e[1] - n[1]],
+            [b[0] + e[0] + n[0], b[1] + e[1] + n[1]],
+            [a[0] - e[0] + n[0], a[1] - e[1] + n[1]],
+        ],
+        holes: vec![],
+    };
+    let hit = boolean(stock, &[band], BoolOp::Intersection);
+    let t = |p: &P| (((p[0] - a[0]) * u[0] + (p[1] - a[1]) * u[1]) / len).clamp(0.0, 1.0);
+    span(&mut hit.iter().flat_map(|h| h.outer.iter().map(t)))
+}
+
+/// Whether `p` is inside the shape (its outer ring and none of its holes), even-odd.
+fn shape_contains(m: &Shape, p: P) -> bool {
+    let crossings = |ring: &[P]| {
+        let mut inside = false;
+        for (k, &c) in ring.iter().enumerate() {
+            let e = ring[(k + 1) % ring.len()];
+            if (c[1] > p[1]) != (e[1] > p[1])
+                && p[0] < c[0] + (p[1] - c[1]) * (e[0] - c[0]) / (e[1] - c[1])
+            {
+                inside = !inside;
+            }
+        }
+        inside
+    };
+    crossings(&m.outer) && !m.holes.iter().any(|h| crossings(h))
+}
+
+fn dist(a: P, b: P) -> f64 {
+    (b[0] - a[0]).hypot(b[1] - a[1])
+}
+
+fn lerp(a: P, b: P, t: f64) -> P {
+    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t]
 }
 
 /// One connected region where the part differs from the intent.
@@ -827,6 +925,14 @@ mod tests {
         (lo[0], hi[0])
     }
 
+    /// Z spans equal to the overlay's grid (the contact points come out of a boolean).
+    fn assert_span(got: (f64, f64), want: (f64, f64)) {
+        assert!(
+            (got.0 - want.0).abs() < 1e-6 && (got.1 - want.1).abs() < 1e-6,
+            "{got:?} vs {want:?}"
+        );
+    }
+
     /// Issue 13 item 3: `N10 G00 X20` at Z2, `G01 Z0`, `Z-20`, `X30`, `Z-35`, `N20 X41` on a
     /// Φ40 blank whose face at Z1 was faced to Z0 before the cycle. The lead-in Z2 → Z0 runs
     /// in front of that stock: no part of the shape, which starts at Z0 (the profile's
@@ -869,10 +975,10 @@ mod tests {
             (z, d)
         };
         let (z, d) = run(&faced);
-        assert_eq!(z, (-35.0, 0.0));
+        assert_span(z, (-35.0, 0.0));
         assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
         let (z, d) = run(&blank);
-        assert_eq!(z, (-35.0, 1.0));
+        assert_span(z, (-35.0, 1.0));
         assert_eq!(d.gouges.len(), 1, "{d:?}");
         assert!((d.gouges[0].area - 10.0).abs() < 1e-6, "{:?}", d.gouges[0]);
         assert!((d.gouges[0].depth - 1.0).abs() < 1e-6, "{:?}", d.gouges[0]);
@@ -895,7 +1001,7 @@ mod tests {
             [-36.5, 22.0],
         ];
         let i = Intent::finishing(&path, &faced).unwrap();
-        assert_eq!(zone_z(&i), (-35.0, 0.0));
+        assert_span(zone_z(&i), (-35.0, 0.0));
         let finished = boolean(
             &[
                 rect(-60.0, -35.0, 0.0, 20.0),
@@ -917,7 +1023,7 @@ mod tests {
         assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
         // on the unfaced blank the Φ20 diameter starts at the blank's face Z1
         let i = Intent::finishing(&path, &blank).unwrap();
-        assert_eq!(zone_z(&i), (-35.0, 1.0));
+        assert_span(zone_z(&i), (-35.0, 1.0));
         // a face gouged 1 mm too deep before a shape that marks its face (`G01 Z0`, `Z-20`)
         // is still found: the lead-in is dropped, the profile keeps its vertex at Z0
         let deep = [rect(-60.0, -1.0, 0.0, 20.0)];
@@ -929,7 +1035,68 @@ mod tests {
             [-20.0, 15.0],
         ];
         let i = Intent::finishing(&marked, &deep).unwrap();
-        assert_eq!(zone_z(&i), (-20.0, 0.0));
+        assert_span(zone_z(&i), (-20.0, 0.0));
+    }
+
+    /// A back chamfer cut toward +Z under G41 along the chamfer's own line, coming in over a
+    /// neck cut before (Φ60 flange Z0..−10, Φ40 neck behind): the path r = z + 39 from
+    /// Z−12 to Z−7 touches the flange only from (−10, 29) to (−9, 30); the lead-in over the
+    /// neck and the run-out above the flange are no part, so the neck is no gouge.
+    #[test]
+    fn a_lead_in_along_the_chamfer_line_is_no_part() {
+        let stock = boolean(
+            &[rect(-10.0, 0.0, 0.0, 30.0), rect(-60.0, -10.0, 0.0, 20.0)],
+            &[],
+            BoolOp::Union,
+        );
+        let i = Intent::compensated(&[[-12.0, 27.0], [-7.0, 32.0]], false, &stock).unwrap();
+        assert_span(zone_z(&i), (-10.0, -9.0));
+        let blank = [rect(-60.0, 0.0, 0.0, 30.0)];
+        let finished = boolean(
+            &[
+                Shape {
+                    outer: vec![
+                        [-10.0, 0.0],
+                        [0.0, 0.0],
+                        [0.0, 30.0],
+                        [-9.0, 30.0],
+                        [-10.0, 29.0],
+                    ],
+                    holes: vec![],
+                },
+                rect(-60.0, -10.0, 0.0, 20.0),
+            ],
+            &[],
+            BoolOp::Union,
+        );
+        let d = deviation(
+            &blank,
+            &finished,
+            &[i],
+            0.01,
+            &[],
+            &ToolTable::empty(),
+            0.001,
+        );
+        assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
+    }
+
+    /// A chamfer under G42 from Z2 to Φ26 at Z−1, Z−2, then `X32.` off the Φ30 bar before the
+    /// G40: the retract is no part, also in choosing the side (with it, the normals pointed
+    /// toward −Z and the contour claimed Φ32 over the whole bar beyond Z−2).
+    #[test]
+    fn a_retract_off_the_last_diameter_does_not_turn_the_side() {
+        let stock = boolean(
+            &[rect(-90.0, 0.0, 0.0, 13.0), rect(-150.0, -90.0, 0.0, 15.0)],
+            &[],
+            BoolOp::Union,
+        );
+        let path = [[2.0, 10.0], [-1.0, 13.0], [-2.0, 13.0], [-2.0, 16.0]];
+        let i = Intent::compensated(&path, true, &stock).unwrap();
+        // OD: closed toward −r over the chamfer's Z span from the face
+        assert_span(zone_z(&i), (-2.0, 0.0));
+        let (lo, _) = bbox(&i.zone[0].outer);
+        assert!(lo[1] < -1e4, "{:?}", i.zone);
     }
 
     /// A sawtooth ring: teeth between r 12 and 14, `n` of them from Z0 to Z-20, on a body
