@@ -99,6 +99,7 @@ fn own_or_target(
         return Ok(vec![Intent::target(part)]);
     }
     let intended = &loaded.toolpath.intended;
+    let segments = &loaded.toolpath.segments;
     Ok(intended
         .iter()
         .enumerate()
@@ -113,12 +114,19 @@ fn own_or_target(
                 .iter()
                 .map(|p| [p.z, if below { -p.r } else { p.r }])
                 .collect();
+            // the tool that cuts the contour: later feeds of other tools are theirs
+            let owner = segments.get(i.after_move).map(|s| (s.tool, i.after_move));
+            let contour = |intent: Option<Intent>| intent.map(|x| Intent { owner, ..x });
             match i.kind {
                 IntendedKind::Groove => Some(Intent::groove(&pts)),
-                IntendedKind::FinishingContour => Intent::finishing(&pts, &stock_at(i.after_move)),
-                IntendedKind::Compensated { part_on_left } => {
-                    Intent::compensated(&pts, part_on_left != below, &stock_at(i.after_move))
+                IntendedKind::FinishingContour => {
+                    contour(Intent::finishing(&pts, &stock_at(i.after_move)))
                 }
+                IntendedKind::Compensated { part_on_left } => contour(Intent::compensated(
+                    &pts,
+                    part_on_left != below,
+                    &stock_at(i.after_move),
+                )),
             }
         })
         .collect())

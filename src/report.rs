@@ -395,6 +395,24 @@ pub(crate) fn add_deviation(
             });
         }
     }
+    for c in d.later_cuts.iter().take(MAX_LISTED) {
+        let Some(seg) = c.made_by.and_then(|i| segs.get(i)) else {
+            continue;
+        };
+        report.warnings.push(render::Diagnostic {
+            line: seg.span.line,
+            column: seg.span.column,
+            code: "LS-LATER-CUT".into(),
+            message: format!(
+                "T{:02} cuts {:.3} mm² ({:.3} mm deep, at Z{:.3} X{:.3}) inside a contour another tool finished before: read as this operation's own cut (a groove, hole or relief), not a gouge (Interpretation; --target judges it against the drawing)",
+                seg.tool,
+                c.area,
+                c.depth,
+                c.at[0],
+                2.0 * c.at[1]
+            ),
+        });
+    }
     report.gouges = d
         .gouges
         .iter()

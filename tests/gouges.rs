@@ -281,3 +281,56 @@ fn the_leftover_detail_gives_the_summarys_depth() {
         "detail says {title} mm, summary {max} mm"
     );
 }
+
+/// A Φ18 pin finished by G71 (T1) and G70 (T2), then an O-ring groove plunged 1.5 mm deep
+/// with the 3 mm blade (T5): the groove is the later operation's own cut, not a gouge of
+/// the finished diameter (**Interpretation**): clean, with one LS-LATER-CUT warning at the
+/// plunge naming its 3 × 1.5 = 4.5 mm². The same plunge with the tool that finished the
+/// diameter (T2) is judged: a gouge at its line.
+#[test]
+fn a_groove_cut_after_the_finish_by_another_tool_is_its_own() {
+    let program = |groove_tool: &str| {
+        format!(
+            "O0311\nG40 G97 G99 G21\nT0101\nM03 S800\nG00 X32. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 G42 X12.\nG01 X18. Z-1. F0.1\nZ-25.\nX26.\nN20 X32.\nG40 G00 X100. Z100.\nT0202\nG00 X32. Z2.\nG70 P10 Q20\nG40 G00 X100. Z100.\n{groove_tool}\nG00 X20. Z-15.\nG01 X15. F0.05\nG00 X20.\nG00 X100. Z100.\nM30\n"
+        )
+    };
+    let run = |groove_tool: &str| {
+        let (dir, path) = temp_program("pin.nc", program(groove_tool).as_bytes());
+        let _keep = dir;
+        run_json(&[
+            "run",
+            path.to_str().unwrap(),
+            "--stock",
+            "30x50",
+            "--tools",
+            &a("corpus/tools/shop.toml"),
+        ])
+    };
+    let (out, v) = run("T0505");
+    assert_eq!(out.code, 0, "{v:#}");
+    assert_eq!(v["verdict"], "clean", "{v:#}");
+    let later: Vec<&serde_json::Value> = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-LATER-CUT")
+        .collect();
+    assert_eq!(later.len(), 1, "{v:#}");
+    assert_eq!(later[0]["line"], 20);
+    let message = later[0]["message"].as_str().unwrap();
+    assert!(
+        message.starts_with("T05 cuts 4.500 mm² (1.500 mm deep"),
+        "{message}"
+    );
+    let (out, v) = run("T0202");
+    assert_eq!(out.code, 1, "{v:#}");
+    assert_eq!(v["verdict"], "gouge", "{v:#}");
+    assert!(
+        v["gouges"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|g| g["line"] == 20),
+        "{v:#}"
+    );
+}

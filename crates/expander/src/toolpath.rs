@@ -149,8 +149,10 @@ pub struct Intended {
     pub points: Vec<Pt>,
     /// The cycle block.
     pub span: Span,
-    /// How many segments were made before the shape's first move: the stock it works on is
-    /// the stock after them (a lead-in in front of that stock is no part of the shape).
+    /// How many segments were made before the shape's first move (of the last cycle that
+    /// ran it: a G70 after its G71): the stock it works on is the stock after them (a
+    /// lead-in in front of that stock is no part of the shape), and the tool of the move
+    /// after them is the one that finishes it.
     pub after_move: usize,
 }
 

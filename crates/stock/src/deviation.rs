@@ -19,6 +19,12 @@ pub struct Intent {
     pub zone: Vec<Shape>,
     /// The intended boundary as drawn in the report: (points, closed ring or open path).
     pub outline: Vec<(Vec<[f64; 2]>, bool)>,
+    /// For a contour the program cuts: the tool that cuts it and the index of its first
+    /// move. What feed moves of another tool cut from then on inside its zone is that
+    /// operation's own (a groove in a finished diameter, a drilled core, a thread relief):
+    /// no gouge of this contour (**Interpretation**, [`Deviation::later_cuts`]). `None`
+    /// (a `--target` drawing, a G75.1 groove): every cut is judged.
+    pub owner: Option<(u32, usize)>,
 }
 
 /// The side toward which an open intended path is closed: where the part lies.
@@ -52,6 +58,7 @@ impl Intent {
             part,
             zone: vec![rect(-FAR, FAR, -FAR, FAR)],
             outline,
+            owner: None,
         }
     }
 
@@ -75,6 +82,7 @@ impl Intent {
             part: boolean(&zone, &groove, BoolOp::Difference),
             zone,
             outline: vec![(ring.to_vec(), true)],
+            owner: None,
         }
     }
 
@@ -163,6 +171,7 @@ impl Intent {
             part,
             zone: vec![zone],
             outline: vec![(shape.to_vec(), false)],
+            owner: None,
         })
     }
 }
@@ -358,6 +367,9 @@ pub struct Deviation {
     pub gouges: Vec<Finding>,
     /// Undercuts: material left that should be gone.
     pub leftovers: Vec<Finding>,
+    /// Part material a later operation of another tool cut on purpose (see
+    /// [`Intent::owner`]): not gouges; the report names them.
+    pub later_cuts: Vec<Finding>,
 }
 
 impl Deviation {
@@ -436,7 +448,37 @@ pub fn deviation(
     out.leftovers = findings(left, &part, tol);
     let rear = crate::section::rear_tools(segments);
     blame(&mut out.gouges, segments, tools, &rear, chord_tol);
+    let (later, gouges): (Vec<Finding>, Vec<Finding>) = std::mem::take(&mut out.gouges)
+        .into_iter()
+        .partition(|g| cut_later(g, intents, segments, &world_box));
+    out.gouges = gouges;
+    out.later_cuts = later;
     out
+}
+
+/// Whether the gouge `g` was made by a feed move of another tool after every contour that
+/// claims its place began ([`Intent::owner`]): the later operation's own cut.
+fn cut_later(g: &Finding, intents: &[Intent], segments: &[Segment], world: &Rect) -> bool {
+    let Some(seg) = g.made_by.and_then(|i| segments.get(i).map(|s| (i, s))) else {
+        return false;
+    };
+    let (i, seg) = seg;
+    if seg.motion == expander::Motion::Rapid {
+        return false;
+    }
+    let region = std::slice::from_ref(&g.shape);
+    let claiming = intents.iter().filter(|intent| {
+        let zone = clip_to_box(&intent.zone, world);
+        area(&boolean(region, &zone, BoolOp::Intersection)) > 1e-9
+    });
+    let mut any = false;
+    for intent in claiming {
+        match intent.owner {
+            Some((tool, from)) if tool != seg.tool && i >= from => any = true,
+            _ => return false,
+        }
+    }
+    any
 }
 
 /// `shapes` cut to `bx` ring by ring (Sutherland–Hodgman against the box's four sides): the
@@ -757,6 +799,7 @@ mod tests {
             part,
             zone: vec![zone],
             outline: vec![],
+            owner: None,
         };
         deviation(
             blank,
@@ -1128,6 +1171,7 @@ mod tests {
         Deviation {
             gouges: findings(gone, &part, 0.01),
             leftovers: findings(left, &part, 0.01),
+            later_cuts: vec![],
         }
     }
 

@@ -46,19 +46,22 @@ impl Interp<'_> {
         self.out.warnings.extend(out.warnings);
         self.out.dwell_s += out.dwell_s;
         for (kind, points) in out.intended {
-            // G73 then G70 on one shape hand it over twice: keep it once.
-            if !self
+            // G73 then G70 on one shape hand it over twice: keep it once, as the later
+            // cycle's (the one that finishes it: its tool owns the contour)
+            let after_move = self.out.segments.len();
+            match self
                 .out
                 .intended
-                .iter()
-                .any(|i| i.kind == kind && i.points == points)
+                .iter_mut()
+                .find(|i| i.kind == kind && i.points == points)
             {
-                self.out.intended.push(crate::Intended {
+                Some(known) => known.after_move = after_move,
+                None => self.out.intended.push(crate::Intended {
                     kind,
                     points,
                     span: b.span,
-                    after_move: self.out.segments.len(),
-                });
+                    after_move,
+                }),
             }
         }
         // G70 runs its pass as one compensation section (start-up A → B, or the move of the
