@@ -155,13 +155,16 @@ fn overcut_later(all: &[expander::Intended], k: usize, i: &expander::Intended) -
 }
 
 /// The move counts after which [`intents`] wants the stock (to take them in the removal
-/// pass): one per contour that stays an intent. A snapshot costs a second removal up to its
+/// pass): one per contour that stays an intent, and the first move of every thread (what
+/// it cuts into, `stock::Thread::achieved_x`). A snapshot costs a second removal up to its
 /// count, so only programs of up to [`MAX_MOVES_FOR_MARKS`] moves get them, and at most
 /// [`MAX_STOCK_MARKS`]; other contours are read against the final part (which has at most
-/// less material than the stock of their cycle: a lead-in in front of either is dropped).
-pub(crate) fn stock_marks(loaded: &Loaded) -> Vec<usize> {
+/// less material than the stock of their cycle: a lead-in in front of either is dropped),
+/// and other threads are measured over their whole length.
+pub(crate) fn stock_marks(loaded: &Loaded, tools: &stock::ToolTable) -> Vec<usize> {
     let intended = &loaded.toolpath.intended;
-    if loaded.toolpath.segments.len() > MAX_MOVES_FOR_MARKS {
+    let segments = &loaded.toolpath.segments;
+    if segments.len() > MAX_MOVES_FOR_MARKS {
         return vec![];
     }
     let mut marks: Vec<usize> = intended
@@ -169,6 +172,7 @@ pub(crate) fn stock_marks(loaded: &Loaded) -> Vec<usize> {
         .enumerate()
         .filter(|(k, i)| i.kind != IntendedKind::Groove && !overcut_later(intended, *k, i))
         .map(|(_, i)| i.after_move)
+        .chain(stock::thread_starts(segments, tools))
         .collect();
     marks.sort_unstable();
     marks.dedup();

@@ -469,13 +469,16 @@ pub(crate) fn add_deviation(
 /// `--target` is given (a target draws a thread at its minor diameter, OD, or major, ID).
 /// A thread deeper than expected by more than `--tol` fails the run like a gouge (part
 /// material removed); one too shallow is a warning (like a leftover). Both are warnings
-/// `LS-THREAD-DEPTH` at the thread's line.
+/// `LS-THREAD-DEPTH` at the thread's line. `before`: the stock each thread cut into, by its
+/// first move, where it was kept: the depth is measured only where that stock came up to
+/// the root (a relief groove cut deeper before is not the thread's depth).
 pub(crate) fn add_threads(
     report: &mut Report,
     loaded: &Loaded,
     tools: &stock::ToolTable,
     sim: &stock::Simulation,
     target: Option<&[stock::Shape]>,
+    before: &[(usize, Vec<stock::Shape>)],
 ) {
     let shapes = &sim.final_shapes;
     for t in stock::threads(&loaded.toolpath.segments, tools, shapes) {
@@ -493,7 +496,11 @@ pub(crate) fn add_threads(
                 ),
             });
         }
-        let achieved = t.achieved_x(shapes);
+        let cut_into = before
+            .iter()
+            .find(|(k, _)| *k == t.first_move)
+            .map(|(_, s)| s.as_slice());
+        let achieved = t.achieved_x(shapes, cut_into);
         let form = t.form(shapes);
         let (z0, z1) = t.z_span();
         let sign = match t.surface {

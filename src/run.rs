@@ -291,7 +291,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     } else {
         vec![]
     };
-    let stock_marks = crate::analysis::stock_marks(&loaded);
+    let stock_marks = crate::analysis::stock_marks(&loaded, &tools);
     let mut snapshot_after = marks.clone();
     snapshot_after.extend(&stock_marks);
     snapshot_after.sort_unstable();
@@ -341,6 +341,18 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     let Ok(intents) = crate::analysis::intents(args, &loaded, &tools, &stock_at) else {
         return EXIT_UNUSABLE;
     };
+    // the stock each thread cuts into, where a snapshot was taken (short programs)
+    let thread_stock: Vec<(usize, Vec<stock::Shape>)> = stock::thread_starts(segments, &tools)
+        .into_iter()
+        .filter_map(|k| {
+            let taken = sim.snapshots.iter().find(|(at, _)| *at == k);
+            match (k, taken) {
+                (0, _) => Some((k, blank.shapes.clone())),
+                (_, Some((_, s))) => Some((k, s.clone())),
+                _ => None,
+            }
+        })
+        .collect();
     // the HTML player does not show the stock the intents were read against (the epoch
     // snapshots of a long program are labelled with their own counts, not the marks)
     sim.snapshots
@@ -361,7 +373,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     crate::report::add_crashes(&mut report, &loaded, &tools, &crashes, fixture.as_ref());
     crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
     let target = args.target.is_some().then(|| intents[0].part.as_slice());
-    crate::report::add_threads(&mut report, &loaded, &tools, &sim, target);
+    crate::report::add_threads(&mut report, &loaded, &tools, &sim, target, &thread_stock);
     if html {
         report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
     }

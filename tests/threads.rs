@@ -465,3 +465,43 @@ fn tapered_thread_crests_on_the_cone() {
         "{form:?}"
     );
 }
+
+/// M20 × 1.5 by G92 whose last lead runs out into a relief groove plunged to X16.6 before
+/// (a 3 mm blade at Z−22 … −25): the depth is measured where the stock came up to the root
+/// when the thread began, so the relief is not the thread's depth: X18.05 reached, no
+/// LS-THREAD-DEPTH, clean. (Measured over the relief too it read X16.6, 0.725 mm "too
+/// deep", and failed the run.)
+#[test]
+fn a_relief_cut_before_the_thread_is_not_its_depth() {
+    let (tdir, tools) = common::temp_program(
+        "t.toml",
+        b"[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\n\n[[tool]]\nt = 5\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"-z\"\nshank_dir = \"+x\"\nreach = 8.0\n",
+    );
+    let _keep = tdir;
+    let program = "G99 M03 S500 T0505\nG00 X22 Z-22\nG01 X16.6 F0.05\nG00 X22\nT0404\nG00 X22 Z5\nG92 X19.4 Z-23 F1.5\nX18.8\nX18.4\nX18.15\nX18.05\nG00 X50 Z50\nM30\n";
+    let (dir, path) = common::temp_program("relief.nc", program.as_bytes());
+    let _keep2 = dir;
+    let (out, report) = common::run_json(
+        &path,
+        &[
+            "--stock",
+            "20x40",
+            "--tools",
+            tools.to_str().unwrap(),
+            "--quiet",
+        ],
+    );
+    let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
+    let t = &j["threads"][0];
+    let achieved = t["achieved_x"].as_f64().unwrap();
+    assert!((achieved - 18.05).abs() < 2e-3, "{t:#}");
+    assert!(
+        j["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|w| w["code"] != "LS-THREAD-DEPTH"),
+        "{j:#}"
+    );
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+}

@@ -34,7 +34,8 @@ pub use error::StockError;
 pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH, TAILSTOCK_CENTRE};
 pub use measure::{
     area, deepest_radius, groove_deviation, hausdorff, least_gap, revolved_volume,
-    surface_radius_at, symmetric_difference_area, threads, Reference, Surface, Thread, ThreadForm,
+    surface_radius_at, symmetric_difference_area, thread_starts, threads, Reference, Surface,
+    Thread, ThreadForm,
 };
 pub use outline::Outline;
 pub use overlay::BoolOp;

@@ -8,7 +8,8 @@ mod thread;
 
 pub use groove::groove_deviation;
 pub use thread::{
-    deepest_radius, least_gap, surface_radius_at, threads, Reference, Surface, Thread, ThreadForm,
+    deepest_radius, least_gap, surface_radius_at, thread_starts, threads, Reference, Surface,
+    Thread, ThreadForm,
 };
 
 use crate::geom::{pts, P};

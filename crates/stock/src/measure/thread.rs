@@ -75,6 +75,18 @@ pub fn least_gap(
     z1: f64,
     surface: Surface,
 ) -> Option<f64> {
+    least_gap_where(shapes, reference, z0, z1, surface, &|_| true)
+}
+
+/// [`least_gap`] over the places `z` where `keep(z)`.
+fn least_gap_where(
+    shapes: &[Shape],
+    reference: Reference,
+    z0: f64,
+    z1: f64,
+    surface: Surface,
+    keep: &dyn Fn(f64) -> bool,
+) -> Option<f64> {
     let (lo, hi) = (z0.min(z1), z0.max(z1));
     let eps = 1e-7;
     let ref_shapes: &[Shape] = match reference {
@@ -99,7 +111,7 @@ pub fn least_gap(
     [lo + eps, hi - eps]
         .into_iter()
         .chain(vertices)
-        .filter(|z| (lo..=hi).contains(z))
+        .filter(|z| (lo..=hi).contains(z) && keep(*z))
         .filter_map(|z| {
             let (s, r) = (surface_radius_at(shapes, z, surface)?, reference_at(z)?);
             Some(match surface {
@@ -142,6 +154,9 @@ pub struct Thread {
     pub wrong_side: bool,
     /// Number of starts (distinct start angles among the passes); the pitch is lead / starts.
     pub starts: usize,
+    /// Index of the first pass's first move in the toolpath: the stock before it is what
+    /// the thread cuts into.
+    pub first_move: usize,
 }
 
 /// The form a thread leaves in the section, measured where a thread gauge or the
@@ -171,9 +186,34 @@ impl Thread {
 
     /// The diameter the section reaches at the thread's end: the programmed final X moved by
     /// the least gap between the section's surface and the root line (negative: deeper).
-    pub fn achieved_x(&self, shapes: &[Shape]) -> Option<f64> {
+    /// With `before`, the stock before the thread's first pass, only where that stock came
+    /// up to the root line: a relief groove cut deeper before the thread (the run-out ends
+    /// in it) is not the thread's depth.
+    pub fn achieved_x(&self, shapes: &[Shape], before: Option<&[Shape]>) -> Option<f64> {
         let [a, b] = self.root;
-        let gap = least_gap(shapes, Reference::Line(a, b), a[0], b[0], self.surface)?;
+        let root_at = |z: f64| {
+            if (b[0] - a[0]).abs() < 1e-12 {
+                a[1]
+            } else {
+                a[1] + (z - a[0]) / (b[0] - a[0]) * (b[1] - a[1])
+            }
+        };
+        let cut_here = |z: f64| {
+            before.is_none_or(|before| {
+                surface_radius_at(before, z, self.surface).is_some_and(|s| match self.surface {
+                    Surface::Outer => s >= root_at(z) - 1e-6,
+                    Surface::Bore => s <= root_at(z) + 1e-6,
+                })
+            })
+        };
+        let gap = least_gap_where(
+            shapes,
+            Reference::Line(a, b),
+            a[0],
+            b[0],
+            self.surface,
+            &cut_here,
+        )?;
         Some(match self.surface {
             Surface::Outer => self.x() + 2.0 * gap,
             Surface::Bore => self.x() - 2.0 * gap,
@@ -293,43 +333,20 @@ fn height_where(groove: &dyn Fn(f64) -> f64, root: f64, crest: f64, share: f64) 
 /// The threads of a toolpath, in program order (see [`Thread`]); `shapes` is the final
 /// section, where the first pass's depth is measured from the crest.
 pub fn threads(segments: &[Segment], tools: &ToolTable, shapes: &[Shape]) -> Vec<Thread> {
-    // each pass: the index of its first thread move (a chamfer pull-out continues it)
-    let mut groups: Vec<(Surface, Vec<&Segment>)> = vec![];
-    let mut open = false;
-    for (i, s) in segments.iter().enumerate() {
-        match s.motion {
-            Motion::Rapid => {}
-            Motion::Feed => open = false,
-            Motion::Thread => {
-                if i > 0 && segments[i - 1].motion == Motion::Thread {
-                    continue; // the pull-out of the same pass
-                }
-                let surface = match tools.outline_for(s.tool, s.hint).0.bbox() {
-                    Some((lo, hi)) if hi[1] < -lo[1] => Surface::Bore,
-                    _ => Surface::Outer,
-                };
-                let joins = open
-                    && groups.last().is_some_and(|(surf, passes)| {
-                        let p = passes[0];
-                        let (a, b) = (p.from.z.min(p.to.z), p.from.z.max(p.to.z));
-                        *surf == surface
-                            && p.tool == s.tool
-                            && p.lead == s.lead
-                            && s.from.z.max(s.to.z) > a
-                            && s.from.z.min(s.to.z) < b
-                    });
-                if joins {
-                    groups.last_mut().unwrap().1.push(s);
-                } else {
-                    groups.push((surface, vec![s]));
-                }
-                open = true;
-            }
-        }
-    }
-    groups
+    let groups: Vec<(Surface, Vec<&Segment>, usize)> = thread_groups(segments, tools)
         .into_iter()
         .map(|(surface, passes)| {
+            let first = passes[0];
+            (
+                surface,
+                passes.iter().map(|&i| &segments[i]).collect(),
+                first,
+            )
+        })
+        .collect();
+    groups
+        .into_iter()
+        .map(|(surface, passes, first_move)| {
             let deeper = |a: f64, b: f64| match surface {
                 Surface::Outer => a < b,
                 Surface::Bore => a > b,
@@ -371,6 +388,7 @@ pub fn threads(segments: &[Segment], tools: &ToolTable, shapes: &[Shape]) -> Vec
             phases.sort_by(f64::total_cmp);
             phases.dedup();
             Thread {
+                first_move,
                 starts: phases.len(),
                 wrong_side,
                 span: passes[0].span,
@@ -381,6 +399,54 @@ pub fn threads(segments: &[Segment], tools: &ToolTable, shapes: &[Shape]) -> Vec
             }
         })
         .collect()
+}
+
+/// The index of the first move of each thread of a toolpath, in program order: where the
+/// stock a thread cuts into is taken (see [`Thread::achieved_x`]).
+pub fn thread_starts(segments: &[Segment], tools: &ToolTable) -> Vec<usize> {
+    thread_groups(segments, tools)
+        .into_iter()
+        .map(|(_, passes)| passes[0])
+        .collect()
+}
+
+/// The threads' passes, each by the index of its first thread move (a chamfer pull-out
+/// continues it), grouped as [`Thread`] says.
+fn thread_groups(segments: &[Segment], tools: &ToolTable) -> Vec<(Surface, Vec<usize>)> {
+    let mut groups: Vec<(Surface, Vec<usize>)> = vec![];
+    let mut open = false;
+    for (i, s) in segments.iter().enumerate() {
+        match s.motion {
+            Motion::Rapid => {}
+            Motion::Feed => open = false,
+            Motion::Thread => {
+                if i > 0 && segments[i - 1].motion == Motion::Thread {
+                    continue; // the pull-out of the same pass
+                }
+                let surface = match tools.outline_for(s.tool, s.hint).0.bbox() {
+                    Some((lo, hi)) if hi[1] < -lo[1] => Surface::Bore,
+                    _ => Surface::Outer,
+                };
+                let joins = open
+                    && groups.last().is_some_and(|(surf, passes)| {
+                        let p = &segments[passes[0]];
+                        let (a, b) = (p.from.z.min(p.to.z), p.from.z.max(p.to.z));
+                        *surf == surface
+                            && p.tool == s.tool
+                            && p.lead == s.lead
+                            && s.from.z.max(s.to.z) > a
+                            && s.from.z.min(s.to.z) < b
+                    });
+                if joins {
+                    groups.last_mut().expect("joins an open group").1.push(i);
+                } else {
+                    groups.push((surface, vec![i]));
+                }
+                open = true;
+            }
+        }
+    }
+    groups
 }
 
 /// The crest of a thread between `z0` and `z1`: the highest outside or the lowest bore.
@@ -461,6 +527,7 @@ mod tests {
             pass_depths: vec![],
             wrong_side: false,
             starts,
+            first_move: 0,
         }
     }
 
