@@ -99,10 +99,27 @@ fn g92_is_a_clamp_or_coordinate_set_in_b_and_a_thread_cycle_in_a() {
     let tp = run_on(Control::FanucB, "G92 S2500\nG0 X40 Z2\nM30\n");
     assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
     assert_eq!(ends(&tp), [(2.0, 40.0)]);
-    // B: G92 X Z sets coordinates: at home (Z150, X250) the position becomes X200 Z100, so
-    // X40 Z2 is 50 mm and 48 mm further in G54 terms.
+    // B: G92 X Z sets coordinates. Before the first move it states the program's own frame
+    // (the stock's, spec/dialects.md §2.3): the tool is at X200 Z100 there, X40 Z2 is X40 Z2,
+    // and a note says where the tool starts.
     let tp = run_on(Control::FanucB, "G92 X200 Z100\nG0 X40 Z2\nM30\n");
-    assert_eq!(ends(&tp), [(52.0, 90.0)]);
+    assert_eq!(ends(&tp), [(2.0, 40.0)]);
+    assert_eq!(tp.segments[0].from, expander::Pt::new(100.0, 100.0));
+    assert!(
+        tp.warnings.iter().any(|w| w.code == "W-G50-START"),
+        "{:?}",
+        tp.warnings
+    );
+    // After a move it shifts the work origin, with a warning naming the shift: at X40 Z2 the
+    // position becomes X50 Z10, so the next X40 Z2 is X30 Z-6 of the first frame.
+    let tp = run_on(Control::FanucB, "G0 X40 Z2\nG92 X50 Z10\nG0 X40 Z2\nM30\n");
+    assert_eq!(ends(&tp), [(2.0, 40.0), (-6.0, 30.0)]);
+    let w = tp
+        .warnings
+        .iter()
+        .find(|w| w.code == "W-G50-SHIFT")
+        .expect("a shift warning");
+    assert!(w.message.contains("ΔX-10 ΔZ-8"), "{}", w.message);
     // B: G92 X Z F is the system-A thread cycle: an error at F.
     let a = the_alarm(&run_on(Control::FanucB, "G92 X20 Z-10 F1.5\n")).clone();
     assert_eq!((a.code, a.span.column), ("LS-DIALECT", 14));

@@ -112,18 +112,70 @@ impl Interp<'_> {
                 "check Setting 33 (FANUC / YASNAC / HAAS coordinate style) on the machine",
             );
         }
-        if let Some(x) = used.take('X') {
-            self.shift.r = self.pos.r - x.value * u / 2.0;
+        let (x, z, du, dw) = (
+            used.take('X'),
+            used.take('Z'),
+            used.take('U'),
+            used.take('W'),
+        );
+        if x.is_none() && z.is_none() && du.is_none() && dw.is_none() {
+            return Ok(());
         }
-        if let Some(z) = used.take('Z') {
-            self.shift.z = self.pos.z - z.value * u;
+        // Where the tool reads it is, in the present frame.
+        let mut reads = self.pos - self.shift;
+        if let Some(x) = x {
+            reads.r = x.value * u / 2.0;
         }
-        if let Some(du) = used.take('U') {
-            self.shift.r -= du.value * u / 2.0;
+        if let Some(z) = z {
+            reads.z = z.value * u;
         }
-        if let Some(dw) = used.take('W') {
-            self.shift.z -= dw.value * u;
+        if let Some(du) = du {
+            reads.r += du.value * u / 2.0;
         }
+        if let Some(dw) = dw {
+            reads.z += dw.value * u;
+        }
+        let span = used.span();
+        if self.out.segments.is_empty() && self.section.is_none() && self.shift == Pt::default() {
+            // Before the first move the setting states the program's own frame, the one the
+            // stock is given in (spec/dialects.md §2.3): the tool is where it says.
+            self.note_once(
+                span,
+                "W-G50-START",
+                format!(
+                    "G50 before the first move: the tool starts at X{} Z{} of the program's frame (not at the machine profile's home)",
+                    fmt_mm(2.0 * reads.r),
+                    fmt_mm(reads.z)
+                ),
+                "the stock is given in this frame (Z0 at the face the program means)",
+            );
+            self.pos = reads;
+            return Ok(());
+        }
+        let shift = self.pos - reads;
+        let moved = shift - self.shift;
+        self.shift = shift;
+        self.warn(
+            span,
+            "W-G50-SHIFT",
+            format!(
+                "coordinate setting moves the work origin by ΔX{} ΔZ{}: later positions are read in the new frame, the section stays in the first",
+                fmt_mm(2.0 * moved.r),
+                fmt_mm(moved.z)
+            ),
+            "",
+        );
         Ok(())
+    }
+}
+
+/// A length for a message: at most three decimals, no trailing zeros.
+fn fmt_mm(v: f64) -> String {
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
     }
 }
