@@ -409,3 +409,49 @@ fn a_centre_left_retracted_is_labelled_retracted() {
         assert_eq!(label, retracted, "{m:?}");
     }
 }
+
+/// A Φ40 × 40 tube (bore Φ20) in jaws from a chuck face at Z-45, 15 long: held over
+/// Z-40…-30. Boring it to Φ24 through, 1 mm past its end, leaves an 8 mm wall inside the
+/// jaws: no crash (**Interpretation**: the outer 0.5 mm skin under the gripped diameter is
+/// what the jaws hold). Bored to Φ39.2 the wall left is 0.4 mm: the cut reaches the skin,
+/// a crash "gripped length" at the boring line.
+#[test]
+fn boring_a_tube_through_its_gripped_length_leaves_what_the_jaws_hold() {
+    let dir = tempfile::tempdir().unwrap();
+    let tools = dir.path().join("t.toml");
+    std::fs::write(&tools, read(&asset("tools/boring-r08-tip2.toml"))).unwrap();
+    let bore = |x: f64| {
+        let program = format!(
+            "G99 M03 S500 T0202\nG00 X{:.1} Z2\nG01 Z-41 F0.1\nG00 X{:.1}\nG00 Z5\nM30\n",
+            x,
+            x - 2.0
+        );
+        let (pdir, prog) = temp_program("b.nc", program.as_bytes());
+        let _keep = pdir;
+        let json = dir.path().join("r.json");
+        let out = latsim(&[
+            "run",
+            prog.to_str().unwrap(),
+            "--stock",
+            "40x40",
+            "--bore",
+            "20",
+            "--tools",
+            tools.to_str().unwrap(),
+            "--chuck",
+            "grip=15,face=-45",
+            "--json",
+            json.to_str().unwrap(),
+            "-q",
+        ]);
+        let v: Value =
+            serde_json::from_str(&read(&json)).unwrap_or_else(|_| panic!("{}", out.stderr));
+        crashes(&v)
+    };
+    assert!(bore(24.0).is_empty(), "{:?}", bore(24.0));
+    let c = bore(39.2);
+    assert!(
+        c.iter().any(|r| r.0 == 3 && r.1 == "gripped length"),
+        "{c:?}"
+    );
+}

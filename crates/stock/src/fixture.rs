@@ -20,9 +20,10 @@
 //! sweeps, overlaps the chuck face, a jaw or the tailstock centre by more than
 //! [`CRASH_MIN_AREA`] — rapid, feed or thread alike. A feed or thread move whose cutting
 //! outline's sweep overlaps the gripped length (of the blank as it was before the first
-//! cut) by more than [`CRASH_MIN_AREA`] is a crash "gripped length": the tool cuts the
-//! blank inside the jaws (boring a tube through its gripped length included:
-//! **Interpretation**, the jaws would crush or lose the part). A rapid there is already a
+//! cut) by more than [`CRASH_MIN_AREA`], reaching its outer skin ([`GRIP_SKIN`] under the
+//! gripped diameter), is a crash "gripped length": the tool cuts what the jaws hold
+//! (**Interpretation**: boring a bush through its gripped length is no crash while it
+//! leaves a wall thicker than the skin; one thinner the jaws would crush). A rapid there is already a
 //! rapid crash of the removal, and a body there is a body crash. As in the removal, a move
 //! that meets the obstacle the move before it met continues that crash: one crash is
 //! reported, at its first move.
@@ -37,6 +38,11 @@ use std::collections::HashMap;
 /// The chuck body's diameter beyond the jaws' outer diameter when the profile gives none, mm.
 pub(crate) const DEFAULT_OD_MARGIN: f64 = 40.0;
 
+/// How thick the skin of the gripped length is that the jaws hold, mm: a cut inside the jaws
+/// that comes nearer the gripped diameter than this (turning it, or boring a wall thinner)
+/// takes what holds the part.
+pub(crate) const GRIP_SKIN: f64 = 0.5;
+
 /// The name of the gripped-length rule's obstacle.
 pub const GRIPPED_LENGTH: &str = "gripped length";
 
@@ -49,6 +55,10 @@ pub struct Obstacle {
     pub shapes: Vec<Shape>,
     /// Only cutting moves' cutting outlines are checked against it (the gripped length).
     pub cut_only: bool,
+    /// The gripped length's outer skin, [`GRIP_SKIN`] thick under the gripped diameter: a
+    /// cut in the gripped length counts only when it reaches it (boring a bush through its
+    /// gripped length leaves what the jaws hold).
+    pub skin: Option<Vec<Shape>>,
     bbox: Rect,
     /// Its rings when each is convex and has no hole (a separating-axis test then spares
     /// the boolean for sweeps that only come near it).
@@ -110,6 +120,7 @@ impl Obstacle {
             name,
             shapes,
             cut_only,
+            skin: None,
             bbox,
             convex,
         }
@@ -168,7 +179,15 @@ impl Fixture {
                 false,
             ));
             obstacles.push(Obstacle::new("chuck jaw", jaws, false));
-            grip_rule = Some(Obstacle::new(GRIPPED_LENGTH, gripped, true));
+            let skin = crate::boolean(
+                &gripped,
+                &[rect(face, front, r_grip - GRIP_SKIN, r_grip + 1.0)],
+                BoolOp::Intersection,
+            );
+            grip_rule = Some(Obstacle {
+                skin: Some(skin),
+                ..Obstacle::new(GRIPPED_LENGTH, gripped, true)
+            });
             stick_out = Some(b.max.z - front);
         }
         if let Some(t) = &w.tailstock {
@@ -269,7 +288,10 @@ impl Fixture {
                     }
                     let overlap = crate::boolean(&sweep, &o.shapes, BoolOp::Intersection);
                     let a = area(&overlap);
-                    if a > CRASH_MIN_AREA {
+                    let reaches_skin = o.skin.as_ref().is_none_or(|skin| {
+                        area(&crate::boolean(&overlap, skin, BoolOp::Intersection)) > CRASH_MIN_AREA
+                    });
+                    if a > CRASH_MIN_AREA && reaches_skin {
                         hit.push(o.name);
                         out.push(measure(i, o.name, body, &overlap, a, &path));
                     }
