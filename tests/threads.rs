@@ -505,3 +505,41 @@ fn a_relief_cut_before_the_thread_is_not_its_depth() {
     );
     assert_eq!(j["verdict"], "clean", "{j:#}");
 }
+
+/// Haas G92 M16 × 2 with M23 (the pull-out chamfer, Setting 95 = 1 lead at Setting 96 =
+/// 45°): each pass threads to Z-18 and pulls out to Z-20, 2 mm off the root, still
+/// threading. The section sees the sharp 60° tool every lead from Z5 as one pass, the
+/// chamfer included: V grooves at Z-1 … -17 (nine, 0.8 deep: 0.8² tan 30° each) and one
+/// at Z-19 on the chamfer, apex r8.2, outside the Φ16 bar: 9 × 0.369504 = 3.3255 mm². With
+/// M24 each pass runs to Z-20 at full depth: the grooves at Z-19 and the pass end Z-20 come
+/// in (4.065 mm²). (Stamped at the joint Z-18 as well, the chamfer added a tenth groove.)
+#[test]
+fn haas_g92_pulls_out_under_m23_and_stamps_on_across_the_chamfer() {
+    let run = |m: &str| {
+        let program = format!(
+            "G18 G21 G40 G99\n{m}\nG97 S500 M03 T404\nG00 X18. Z5.\nG92 X15.4 Z-20. F2.\nX14.8\nX14.4\nG00 X50 Z50\nM30\n"
+        );
+        let (dir, path) = common::temp_program("m23.nc", program.as_bytes());
+        let _keep = dir;
+        let tools = common::asset("corpus/tools/shop.toml");
+        let (out, report) = common::run_json(
+            &path,
+            &[
+                "--control",
+                "haas",
+                "--stock",
+                "16x40",
+                "--tools",
+                tools.to_str().unwrap(),
+                "--quiet",
+            ],
+        );
+        let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
+        j["removed_area_mm2"].as_f64().unwrap()
+    };
+    let v = 0.8f64.powi(2) * 30f64.to_radians().tan();
+    let m23 = run("M23");
+    assert!((m23 - 9.0 * v).abs() < 2e-3, "{m23} vs {}", 9.0 * v);
+    let m24 = run("M24");
+    assert!((m24 - 4.065).abs() < 2e-3, "{m24}");
+}

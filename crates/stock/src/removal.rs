@@ -798,7 +798,7 @@ pub fn simulate(
     while done < segments.len() || done == 0 {
         let end = (done + epoch).min(segments.len());
         for (k, seg) in segments[done..end].iter().enumerate() {
-            builder.push(done + k, seg);
+            builder.push_before(done + k, seg, segments.get(done + k + 1));
             snapshots.after_push(done + k + 1, &mut builder);
         }
         if end == segments.len() {

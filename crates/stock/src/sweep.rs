@@ -318,6 +318,12 @@ pub(crate) struct SweepBuilder<'a> {
     /// The segment being pushed runs below the axis.
     below: bool,
     scratch: Vec<P>,
+    /// The segment being pushed is a thread move whose pass the next one continues (a
+    /// pull-out chamfer): no stamp at its end, the next one's stamps go on a lead apart.
+    next_continues: bool,
+    /// After such a move: where it ended and where the next stamp falls from there, as a
+    /// fraction of the lead.
+    thread_carry: Option<(P, f64)>,
     /// (first segment index, message) for skipped moves and defaulted tools.
     pub(crate) warnings: Vec<(usize, String)>,
     /// The sweeps built so far.
@@ -351,6 +357,8 @@ impl<'a> SweepBuilder<'a> {
             rear: Vec::new(),
             below: false,
             scratch: Vec::new(),
+            next_continues: false,
+            thread_carry: None,
             warnings: Vec::new(),
             out: Sweeps::default(),
         }
@@ -416,6 +424,16 @@ impl<'a> SweepBuilder<'a> {
             .clone();
         self.last_body = Some((key, body.clone()));
         body
+    }
+
+    /// [`SweepBuilder::push`], told the segment after it: a thread move that the next one
+    /// continues (its pull-out chamfer, one pass) is stamped as one pass with it.
+    pub(crate) fn push_before(&mut self, idx: usize, seg: &Segment, next: Option<&Segment>) {
+        self.next_continues = seg.motion == Motion::Thread
+            && next
+                .is_some_and(|n| n.motion == Motion::Thread && n.arc.is_none() && n.from == seg.to);
+        self.push(idx, seg);
+        self.next_continues = false;
     }
 
     /// Adds segment number `idx`: the sweep of its cutting outline, then the probe of its
@@ -593,9 +611,13 @@ impl<'a> SweepBuilder<'a> {
     }
 
     /// Positions of the outline for a thread move: every lead from the start, and the end;
-    /// `None` (with a warning) when the move must be swept continuously instead.
+    /// `None` (with a warning) when the move must be swept continuously instead. A pass of
+    /// several moves (a thread and its pull-out chamfer) is one pass: stamps every lead
+    /// along all of it, at its start and its end only (the section sees the tool once a
+    /// lead, also on the chamfer; the joint is no place it stops).
     fn thread_stamps(&mut self, idx: usize, seg: &Segment) -> Option<Vec<P>> {
         let (p, q) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
+        let carried = self.thread_carry.take().filter(|(at, _)| *at == p);
         if seg.arc.is_some() {
             self.warnings
                 .push((idx, "circular thread move: swept continuously".into()));
@@ -636,19 +658,28 @@ impl<'a> SweepBuilder<'a> {
         // The tool passes the section plane once a lead, shifted by the start angle
         // (multi-start Q): at from + (phase + k)·lead along the move; the start and end
         // points are where the tool enters and leaves the thread.
-        let phase = seg.thread_phase.rem_euclid(1.0);
+        let phase = carried.map_or(seg.thread_phase.rem_euclid(1.0), |(_, f)| f);
         let at = |s: f64| {
             let t = if len > 0.0 { s / len } else { 0.0 };
             [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]
         };
-        let mut pts: Vec<P> = vec![p];
+        let mut pts: Vec<P> = Vec::new();
+        if carried.is_none() {
+            pts.push(p);
+        }
         pts.extend(
-            (0..=n as usize)
+            (0..=n as usize + 1)
                 .map(|k| (phase + k as f64) * seg.lead)
-                .filter(|&s| s > 0.0 && s < len)
+                .filter(|&s| (s > 0.0 || (carried.is_some() && s >= 0.0)) && s < len)
                 .map(at),
         );
-        pts.push(q);
+        if self.next_continues {
+            // the first stamp at or past the end, counted from there
+            let k = (len / seg.lead - phase).ceil().max(0.0);
+            self.thread_carry = Some((q, (phase + k - len / seg.lead).clamp(0.0, 1.0)));
+        } else {
+            pts.push(q);
+        }
         Some(pts)
     }
 

@@ -6,6 +6,11 @@
 //! each depth). R is the radius difference thread start minus thread end (taper).
 //! Q is the start angle of this block only (multi-start, spec/dialects.md §4.7): a modal
 //! repeat without Q after a block with Q ≠ 0 threads at 0°, with a warning.
+//!
+//! On a Haas with M23 in force (the power-on state) each pass ends with the pull-out
+//! chamfer of G76 (spec/dialects.md §3.5: M23/M24 switch it for G76 and G92): the thread
+//! runs to Setting 95 leads before the end point (on the taper), then out at Setting 96°
+//! to the end Z, away from the axis on an OD thread (toward it in a bore), still threading.
 
 use super::{thread_start_angle, Cycle, Move, Output};
 use crate::codes::G92;
@@ -28,17 +33,49 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
     c.retained.g92_shifted = start_angle != 0.0;
     let a = c.start;
     let (end, r) = (w.end, w.r);
-    let mut thread = Move::feed(end);
-    thread.motion = Motion::Thread;
+    let thread = |to: Pt| Move {
+        motion: Motion::Thread,
+        ..Move::feed(to)
+    };
+    let mut moves = vec![Move::rapid(Pt::new(a.z, end.r + r))]; // ① X rapid to the thread start
+    match haas_pull_out(c, a, end, r) {
+        // ② thread to γ before the end, on the taper, then the pull-out to the end Z
+        Some((corner, out)) => moves.extend([thread(corner), thread(out)]),
+        // ② thread to the end point, F = lead
+        None => moves.push(thread(end)),
+    }
+    moves.push(Move::rapid(Pt::new(end.z, a.r))); // ③ X rapid out to the start X
+    moves.push(Move::rapid(a)); // ④ Z rapid back to the start point
     Ok(Output {
-        moves: vec![
-            Move::rapid(Pt::new(a.z, end.r + r)), // ① X rapid to the thread start
-            thread,                               // ② thread to the end point, F = lead
-            Move::rapid(Pt::new(end.z, a.r)),     // ③ X rapid out to the start X
-            Move::rapid(a),                       // ④ Z rapid back to the start point
-        ],
+        moves,
         warnings,
         thread_phase: start_angle / 360.0,
         ..Output::default()
     })
+}
+
+/// The Haas pull-out under M23: where the thread leaves the taper, γ = Setting 95 leads
+/// before the end Z, and where the chamfer ends, at the end Z moved γ·tan(Setting 96) away
+/// from the thread's depth toward the start X. `None`: not a Haas, M24, no chamfer, or a
+/// thread too short for it (then it threads to the end, as with M24).
+fn haas_pull_out(c: &Cycle, a: Pt, end: Pt, taper: f64) -> Option<(Pt, Pt)> {
+    if c.machine.control != crate::Control::Haas || !c.thread_chamfer {
+        return None;
+    }
+    let h = c.machine.haas;
+    let gamma = h.setting95 * c.feed_mm;
+    let travel = (a.z - end.z).abs();
+    let theta = h.setting96;
+    if !(gamma > 0.0 && gamma < travel && theta > 0.0 && theta < 90.0) {
+        return None;
+    }
+    let toward_start = (a.z - end.z).signum();
+    // on the thread line from its start (at end.r + R) to the end point
+    let corner_r = end.r + taper * gamma / travel;
+    let outward = if a.r > end.r { 1.0 } else { -1.0 };
+    let pull_out = gamma * theta.to_radians().tan();
+    Some((
+        Pt::new(end.z + toward_start * gamma, corner_r),
+        Pt::new(end.z, end.r + outward * pull_out),
+    ))
 }

@@ -128,6 +128,8 @@ pub(crate) struct Cycle<'a, 'b> {
     pub(crate) tool_blade: Option<(f64, bool)>,
     /// The thread pull-out chamfer is on (Haas M23, the power-on state; M24 turns it off).
     pub(crate) thread_chamfer: bool,
+    /// The F in force (this block's included) in mm: G92's lead.
+    pub(crate) feed_mm: f64,
     /// Where a drilling cycle returns (G98/G99 in systems B/C; the profile elsewhere).
     pub(crate) drill_return: crate::DrillReturn,
 }

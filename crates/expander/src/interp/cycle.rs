@@ -20,6 +20,7 @@ impl Interp<'_> {
     ) -> Result<Flow, Diagnostic> {
         let b = &sub.blocks[index];
         let tool_blade = self.blade_for(self.tool);
+        let feed_mm = self.feed * self.unit();
         let out = {
             let mut c = Cycle {
                 code,
@@ -39,6 +40,7 @@ impl Interp<'_> {
                 index,
                 tool_blade,
                 thread_chamfer: self.thread_chamfer,
+                feed_mm,
                 drill_return: self.drill_return,
             };
             cycles::run(&mut c)?
