@@ -904,3 +904,18 @@ fn a_library_macro_program_runs_its_own_loops() {
         );
     }
 }
+
+/// The parts counters #3901/#3902 (spec/dialects.md §5.7): 0 at the start, set by the
+/// program; a loop on them runs its count. The modal groups 2 (G96/G97), 3
+/// (G90/G91) and 7 (G40/G41/G42) read the interpreter's state.
+#[test]
+fn parts_counters_and_more_modal_groups() {
+    let tp = clean(
+        "#3902=3\n#3901=0\n#101=0\nWHILE[#3901LT#3902]DO1\n#101=#101+1\n#3901=#3901+1\nEND1\n#102=#4002\n#103=#4003\n#104=#4007\nG96 S150 M03 T0101\nG42 G00 X20 Z2\n#105=#4002\n#106=#4007\nG40 G00 X40 Z5\nM30\n",
+    );
+    assert_eq!(var(&tp, "#101"), Some(3.0), "{:?}", tp.variables);
+    assert_eq!(
+        [102, 103, 104, 105, 106].map(|n| var(&tp, &format!("#{n}"))),
+        [Some(97.0), Some(90.0), Some(40.0), Some(96.0), Some(42.0)]
+    );
+}

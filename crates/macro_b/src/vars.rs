@@ -149,7 +149,7 @@ fn not_simulated(n: i64, span: Span) -> MacroError {
         ErrorKind::NotSimulated,
         span,
         format!("system variable #{n} not simulated"),
-        "latsim simulates #3000 #3001 #3002 #3006 #3901 #3902 #4001–#4021 #4101–#4126 #5001 #5002 #5021 #5022 #5041 #5042, and #2001+ when the profile maps tool offsets",
+        "latsim simulates #3000 #3006 #3901 #3902 #4001–#4003 #4005–#4007 #4109 #4119 #4120 #5001 #5002 #5021 #5022 #5041 #5042 (not the timers #3001/#3002, the tool offsets #2001+, other modal groups and addresses)",
     )
 }
 

@@ -86,8 +86,18 @@ impl System for Sys<'_, '_> {
                 MotionMode::Thread => 32.0,
                 MotionMode::Cycle(t) => f64::from(t) / 10.0,
             }),
+            // G96/G97 (constant surface speed)
+            2 => Some(if self.it.css { 96.0 } else { 97.0 }),
+            // G90/G91 (absolute/incremental; system A writes U/W instead: always G90)
+            3 => Some(if self.it.incremental { 91.0 } else { 90.0 }),
             5 => Some(if self.it.per_rev { 99.0 } else { 98.0 }),
             6 => Some(if self.it.inch { 20.0 } else { 21.0 }),
+            // G40/G41/G42
+            7 => Some(match self.it.comp {
+                None => 40.0,
+                Some(crate::tnrc::Side::Left) => 41.0,
+                Some(crate::tnrc::Side::Right) => 42.0,
+            }),
             _ => None,
         }
     }
@@ -97,6 +107,24 @@ impl System for Sys<'_, '_> {
             'S' => Some(Value::num(self.it.s_value)),
             'T' => Some(Value::num(f64::from(self.it.tool * 100 + self.it.offset))),
             _ => None,
+        }
+    }
+    fn parts_counter(&self, which: u8) -> Option<f64> {
+        self.it
+            .parts
+            .get(usize::from(which).checked_sub(1)?)
+            .copied()
+    }
+    fn set_parts_counter(&mut self, which: u8, value: f64) -> bool {
+        match usize::from(which)
+            .checked_sub(1)
+            .and_then(|i| self.it.parts.get_mut(i))
+        {
+            Some(n) => {
+                *n = value;
+                true
+            }
+            None => false,
         }
     }
     fn stop_message(&mut self, number: f64, message: &str) -> bool {

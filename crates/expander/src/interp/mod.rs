@@ -204,6 +204,9 @@ pub(crate) struct Interp<'m> {
     thread_phase: f64,
     /// A G01 line with `,C`/`,R` waiting for the next line (spec/dialects.md §6.5).
     corner: Option<corner::PendingCorner>,
+    /// The parts counters `#3901`, `#3902`: 0 at the start, as the program sets them
+    /// (spec/dialects.md §5.7; the +1 of M30 comes when the run is over).
+    parts: [f64; 2],
     /// Return level of the drilling cycles (the profile's; G98/G99 in systems B/C set it).
     pub(crate) drill_return: crate::DrillReturn,
     /// Custom macro B's variables and program structure, when it is on.
@@ -267,6 +270,7 @@ impl<'m> Interp<'m> {
             thread_chamfer: true,
             thread_phase: 0.0,
             corner: None,
+            parts: [0.0; 2],
             drill_return: machine.drill_return,
             macros: None,
             moved: false,
