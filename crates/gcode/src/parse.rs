@@ -561,14 +561,7 @@ impl<'a> Reader<'a> {
                         self.next();
                     }
                     self.next();
-                    if self.options.macros.is_some() && self.expression_follows() {
-                        self.expression_word(letter, span)?;
-                        self.mark(span);
-                    } else {
-                        self.pending = Some(PendingWord::new(letter, span));
-                        self.mark(span);
-                        self.scan_number();
-                    }
+                    self.start_word(letter, span)?;
                 }
                 '/' if self.peek() == Some('/') => {
                     self.finish_word()?;
@@ -634,15 +627,7 @@ impl<'a> Reader<'a> {
                 }
                 c if c.is_ascii_alphabetic() => {
                     self.finish_word()?;
-                    let letter = c.to_ascii_uppercase();
-                    if self.options.macros.is_some() && self.expression_follows() {
-                        self.expression_word(letter, span)?;
-                        self.mark(span);
-                    } else {
-                        self.pending = Some(PendingWord::new(letter, span));
-                        self.mark(span);
-                        self.scan_number();
-                    }
+                    self.start_word(c.to_ascii_uppercase(), span)?;
                 }
                 c if c.is_ascii_digit() || c == '.' || c == '+' || c == '-' => {
                     let Some(p) = &self.pending else {
@@ -857,6 +842,21 @@ impl<'a> Reader<'a> {
             }
         }
         self.words.push(word);
+        Ok(())
+    }
+
+    /// Begin the word of `letter` read at `span`: its value is an expression (macro B) or a
+    /// number, read from here.
+    fn start_word(&mut self, letter: char, span: Span) -> Result<(), ParseError> {
+        if self.options.macros.is_some() && self.expression_follows() {
+            self.expression_word(letter, span)?;
+            self.mark(span);
+        } else {
+            self.pending = Some(PendingWord::new(letter, span));
+            // the block reaches the letter, then its digits (`scan_number` moves the end)
+            self.mark(span);
+            self.scan_number();
+        }
         Ok(())
     }
 
