@@ -543,3 +543,36 @@ fn haas_g92_pulls_out_under_m23_and_stamps_on_across_the_chamfer() {
     let m24 = run("M24");
     assert!((m24 - 4.065).abs() < 2e-3, "{m24}");
 }
+
+/// The same M16 × 2 on a FANUC whose profile sets `g92_chamfer_leads = 1` (spec/dialects.md
+/// §4.7, at 45°): the same pull-out, the same nine grooves; without the key none.
+#[test]
+fn a_fanuc_g92_pulls_out_by_its_profile() {
+    let (mdir, machine) = common::temp_program("m.toml", b"g92_chamfer_leads = 1.0\n");
+    let _keep = mdir;
+    let run = |profile: bool| {
+        let program = "G21 G40 G99\nG97 S500 M03 T0404\nG00 X18. Z5.\nG92 X15.4 Z-20. F2.\nX14.8\nX14.4\nG00 X50 Z50\nM30\n";
+        let (dir, path) = common::temp_program("g92.nc", program.as_bytes());
+        let _keep = dir;
+        let tools = common::asset("corpus/tools/shop.toml");
+        let mut args = vec![
+            "--control",
+            "fanuc-a",
+            "--stock",
+            "16x40",
+            "--tools",
+            tools.to_str().unwrap(),
+            "--quiet",
+        ];
+        if profile {
+            args.extend(["--machine", machine.to_str().unwrap()]);
+        }
+        let (out, report) = common::run_json(&path, &args);
+        let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
+        j["removed_area_mm2"].as_f64().unwrap()
+    };
+    let v = 0.8f64.powi(2) * 30f64.to_radians().tan();
+    let chamfered = run(true);
+    assert!((chamfered - 9.0 * v).abs() < 2e-3, "{chamfered}");
+    assert!((run(false) - 4.065).abs() < 2e-3);
+}

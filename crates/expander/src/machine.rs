@@ -306,6 +306,9 @@ pub struct Machine {
     pub m_names: std::collections::BTreeMap<u32, String>,
     /// FANUC with the FS15 tape format (parameter No. 0001 FCV): one-block G71/G72/G76.
     pub fs15_format: bool,
+    /// The pull-out chamfer of G92 on controls other than Haas (where M23/M24 switch it), in
+    /// leads at 45°: the machine's signal or parameter (spec/dialects.md §4.7); 0 = none.
+    pub g92_chamfer_leads: f64,
     /// G83 pecks retract fully to the R point (else high-speed: back by the clearance).
     pub g83_full_retract: bool,
     /// G83 clearance δ above the previous depth before the next peck, mm.
@@ -353,6 +356,7 @@ impl Machine {
             accept_m: vec![],
             m_names: Default::default(),
             fs15_format: false,
+            g92_chamfer_leads: 0.0,
             g83_full_retract: false,
             drill_clearance: 1.0,
             drill_return: DrillReturn::Initial,
@@ -398,6 +402,7 @@ struct File {
     m_names: Option<std::collections::BTreeMap<String, Spanned<String>>>,
     work_offsets: Option<std::collections::BTreeMap<Spanned<String>, Spanned<[f64; 2]>>>,
     fs15_format: Option<bool>,
+    g92_chamfer_leads: Option<Spanned<f64>>,
     g83_full_retract: Option<bool>,
     drill_clearance: Option<Spanned<f64>>,
     drill_return: Option<DrillReturn>,
@@ -524,6 +529,16 @@ impl Machine {
         }
         if let Some(h) = file.home {
             m.home = pt("home", h)?;
+        }
+        if let Some(c) = file.g92_chamfer_leads {
+            let x = *c.get_ref();
+            if !(x.is_finite() && (0.0..=9.9).contains(&x)) {
+                return Err(bad(
+                    c.span(),
+                    format!("g92_chamfer_leads must be 0 to 9.9 leads, got {x}"),
+                ));
+            }
+            m.g92_chamfer_leads = x;
         }
         m.fs15_format = file.fs15_format.unwrap_or(m.fs15_format);
         m.g83_full_retract = file.g83_full_retract.unwrap_or(m.g83_full_retract);

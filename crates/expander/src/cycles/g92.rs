@@ -7,10 +7,11 @@
 //! Q is the start angle of this block only (multi-start, spec/dialects.md §4.7): a modal
 //! repeat without Q after a block with Q ≠ 0 threads at 0°, with a warning.
 //!
-//! On a Haas with M23 in force (the power-on state) each pass ends with the pull-out
-//! chamfer of G76 (spec/dialects.md §3.5: M23/M24 switch it for G76 and G92): the thread
-//! runs to Setting 95 leads before the end point (on the taper), then out at Setting 96°
-//! to the end Z, away from the axis on an OD thread (toward it in a bore), still threading.
+//! With a pull-out chamfer each pass ends like G76's: on a Haas under M23 (the power-on
+//! state; spec/dialects.md §3.5: M23/M24 switch it for G76 and G92) the thread runs to
+//! Setting 95 leads before the end point (on the taper), then out at Setting 96° to the end
+//! Z, away from the axis on an OD thread (toward it in a bore), still threading; on other
+//! controls the profile's `g92_chamfer_leads` at 45° (§4.7, default none).
 
 use super::{thread_start_angle, Cycle, Move, Output};
 use crate::codes::G92;
@@ -38,7 +39,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
         ..Move::feed(to)
     };
     let mut moves = vec![Move::rapid(Pt::new(a.z, end.r + r))]; // ① X rapid to the thread start
-    match haas_pull_out(c, a, end, r) {
+    match pull_out(c, a, end, r) {
         // ② thread to γ before the end, on the taper, then the pull-out to the end Z
         Some((corner, out)) => moves.extend([thread(corner), thread(out)]),
         // ② thread to the end point, F = lead
@@ -54,18 +55,23 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, crate::Diagnostic> {
     })
 }
 
-/// The Haas pull-out under M23: where the thread leaves the taper, γ = Setting 95 leads
-/// before the end Z, and where the chamfer ends, at the end Z moved γ·tan(Setting 96) away
-/// from the thread's depth toward the start X. `None`: not a Haas, M24, no chamfer, or a
-/// thread too short for it (then it threads to the end, as with M24).
-fn haas_pull_out(c: &Cycle, a: Pt, end: Pt, taper: f64) -> Option<(Pt, Pt)> {
-    if c.machine.control != crate::Control::Haas || !c.thread_chamfer {
-        return None;
-    }
-    let h = c.machine.haas;
-    let gamma = h.setting95 * c.feed_mm;
+/// The pull-out: on a Haas under M23, γ = Setting 95 leads at Setting 96°; elsewhere the
+/// profile's `g92_chamfer_leads` at 45° (spec/dialects.md §4.7). Where the thread leaves
+/// the taper, γ before the end Z, and where the chamfer ends, at the end Z moved γ·tan θ
+/// away from the thread's depth toward the start X. `None`: no chamfer, or a thread too
+/// short for it (then it threads to the end).
+fn pull_out(c: &Cycle, a: Pt, end: Pt, taper: f64) -> Option<(Pt, Pt)> {
+    let (leads, theta) = if c.machine.control == crate::Control::Haas {
+        let h = c.machine.haas;
+        (
+            if c.thread_chamfer { h.setting95 } else { 0.0 },
+            h.setting96,
+        )
+    } else {
+        (c.machine.g92_chamfer_leads, 45.0)
+    };
+    let gamma = leads * c.feed_mm;
     let travel = (a.z - end.z).abs();
-    let theta = h.setting96;
     if !(gamma > 0.0 && gamma < travel && theta > 0.0 && theta < 90.0) {
         return None;
     }
