@@ -144,13 +144,50 @@ fn a_corner_without_its_second_line_is_an_alarm() {
         ("G01 X30 ,C1. ,R1.\nG01 Z-20\n", "both ,C and ,R on one block"),
         ("G01 X30 ,C0\nG01 Z-20\n", ",C0 is not a size"),
         ("G00 X30 ,C1.\nG01 Z-20\n", "address ,C has no meaning in this block"),
-        ("G01 X30 ,A30.\n", "address ,A has no meaning in this block"),
+        ("G00 X30 ,A30.\n", "address ,A has no meaning in this block"),
+        ("G01 X30 Z-5 ,A150.\n", "not both (,A150)"),
+        ("G01 X30 ,A0\n", "never reaches the X given (,A0)"),
+        ("G01 X30 ,A200.\n", "never reaches the X given (,A200)"),
     ] {
         let got = run(body);
         assert!(got.contains(want), "{body:?}:\n{got}");
     }
     // a dwell between the two lines is allowed
     assert_eq!(run("G01 X30 ,C1.\nG04 X0.5\nG01 Z-20\n"), "");
+}
+
+/// `,A a` gives the line's angle from +Z (counter-clockwise, X up) instead of one end
+/// coordinate: from (Z0, r10), `X30 ,A150.` rises 5 mm at 150° and ends 5 / tan 30° =
+/// 8.660 mm toward −Z; `Z-10 ,A165.` ends 10 · tan 15° = 2.679 mm higher.
+#[test]
+fn a_line_angle_gives_the_other_coordinate() {
+    let end = |line: &str| {
+        let program = format!("G99 M03 S600 T0101\nG00 X20 Z2\nG01 Z0 F0.2\n{line}\nM30\n");
+        let (tp, _) = common::pipeline(
+            &program,
+            &expander::Machine::default(),
+            &bar(),
+            &tools("v35-sharp.toml"),
+        );
+        assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+        tp.segments.last().unwrap().to
+    };
+    let p = end("G01 X30 ,A150.");
+    assert!(
+        (p.z + 5.0 / 30f64.to_radians().tan()).abs() < 1e-9 && (p.r - 15.0).abs() < 1e-12,
+        "{p:?}"
+    );
+    let p = end("G01 Z-10 ,A165.");
+    assert!(
+        (p.z + 10.0).abs() < 1e-12 && (p.r - (10.0 + 10.0 * 15f64.to_radians().tan())).abs() < 1e-9,
+        "{p:?}"
+    );
+    // with a chamfer after it, as in a drawing: the taper, then ,C against the next line
+    let p = end("G01 X30 ,A150. ,C1.\nG01 Z-20");
+    assert!(
+        (p.z + 20.0).abs() < 1e-12 && (p.r - 15.0).abs() < 1e-12,
+        "{p:?}"
+    );
 }
 
 /// The reader takes `,C`, `,R` and `,A` with spaces, in either case, beside a decimal comma.
@@ -193,4 +230,24 @@ fn comma_addresses_are_read() {
         "{}",
         e.message
     );
+}
+
+/// `,A` in a G71 shape: the taper from (Z0, r10) at 150° to Φ30, then Φ30 to Z−20: G71 and
+/// G70 cut the section drawn by hand (Hausdorff ≤ 0.002 mm).
+#[test]
+fn a_line_angle_in_a_finishing_shape() {
+    let program = "G99 M03 S600 T0101\nG00 X42 Z2\nG71 U1 R0.5\nG71 P10 Q20 U0 W0 F0.2\nN10 G00 X20\nG01 Z0\nG01 X30 ,A150.\nG01 Z-20\nN20 G01 X42\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let (_, sim) = simulate(program, &bar(), &tools("v35-sharp.toml"));
+    let zt = -5.0 / 30f64.to_radians().tan();
+    let want = shape(vec![
+        [-40.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 10.0],
+        [zt, 15.0],
+        [-20.0, 15.0],
+        [-20.0, 20.0],
+        [-40.0, 20.0],
+    ]);
+    let h = stock::hausdorff(&sim.final_shapes, &[want]);
+    assert!(h <= 0.002, "Hausdorff {h}");
 }

@@ -1,4 +1,5 @@
-//! Direct drawing dimensions on G01 (spec/dialects.md §6.5): `,C c` replaces the corner at
+//! Direct drawing dimensions on G01 (spec/dialects.md §6.5): `,A a` gives a line's angle
+//! instead of one end coordinate; `,C c` replaces the corner at
 //! a line's end point, between it and the next G01 line, by a chamfer whose ends are `c`
 //! from the corner along each line; `,R r` by an arc of radius `r` tangent to both. The
 //! geometry and the words, for the interpreter (`interp/corner.rs`) and the finishing
@@ -111,6 +112,55 @@ pub(crate) fn without_line(word: Span, line: u32, what: &str) -> Diagnostic {
         "LS-CORNER",
         format!("the chamfer or round at the end of line {line} needs a G01 line next, but {what}"),
         "follow a block with ,C or ,R by the G01 line of the corner's other side",
+    )
+}
+
+/// The end of a G01 given one coordinate and `,A a` (spec/dialects.md §6.5): the line leaves
+/// `from` at `a` degrees from +Z, counter-clockwise in the drawing (X up), and ends where it
+/// reaches the coordinate given (`given`: X, Z); `to` holds that coordinate.
+pub(crate) fn line_at_angle(
+    from: Pt,
+    to: Pt,
+    w: &gcode::Word,
+    given: (bool, bool),
+) -> Result<Pt, Diagnostic> {
+    let a = w.value.to_radians();
+    let (dz, dr) = (a.cos(), a.sin());
+    match given {
+        (true, false) => {
+            // X given: run along the angle until the radius is reached
+            if dr.abs() < 1e-9 || (to.r - from.r) * dr < 0.0 {
+                return Err(angle_alarm(
+                    w,
+                    "the line at this angle never reaches the X given",
+                ));
+            }
+            let t = (to.r - from.r) / dr;
+            Ok(Pt::new(from.z + t * dz, to.r))
+        }
+        (false, true) => {
+            if dz.abs() < 1e-9 || (to.z - from.z) * dz < 0.0 {
+                return Err(angle_alarm(
+                    w,
+                    "the line at this angle never reaches the Z given",
+                ));
+            }
+            let t = (to.z - from.z) / dz;
+            Ok(Pt::new(to.z, from.r + t * dr))
+        }
+        _ => Err(angle_alarm(
+            w,
+            "a line's angle stands with one coordinate: its X (or U) or its Z (or W), not both",
+        )),
+    }
+}
+
+pub(crate) fn angle_alarm(w: &gcode::Word, message: &str) -> Diagnostic {
+    Diagnostic::new(
+        w.span,
+        "LS-ANGLE",
+        format!("{message} (,A{})", w.value),
+        "give ,A (degrees from +Z, counter-clockwise) with exactly one end coordinate",
     )
 }
 

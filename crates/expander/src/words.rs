@@ -128,7 +128,7 @@ fn unused_help(letter: char) -> &'static str {
         'c' | 'r' => {
             "a chamfer ,C or round ,R stands on a G01 line that moves, and the next move is a G01"
         }
-        'a' => "a line's angle ,A is not read yet: give both end coordinates of the line",
+        'a' => "a line's angle ,A stands on a G01 line with one end coordinate",
         _ => "remove the word, or use the code that takes it (e.g. R with G02/G03)",
     }
 }

@@ -364,12 +364,13 @@ impl Reader {
         let mut to = self.pos;
         let (mut x_given, mut z_given) = (false, false);
         let mut arc_words = ArcWords::default();
-        let (mut chamfer, mut round) = (None, None);
+        let (mut chamfer, mut round, mut angle) = (None, None, None);
         for w in b.words.iter() {
             let v = w.value * self.unit;
             match w.letter {
                 'c' if self.mode == 10 => chamfer = Some(w),
                 'r' if self.mode == 10 => round = Some(w),
+                'a' if self.mode == 10 => angle = Some(w),
                 'G' | 'M' => {}
                 'S' => self.modes.s = Some(w.value),
                 'T' if !w.has_point && (0.0..=9999.0).contains(&w.value) => {
@@ -409,6 +410,16 @@ impl Reader {
         if first {
             self.ns_moves = (x_given, z_given);
             self.ns_span = b.span;
+        }
+        if let Some(w) = angle {
+            if !x_given && !z_given {
+                return Err(corner::angle_alarm(
+                    w,
+                    "a line's angle needs its X (or U) or its Z (or W)",
+                ));
+            }
+            to = corner::line_at_angle(self.pos, to, w, (x_given, z_given))?;
+            (x_given, z_given) = (true, true);
         }
         let corner = corner::corner_word(chamfer, round, self.unit)?;
         if let (Some((_, word)), true) = (corner, to.dist(self.pos) < 1e-12) {

@@ -264,14 +264,27 @@ impl Interp<'_> {
         } else {
             ArcWords::default()
         };
-        let corner = if self.motion == MotionMode::Line {
-            self.corner_word(used)?
+        let (corner, angle) = if self.motion == MotionMode::Line {
+            let axes = (
+                used.has('X') || used.has('U'),
+                used.has('Z') || used.has('W'),
+            );
+            (self.corner_word(used)?, used.take('a').map(|w| (w, axes)))
         } else {
-            None
+            (None, None)
         };
-        let Some(to) = self.target(used)? else {
+        let Some(mut to) = self.target(used)? else {
+            if let Some((w, _)) = angle {
+                return Err(crate::corner::angle_alarm(
+                    w,
+                    "a line's angle needs its X (or U) or its Z (or W)",
+                ));
+            }
             return arc_words.without_end_point().map_or(Ok(()), Err);
         };
+        if let Some((w, given)) = angle {
+            to = crate::corner::line_at_angle(self.pos, to, w, given)?;
+        }
         match self.motion {
             MotionMode::Rapid => self.rapid(b, to),
             MotionMode::Line if to.dist(self.pos) < 1e-12 => match corner {
