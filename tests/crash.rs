@@ -52,3 +52,38 @@ fn cli_exit_1_and_crash_in_json() {
     assert_eq!(v["verdict"], "crash");
     assert_eq!(v["crashes"][0]["line"], 8);
 }
+
+/// A pin parted off a Φ20 bar falls: with the 3 mm blade (reference corner on its −Z side,
+/// blade toward +Z) at Z-13 the kerf Z-13…-10 goes down to the axis, the pin Z-10…0 is
+/// free of the bar held at its left end. A rapid down through where the pin was then meets
+/// air: no crash (before, 2 mm into the pin). The section keeps the pin where it was: the
+/// removed area is the kerf alone, 3 × 10 = 30 mm². The same rapid before the part-off is a
+/// crash.
+#[test]
+fn a_parted_off_piece_has_fallen() {
+    let run = |program: &str| {
+        let (dir, path) = temp_program("p.nc", program.as_bytes());
+        let _keep = dir;
+        let tools = asset("corpus/tools/shop.toml");
+        let (out, report) = run_json(
+            &path,
+            &[
+                "--stock",
+                "20x40",
+                "--tools",
+                tools.to_str().unwrap(),
+                "--quiet",
+            ],
+        );
+        report.unwrap_or_else(|| panic!("{}", out.stderr))
+    };
+    let j = run("G99 M03 S600 T0505\nG00 X22 Z-13\nG01 X0 F0.05\nG00 X22\nG00 Z-6\nG00 X16\nG00 X30 Z50\nM30\n");
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+    assert!(j["crashes"].as_array().unwrap().is_empty(), "{j:#}");
+    let removed = j["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - 30.0).abs() < 1e-6, "{removed}");
+    // the pin is in the final section: two pieces, the pin Z-10…0 and the bar Z-40…-13
+    assert_eq!(j["final"].as_array().unwrap().len(), 2, "{j:#}");
+    let j = run("G99 M03 S600 T0505\nG00 X22 Z-6\nG00 X16\nG00 X30 Z50\nM30\n");
+    assert_eq!(j["verdict"], "crash", "{j:#}");
+}

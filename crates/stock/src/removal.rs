@@ -26,7 +26,7 @@ use crate::ring_air;
 use crate::snapshot::Snapshots;
 use crate::sweep::{Item, SweepBuilder, Sweeps};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
-use expander::Segment;
+use expander::{Motion, Segment};
 use geom::distance::point_segment;
 use geom::{ring, Pt, Rect};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -795,13 +795,27 @@ pub fn simulate(
     // is not: its sweep comes when it ends)
     let mut cut_moves = 0;
     let mut done = 0;
+    // pieces parted off the held bar: (moves done when they fell, the pieces)
+    let mut fallen: Vec<(usize, IShapes)> = Vec::new();
+    let mut to_erase: Option<(usize, Vec<Shape>)> = None;
+    let mut separation_checks = 0;
+    let left_end = grid.box_to_int(&bb).min[0];
     while done < segments.len() || done == 0 {
-        let end = (done + epoch).min(segments.len());
+        let mut end = (done + epoch).min(segments.len());
+        // a move that reaches the axis may part a piece off: its epoch ends with it, so that
+        // the stock can be looked at before the next move
+        if let Some(k) = segments[done..end].iter().position(reaches_axis) {
+            end = done + k + 1;
+        }
+        if let Some((idx, pieces)) = to_erase.take() {
+            builder.erase(idx, &pieces);
+        }
         for (k, seg) in segments[done..end].iter().enumerate() {
             builder.push_before(done + k, seg, segments.get(done + k + 1));
             snapshots.after_push(done + k + 1, &mut builder);
         }
-        if end == segments.len() {
+        let parting = end > done && reaches_axis(&segments[end - 1]);
+        if end == segments.len() || parting {
             builder.flush_run();
         }
         let sweeps = builder.take();
@@ -885,6 +899,37 @@ pub fn simulate(
                 engine.union(&parts)
             });
         }
+        if parting && end < segments.len() {
+            if separation_checks < MAX_SEPARATION_CHECKS {
+                separation_checks += 1;
+                let mut parts: Vec<IShapes> = Vec::new();
+                for m in &strips {
+                    m.lock()
+                        .unwrap_or_else(|e| e.into_inner())
+                        .gather(&mut parts);
+                }
+                let now = engine.union(&parts);
+                // the bar is held at its left end (the chuck): a piece that no longer
+                // reaches it has fallen
+                let held = |s: &crate::overlay::IShape| {
+                    s.first()
+                        .is_some_and(|outer| outer.iter().any(|p| p.x <= left_end + 1))
+                };
+                if now.len() > 1 && now.iter().any(held) {
+                    let off: IShapes = now.into_iter().filter(|s| !held(s)).collect();
+                    if !off.is_empty() {
+                        to_erase = Some((end - 1, grid.shapes_to_float(&off)));
+                        fallen.push((end, off));
+                    }
+                }
+            } else if separation_checks == MAX_SEPARATION_CHECKS {
+                separation_checks += 1;
+                warnings.push((
+                    end - 1,
+                    format!("more than {MAX_SEPARATION_CHECKS} moves reach the axis: pieces they part off later stay in the stock"),
+                ));
+            }
+        }
         done = end;
         progress(done);
         if segments.is_empty() {
@@ -897,6 +942,8 @@ pub fn simulate(
             .unwrap_or_else(|e| e.into_inner())
             .collect(&mut parts);
     }
+    // the section shows the fallen pieces where they were parted off
+    parts.extend(fallen.iter().map(|(_, f)| f.clone()));
     let final_int = engine.union(&parts);
     let final_shapes = grid.shapes_to_float(&final_int);
     let crashes = merge_fragments(fragments);
@@ -913,9 +960,30 @@ pub fn simulate(
         snapshots: snapshots
             .out
             .iter()
-            .map(|(k, s)| (*k, grid.shapes_to_float(s)))
+            .map(|(k, s)| {
+                let before: Vec<&IShapes> = fallen
+                    .iter()
+                    .filter(|(at, _)| at < k)
+                    .map(|(_, f)| f)
+                    .collect();
+                if before.is_empty() {
+                    return (*k, grid.shapes_to_float(s));
+                }
+                let mut parts = vec![s.clone()];
+                parts.extend(before.into_iter().cloned());
+                (*k, grid.shapes_to_float(&engine.union(&parts)))
+            })
             .collect(),
     }
+}
+
+/// Most moves reaching the axis after which the stock is looked at for pieces parted off.
+const MAX_SEPARATION_CHECKS: usize = 1_000;
+
+/// A cutting move that ends at or past the axis coming from above it (a part-off, a face to
+/// the centre): it may leave a piece that no longer reaches the held bar.
+fn reaches_axis(seg: &Segment) -> bool {
+    seg.motion != Motion::Rapid && seg.to.r <= 1e-9 && seg.from.r > seg.to.r
 }
 
 /// Adds up the overlaps each strip saw for a rapid; the contact point is the one nearest

@@ -47,7 +47,7 @@
 use crate::geom::{clip_convex, pts, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
 use crate::overlay::{ring_perimeter, Grid, IBox, IPt};
-use crate::ToolTable;
+use crate::{Shape, ToolTable};
 use expander::{Motion, Segment, ToolHint};
 use geom::Rect;
 use std::collections::HashMap;
@@ -947,6 +947,26 @@ impl<'a> SweepBuilder<'a> {
     }
 
     /// Takes the sweeps built so far (the current run, if any, stays open).
+    /// Removes `pieces` (section shapes) from the stock as a sweep of move `idx` that cuts
+    /// nothing anyone reports: pieces a part-off separated from the held bar have fallen,
+    /// and later moves through their place meet air.
+    pub(crate) fn erase(&mut self, idx: usize, pieces: &[Shape]) {
+        let item = self.begin();
+        for s in pieces {
+            // counter-clockwise, so that its winding is positive (what the removal reads)
+            let mut ring = s.outer.clone();
+            if geom::ring::signed_area(&pts(&ring)) < 0.0 {
+                ring.reverse();
+            }
+            self.add_ring(&ring);
+        }
+        let start = pieces
+            .first()
+            .and_then(|s| s.outer.first().copied())
+            .unwrap_or_default();
+        self.end(item, idx, false, start, [0.0, 0.0]);
+    }
+
     pub(crate) fn take(&mut self) -> Sweeps {
         std::mem::take(&mut self.out)
     }
