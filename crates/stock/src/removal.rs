@@ -512,6 +512,21 @@ impl Node {
     }
 
     /// A copy of the stock of every leaf (for a snapshot).
+    /// Whether any stock lies right of `x` (grid units): a move to the axis with nothing
+    /// beyond it (a face to the centre) parts nothing off.
+    fn has_stock_right_of(&self, x: i32) -> bool {
+        match self {
+            Self::Leaf(tile) => {
+                !tile.stock.is_empty()
+                    && tile.bbox.max[0] > x
+                    && tile.stock.iter().flatten().flatten().any(|p| p.x > x)
+            }
+            Self::Split(children, ..) => {
+                children[0].has_stock_right_of(x) || children[1].has_stock_right_of(x)
+            }
+        }
+    }
+
     fn gather(&self, out: &mut Vec<IShapes>) {
         match self {
             Self::Leaf(tile) => out.push(tile.stock.clone()),
@@ -802,9 +817,9 @@ pub fn simulate(
     let left_end = grid.box_to_int(&bb).min[0];
     while done < segments.len() || done == 0 {
         let mut end = (done + epoch).min(segments.len());
-        // a move that reaches the axis may part a piece off: its epoch ends with it, so that
-        // the stock can be looked at before the next move
-        if let Some(k) = segments[done..end].iter().position(reaches_axis) {
+        // a part-off may leave a piece: its epoch ends with it, so that the stock can be
+        // looked at before the next move
+        if let Some(k) = segments[done..end].iter().position(|s| parts_off(s, tools)) {
             end = done + k + 1;
         }
         if let Some((idx, pieces)) = to_erase.take() {
@@ -814,7 +829,7 @@ pub fn simulate(
             builder.push_before(done + k, seg, segments.get(done + k + 1));
             snapshots.after_push(done + k + 1, &mut builder);
         }
-        let parting = end > done && reaches_axis(&segments[end - 1]);
+        let parting = end > done && parts_off(&segments[end - 1], tools);
         if end == segments.len() || parting {
             builder.flush_run();
         }
@@ -899,7 +914,15 @@ pub fn simulate(
                 engine.union(&parts)
             });
         }
-        if parting && end < segments.len() {
+        let beyond = |seg: &Segment| {
+            let x = grid.to_int([seg.from.z.max(seg.to.z), 0.0]).x;
+            strips.iter().any(|m| {
+                m.lock()
+                    .unwrap_or_else(|e| e.into_inner())
+                    .has_stock_right_of(x)
+            })
+        };
+        if parting && end < segments.len() && beyond(&segments[end - 1]) {
             if separation_checks < MAX_SEPARATION_CHECKS {
                 separation_checks += 1;
                 let mut parts: Vec<IShapes> = Vec::new();
@@ -926,7 +949,7 @@ pub fn simulate(
                 separation_checks += 1;
                 warnings.push((
                     end - 1,
-                    format!("more than {MAX_SEPARATION_CHECKS} moves reach the axis: pieces they part off later stay in the stock"),
+                    format!("more than {MAX_SEPARATION_CHECKS} part-offs: pieces parted off later stay in the stock"),
                 ));
             }
         }
@@ -977,13 +1000,20 @@ pub fn simulate(
     }
 }
 
-/// Most moves reaching the axis after which the stock is looked at for pieces parted off.
+/// Most part-offs after which the stock is looked at for pieces that fell.
 const MAX_SEPARATION_CHECKS: usize = 1_000;
 
-/// A cutting move that ends at or past the axis coming from above it (a part-off, a face to
-/// the centre): it may leave a piece that no longer reaches the held bar.
-fn reaches_axis(seg: &Segment) -> bool {
-    seg.motion != Motion::Rapid && seg.to.r <= 1e-9 && seg.from.r > seg.to.r
+/// A part-off: a feed of a blade (a grooving tool, or a grooving cycle's) that ends at or
+/// past the axis coming from above it; it may leave a piece that no longer reaches the held
+/// bar. (A turning tool facing to the centre leaves, between passes, only a pip at the
+/// axis that its next pass cuts: no part.)
+fn parts_off(seg: &Segment, tools: &ToolTable) -> bool {
+    let blade = seg.hint != expander::ToolHint::Table
+        || matches!(
+            tools.get(seg.tool),
+            Some(crate::tools::Tool::Grooving { .. })
+        );
+    seg.motion == Motion::Feed && seg.to.r <= 1e-9 && seg.from.r > seg.to.r && blade
 }
 
 /// Adds up the overlaps each strip saw for a rapid; the contact point is the one nearest
