@@ -87,3 +87,35 @@ fn a_parted_off_piece_has_fallen() {
     let j = run("G99 M03 S600 T0505\nG00 X22 Z-6\nG00 X16\nG00 X30 Z50\nM30\n");
     assert_eq!(j["verdict"], "crash", "{j:#}");
 }
+
+/// Facing to the centre with a sharp V insert, 40 passes 0.5 mm apart: between passes a pip
+/// stays at the axis that the next pass cuts; none of it is a part that falls: the removed
+/// area is the faced slab, 20 × 62.5 = 1250 mm² (with the pips kept as fallen pieces it
+/// came out smaller).
+#[test]
+fn facing_to_the_centre_parts_nothing_off() {
+    let mut program = String::from("G98 M03 S600 T0101\nG00 X130 Z5\n");
+    for k in 1..=40 {
+        program += &format!(
+            "G00 Z{:.2}\nG01 X0 F200\nG00 Z2\nG00 X130\n",
+            -0.5 * f64::from(k)
+        );
+    }
+    program += "M30\n";
+    let (dir, path) = temp_program("face.nc", program.as_bytes());
+    let _keep = dir;
+    let tools = asset("tools/v35-sharp.toml");
+    let (out, report) = run_json(
+        &path,
+        &[
+            "--stock",
+            "125x110",
+            "--tools",
+            tools.to_str().unwrap(),
+            "--quiet",
+        ],
+    );
+    let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
+    let removed = j["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - 1250.0).abs() < 1e-3, "{removed}");
+}
