@@ -83,20 +83,11 @@ fn corners_in_a_finishing_shape() {
     let (_, sim) = simulate(G71_PART, &bar(), &tools("v35-sharp.toml"));
     let h = stock::hausdorff(&sim.final_shapes, &[part_by_hand()]);
     assert!(h <= 0.002, "Hausdorff {h}");
-    let (dir, path) = common::temp_program("g71.nc", G71_PART.as_bytes());
-    let _keep = dir;
     let table = asset("tools/v35-sharp.toml");
-    let (out, report) = common::run_json(
-        &path,
-        &[
-            "--stock",
-            "40x40",
-            "--tools",
-            table.to_str().unwrap(),
-            "--quiet",
-        ],
+    let j = common::report_of(
+        G71_PART,
+        &["--stock", "40x40", "--tools", table.to_str().unwrap()],
     );
-    let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
     assert_eq!(j["verdict"], "clean", "{j:#}");
     let d = &j["deviation"];
     assert!(d["max_overcut_mm"].as_f64().unwrap() < 0.002, "{d:#}");

@@ -61,21 +61,12 @@ fn cli_exit_1_and_crash_in_json() {
 /// crash.
 #[test]
 fn a_parted_off_piece_has_fallen() {
+    let tools = asset("corpus/tools/shop.toml");
     let run = |program: &str| {
-        let (dir, path) = temp_program("p.nc", program.as_bytes());
-        let _keep = dir;
-        let tools = asset("corpus/tools/shop.toml");
-        let (out, report) = run_json(
-            &path,
-            &[
-                "--stock",
-                "20x40",
-                "--tools",
-                tools.to_str().unwrap(),
-                "--quiet",
-            ],
-        );
-        report.unwrap_or_else(|| panic!("{}", out.stderr))
+        report_of(
+            program,
+            &["--stock", "20x40", "--tools", tools.to_str().unwrap()],
+        )
     };
     let j = run("G99 M03 S600 T0505\nG00 X22 Z-13\nG01 X0 F0.05\nG00 X22\nG00 Z-6\nG00 X16\nG00 X30 Z50\nM30\n");
     assert_eq!(j["verdict"], "clean", "{j:#}");
@@ -102,20 +93,11 @@ fn facing_to_the_centre_parts_nothing_off() {
         );
     }
     program += "M30\n";
-    let (dir, path) = temp_program("face.nc", program.as_bytes());
-    let _keep = dir;
     let tools = asset("tools/v35-sharp.toml");
-    let (out, report) = run_json(
-        &path,
-        &[
-            "--stock",
-            "125x110",
-            "--tools",
-            tools.to_str().unwrap(),
-            "--quiet",
-        ],
+    let j = report_of(
+        &program,
+        &["--stock", "125x110", "--tools", tools.to_str().unwrap()],
     );
-    let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
     let removed = j["removed_area_mm2"].as_f64().unwrap();
     assert!((removed - 1250.0).abs() < 1e-3, "{removed}");
 }

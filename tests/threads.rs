@@ -479,19 +479,10 @@ fn a_relief_cut_before_the_thread_is_not_its_depth() {
     );
     let _keep = tdir;
     let program = "G99 M03 S500 T0505\nG00 X22 Z-22\nG01 X16.6 F0.05\nG00 X22\nT0404\nG00 X22 Z5\nG92 X19.4 Z-23 F1.5\nX18.8\nX18.4\nX18.15\nX18.05\nG00 X50 Z50\nM30\n";
-    let (dir, path) = common::temp_program("relief.nc", program.as_bytes());
-    let _keep2 = dir;
-    let (out, report) = common::run_json(
-        &path,
-        &[
-            "--stock",
-            "20x40",
-            "--tools",
-            tools.to_str().unwrap(),
-            "--quiet",
-        ],
+    let j = common::report_of(
+        program,
+        &["--stock", "20x40", "--tools", tools.to_str().unwrap()],
     );
-    let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
     let t = &j["threads"][0];
     let achieved = t["achieved_x"].as_f64().unwrap();
     assert!((achieved - 18.05).abs() < 2e-3, "{t:#}");
@@ -519,23 +510,18 @@ fn haas_g92_pulls_out_under_m23_and_stamps_on_across_the_chamfer() {
         let program = format!(
             "G18 G21 G40 G99\n{m}\nG97 S500 M03 T404\nG00 X18. Z5.\nG92 X15.4 Z-20. F2.\nX14.8\nX14.4\nG00 X50 Z50\nM30\n"
         );
-        let (dir, path) = common::temp_program("m23.nc", program.as_bytes());
-        let _keep = dir;
         let tools = common::asset("corpus/tools/shop.toml");
-        let (out, report) = common::run_json(
-            &path,
-            &[
-                "--control",
-                "haas",
-                "--stock",
-                "16x40",
-                "--tools",
-                tools.to_str().unwrap(),
-                "--quiet",
-            ],
-        );
-        let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
-        j["removed_area_mm2"].as_f64().unwrap()
+        let args = [
+            "--control",
+            "haas",
+            "--stock",
+            "16x40",
+            "--tools",
+            tools.to_str().unwrap(),
+        ];
+        common::report_of(&program, &args)["removed_area_mm2"]
+            .as_f64()
+            .unwrap()
     };
     let v = 0.8f64.powi(2) * 30f64.to_radians().tan();
     let m23 = run("M23");
@@ -552,8 +538,6 @@ fn a_fanuc_g92_pulls_out_by_its_profile() {
     let _keep = mdir;
     let run = |profile: bool| {
         let program = "G21 G40 G99\nG97 S500 M03 T0404\nG00 X18. Z5.\nG92 X15.4 Z-20. F2.\nX14.8\nX14.4\nG00 X50 Z50\nM30\n";
-        let (dir, path) = common::temp_program("g92.nc", program.as_bytes());
-        let _keep = dir;
         let tools = common::asset("corpus/tools/shop.toml");
         let mut args = vec![
             "--control",
@@ -562,14 +546,13 @@ fn a_fanuc_g92_pulls_out_by_its_profile() {
             "16x40",
             "--tools",
             tools.to_str().unwrap(),
-            "--quiet",
         ];
         if profile {
             args.extend(["--machine", machine.to_str().unwrap()]);
         }
-        let (out, report) = common::run_json(&path, &args);
-        let j = report.unwrap_or_else(|| panic!("{}", out.stderr));
-        j["removed_area_mm2"].as_f64().unwrap()
+        common::report_of(program, &args)["removed_area_mm2"]
+            .as_f64()
+            .unwrap()
     };
     let v = 0.8f64.powi(2) * 30f64.to_radians().tan();
     let chamfered = run(true);

@@ -210,3 +210,14 @@ pub fn run_json(prog: &Path, args: &[&str]) -> (Out, Option<serde_json::Value>) 
         .map(|t| serde_json::from_str(&t).expect("the report is JSON"));
     (out, report)
 }
+
+/// `latsim run` on the program text `program` with `args` (`--quiet` added) and its JSON
+/// report; panics with the error output when no report was written.
+pub fn report_of(program: &str, args: &[&str]) -> serde_json::Value {
+    let (dir, path) = temp_program("p.nc", program.as_bytes());
+    let _keep = dir;
+    let mut all = args.to_vec();
+    all.push("--quiet");
+    let (out, report) = run_json(&path, &all);
+    report.unwrap_or_else(|| panic!("{}", out.stderr))
+}
