@@ -242,3 +242,47 @@ fn a_line_angle_in_a_finishing_shape() {
     let h = stock::hausdorff(&sim.final_shapes, &[want]);
     assert!(h <= 0.002, "Hausdorff {h}");
 }
+
+/// System A's corners without a comma under the profile's `g01_cr = "plain"`: `X30 C-1.`
+/// (the next move goes toward −Z) and `Z-20 R2.` (toward +X) cut the same part as `,C1.` and
+/// `,R2.`; a sign against the next move, or a corner between moves not at 90°, is an alarm;
+/// under the comma form (the default) a plain R on a G01 is an error naming the key.
+#[test]
+fn plain_corners_of_system_a() {
+    let plain = expander::Machine::from_toml("g01_cr = \"plain\"").unwrap();
+    let program = |a: &str, b: &str| {
+        format!("G99 M03 S600 T0101\nG00 X20 Z2\nG01 Z0 F0.2\nG01 X30 {a}\nG01 {b}\nG01 X40\nG00 X50 Z50\nM30\n")
+    };
+    let (tp, sim) = common::pipeline(
+        &program("C-1.", "Z-20 R2."),
+        &plain,
+        &bar(),
+        &tools("v35-sharp.toml"),
+    );
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let h = stock::hausdorff(&sim.final_shapes, &[part_by_hand()]);
+    assert!(h <= 0.002, "Hausdorff {h}");
+    let alarms = |machine: &expander::Machine, a: &str, b: &str| {
+        let (tp, _) = common::pipeline(&program(a, b), machine, &bar(), &tools("v35-sharp.toml"));
+        tp.alarms
+            .iter()
+            .map(|a| a.message.clone())
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    let wrong = alarms(&plain, "C1.", "Z-20");
+    assert!(
+        wrong.contains("goes toward +Z, but it goes the other way"),
+        "{wrong}"
+    );
+    let slanted = alarms(&plain, "C-1.", "X34 Z-20");
+    assert!(
+        slanted.contains("between a Z and an X move at 90°"),
+        "{slanted}"
+    );
+    let comma = alarms(&expander::Machine::default(), ",C1.", "Z-20 R2.");
+    assert!(
+        comma.contains("R2 on a G01: a corner round is written ,R here"),
+        "{comma}"
+    );
+}

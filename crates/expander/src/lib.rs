@@ -29,7 +29,7 @@ pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
 pub use library::{Library, LibraryRef};
 pub use machine::{
-    Control, DrillReturn, FeedMode, GCodeSystem, HaasSettings, Increment, Machine, PqUnits,
+    Control, DrillReturn, FeedMode, G01Cr, GCodeSystem, HaasSettings, Increment, Machine, PqUnits,
     ProfileError, RapidPath, ShortT, Units,
 };
 pub use toolpath::{

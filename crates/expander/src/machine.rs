@@ -22,6 +22,8 @@
 //! accept_m = [50, 51]       # M codes this machine knows beyond its control's table
 //! m_names = { 68 = "chuck clamp" } # names for them in the report
 //! fs15_format = false       # FANUC: read the FS15 one-block G71/G72/G76 (parameter No. 0001 FCV)
+//! g92_chamfer_leads = 0.0   # G92 pull-out chamfer, leads at 45° (not Haas: M23/M24 there)
+//! g01_cr = "comma"          # corners on G01: "comma" (,C ,R) or "plain" (system-A C±i R±r)
 //! g83_full_retract = false  # G83 peck: true full retract to R, false high-speed (No. 5101 RTR)
 //! drill_clearance = 1.0     # G83 clearance δ before the next peck, mm (No. 5114)
 //! drill_return = "initial"  # "initial" | "r_point": G83–G85 return level (system A, Haas)
@@ -130,6 +132,18 @@ impl Control {
             _ => FeedMode::G99,
         }
     }
+}
+
+/// Which words chamfer and round a G01's corner (spec/dialects.md §6.5, profile `g01_cr`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum G01Cr {
+    /// `,C c` / `,R r` (FANUC 0i/30i, Haas); a plain C is the C axis, a plain R an error.
+    #[default]
+    Comma,
+    /// System A's `C±i` / `R±r` without a comma between perpendicular moves, the sign giving
+    /// the direction of the next move.
+    Plain,
 }
 
 /// How a one- or two-digit T word is read (spec/dialects.md §3.7).
@@ -298,6 +312,8 @@ pub struct Machine {
     pub power_on_incremental: bool,
     /// How a one- or two-digit T word is read.
     pub short_t: ShortT,
+    /// Which words chamfer and round a G01's corner.
+    pub g01_cr: G01Cr,
     /// Additional work offsets G54.1 P<n> / Haas G154 P<n>, origins in the G54 frame (z, r).
     pub extra_offsets: std::collections::BTreeMap<u32, Pt>,
     /// M codes this machine knows beyond its control's table (profile `accept_m`).
@@ -347,6 +363,7 @@ impl Machine {
             machine_zero: Pt::new(150.0, 125.0),
             uw_incremental: true,
             power_on_incremental: false,
+            g01_cr: G01Cr::Comma,
             short_t: if control == Control::Gsk980 {
                 ShortT::Offset
             } else {
@@ -398,6 +415,7 @@ struct File {
     uw_incremental: Option<bool>,
     power_on_incremental: Option<bool>,
     short_t: Option<ShortT>,
+    g01_cr: Option<G01Cr>,
     accept_m: Option<Vec<Spanned<u32>>>,
     m_names: Option<std::collections::BTreeMap<String, Spanned<String>>>,
     work_offsets: Option<std::collections::BTreeMap<Spanned<String>, Spanned<[f64; 2]>>>,
@@ -595,6 +613,9 @@ impl Machine {
         }
         if let Some(v) = file.power_on_incremental {
             m.power_on_incremental = v;
+        }
+        if let Some(v) = file.g01_cr {
+            m.g01_cr = v;
         }
         if let Some(v) = file.short_t {
             m.short_t = v;

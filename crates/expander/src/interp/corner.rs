@@ -3,12 +3,13 @@
 //! follows, and the next line starts where the piece ends. Any other motion, or the end of
 //! the program, while a corner waits is an alarm (the control's "no move after a chamfer").
 //! The pieces go through the same emission as every segment, so G41/G42 offsets the
-//! chamfered path, as the control does.
+//! chamfered path, as the control does. With the profile's `g01_cr = "plain"` a G01 takes
+//! system A's `C±i` / `R±r` instead (a 90° corner; the sign is the next move's direction).
 
 use super::Interp;
 use crate::corner::{self, CornerKind};
 use crate::words::Words;
-use crate::{Diagnostic, Pt, Segment, Span};
+use crate::{Diagnostic, G01Cr, Pt, Segment, Span};
 
 /// A G01 line whose end corner waits for the next line.
 #[derive(Debug, Clone, Copy)]
@@ -18,16 +19,70 @@ pub(crate) struct PendingCorner {
     pub(crate) kind: CornerKind,
     /// The `,C` / `,R` word.
     pub(crate) word: Span,
+    /// System A's plain `C±i` / `R±r`: the sign the next move's direction must have.
+    pub(crate) toward: Option<f64>,
 }
 
+/// What a G01 asks for its end corner: the piece, its word, and for the plain form the
+/// direction of the next move.
+pub(super) type CornerAsk = (CornerKind, Span, Option<f64>);
+
 impl Interp<'_> {
-    /// The block's `,C` or `,R` (taken).
+    /// The block's `,C` or `,R` (taken), or under `g01_cr = "plain"` its `C±i` / `R±r`; a
+    /// plain R under the comma form is an error naming the profile key.
     pub(super) fn corner_word(
         &mut self,
         used: &mut Words,
-    ) -> Result<Option<(CornerKind, Span)>, Diagnostic> {
+    ) -> Result<Option<CornerAsk>, Diagnostic> {
         let (c, r) = (used.take('c'), used.take('r'));
-        corner::corner_word(c, r, self.unit())
+        let comma = corner::corner_word(c, r, self.unit())?;
+        if self.machine.g01_cr == G01Cr::Comma {
+            if let Some(w) = used.take('R') {
+                return Err(super::alarm(
+                    w.span,
+                    "LS-CORNER",
+                    format!("R{} on a G01: a corner round is written ,R here", w.value),
+                    "write ,R r (and ,C c for a chamfer), or set g01_cr = \"plain\" in the machine profile for system A's R±r",
+                ));
+            }
+            return Ok(comma.map(|(k, s)| (k, s, None)));
+        }
+        let (pc, pr) = (used.take('C'), used.take('R'));
+        let plain = match (pc, pr) {
+            (None, None) => return Ok(comma.map(|(k, s)| (k, s, None))),
+            (Some(c), Some(r)) => {
+                return Err(super::alarm(
+                    r.span,
+                    "LS-CORNER",
+                    format!("both C and R on one block (C at {})", c.span),
+                    "a corner is either chamfered (C) or rounded (R): keep one",
+                ))
+            }
+            (Some(w), None) => (w, CornerKind::Chamfer as fn(f64) -> CornerKind),
+            (None, Some(w)) => (w, CornerKind::Round as fn(f64) -> CornerKind),
+        };
+        let (w, kind) = plain;
+        if let Some((_, s)) = comma {
+            return Err(super::alarm(
+                w.span,
+                "LS-CORNER",
+                format!(
+                    "a plain {} and a comma corner (at {s}) on one block",
+                    w.letter
+                ),
+                "keep one corner word",
+            ));
+        }
+        let size = w.value.abs() * self.unit();
+        if !(size.is_finite() && size > 0.0) {
+            return Err(super::alarm(
+                w.span,
+                "LS-CORNER",
+                format!("{}{} is not a size", w.letter, w.value),
+                "give the chamfer or radius with the sign of the next move's direction, e.g. C-1. or R2.",
+            ));
+        }
+        Ok(Some((kind(size), w.span, Some(w.value.signum()))))
     }
 
     /// A G01 line to `to`: the corner waiting on the line before is made against it, and
@@ -36,9 +91,12 @@ impl Interp<'_> {
         &mut self,
         span: Span,
         to: Pt,
-        corner: Option<(CornerKind, Span)>,
+        corner: Option<CornerAsk>,
     ) -> Result<(), Diagnostic> {
         if let Some(p) = self.corner.take() {
+            if let Some(sign) = p.toward {
+                plain_corner_fits(&p, to, sign)?;
+            }
             let piece = corner::piece(p.line.from, p.line.to, to, p.kind)
                 .map_err(|why| corner::impossible(p.word, p.line.span.line, &why))?;
             // the held line up to the piece, then the piece, both of the block that asked
@@ -62,8 +120,13 @@ impl Interp<'_> {
             crate::ToolHint::Table,
         )?;
         match corner {
-            Some((kind, word)) => {
-                self.corner = Some(PendingCorner { line, kind, word });
+            Some((kind, word, toward)) => {
+                self.corner = Some(PendingCorner {
+                    line,
+                    kind,
+                    word,
+                    toward,
+                });
                 self.pos = to;
             }
             None => self.emit(line),
@@ -75,4 +138,40 @@ impl Interp<'_> {
     pub(super) fn corner_without_line(&self, p: &PendingCorner, what: &str) -> Diagnostic {
         corner::without_line(p.word, p.line.span.line, what)
     }
+}
+
+/// System A's plain corner stands between perpendicular moves, one along Z and one along X,
+/// and its sign is the direction of the second (spec/dialects.md §6.5).
+fn plain_corner_fits(p: &PendingCorner, to: Pt, sign: f64) -> Result<(), Diagnostic> {
+    const EPS: f64 = 1e-9;
+    let (a, b) = (p.line.from, p.line.to);
+    let (u1, u2) = (b - a, to - b);
+    let next = if u1.r.abs() < EPS && u2.z.abs() < EPS {
+        ("X", u2.r)
+    } else if u1.z.abs() < EPS && u2.r.abs() < EPS {
+        ("Z", u2.z)
+    } else {
+        return Err(super::alarm(
+            p.word,
+            "LS-CORNER",
+            format!(
+                "a corner without a comma (line {}) stands between a Z and an X move at 90°",
+                p.line.span.line
+            ),
+            "write ,C / ,R for corners at other angles (g01_cr = \"comma\")",
+        ));
+    };
+    if next.1 * sign <= 0.0 {
+        return Err(super::alarm(
+            p.word,
+            "LS-CORNER",
+            format!(
+                "the corner's sign says the next move goes toward {}{}, but it goes the other way",
+                if sign > 0.0 { "+" } else { "-" },
+                next.0
+            ),
+            "the sign of C or R is the direction of the move after the corner",
+        ));
+    }
+    Ok(())
 }

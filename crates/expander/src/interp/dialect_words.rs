@@ -116,6 +116,13 @@ impl Interp<'_> {
             let Some(reason) = axis_reason(w.letter) else {
                 continue;
             };
+            // system A's plain chamfer on a G01 (profile g01_cr = "plain"), not the C axis
+            if w.letter == 'C'
+                && motion == MotionMode::Line
+                && self.machine.g01_cr == crate::G01Cr::Plain
+            {
+                continue;
+            }
             if matches!(w.letter, 'C' | 'H') && w.value == 0.0 && motion == MotionMode::Rapid {
                 used.mark(i);
                 self.warn(

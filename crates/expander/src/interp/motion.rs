@@ -274,6 +274,14 @@ impl Interp<'_> {
             (None, None)
         };
         let Some(mut to) = self.target(used)? else {
+            if let Some((_, word, _)) = corner {
+                return Err(alarm(
+                    word,
+                    "LS-CORNER",
+                    "a chamfer or round on a G01 that does not move",
+                    "put the corner word on the line that ends at the corner",
+                ));
+            }
             if let Some((w, _)) = angle {
                 return Err(crate::corner::angle_alarm(
                     w,
@@ -288,7 +296,7 @@ impl Interp<'_> {
         match self.motion {
             MotionMode::Rapid => self.rapid(b, to),
             MotionMode::Line if to.dist(self.pos) < 1e-12 => match corner {
-                Some((_, word)) => Err(alarm(
+                Some((_, word, _)) => Err(alarm(
                     word,
                     "LS-CORNER",
                     "a chamfer or round on a G01 that does not move",
