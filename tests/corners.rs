@@ -285,4 +285,12 @@ fn plain_corners_of_system_a() {
         comma.contains("R2 on a G01: a corner round is written ,R here"),
         "{comma}"
     );
+    // in a G71 shape too
+    let g71 = G71_PART
+        .replace("G01 X30 ,C1.", "G01 X30 C-1.")
+        .replace("G01 Z-20 ,R2.", "G01 Z-20 R2.");
+    let (tp, sim) = common::pipeline(&g71, &plain, &bar(), &tools("v35-sharp.toml"));
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let h = stock::hausdorff(&sim.final_shapes, &[part_by_hand()]);
+    assert!(h <= 0.002, "Hausdorff {h}");
 }

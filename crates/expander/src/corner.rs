@@ -164,6 +164,72 @@ pub(crate) fn angle_alarm(w: &gcode::Word, message: &str) -> Diagnostic {
     )
 }
 
+/// System A's plain corner (`C±i` / `R±r` without a comma) stands between perpendicular
+/// moves `a -> b -> c`, one along Z and one along X, and its sign is the direction of the
+/// second (spec/dialects.md §6.5); `word` and `line` place the alarm.
+pub(crate) fn plain_fits(
+    a: Pt,
+    b: Pt,
+    c: Pt,
+    sign: f64,
+    word: Span,
+    line: u32,
+) -> Result<(), Diagnostic> {
+    const EPS: f64 = 1e-9;
+    let (u1, u2) = (b - a, c - b);
+    let next = if u1.r.abs() < EPS && u2.z.abs() < EPS {
+        ("X", u2.r)
+    } else if u1.z.abs() < EPS && u2.r.abs() < EPS {
+        ("Z", u2.z)
+    } else {
+        return Err(Diagnostic::new(
+            word,
+            "LS-CORNER",
+            format!(
+                "a corner without a comma (line {line}) stands between a Z and an X move at 90°"
+            ),
+            "write ,C / ,R for corners at other angles (g01_cr = \"comma\")",
+        ));
+    };
+    if next.1 * sign <= 0.0 {
+        return Err(Diagnostic::new(
+            word,
+            "LS-CORNER",
+            format!(
+                "the corner's sign says the next move goes toward {}{}, but it goes the other way",
+                if sign > 0.0 { "+" } else { "-" },
+                next.0
+            ),
+            "the sign of C or R is the direction of the move after the corner",
+        ));
+    }
+    Ok(())
+}
+
+/// A plain corner word's piece and sign (`C-1.` → a 1 mm chamfer toward −), or the alarm
+/// for a size that is not one; `unit`: mm per unit.
+pub(crate) fn plain_word(
+    w: &Word,
+    round: bool,
+    unit: f64,
+) -> Result<(CornerKind, f64), Diagnostic> {
+    let size = w.value.abs() * unit;
+    if !(size.is_finite() && size > 0.0) {
+        return Err(Diagnostic::new(
+            w.span,
+            "LS-CORNER",
+            format!("{}{} is not a size", w.letter, w.value),
+            "give the chamfer or radius with the sign of the next move's direction, e.g. C-1. or R2.",
+        ));
+    }
+    let kind = if round {
+        CornerKind::Round(size)
+    } else {
+        CornerKind::Chamfer(size)
+    };
+    Ok((kind, w.value.signum()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

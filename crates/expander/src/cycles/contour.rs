@@ -244,11 +244,12 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
         comp: None,
         comp_from: 0,
         corner: None,
+        plain: c.machine.g01_cr == crate::G01Cr::Plain,
     };
     for (k, b) in blocks.iter().enumerate() {
         r.block(b, k == 0)?;
     }
-    if let Some((_, _, word, line)) = r.corner {
+    if let Some((_, _, word, line, _)) = r.corner {
         let end = blocks[blocks.len() - 1].span.line;
         return Err(corner::without_line(
             word,
@@ -295,8 +296,10 @@ struct Reader {
     comp: Option<Side>,
     comp_from: usize,
     /// A line with `,C`/`,R` whose corner waits for the next line: its element, the
-    /// corner, the word and its line.
-    corner: Option<(usize, CornerKind, Span, u32)>,
+    /// corner, the word, its line, and for system A's plain form the next move's sign.
+    corner: Option<(usize, CornerKind, Span, u32, Option<f64>)>,
+    /// System A's plain `C±i` / `R±r` corners (profile `g01_cr = "plain"`).
+    plain: bool,
 }
 
 /// The alarm for a code not allowed inside a finishing shape.
@@ -365,12 +368,27 @@ impl Reader {
         let (mut x_given, mut z_given) = (false, false);
         let mut arc_words = ArcWords::default();
         let (mut chamfer, mut round, mut angle) = (None, None, None);
+        let mut plain: Option<(&Word, bool)> = None;
         for w in b.words.iter() {
             let v = w.value * self.unit;
             match w.letter {
                 'c' if self.mode == 10 => chamfer = Some(w),
                 'r' if self.mode == 10 => round = Some(w),
                 'a' if self.mode == 10 => angle = Some(w),
+                'C' | 'R' if self.plain && self.mode == 10 => {
+                    if let Some((first, _)) = plain {
+                        return Err(Diagnostic::new(
+                            w.span,
+                            "LS-CORNER",
+                            format!(
+                                "two corner words on one block (the first at {})",
+                                first.span
+                            ),
+                            "a corner is either chamfered (C) or rounded (R): keep one",
+                        ));
+                    }
+                    plain = Some((w, w.letter == 'R'));
+                }
                 'G' | 'M' => {}
                 'S' => self.modes.s = Some(w.value),
                 'T' if !w.has_point && (0.0..=9999.0).contains(&w.value) => {
@@ -421,8 +439,26 @@ impl Reader {
             to = corner::line_at_angle(self.pos, to, w, (x_given, z_given))?;
             (x_given, z_given) = (true, true);
         }
-        let corner = corner::corner_word(chamfer, round, self.unit)?;
-        if let (Some((_, word)), true) = (corner, to.dist(self.pos) < 1e-12) {
+        let corner = match (corner::corner_word(chamfer, round, self.unit)?, plain) {
+            (None, None) => None,
+            (Some((kind, word)), None) => Some((kind, word, None)),
+            (None, Some((w, is_round))) => {
+                let (kind, sign) = corner::plain_word(w, is_round, self.unit)?;
+                Some((kind, w.span, Some(sign)))
+            }
+            (Some((_, word)), Some((w, _))) => {
+                return Err(Diagnostic::new(
+                    w.span,
+                    "LS-CORNER",
+                    format!(
+                        "a plain {} and a comma corner (at {word}) on one block",
+                        w.letter
+                    ),
+                    "keep one corner word",
+                ))
+            }
+        };
+        if let (Some((_, word, _)), true) = (corner, to.dist(self.pos) < 1e-12) {
             return Err(Diagnostic::new(
                 word,
                 "LS-CORNER",
@@ -457,7 +493,7 @@ impl Reader {
                 modes: self.modes,
                 span: b.span,
             };
-            if let Some((k, kind, word, line)) = self.corner.take() {
+            if let Some((k, kind, word, line, toward)) = self.corner.take() {
                 if element.rapid || element.arc.is_some() {
                     let what = if element.rapid { "a rapid" } else { "an arc" };
                     return Err(corner::without_line(
@@ -468,6 +504,9 @@ impl Reader {
                 }
                 // the line before ends where the piece starts; the piece is of its block
                 let before = self.elements[k];
+                if let Some(sign) = toward {
+                    corner::plain_fits(before.from, before.to, element.to, sign, word, line)?;
+                }
                 let piece = corner::piece(before.from, before.to, element.to, kind)
                     .map_err(|why| corner::impossible(word, line, &why))?;
                 self.elements[k].to = piece.start;
@@ -480,8 +519,8 @@ impl Reader {
                 element.from = piece.end;
             }
             self.elements.push(element);
-            if let Some((kind, word)) = corner {
-                self.corner = Some((self.elements.len() - 1, kind, word, b.span.line));
+            if let Some((kind, word, toward)) = corner {
+                self.corner = Some((self.elements.len() - 1, kind, word, b.span.line, toward));
             }
         }
         self.pos = to;

@@ -58,10 +58,10 @@ impl Interp<'_> {
                     "a corner is either chamfered (C) or rounded (R): keep one",
                 ))
             }
-            (Some(w), None) => (w, CornerKind::Chamfer as fn(f64) -> CornerKind),
-            (None, Some(w)) => (w, CornerKind::Round as fn(f64) -> CornerKind),
+            (Some(w), None) => (w, false),
+            (None, Some(w)) => (w, true),
         };
-        let (w, kind) = plain;
+        let (w, round) = plain;
         if let Some((_, s)) = comma {
             return Err(super::alarm(
                 w.span,
@@ -73,16 +73,8 @@ impl Interp<'_> {
                 "keep one corner word",
             ));
         }
-        let size = w.value.abs() * self.unit();
-        if !(size.is_finite() && size > 0.0) {
-            return Err(super::alarm(
-                w.span,
-                "LS-CORNER",
-                format!("{}{} is not a size", w.letter, w.value),
-                "give the chamfer or radius with the sign of the next move's direction, e.g. C-1. or R2.",
-            ));
-        }
-        Ok(Some((kind(size), w.span, Some(w.value.signum()))))
+        let (kind, sign) = corner::plain_word(w, round, self.unit())?;
+        Ok(Some((kind, w.span, Some(sign))))
     }
 
     /// A G01 line to `to`: the corner waiting on the line before is made against it, and
@@ -95,7 +87,7 @@ impl Interp<'_> {
     ) -> Result<(), Diagnostic> {
         if let Some(p) = self.corner.take() {
             if let Some(sign) = p.toward {
-                plain_corner_fits(&p, to, sign)?;
+                corner::plain_fits(p.line.from, p.line.to, to, sign, p.word, p.line.span.line)?;
             }
             let piece = corner::piece(p.line.from, p.line.to, to, p.kind)
                 .map_err(|why| corner::impossible(p.word, p.line.span.line, &why))?;
@@ -138,40 +130,4 @@ impl Interp<'_> {
     pub(super) fn corner_without_line(&self, p: &PendingCorner, what: &str) -> Diagnostic {
         corner::without_line(p.word, p.line.span.line, what)
     }
-}
-
-/// System A's plain corner stands between perpendicular moves, one along Z and one along X,
-/// and its sign is the direction of the second (spec/dialects.md §6.5).
-fn plain_corner_fits(p: &PendingCorner, to: Pt, sign: f64) -> Result<(), Diagnostic> {
-    const EPS: f64 = 1e-9;
-    let (a, b) = (p.line.from, p.line.to);
-    let (u1, u2) = (b - a, to - b);
-    let next = if u1.r.abs() < EPS && u2.z.abs() < EPS {
-        ("X", u2.r)
-    } else if u1.z.abs() < EPS && u2.r.abs() < EPS {
-        ("Z", u2.z)
-    } else {
-        return Err(super::alarm(
-            p.word,
-            "LS-CORNER",
-            format!(
-                "a corner without a comma (line {}) stands between a Z and an X move at 90°",
-                p.line.span.line
-            ),
-            "write ,C / ,R for corners at other angles (g01_cr = \"comma\")",
-        ));
-    };
-    if next.1 * sign <= 0.0 {
-        return Err(super::alarm(
-            p.word,
-            "LS-CORNER",
-            format!(
-                "the corner's sign says the next move goes toward {}{}, but it goes the other way",
-                if sign > 0.0 { "+" } else { "-" },
-                next.0
-            ),
-            "the sign of C or R is the direction of the move after the corner",
-        ));
-    }
-    Ok(())
 }
