@@ -246,7 +246,12 @@ fn cutting_with_the_spindle_stopped_is_a_warning() {
 fn conflicts_and_unused_words_are_alarms() {
     assert_eq!(run("G0 G1 X10\n").alarms[0].code, "PS010");
     assert_eq!(run("G1 X10 U5 F1\n").alarms[0].code, "LS-AXIS-TWICE");
-    assert_eq!(run("G1 X10 R5 F1\n").alarms[0].code, "LS-WORD-UNUSED");
+    // a plain R on a G01: the corner round of the comma form, an error naming the key
+    // (spec/dialects.md §6.5)
+    let r = &run("G1 X10 R5 F1\n").alarms[0];
+    assert_eq!(r.code, "LS-CORNER");
+    assert!(r.help.contains("g01_cr = \"plain\""), "{}", r.help);
+    assert_eq!(run("G1 X10 Q5 F1\n").alarms[0].code, "LS-WORD-UNUSED");
     assert_eq!(run("G2 X10 Z5 R5 I1 F1 M3\n").alarms[0].code, "LS-ARC");
     assert_eq!(run("G65 P1\n").alarms[0].code, "PS010");
 }
