@@ -101,3 +101,27 @@ fn facing_to_the_centre_parts_nothing_off() {
     let removed = j["removed_area_mm2"].as_f64().unwrap();
     assert!((removed - 1250.0).abs() < 1e-3, "{removed}");
 }
+
+/// A tube (Φ40, bore Φ20) is parted off when the blade reaches the bore, not the axis: at
+/// X18 the ring Z-10…0 is free. A rapid down through where it was meets air; the section
+/// keeps the ring, the removed area is the kerf through the wall, 3 × 10 = 30 mm².
+#[test]
+fn a_tube_parted_off_at_its_bore_falls() {
+    let tools = asset("corpus/tools/shop.toml");
+    let args = [
+        "--stock",
+        "40x40",
+        "--bore",
+        "20",
+        "--tools",
+        tools.to_str().unwrap(),
+    ];
+    let j = report_of(
+        "G99 M03 S600 T0505\nG00 X42 Z-13\nG01 X18 F0.05\nG00 X42\nG00 Z-6\nG00 X30\nG00 X50 Z50\nM30\n",
+        &args,
+    );
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+    assert_eq!(j["final"].as_array().unwrap().len(), 2, "{j:#}");
+    let removed = j["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - 3.0 * 10.0).abs() < 1e-6, "{removed}");
+}

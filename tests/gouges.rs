@@ -286,7 +286,8 @@ fn the_leftover_detail_gives_the_summarys_depth() {
 /// with the 3 mm blade (T5): the groove is the later operation's own cut, not a gouge of
 /// the finished diameter (**Interpretation**): clean, with one LS-LATER-CUT warning at the
 /// plunge naming its 3 × 1.5 = 4.5 mm². The same plunge with the tool that finished the
-/// diameter (T2) is judged: a gouge at its line.
+/// diameter (T2) is judged: a gouge at its line; so is the plunge of a turning tool (T1),
+/// which cuts no groove, hole or relief of its own.
 #[test]
 fn a_groove_cut_after_the_finish_by_another_tool_is_its_own() {
     let program = |groove_tool: &str| {
@@ -333,4 +334,8 @@ fn a_groove_cut_after_the_finish_by_another_tool_is_its_own() {
             .all(|g| g["line"] == 20),
         "{v:#}"
     );
+    // a turning tool's plunge into the finished diameter is no feature of its own: a gouge
+    let (out, v) = run("T0101");
+    assert_eq!(out.code, 1, "{v:#}");
+    assert_eq!(v["verdict"], "gouge", "{v:#}");
 }

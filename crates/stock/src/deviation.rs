@@ -195,20 +195,23 @@ const CONTACT: f64 = 1e-3;
 /// A segment touches where its band of ±[`CONTACT`] meets the stock. Empty when the path
 /// never touches the stock.
 fn in_contact(path: &[P], stock: &[Shape]) -> Vec<P> {
-    let mut s = path.to_vec();
-    let mut dropped = false;
-    while s.len() >= 2 {
-        match contact(s[0], s[1], stock) {
-            Some((t, _)) if (1.0 - t) * dist(s[0], s[1]) > 2.0 * CONTACT => {
-                if !dropped && t * dist(s[0], s[1]) > CONTACT {
-                    s[0] = lerp(s[0], s[1], t);
-                }
-                break;
-            }
-            _ => {
-                s.remove(0);
-                dropped = true;
-            }
+    // the first segment that touches (the ones before are dropped at once, not one by one)
+    let mut first = 0;
+    let mut start = None;
+    while first + 1 < path.len() {
+        let (a, b) = (path[first], path[first + 1]);
+        if let Some((t, _)) =
+            contact(a, b, stock).filter(|(t, _)| (1.0 - t) * dist(a, b) > 2.0 * CONTACT)
+        {
+            start = Some(t);
+            break;
+        }
+        first += 1;
+    }
+    let mut s = path[first..].to_vec();
+    if let Some(t) = start {
+        if first == 0 && t * dist(s[0], s[1]) > CONTACT {
+            s[0] = lerp(s[0], s[1], t);
         }
     }
     let all: Vec<P> = stock.iter().flat_map(|m| m.outer.clone()).collect();
@@ -273,12 +276,24 @@ fn contact(a: P, b: P, stock: &[Shape]) -> Option<(f64, f64)> {
     if inside(b) {
         ts.push(1.0);
     }
+    let (lo, hi) = (
+        [a[0].min(b[0]), a[1].min(b[1])],
+        [a[0].max(b[0]), a[1].max(b[1])],
+    );
     for ring in stock
         .iter()
         .flat_map(|m| std::iter::once(&m.outer).chain(&m.holes))
     {
         for (k, &c) in ring.iter().enumerate() {
             let e = ring[(k + 1) % ring.len()];
+            // an edge whose box misses the segment's cannot cross it
+            if c[0].max(e[0]) < lo[0]
+                || c[0].min(e[0]) > hi[0]
+                || c[1].max(e[1]) < lo[1]
+                || c[1].min(e[1]) > hi[1]
+            {
+                continue;
+            }
             let f = [e[0] - c[0], e[1] - c[1]];
             let denom = cross(d, f);
             if denom.abs() < 1e-15 {
@@ -450,20 +465,37 @@ pub fn deviation(
     blame(&mut out.gouges, segments, tools, &rear, chord_tol);
     let (later, gouges): (Vec<Finding>, Vec<Finding>) = std::mem::take(&mut out.gouges)
         .into_iter()
-        .partition(|g| cut_later(g, intents, segments, &world_box));
+        .partition(|g| cut_later(g, intents, segments, tools, &world_box));
     out.gouges = gouges;
     out.later_cuts = later;
     out
 }
 
-/// Whether the gouge `g` was made by a feed move of another tool after every contour that
-/// claims its place began ([`Intent::owner`]): the later operation's own cut.
-fn cut_later(g: &Finding, intents: &[Intent], segments: &[Segment], world: &Rect) -> bool {
+/// Whether the gouge `g` was made by a feed move of a blade, drill or threading tool other
+/// than the contour's, after every contour that claims its place began ([`Intent::owner`]):
+/// the later operation's own cut (a groove, a hole, a relief). A turning tool's cut into a
+/// finished contour stays a gouge.
+fn cut_later(
+    g: &Finding,
+    intents: &[Intent],
+    segments: &[Segment],
+    tools: &ToolTable,
+    world: &Rect,
+) -> bool {
     let Some(seg) = g.made_by.and_then(|i| segments.get(i).map(|s| (i, s))) else {
         return false;
     };
     let (i, seg) = seg;
-    if seg.motion == expander::Motion::Rapid {
+    let cuts_features = seg.hint != expander::ToolHint::Table
+        || matches!(
+            tools.get(seg.tool),
+            Some(
+                crate::Tool::Grooving(_)
+                    | crate::Tool::Drill { .. }
+                    | crate::Tool::Threading { .. }
+            )
+        );
+    if seg.motion == expander::Motion::Rapid || !cuts_features {
         return false;
     }
     let region = std::slice::from_ref(&g.shape);

@@ -815,11 +815,22 @@ pub fn simulate(
     let mut to_erase: Option<(usize, Vec<Shape>)> = None;
     let mut separation_checks = 0;
     let left_end = grid.box_to_int(&bb).min[0];
+    // a tube's bore: a blade parts it off when it reaches the bore, not the axis
+    let bore = shapes
+        .iter()
+        .flat_map(|s| s.outer.iter().chain(s.holes.iter().flatten()))
+        .map(|p| p[1])
+        .fold(f64::INFINITY, f64::min)
+        .max(0.0);
     while done < segments.len() || done == 0 {
         let mut end = (done + epoch).min(segments.len());
         // a part-off may leave a piece: its epoch ends with it, so that the stock can be
         // looked at before the next move
-        if let Some(k) = segments[done..end].iter().position(|s| parts_off(s, tools)) {
+        let looking = separation_checks < MAX_SEPARATION_CHECKS;
+        if let Some(k) = segments[done..end]
+            .iter()
+            .position(|s| looking && parts_off(s, tools, bore))
+        {
             end = done + k + 1;
         }
         if let Some((idx, pieces)) = to_erase.take() {
@@ -829,7 +840,7 @@ pub fn simulate(
             builder.push_before(done + k, seg, segments.get(done + k + 1));
             snapshots.after_push(done + k + 1, &mut builder);
         }
-        let parting = end > done && parts_off(&segments[end - 1], tools);
+        let parting = end > done && looking && parts_off(&segments[end - 1], tools, bore);
         if end == segments.len() || parting {
             builder.flush_run();
         }
@@ -923,8 +934,14 @@ pub fn simulate(
             })
         };
         if parting && end < segments.len() && beyond(&segments[end - 1]) {
-            if separation_checks < MAX_SEPARATION_CHECKS {
-                separation_checks += 1;
+            separation_checks += 1;
+            if separation_checks == MAX_SEPARATION_CHECKS {
+                warnings.push((
+                    end - 1,
+                    format!("{MAX_SEPARATION_CHECKS} part-offs: pieces parted off after this move stay in the stock"),
+                ));
+            }
+            {
                 let mut parts: Vec<IShapes> = Vec::new();
                 for m in &strips {
                     m.lock()
@@ -945,12 +962,6 @@ pub fn simulate(
                         fallen.push((end, off));
                     }
                 }
-            } else if separation_checks == MAX_SEPARATION_CHECKS {
-                separation_checks += 1;
-                warnings.push((
-                    end - 1,
-                    format!("more than {MAX_SEPARATION_CHECKS} part-offs: pieces parted off later stay in the stock"),
-                ));
             }
         }
         done = end;
@@ -1003,17 +1014,14 @@ pub fn simulate(
 /// Most part-offs after which the stock is looked at for pieces that fell.
 const MAX_SEPARATION_CHECKS: usize = 1_000;
 
-/// A part-off: a feed of a blade (a grooving tool, or a grooving cycle's) that ends at or
-/// past the axis coming from above it; it may leave a piece that no longer reaches the held
-/// bar. (A turning tool facing to the centre leaves, between passes, only a pip at the
-/// axis that its next pass cuts: no part.)
-fn parts_off(seg: &Segment, tools: &ToolTable) -> bool {
+/// A part-off: a feed of a blade (a grooving tool, or a grooving cycle's) inward to the
+/// axis or into the blank's bore (`bore`: its inner radius, 0 for a bar); it may leave a
+/// piece that no longer reaches the held bar. (A turning tool facing to the centre leaves,
+/// between passes, only a pip at the axis that its next pass cuts: no part.)
+fn parts_off(seg: &Segment, tools: &ToolTable, bore: f64) -> bool {
     let blade = seg.hint != expander::ToolHint::Table
-        || matches!(
-            tools.get(seg.tool),
-            Some(crate::tools::Tool::Grooving { .. })
-        );
-    seg.motion == Motion::Feed && seg.to.r <= 1e-9 && seg.from.r > seg.to.r && blade
+        || matches!(tools.get(seg.tool), Some(crate::tools::Tool::Grooving(_)));
+    seg.motion == Motion::Feed && seg.to.r <= bore + 1e-9 && seg.from.r > seg.to.r && blade
 }
 
 /// Adds up the overlaps each strip saw for a rapid; the contact point is the one nearest
