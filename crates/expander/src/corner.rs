@@ -27,7 +27,7 @@ pub(crate) struct CornerPiece {
 
 /// The piece replacing the corner `b` between the lines `a -> b` and `b -> c`; `Err` says
 /// why there is none.
-pub(crate) fn piece(a: Pt, b: Pt, c: Pt, kind: CornerKind) -> Result<CornerPiece, String> {
+fn piece(a: Pt, b: Pt, c: Pt, kind: CornerKind) -> Result<CornerPiece, String> {
     let (len1, len2) = (a.dist(b), b.dist(c));
     let (u1, u2) = ((b - a).unit(), (c - b).unit());
     let turn = u1.cross(u2);
@@ -63,45 +63,94 @@ pub(crate) fn piece(a: Pt, b: Pt, c: Pt, kind: CornerKind) -> Result<CornerPiece
     Ok(CornerPiece { start, end, arc })
 }
 
-/// The corner a G01 block asks for with its `,C` and `,R` words (already taken from the
-/// block); an error for both, or for a size that is not positive. `unit`: mm per unit.
-pub(crate) fn corner_word(
-    c: Option<&Word>,
-    r: Option<&Word>,
+/// What a G01 asks for its end corner: the piece, its word, and for system A's plain form
+/// the sign the next move's direction must have.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Ask {
+    pub(crate) kind: CornerKind,
+    pub(crate) word: Span,
+    pub(crate) toward: Option<f64>,
+}
+
+/// The corner a G01 block asks for with its words (already taken from the block): `comma`
+/// its `,C` and `,R`, `plain` its system-A `C` and `R` (none unless the profile reads them);
+/// an error for two corner words, or for a size that is not one. `unit`: mm per unit.
+pub(crate) fn ask(
+    comma: [Option<&Word>; 2],
+    plain: [Option<&Word>; 2],
     unit: f64,
-) -> Result<Option<(CornerKind, Span)>, Diagnostic> {
-    let (w, kind): (_, fn(f64) -> CornerKind) = match (c, r) {
-        (None, None) => return Ok(None),
-        (Some(c), Some(r)) => {
-            return Err(Diagnostic::new(
-                r.span,
-                "LS-CORNER",
-                format!("both ,C and ,R on one block (,C at {})", c.span),
-                "a corner is either chamfered (,C) or rounded (,R): keep one",
-            ))
-        }
-        (Some(c), None) => (c, CornerKind::Chamfer),
-        (None, Some(r)) => (r, CornerKind::Round),
+) -> Result<Option<Ask>, Diagnostic> {
+    let mut words = comma
+        .iter()
+        .chain(&plain)
+        .zip([false, true, false, true])
+        .filter_map(|(w, round)| w.map(|w| (w, round)));
+    let Some((w, round)) = words.next() else {
+        return Ok(None);
     };
-    let size = w.value * unit;
+    if let Some((second, _)) = words.next() {
+        return Err(Diagnostic::new(
+            second.span,
+            "LS-CORNER",
+            format!(
+                "both {} and {} on one block ({} at {})",
+                gcode::address(w.letter),
+                gcode::address(second.letter),
+                gcode::address(w.letter),
+                w.span
+            ),
+            "a corner is either chamfered or rounded, by one word: keep one",
+        ));
+    }
+    let is_plain = !w.letter.is_ascii_lowercase();
+    // a plain word's sign is the next move's direction, its size the value's magnitude
+    let size = if is_plain { w.value.abs() } else { w.value } * unit;
     if !(size.is_finite() && size > 0.0) {
         return Err(Diagnostic::new(
             w.span,
             "LS-CORNER",
             format!("{}{} is not a size", gcode::address(w.letter), w.value),
-            "give the chamfer or radius in mm (inch under G20), greater than 0",
+            if is_plain {
+                "give the chamfer or radius with the sign of the next move's direction, e.g. C-1. or R2."
+            } else {
+                "give the chamfer or radius in mm (inch under G20), greater than 0"
+            },
         ));
     }
-    Ok(Some((kind(size), w.span)))
+    Ok(Some(Ask {
+        kind: if round {
+            CornerKind::Round(size)
+        } else {
+            CornerKind::Chamfer(size)
+        },
+        word: w.span,
+        toward: is_plain.then(|| w.value.signum()),
+    }))
 }
 
-/// The alarm for a corner whose piece cannot be made (`why`), at its word.
-pub(crate) fn impossible(word: Span, line: u32, why: &str) -> Diagnostic {
+/// The piece for the corner `ask` of the line `a -> b`, against the next line `b -> c`: a
+/// plain corner's 90° and sign checked first; `line` is the asking block's, for the alarm.
+pub(crate) fn make(a: Pt, b: Pt, c: Pt, ask: &Ask, line: u32) -> Result<CornerPiece, Diagnostic> {
+    if let Some(sign) = ask.toward {
+        plain_fits(a, b, c, sign, ask.word, line)?;
+    }
+    piece(a, b, c, ask.kind).map_err(|why| {
+        Diagnostic::new(
+            ask.word,
+            "LS-CORNER",
+            format!("the corner at the end of line {line} cannot be made: {why}"),
+            "make the chamfer or radius smaller, or the lines longer",
+        )
+    })
+}
+
+/// The alarm for a corner word on a G01 that does not move.
+pub(crate) fn standing_still(word: Span) -> Diagnostic {
     Diagnostic::new(
         word,
         "LS-CORNER",
-        format!("the corner at the end of line {line} cannot be made: {why}"),
-        "make the chamfer or radius smaller, or the lines longer",
+        "a chamfer or round on a G01 that does not move",
+        "put the corner word on the line that ends at the corner",
     )
 }
 
@@ -148,14 +197,18 @@ pub(crate) fn line_at_angle(
             let t = (to.z - from.z) / dz;
             Ok(Pt::new(to.z, from.r + t * dr))
         }
-        _ => Err(angle_alarm(
+        (true, true) => Err(angle_alarm(
             w,
             "a line's angle stands with one coordinate: its X (or U) or its Z (or W), not both",
+        )),
+        (false, false) => Err(angle_alarm(
+            w,
+            "a line's angle needs its X (or U) or its Z (or W)",
         )),
     }
 }
 
-pub(crate) fn angle_alarm(w: &gcode::Word, message: &str) -> Diagnostic {
+fn angle_alarm(w: &gcode::Word, message: &str) -> Diagnostic {
     Diagnostic::new(
         w.span,
         "LS-ANGLE",
@@ -167,14 +220,7 @@ pub(crate) fn angle_alarm(w: &gcode::Word, message: &str) -> Diagnostic {
 /// System A's plain corner (`C±i` / `R±r` without a comma) stands between perpendicular
 /// moves `a -> b -> c`, one along Z and one along X, and its sign is the direction of the
 /// second (spec/dialects.md §6.5); `word` and `line` place the alarm.
-pub(crate) fn plain_fits(
-    a: Pt,
-    b: Pt,
-    c: Pt,
-    sign: f64,
-    word: Span,
-    line: u32,
-) -> Result<(), Diagnostic> {
+fn plain_fits(a: Pt, b: Pt, c: Pt, sign: f64, word: Span, line: u32) -> Result<(), Diagnostic> {
     const EPS: f64 = 1e-9;
     let (u1, u2) = (b - a, c - b);
     let next = if u1.r.abs() < EPS && u2.z.abs() < EPS {
@@ -204,30 +250,6 @@ pub(crate) fn plain_fits(
         ));
     }
     Ok(())
-}
-
-/// A plain corner word's piece and sign (`C-1.` → a 1 mm chamfer toward −), or the alarm
-/// for a size that is not one; `unit`: mm per unit.
-pub(crate) fn plain_word(
-    w: &Word,
-    round: bool,
-    unit: f64,
-) -> Result<(CornerKind, f64), Diagnostic> {
-    let size = w.value.abs() * unit;
-    if !(size.is_finite() && size > 0.0) {
-        return Err(Diagnostic::new(
-            w.span,
-            "LS-CORNER",
-            format!("{}{} is not a size", w.letter, w.value),
-            "give the chamfer or radius with the sign of the next move's direction, e.g. C-1. or R2.",
-        ));
-    }
-    let kind = if round {
-        CornerKind::Round(size)
-    } else {
-        CornerKind::Chamfer(size)
-    };
-    Ok((kind, w.value.signum()))
 }
 
 #[cfg(test)]

@@ -19,7 +19,7 @@
 
 use super::Cycle;
 use crate::arc::ArcWords;
-use crate::corner::{self, CornerKind};
+use crate::corner::{self, Ask};
 use crate::tnrc::Side;
 use crate::{Arc, Diagnostic, Pt, Span};
 use gcode::{Block, Word};
@@ -249,10 +249,10 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
     for (k, b) in blocks.iter().enumerate() {
         r.block(b, k == 0)?;
     }
-    if let Some((_, _, word, line, _)) = r.corner {
+    if let Some((_, ask, line)) = r.corner {
         let end = blocks[blocks.len() - 1].span.line;
         return Err(corner::without_line(
-            word,
+            ask.word,
             line,
             &format!("the finishing shape ends (line {end})"),
         ));
@@ -295,9 +295,9 @@ struct Reader {
     ns_span: Span,
     comp: Option<Side>,
     comp_from: usize,
-    /// A line with `,C`/`,R` whose corner waits for the next line: its element, the
-    /// corner, the word, its line, and for system A's plain form the next move's sign.
-    corner: Option<(usize, CornerKind, Span, u32, Option<f64>)>,
+    /// A line with a corner word whose corner waits for the next line: its element, what
+    /// it asks, its line.
+    corner: Option<(usize, Ask, u32)>,
     /// System A's plain `C±i` / `R±r` corners (profile `g01_cr = "plain"`).
     plain: bool,
 }
@@ -367,28 +367,15 @@ impl Reader {
         let mut to = self.pos;
         let (mut x_given, mut z_given) = (false, false);
         let mut arc_words = ArcWords::default();
-        let (mut chamfer, mut round, mut angle) = (None, None, None);
-        let mut plain: Option<(&Word, bool)> = None;
+        let (mut comma, mut plain, mut angle) = ([None; 2], [None; 2], None);
         for w in b.words.iter() {
             let v = w.value * self.unit;
             match w.letter {
-                'c' if self.mode == 10 => chamfer = Some(w),
-                'r' if self.mode == 10 => round = Some(w),
+                'c' if self.mode == 10 => comma[0] = Some(w),
+                'r' if self.mode == 10 => comma[1] = Some(w),
                 'a' if self.mode == 10 => angle = Some(w),
-                'C' | 'R' if self.plain && self.mode == 10 => {
-                    if let Some((first, _)) = plain {
-                        return Err(Diagnostic::new(
-                            w.span,
-                            "LS-CORNER",
-                            format!(
-                                "two corner words on one block (the first at {})",
-                                first.span
-                            ),
-                            "a corner is either chamfered (C) or rounded (R): keep one",
-                        ));
-                    }
-                    plain = Some((w, w.letter == 'R'));
-                }
+                'C' if self.plain && self.mode == 10 => plain[0] = Some(w),
+                'R' if self.plain && self.mode == 10 => plain[1] = Some(w),
                 'G' | 'M' => {}
                 'S' => self.modes.s = Some(w.value),
                 'T' if !w.has_point && (0.0..=9999.0).contains(&w.value) => {
@@ -430,41 +417,12 @@ impl Reader {
             self.ns_span = b.span;
         }
         if let Some(w) = angle {
-            if !x_given && !z_given {
-                return Err(corner::angle_alarm(
-                    w,
-                    "a line's angle needs its X (or U) or its Z (or W)",
-                ));
-            }
             to = corner::line_at_angle(self.pos, to, w, (x_given, z_given))?;
             (x_given, z_given) = (true, true);
         }
-        let corner = match (corner::corner_word(chamfer, round, self.unit)?, plain) {
-            (None, None) => None,
-            (Some((kind, word)), None) => Some((kind, word, None)),
-            (None, Some((w, is_round))) => {
-                let (kind, sign) = corner::plain_word(w, is_round, self.unit)?;
-                Some((kind, w.span, Some(sign)))
-            }
-            (Some((_, word)), Some((w, _))) => {
-                return Err(Diagnostic::new(
-                    w.span,
-                    "LS-CORNER",
-                    format!(
-                        "a plain {} and a comma corner (at {word}) on one block",
-                        w.letter
-                    ),
-                    "keep one corner word",
-                ))
-            }
-        };
-        if let (Some((_, word, _)), true) = (corner, to.dist(self.pos) < 1e-12) {
-            return Err(Diagnostic::new(
-                word,
-                "LS-CORNER",
-                "a chamfer or round on a G01 that does not move",
-                "put ,C or ,R on the line that ends at the corner",
-            ));
+        let corner = corner::ask(comma, plain, self.unit)?;
+        if let (Some(ask), true) = (corner, to.dist(self.pos) < 1e-12) {
+            return Err(corner::standing_still(ask.word));
         }
         if !x_given && !z_given {
             if let Some(alarm) = arc_words.without_end_point() {
@@ -493,22 +451,18 @@ impl Reader {
                 modes: self.modes,
                 span: b.span,
             };
-            if let Some((k, kind, word, line, toward)) = self.corner.take() {
+            if let Some((k, ask, line)) = self.corner.take() {
                 if element.rapid || element.arc.is_some() {
                     let what = if element.rapid { "a rapid" } else { "an arc" };
                     return Err(corner::without_line(
-                        word,
+                        ask.word,
                         line,
                         &format!("{what} comes (line {})", b.span.line),
                     ));
                 }
                 // the line before ends where the piece starts; the piece is of its block
                 let before = self.elements[k];
-                if let Some(sign) = toward {
-                    corner::plain_fits(before.from, before.to, element.to, sign, word, line)?;
-                }
-                let piece = corner::piece(before.from, before.to, element.to, kind)
-                    .map_err(|why| corner::impossible(word, line, &why))?;
+                let piece = corner::make(before.from, before.to, element.to, &ask, line)?;
                 self.elements[k].to = piece.start;
                 self.elements.push(ShapeElement {
                     from: piece.start,
@@ -519,8 +473,8 @@ impl Reader {
                 element.from = piece.end;
             }
             self.elements.push(element);
-            if let Some((kind, word, toward)) = corner {
-                self.corner = Some((self.elements.len() - 1, kind, word, b.span.line, toward));
+            if let Some(ask) = corner {
+                self.corner = Some((self.elements.len() - 1, ask, b.span.line));
             }
         }
         self.pos = to;

@@ -7,7 +7,7 @@
 //! system A's `C±i` / `R±r` instead (a 90° corner; the sign is the next move's direction).
 
 use super::Interp;
-use crate::corner::{self, CornerKind};
+use crate::corner::{self, Ask};
 use crate::words::Words;
 use crate::{Diagnostic, G01Cr, Pt, Segment, Span};
 
@@ -16,27 +16,17 @@ use crate::{Diagnostic, G01Cr, Pt, Segment, Span};
 pub(crate) struct PendingCorner {
     /// The line as programmed, to the corner.
     pub(crate) line: Segment,
-    pub(crate) kind: CornerKind,
-    /// The `,C` / `,R` word.
-    pub(crate) word: Span,
-    /// System A's plain `C±i` / `R±r`: the sign the next move's direction must have.
-    pub(crate) toward: Option<f64>,
+    pub(crate) ask: Ask,
 }
-
-/// What a G01 asks for its end corner: the piece, its word, and for the plain form the
-/// direction of the next move.
-pub(super) type CornerAsk = (CornerKind, Span, Option<f64>);
 
 impl Interp<'_> {
     /// The block's `,C` or `,R` (taken), or under `g01_cr = "plain"` its `C±i` / `R±r`; a
     /// plain R under the comma form is an error naming the profile key.
-    pub(super) fn corner_word(
-        &mut self,
-        used: &mut Words,
-    ) -> Result<Option<CornerAsk>, Diagnostic> {
-        let (c, r) = (used.take('c'), used.take('r'));
-        let comma = corner::corner_word(c, r, self.unit())?;
-        if self.machine.g01_cr == G01Cr::Comma {
+    pub(super) fn corner_word(&mut self, used: &mut Words) -> Result<Option<Ask>, Diagnostic> {
+        let comma = [used.take('c'), used.take('r')];
+        let plain = if self.machine.g01_cr == G01Cr::Plain {
+            [used.take('C'), used.take('R')]
+        } else {
             if let Some(w) = used.take('R') {
                 return Err(super::alarm(
                     w.span,
@@ -45,36 +35,9 @@ impl Interp<'_> {
                     "write ,R r (and ,C c for a chamfer), or set g01_cr = \"plain\" in the machine profile for system A's R±r",
                 ));
             }
-            return Ok(comma.map(|(k, s)| (k, s, None)));
-        }
-        let (pc, pr) = (used.take('C'), used.take('R'));
-        let plain = match (pc, pr) {
-            (None, None) => return Ok(comma.map(|(k, s)| (k, s, None))),
-            (Some(c), Some(r)) => {
-                return Err(super::alarm(
-                    r.span,
-                    "LS-CORNER",
-                    format!("both C and R on one block (C at {})", c.span),
-                    "a corner is either chamfered (C) or rounded (R): keep one",
-                ))
-            }
-            (Some(w), None) => (w, false),
-            (None, Some(w)) => (w, true),
+            [None, None]
         };
-        let (w, round) = plain;
-        if let Some((_, s)) = comma {
-            return Err(super::alarm(
-                w.span,
-                "LS-CORNER",
-                format!(
-                    "a plain {} and a comma corner (at {s}) on one block",
-                    w.letter
-                ),
-                "keep one corner word",
-            ));
-        }
-        let (kind, sign) = corner::plain_word(w, round, self.unit())?;
-        Ok(Some((kind, w.span, Some(sign))))
+        corner::ask(comma, plain, self.unit())
     }
 
     /// A G01 line to `to`: the corner waiting on the line before is made against it, and
@@ -83,14 +46,10 @@ impl Interp<'_> {
         &mut self,
         span: Span,
         to: Pt,
-        corner: Option<CornerAsk>,
+        corner: Option<Ask>,
     ) -> Result<(), Diagnostic> {
         if let Some(p) = self.corner.take() {
-            if let Some(sign) = p.toward {
-                corner::plain_fits(p.line.from, p.line.to, to, sign, p.word, p.line.span.line)?;
-            }
-            let piece = corner::piece(p.line.from, p.line.to, to, p.kind)
-                .map_err(|why| corner::impossible(p.word, p.line.span.line, &why))?;
+            let piece = corner::make(p.line.from, p.line.to, to, &p.ask, p.line.span.line)?;
             // the held line up to the piece, then the piece, both of the block that asked
             self.emit(Segment {
                 to: piece.start,
@@ -112,13 +71,8 @@ impl Interp<'_> {
             crate::ToolHint::Table,
         )?;
         match corner {
-            Some((kind, word, toward)) => {
-                self.corner = Some(PendingCorner {
-                    line,
-                    kind,
-                    word,
-                    toward,
-                });
+            Some(ask) => {
+                self.corner = Some(PendingCorner { line, ask });
                 self.pos = to;
             }
             None => self.emit(line),
@@ -128,6 +82,6 @@ impl Interp<'_> {
 
     /// The alarm for a corner still waiting when `what` comes instead of a G01.
     pub(super) fn corner_without_line(&self, p: &PendingCorner, what: &str) -> Diagnostic {
-        corner::without_line(p.word, p.line.span.line, what)
+        corner::without_line(p.ask.word, p.line.span.line, what)
     }
 }

@@ -273,35 +273,22 @@ impl Interp<'_> {
         } else {
             (None, None)
         };
-        let Some(mut to) = self.target(used)? else {
-            if let Some((_, word, _)) = corner {
-                return Err(alarm(
-                    word,
-                    "LS-CORNER",
-                    "a chamfer or round on a G01 that does not move",
-                    "put the corner word on the line that ends at the corner",
-                ));
-            }
-            if let Some((w, _)) = angle {
-                return Err(crate::corner::angle_alarm(
-                    w,
-                    "a line's angle needs its X (or U) or its Z (or W)",
-                ));
+        let mut target = self.target(used)?;
+        if let Some((w, given)) = angle {
+            // the coordinate not written, from the angle (an alarm without either)
+            let to = target.unwrap_or(self.pos);
+            target = Some(crate::corner::line_at_angle(self.pos, to, w, given)?);
+        }
+        let Some(to) = target else {
+            if let Some(ask) = corner {
+                return Err(crate::corner::standing_still(ask.word));
             }
             return arc_words.without_end_point().map_or(Ok(()), Err);
         };
-        if let Some((w, given)) = angle {
-            to = crate::corner::line_at_angle(self.pos, to, w, given)?;
-        }
         match self.motion {
             MotionMode::Rapid => self.rapid(b, to),
             MotionMode::Line if to.dist(self.pos) < 1e-12 => match corner {
-                Some((_, word, _)) => Err(alarm(
-                    word,
-                    "LS-CORNER",
-                    "a chamfer or round on a G01 that does not move",
-                    "put ,C or ,R on the line that ends at the corner",
-                )),
+                Some(ask) => Err(crate::corner::standing_still(ask.word)),
                 None => Ok(()),
             },
             MotionMode::Thread if to.dist(self.pos) < 1e-12 => Ok(()),
