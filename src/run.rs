@@ -325,33 +325,31 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         || loaded.source.name.clone(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let stock_at = |k: usize| -> Vec<stock::Shape> {
-        if k >= segments.len() {
-            return sim.final_shapes.clone();
-        }
+    // the stock after `k` moves where the run kept it (the blank, a snapshot)
+    let kept_at = |k: usize| -> Option<Vec<stock::Shape>> {
         if k == 0 {
-            return blank.shapes.clone();
+            return Some(blank.shapes.clone());
         }
-        // no snapshot taken (a long program): the final part, see analysis::stock_marks
         sim.snapshots
             .iter()
             .find(|(at, _)| *at == k)
-            .map_or_else(|| sim.final_shapes.clone(), |(_, s)| s.clone())
+            .map(|(_, s)| s.clone())
+    };
+    // ... or the final part: at the end, and where no snapshot was taken (a long program,
+    // see analysis::stock_marks)
+    let stock_at = |k: usize| -> Vec<stock::Shape> {
+        (k < segments.len())
+            .then(|| kept_at(k))
+            .flatten()
+            .unwrap_or_else(|| sim.final_shapes.clone())
     };
     let Ok(intents) = crate::analysis::intents(args, &loaded, &tools, &stock_at) else {
         return EXIT_UNUSABLE;
     };
-    // the stock each thread cuts into, where a snapshot was taken (short programs)
+    // the stock each thread cuts into, where it was kept (short programs)
     let thread_stock: Vec<(usize, Vec<stock::Shape>)> = stock::thread_starts(segments, &tools)
         .into_iter()
-        .filter_map(|k| {
-            let taken = sim.snapshots.iter().find(|(at, _)| *at == k);
-            match (k, taken) {
-                (0, _) => Some((k, blank.shapes.clone())),
-                (_, Some((_, s))) => Some((k, s.clone())),
-                _ => None,
-            }
-        })
+        .filter_map(|k| kept_at(k).map(|s| (k, s)))
         .collect();
     // the HTML player does not show the stock the intents were read against (the epoch
     // snapshots of a long program are labelled with their own counts, not the marks)

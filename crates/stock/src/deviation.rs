@@ -2,7 +2,7 @@
 //! leftovers (material that should be gone), each with its area, depth, position and the
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
-use crate::geom::{clip_convex, clip_to_hull, convex_hull, pts, sweep_convex, P};
+use crate::geom::{clip_convex, clip_to_hull, convex_hull, dist, lerp, pts, sweep_convex, P};
 use crate::overlay::BoolOp;
 use crate::{area, boolean, Outline, Shape, ToolTable};
 use expander::Segment;
@@ -348,14 +348,6 @@ fn shape_contains(m: &Shape, p: P) -> bool {
     crossings(&m.outer) && !m.holes.iter().any(|h| crossings(h))
 }
 
-fn dist(a: P, b: P) -> f64 {
-    (b[0] - a[0]).hypot(b[1] - a[1])
-}
-
-fn lerp(a: P, b: P, t: f64) -> P {
-    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t]
-}
-
 /// One connected region where the part differs from the intent.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Finding {
@@ -486,14 +478,10 @@ fn cut_later(
         return false;
     };
     let (i, seg) = seg;
-    let cuts_features = seg.hint != expander::ToolHint::Table
+    let cuts_features = tools.blade_cuts(seg)
         || matches!(
             tools.get(seg.tool),
-            Some(
-                crate::Tool::Grooving(_)
-                    | crate::Tool::Drill { .. }
-                    | crate::Tool::Threading { .. }
-            )
+            Some(crate::Tool::Drill { .. } | crate::Tool::Threading { .. })
         );
     if seg.motion == expander::Motion::Rapid || !cuts_features {
         return false;
@@ -593,10 +581,7 @@ fn perimeter(shape: &Shape) -> f64 {
         .map(|ring| {
             let n = ring.len();
             (0..n)
-                .map(|i| {
-                    let (a, b) = (ring[i], ring[(i + 1) % n]);
-                    (b[0] - a[0]).hypot(b[1] - a[1])
-                })
+                .map(|i| dist(ring[i], ring[(i + 1) % n]))
                 .sum::<f64>()
         })
         .sum()

@@ -7,6 +7,16 @@ use geom::{orient, ring, Pt, Rect};
 /// A point (z, r) in mm.
 pub(crate) type P = [f64; 2];
 
+/// Distance between two points.
+pub(crate) fn dist(a: P, b: P) -> f64 {
+    (b[0] - a[0]).hypot(b[1] - a[1])
+}
+
+/// The point a fraction `t` of the way from `a` to `b`.
+pub(crate) fn lerp(a: P, b: P, t: f64) -> P {
+    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t]
+}
+
 /// Points as kernel points.
 pub(crate) fn pts(ring: &[P]) -> Vec<Pt> {
     ring.iter().map(|&p| Pt::from(p)).collect()

@@ -915,15 +915,7 @@ pub fn simulate(
         };
         // (at the last epoch end the stock is the final part, which the caller has anyway)
         if end < segments.len() {
-            snapshots.at_epoch_end(cut_moves, || {
-                let mut parts: Vec<IShapes> = Vec::new();
-                for m in &strips {
-                    m.lock()
-                        .unwrap_or_else(|e| e.into_inner())
-                        .gather(&mut parts);
-                }
-                engine.union(&parts)
-            });
+            snapshots.at_epoch_end(cut_moves, || stock_of(&strips, &mut engine));
         }
         let beyond = |seg: &Segment| {
             let x = grid.to_int([seg.from.z.max(seg.to.z), 0.0]).x;
@@ -941,27 +933,9 @@ pub fn simulate(
                     format!("{MAX_SEPARATION_CHECKS} part-offs: pieces parted off after this move stay in the stock"),
                 ));
             }
-            {
-                let mut parts: Vec<IShapes> = Vec::new();
-                for m in &strips {
-                    m.lock()
-                        .unwrap_or_else(|e| e.into_inner())
-                        .gather(&mut parts);
-                }
-                let now = engine.union(&parts);
-                // the bar is held at its left end (the chuck): a piece that no longer
-                // reaches it has fallen
-                let held = |s: &crate::overlay::IShape| {
-                    s.first()
-                        .is_some_and(|outer| outer.iter().any(|p| p.x <= left_end + 1))
-                };
-                if now.len() > 1 && now.iter().any(held) {
-                    let off: IShapes = now.into_iter().filter(|s| !held(s)).collect();
-                    if !off.is_empty() {
-                        to_erase = Some((end - 1, grid.shapes_to_float(&off)));
-                        fallen.push((end, off));
-                    }
-                }
+            if let Some(off) = fallen_pieces(stock_of(&strips, &mut engine), left_end) {
+                to_erase = Some((end - 1, grid.shapes_to_float(&off)));
+                fallen.push((end, off));
             }
         }
         done = end;
@@ -1019,9 +993,36 @@ const MAX_SEPARATION_CHECKS: usize = 1_000;
 /// piece that no longer reaches the held bar. (A turning tool facing to the centre leaves,
 /// between passes, only a pip at the axis that its next pass cuts: no part.)
 fn parts_off(seg: &Segment, tools: &ToolTable, bore: f64) -> bool {
-    let blade = seg.hint != expander::ToolHint::Table
-        || matches!(tools.get(seg.tool), Some(crate::tools::Tool::Grooving(_)));
-    seg.motion == Motion::Feed && seg.to.r <= bore + 1e-9 && seg.from.r > seg.to.r && blade
+    seg.motion == Motion::Feed
+        && seg.to.r <= bore + 1e-9
+        && seg.from.r > seg.to.r
+        && tools.blade_cuts(seg)
+}
+
+/// The stock as it stands: every strip's tiles joined.
+fn stock_of(strips: &[Mutex<Node>], engine: &mut Engine) -> IShapes {
+    let mut parts: Vec<IShapes> = Vec::new();
+    for m in strips {
+        m.lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .gather(&mut parts);
+    }
+    engine.union(&parts)
+}
+
+/// The pieces of `stock` that no longer reach the bar's left end `left_end` (grid units),
+/// where the chuck holds it: parted off, fallen. None while the held bar is the only piece,
+/// or when no piece reaches the left end (nothing to tell held from fallen).
+fn fallen_pieces(stock: IShapes, left_end: i32) -> Option<IShapes> {
+    let held = |s: &crate::overlay::IShape| {
+        s.first()
+            .is_some_and(|outer| outer.iter().any(|p| p.x <= left_end + 1))
+    };
+    if stock.len() < 2 || !stock.iter().any(held) {
+        return None;
+    }
+    let off: IShapes = stock.into_iter().filter(|s| !held(s)).collect();
+    (!off.is_empty()).then_some(off)
 }
 
 /// Adds up the overlaps each strip saw for a rapid; the contact point is the one nearest

@@ -44,7 +44,7 @@
 //! programmed point. An arc whose single chord is within `chord_tol − δ` of it joins such
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
-use crate::geom::{clip_convex, pts, sweep_chain, sweep_convex, P};
+use crate::geom::{clip_convex, dist, pts, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
 use crate::overlay::{ring_perimeter, Grid, IBox, IPt};
 use crate::{Shape, ToolTable};
@@ -275,10 +275,6 @@ impl Run {
             }
         }
     }
-}
-
-fn dist(x: P, y: P) -> f64 {
-    (x[0] - y[0]).hypot(x[1] - y[1])
 }
 
 /// The angle between two directions, radians (0 when either is zero).

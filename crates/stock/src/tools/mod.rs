@@ -67,6 +67,13 @@ impl ToolTable {
             .map(|(_, tool)| tool)
     }
 
+    /// Whether `seg` is cut by a grooving blade: the table's tool is one, or a grooving
+    /// cycle says so (its hint).
+    pub(crate) fn blade_cuts(&self, seg: &expander::Segment) -> bool {
+        seg.hint != expander::ToolHint::Table
+            || matches!(self.get(seg.tool), Some(Tool::Grooving(_)))
+    }
+
     /// The T numbers in the table, in file order.
     pub fn numbers(&self) -> Vec<u32> {
         self.tools.iter().map(|(t, _)| *t).collect()
