@@ -399,21 +399,7 @@ fn thread_lines(doc: &mut Doc, v: &View, t: &ThreadCheck) {
         } else {
             y + 2.0
         };
-        doc.label_box(
-            [v.px[0] + 4.0, top, w, CORNER_BOX_H],
-            2.0,
-            0.88,
-            stroke,
-            0.8,
-        );
-        doc.text(
-            v.px[0] + 4.0 + w / 2.0,
-            top + CORNER_BOX_H - 4.0,
-            FS_CORNER,
-            "middle",
-            colour::INK,
-            &label,
-        );
+        boxed_label(doc, [v.px[0] + 4.0, top, w, CORNER_BOX_H], stroke, &label);
     }
     doc.close();
 }
@@ -501,17 +487,23 @@ fn corner_labels(doc: &mut Doc, v: &View, ring: &[[f64; 2]]) {
     for (label, b) in labels.iter().zip(boxes) {
         let Some(b) = b else { continue };
         let r = [b[0], b[1], b[2] - b[0], b[3] - b[1]];
-        doc.label_box(r, 2.0, 0.88, colour::INTENDED, 0.8);
-        doc.text(
-            (b[0] + b[2]) / 2.0,
-            b[3] - 4.0,
-            FS_CORNER,
-            "middle",
-            colour::INK,
-            label,
-        );
+        boxed_label(doc, r, colour::INTENDED, label);
     }
     doc.close();
+}
+
+/// A label on a white box `r` (px: x, y, width, height) framed in `stroke`, the text
+/// centred near its bottom.
+fn boxed_label(doc: &mut Doc, r: [f64; 4], stroke: &str, text: &str) {
+    doc.label_box(r, 2.0, 0.88, stroke, 0.8);
+    doc.text(
+        r[0] + r[2] / 2.0,
+        r[1] + r[3] - 4.0,
+        FS_CORNER,
+        "middle",
+        colour::INK,
+        text,
+    );
 }
 
 #[cfg(test)]
