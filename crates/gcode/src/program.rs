@@ -71,6 +71,12 @@ impl Block {
     pub fn has(&self, letter: char) -> bool {
         self.get(letter).is_some()
     }
+    /// Whether the block holds one of these M codes, written without a decimal point.
+    pub fn has_m(&self, codes: &[f64]) -> bool {
+        self.words
+            .iter()
+            .any(|w| w.letter == 'M' && !w.has_point && codes.contains(&w.value))
+    }
     /// Whether the block holds macro B: a statement, or a word written with an expression.
     pub fn has_macro(&self) -> bool {
         self.stmt.is_some() || self.words.iter().any(|w| w.expr.is_some())

@@ -204,9 +204,7 @@ fn find(c: &Cycle, n: u32, at: Span) -> Result<usize, Diagnostic> {
 
 /// A block after which the flow does not go on to the next: M02, M30 (end) or M99 (return).
 fn ends_flow(b: &Block) -> bool {
-    b.words
-        .iter()
-        .any(|w| w.letter == 'M' && !w.has_point && matches!(w.value as i64, 2 | 30 | 99))
+    b.has_m(&[2.0, 30.0, 99.0])
 }
 
 /// Find and read the finishing shape P(ns)..Q(nf) of the cycle block.

@@ -11,11 +11,7 @@ use gcode::{Block, Subprogram};
 /// The first block after the first M02/M30 of `main`, when no P/Q word of the program names
 /// a sequence number of the blocks from there on.
 pub(super) fn unreachable_tail(main: &Subprogram) -> Option<&Block> {
-    let is_end = |b: &Block| {
-        b.words
-            .iter()
-            .any(|w| w.letter == 'M' && !w.has_point && (w.value == 2.0 || w.value == 30.0))
-    };
+    let is_end = |b: &Block| b.has_m(&[2.0, 30.0]);
     let end = main.blocks.iter().position(is_end)?;
     let tail = &main.blocks[end + 1..];
     let first = tail.first()?;
