@@ -331,7 +331,9 @@ fn contact(a: P, b: P, stock: &[Shape]) -> Option<(f64, f64)> {
     span(&mut hit.iter().flat_map(|h| h.outer.iter().map(t)))
 }
 
-/// Whether `p` is inside the shape (its outer ring and none of its holes), even-odd.
+/// Whether `p` is inside the shape (its outer ring and none of its holes), even-odd, on
+/// the rings as they are (`geom::ring::contains` would copy the stock's rings to kernel
+/// points for every point asked).
 fn shape_contains(m: &Shape, p: P) -> bool {
     let crossings = |ring: &[P]| {
         let mut inside = false;
