@@ -15,7 +15,8 @@ use std::cell::Cell;
 #[derive(Clone)]
 pub(crate) struct Source {
     pub(crate) name: String,
-    pub(crate) text: String,
+    /// Shared with the program read from it (its blocks are read again from the text).
+    pub(crate) text: std::sync::Arc<str>,
 }
 
 /// Most characters of a source line shown around the caret.
@@ -114,7 +115,7 @@ fn floor_char(text: &str, mut i: usize) -> usize {
 
 /// The excerpt shown for a caret at byte `offset`, and the span clamped into it.
 fn excerpt(src: &Source, offset: usize, len: usize) -> (Excerpt, usize, usize) {
-    let text = src.text.as_str();
+    let text = &*src.text;
     let offset = floor_char(text, offset);
     let (_, lstart, lend) = line_at(text, offset);
     let short = |a: usize, b: usize| text[a..b].chars().count() <= WINDOW;

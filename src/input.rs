@@ -70,7 +70,7 @@ pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
         let at = e.utf8_error().valid_up_to();
         let src = Source {
             name: path.display().to_string(),
-            text: String::from_utf8_lossy(e.as_bytes()).into_owned(),
+            text: String::from_utf8_lossy(e.as_bytes()).into(),
         };
         diag::print_at(
             &src,
@@ -157,7 +157,7 @@ pub(crate) fn load_program(
     let text = read_text(path, "program")?;
     let source = Source {
         name: path.display().to_string(),
-        text,
+        text: text.into(),
     };
     let macros = args.macros(machine.control);
     let vars = match &args.vars {
@@ -175,7 +175,7 @@ pub(crate) fn load_program(
         decimal_comma: args.decimal_comma,
         macros,
     };
-    let program = gcode::parse_with(&source.text, read).map_err(|e| {
+    let program = gcode::parse_shared(Arc::clone(&source.text), read).map_err(|e| {
         diag::print_at(
             &source,
             e.span.offset as usize,
@@ -333,7 +333,7 @@ fn print_in_file(
 ) {
     let src = Source {
         name: path.display().to_string(),
-        text: text.to_string(),
+        text: text.into(),
     };
     diag::print_line_col(&src, line as usize, column as usize, code, message, help);
 }
@@ -365,7 +365,7 @@ pub(crate) fn load_blank(args: &RunArgs) -> Result<stock::Blank, ()> {
 pub(crate) fn print_stock_error(path: &Path, text: &str, e: &stock::StockError) {
     let src = Source {
         name: path.display().to_string(),
-        text: text.to_string(),
+        text: text.into(),
     };
     match e {
         stock::StockError::Toml {

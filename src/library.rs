@@ -120,7 +120,8 @@ impl Folders {
                 path.display()
             )
         })?;
-        let mut program = gcode::parse_with(&text, self.read).map_err(|e| {
+        let text: Arc<str> = text.into();
+        let mut program = gcode::parse_shared(Arc::clone(&text), self.read).map_err(|e| {
             format!(
                 "{}:{}:{}: {}",
                 path.display(),

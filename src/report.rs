@@ -2,7 +2,7 @@
 
 use crate::input::Loaded;
 use expander::{Motion, Segment};
-use render::{Crash, Diagnostic, PathKind, PathLine, Report, Shape, StockInfo};
+use render::{Crash, Diagnostic, PathKind, PathLine, Points, Report, Shape, StockInfo};
 use std::fmt::Write as _;
 
 fn shape(s: &stock::Shape) -> Shape {
@@ -41,10 +41,15 @@ fn path_line(seg: &Segment) -> PathLine {
     PathLine {
         kind,
         line: seg.span.line,
-        // a straight move without the intermediate polyline (one allocation a move, not two)
+        // a straight move without the intermediate polyline, nor any allocation
         points: match seg.arc {
-            None => vec![[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]],
-            Some(_) => seg.polyline(0.01).into_iter().map(|p| [p.z, p.r]).collect(),
+            None => Points::Two([[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]]),
+            Some(_) => Points::from(
+                seg.polyline(0.01)
+                    .into_iter()
+                    .map(|p| [p.z, p.r])
+                    .collect::<Vec<_>>(),
+            ),
         },
     }
 }
@@ -218,7 +223,8 @@ fn tailstock_moves(loaded: &Loaded) -> Option<String> {
     }
 }
 
-/// Everything a finished run shows.
+/// Everything a finished run shows; `pictures`: an SVG, PNG, HTML or DXF report is written,
+/// so the toolpath is listed.
 pub(crate) fn build(
     loaded: &Loaded,
     program_name: &str,
@@ -226,6 +232,7 @@ pub(crate) fn build(
     tools: &stock::ToolTable,
     sim: &stock::Simulation,
     tol: f64,
+    pictures: bool,
 ) -> Report {
     let tp = &loaded.toolpath;
     let cut = |c: &stock::Crash| stock_crash(loaded, c);
@@ -298,7 +305,11 @@ pub(crate) fn build(
             shapes: blank.shapes.iter().map(shape).collect(),
         },
         final_part: sim.final_shapes.iter().map(shape).collect(),
-        toolpath: tp.segments.iter().map(path_line).collect(),
+        toolpath: if pictures {
+            tp.segments.iter().map(path_line).collect()
+        } else {
+            vec![]
+        },
         rapid_cuts,
         alarms: tp
             .alarms

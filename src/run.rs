@@ -286,6 +286,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     };
     // the HTML player's snapshots cost a second cut of every sweep: only for an HTML report
     let html = outputs(args, stem).iter().any(|(_, kind)| *kind == "html");
+    let pictures = outputs(args, stem).iter().any(|(_, kind)| *kind != "json");
     let marks = if html {
         crate::report::snapshot_marks(segments.len())
     } else {
@@ -367,7 +368,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         )
     });
     let crashes = crate::report::crash_list(&loaded, &sim, &fixture_crashes);
-    let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
+    let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol, pictures);
     crate::report::add_crashes(&mut report, &loaded, &tools, &crashes, fixture.as_ref());
     crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
     let target = args.target.is_some().then(|| intents[0].part.as_slice());

@@ -186,7 +186,9 @@ fn a_line_angle_gives_the_other_coordinate() {
 fn comma_addresses_are_read() {
     let words = |src: &str, options: gcode::ReadOptions| {
         let p = gcode::parse_with(src, options).expect("reads");
-        p.programs[0].blocks[0]
+        p.programs[0]
+            .blocks
+            .at(0)
             .words
             .iter()
             .map(|w| (gcode::address(w.letter), w.value, w.span.column, w.span.len))

@@ -71,6 +71,36 @@ fn reader_and_interpreter_bodies_take_the_programs() {
     }
 }
 
+/// Every program of the corpus (each folder, sidecars aside), whole and damaged: the
+/// reader's blocks read again from the text are the blocks it read.
+#[test]
+fn reader_body_takes_the_corpus() {
+    fn walk(dir: &Path, out: &mut Vec<Vec<u8>>) {
+        let mut entries: Vec<_> = std::fs::read_dir(dir)
+            .unwrap()
+            .flatten()
+            .map(|e| e.path())
+            .collect();
+        entries.sort();
+        for p in entries {
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|e| e == "nc") {
+                out.push(std::fs::read(&p).unwrap());
+            }
+        }
+    }
+    let mut programs = vec![];
+    walk(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/corpus"),
+        &mut programs,
+    );
+    assert!(programs.len() > 100, "{}", programs.len());
+    for p in with_damage(programs) {
+        read::body(&p);
+    }
+}
+
 #[test]
 fn run_body_takes_the_programs() {
     for p in with_damage(files("assets/programs", "nc")) {

@@ -2,11 +2,11 @@
 //!
 //! ```
 //! let p = gcode::parse("O0002;\nG90 X120 Z-110 F200;").unwrap();
-//! assert_eq!(p.main().unwrap().blocks[0].words[1].value, 120.0);
+//! assert_eq!(p.main().unwrap().blocks.at(0).words[1].value, 120.0);
 //! ```
 mod parse;
 mod program;
 
 pub use macro_b::Span;
-pub use parse::{parse, parse_with, ParseError, ReadOptions};
-pub use program::{address, Block, CallText, Note, Program, Subprogram, Word};
+pub use parse::{parse, parse_held, parse_shared, parse_with, ParseError, ReadOptions};
+pub use program::{address, Block, Blocks, CallText, Note, Program, Subprogram, Word};

@@ -14,7 +14,10 @@
 //! text after `;` that is not a program is a comment, a nested or unclosed comment is read
 //! the way the author meant it — each with a note the report shows.
 
-use crate::{address, Block, Note, Program, Span, Subprogram, Word};
+use std::sync::Arc;
+
+use crate::program::{BlockStart, END_CODES};
+use crate::{address, Block, Blocks, Note, Program, Span, Subprogram, Word};
 use macro_b::{Dialect, Func, MacroError, Stmt};
 
 /// A reading error: where, what, and what to change.
@@ -74,8 +77,37 @@ pub fn parse(source: &str) -> Result<Program, ParseError> {
 
 /// Read a whole program text with options.
 pub fn parse_with(source: &str, options: ReadOptions) -> Result<Program, ParseError> {
+    parse_shared(Arc::from(source), options)
+}
+
+/// Read a whole program text with options, keeping the text (shared, not copied) to read
+/// its blocks again where they are needed ([`Blocks`]).
+pub fn parse_shared(source: Arc<str>, options: ReadOptions) -> Result<Program, ParseError> {
     check_length(source.len())?;
-    Reader::new(source, options).run()
+    Reader::new(&source, options, Mode::Index(Arc::clone(&source))).run()
+}
+
+/// Read a whole program text holding every block: the reference the re-read blocks of
+/// [`parse_with`] are compared with in tests.
+#[doc(hidden)]
+pub fn parse_held(source: &str, options: ReadOptions) -> Result<Program, ParseError> {
+    check_length(source.len())?;
+    Reader::new(source, options, Mode::Held).run()
+}
+
+/// Read the one block that starts at `start` again (see [`Blocks::get`]).
+pub(crate) fn read_block(text: &str, options: ReadOptions, start: BlockStart) -> Block {
+    let mut r = Reader::new(text, options, Mode::One);
+    r.pos = start.offset as usize;
+    r.line = start.line;
+    r.column = start.column - 1;
+    match (r.read(), r.found) {
+        (Ok(()), Some(b)) => b,
+        (read, _) => panic!(
+            "the block at line {}, column {} read differently the second time: {read:?}",
+            start.line, start.column
+        ),
+    }
 }
 
 /// Spans hold byte offsets as `u32` (a million-line program holds millions of them), so a
@@ -230,9 +262,22 @@ impl PendingWord {
     }
 }
 
+/// What the reader does with a block it has read.
+enum Mode {
+    /// Record where it starts, to read it again from this text (see [`Blocks`]).
+    Index(Arc<str>),
+    /// Keep it.
+    Held,
+    /// Stop after it: reading one block again ([`read_block`]).
+    One,
+}
+
 struct Reader<'a> {
     src: &'a str,
     options: ReadOptions,
+    mode: Mode,
+    /// The block read in [`Mode::One`].
+    found: Option<Block>,
     /// Byte offset of the next character.
     pos: usize,
     line: u32,
@@ -261,20 +306,30 @@ struct Reader<'a> {
 }
 
 impl<'a> Reader<'a> {
-    fn new(src: &'a str, options: ReadOptions) -> Self {
+    fn new(src: &'a str, options: ReadOptions, mode: Mode) -> Self {
+        // reading one block again keeps no program (nor allocates one)
+        let blocks = match mode {
+            Mode::One => None,
+            _ => Some(new_blocks(&mode, options)),
+        };
         Self {
             src,
             options,
+            mode,
+            found: None,
             pos: 0,
             line: 1,
             column: 0,
             program: Program {
-                programs: vec![Subprogram {
-                    number: None,
-                    span: Span::default(),
-                    blocks: vec![],
-                    call_texts: vec![],
-                }],
+                programs: blocks
+                    .map(|blocks| Subprogram {
+                        number: None,
+                        span: Span::default(),
+                        blocks,
+                        call_texts: vec![],
+                    })
+                    .into_iter()
+                    .collect(),
                 notes: vec![],
             },
             words: vec![],
@@ -487,7 +542,23 @@ impl<'a> Reader<'a> {
 
     fn run(mut self) -> Result<Program, ParseError> {
         self.skip_leader();
+        self.read()?;
+        self.control_notes();
+        self.program
+            .programs
+            .retain(|p| p.number.is_some() || !p.blocks.is_empty());
+        for p in &mut self.program.programs {
+            p.blocks.shrink();
+        }
+        Ok(self.program)
+    }
+
+    /// Read to the end of the text (in [`Mode::One`], to the end of the first block).
+    fn read(&mut self) -> Result<(), ParseError> {
         while let Some((span, c)) = self.next() {
+            if self.found.is_some() {
+                return Ok(());
+            }
             if let Some(kind) = control_kind(c) {
                 self.control(kind, span);
                 continue;
@@ -498,6 +569,9 @@ impl<'a> Reader<'a> {
                 '\r' if self.peek() != Some('\n') => self.end_block()?,
                 ';' => {
                     self.end_block()?;
+                    if self.found.is_some() {
+                        return Ok(());
+                    }
                     let rest = self.rest_of_line();
                     if self.pos < self.no_prose_before {
                         // a part of a rest already found no prose (see the field)
@@ -673,12 +747,7 @@ impl<'a> Reader<'a> {
                 }
             }
         }
-        self.end_block()?;
-        self.control_notes();
-        self.program
-            .programs
-            .retain(|p| p.number.is_some() || !p.blocks.is_empty());
-        Ok(self.program)
+        self.end_block()
     }
 
     /// Nothing of the current block read yet.
@@ -1035,6 +1104,10 @@ impl<'a> Reader<'a> {
                         "put O and its number on a line of its own, before the program's blocks",
                     ));
                 }
+                if let Mode::One = self.mode {
+                    // the block read again after an O on its line: the O was read before
+                    return Ok(());
+                }
                 let current = self
                     .program
                     .programs
@@ -1054,10 +1127,11 @@ impl<'a> Reader<'a> {
                             "give each program in the file its own O number",
                         ));
                     }
+                    let blocks = new_blocks(&self.mode, self.options);
                     self.program.programs.push(Subprogram {
                         number: Some(number),
                         span,
-                        blocks: vec![],
+                        blocks,
                         call_texts: vec![],
                     });
                 }
@@ -1076,19 +1150,17 @@ impl<'a> Reader<'a> {
     fn end_block(&mut self) -> Result<(), ParseError> {
         self.finish_word()?;
         if let Some(start) = self.block_start.take() {
-            // exactly as long as needed, and no capacity word: a million-line program keeps
-            // all its blocks
-            let words: Box<[Word]> = self.words.as_slice().into();
-            self.words.clear();
             let seq = self.seq.take();
             let block_delete = std::mem::replace(&mut self.block_delete, false);
             let delete_level = std::mem::replace(&mut self.delete_level, 0);
             let stmt = self.stmt.take();
             let call_text = self.call_text.take();
-            if !words.is_empty() || seq.is_some() || stmt.is_some() {
+            if !self.words.is_empty() || seq.is_some() || stmt.is_some() {
+                let has_stmt = stmt.is_some();
                 let span = start.to(self.block_end);
-                let block = Block {
-                    words,
+                let block = move |words: &[Word]| Block {
+                    // exactly as long as needed, and no capacity word
+                    words: words.into(),
                     seq: seq.map(|s| s.0),
                     seq_span: seq.map(|s| s.1),
                     block_delete,
@@ -1096,19 +1168,41 @@ impl<'a> Reader<'a> {
                     span,
                     stmt: stmt.map(Box::new),
                 };
-                let sub = self
-                    .program
-                    .programs
-                    .last_mut()
-                    .expect("always one program");
-                if let Some((text, span)) = call_text {
-                    sub.call_texts.push(crate::CallText {
-                        block: sub.blocks.len(),
-                        text,
-                        span,
-                    });
+                if let Mode::One = self.mode {
+                    self.found = Some(block(&self.words));
+                } else {
+                    let sub = self
+                        .program
+                        .programs
+                        .last_mut()
+                        .expect("always one program");
+                    if let Some((text, span)) = call_text {
+                        sub.call_texts.push(crate::CallText {
+                            block: sub.blocks.len(),
+                            text,
+                            span,
+                        });
+                    }
+                    if let Mode::Index(_) = self.mode {
+                        let flags = if block_delete { BlockStart::DELETE } else { 0 }
+                            | if crate::program::has_m(&self.words, &END_CODES) {
+                                BlockStart::ENDS
+                            } else {
+                                0
+                            };
+                        let at = BlockStart {
+                            offset: start.offset,
+                            line: start.line,
+                            column: start.column,
+                            seq: seq.map_or(0, |s| s.0),
+                            flags,
+                        };
+                        let macros = has_stmt || self.words.iter().any(|w| w.expr.is_some());
+                        sub.blocks.push_start(at, macros);
+                    } else {
+                        sub.blocks.make_mut().push(block(&self.words));
+                    }
                 }
-                sub.blocks.push(block);
             }
         }
         self.words.clear();
@@ -1118,6 +1212,14 @@ impl<'a> Reader<'a> {
         self.stmt = None;
         self.call_text = None;
         Ok(())
+    }
+}
+
+/// The blocks of a new O program, as `mode` keeps them.
+fn new_blocks(mode: &Mode, options: ReadOptions) -> Blocks {
+    match mode {
+        Mode::Index(text) => Blocks::reread(Arc::clone(text), options),
+        Mode::Held | Mode::One => Blocks::default(),
     }
 }
 
@@ -1257,7 +1359,12 @@ mod tests {
         parse(src).unwrap().programs[0]
             .blocks
             .iter()
-            .flat_map(|b| b.words.iter().map(|w| (w.letter, w.value)))
+            .flat_map(|b| {
+                b.words
+                    .iter()
+                    .map(|w| (w.letter, w.value))
+                    .collect::<Vec<_>>()
+            })
             .collect()
     }
 
@@ -1287,7 +1394,7 @@ mod tests {
             ]
         );
         let p = parse("X100. P1500").unwrap();
-        let b = &p.programs[0].blocks[0];
+        let b = &p.programs[0].blocks.all()[0];
         assert!(b.words[0].has_point);
         assert!(!b.words[1].has_point);
     }
@@ -1296,7 +1403,7 @@ mod tests {
     fn blocks_split_on_semicolon_and_newline() {
         let p = parse("M30;G0 X1\nZ2;;\n\n").unwrap();
         assert_eq!(p.programs[0].blocks.len(), 3);
-        assert_eq!(p.programs[0].blocks[2].span.line, 2);
+        assert_eq!(p.programs[0].blocks.all()[2].span.line, 2);
     }
 
     #[test]
@@ -1319,15 +1426,15 @@ mod tests {
         let p = parse("%\nO0001;\nN10 G0 X1;\nM98 P2;\nM30;\nO0002;\nG1 X2;\nM99;\n%").unwrap();
         assert_eq!(p.programs.len(), 2);
         assert_eq!(p.programs[0].number, Some(1));
-        assert_eq!(p.programs[0].blocks[0].seq, Some(10));
+        assert_eq!(p.programs[0].blocks.all()[0].seq, Some(10));
         assert_eq!(p.find(2).unwrap().blocks.len(), 2);
     }
 
     #[test]
     fn block_delete() {
         let p = parse("/G0 X1\nG0 X2").unwrap();
-        assert!(p.programs[0].blocks[0].block_delete);
-        assert!(!p.programs[0].blocks[1].block_delete);
+        assert!(p.programs[0].blocks.all()[0].block_delete);
+        assert!(!p.programs[0].blocks.all()[1].block_delete);
     }
 
     #[test]
@@ -1360,7 +1467,7 @@ mod tests {
         let p = parse(text).unwrap();
         assert_eq!(p.programs.len(), 1);
         assert_eq!(p.programs[0].number, Some(100));
-        let blocks = &p.programs[0].blocks;
+        let blocks = &p.programs[0].blocks.all();
         assert_eq!(blocks.len(), 9);
         assert!(blocks[3].words.is_empty() && blocks[3].seq == Some(40));
         let n = notes(&p);
@@ -1369,7 +1476,7 @@ mod tests {
         assert!(n[1].contains("nested parentheses"), "{n:?}");
         // the flow-control bytes: DC2 was in the leader, DC4 after the closing %
         let p = parse("G0 X1\u{11}0 Z2\n\u{13}M30\n").unwrap();
-        assert_eq!(p.programs[0].blocks[0].words[1].value, 10.0);
+        assert_eq!(p.programs[0].blocks.all()[0].words[1].value, 10.0);
         assert!(notes(&p)[0].contains("2 RS-232"), "{:?}", notes(&p));
     }
 
@@ -1391,7 +1498,7 @@ mod tests {
         assert_eq!(p.programs[0].blocks.len(), 4);
         assert!(p.notes.is_empty(), "{:?}", notes(&p));
         let p = parse("\u{feff}G0\u{0}\u{1} X1\tZ2").unwrap();
-        assert_eq!(p.programs[0].blocks[0].words.len(), 3);
+        assert_eq!(p.programs[0].blocks.all()[0].words.len(), 3);
         assert!(
             notes(&p)[0].contains("1 unexpected control"),
             "{:?}",
@@ -1419,7 +1526,7 @@ mod tests {
         // FANUC's reading where the parentheses do not balance: ends at the first ')'
         let p = parse("(TOOL 3 (55 DEG) RH) X1").unwrap();
         assert!(notes(&p)[0].contains("nested"));
-        assert_eq!(p.programs[0].blocks[0].words.len(), 1);
+        assert_eq!(p.programs[0].blocks.all()[0].words.len(), 1);
         // where they do not balance, FANUC's reading: the comment ends at the first ')'
         let e = parse("(A (B) C").unwrap_err();
         assert!(e.message.contains("C has no value"), "{}", e.message);
@@ -1460,8 +1567,8 @@ mod tests {
             },
         )
         .unwrap();
-        assert_eq!(p.programs[0].blocks[0].words[1].value, 56.08);
-        assert_eq!(p.programs[0].blocks[0].words[2].value, 0.2);
+        assert_eq!(p.programs[0].blocks.all()[0].words[1].value, 56.08);
+        assert_eq!(p.programs[0].blocks.all()[0].words[2].value, 0.2);
     }
 
     #[test]
@@ -1483,7 +1590,7 @@ mod tests {
     #[test]
     fn macro_statements_and_expression_words_with_spans() {
         let p = macro_b("N5 #1 = 2 + 3 * 4 ;\nWHILE [#1 GT 2] DO1\nG00 X#1 Z[#2-0.5] F0.2 (C)\nEND1\n#3000 = 1 (TOOL BROKEN) ;\n").unwrap();
-        let b = &p.programs[0].blocks;
+        let b = &p.programs[0].blocks.all();
         assert_eq!(b.len(), 5);
         assert_eq!(b[0].seq, Some(5));
         let s = b[0].stmt.as_ref().unwrap();
@@ -1514,7 +1621,7 @@ mod tests {
         assert_eq!(comment.as_deref(), Some("TOOL BROKEN"));
         // functions and signs as word values, G#10, spaces and ';' between blocks
         let p = macro_b("G#10 X-#1 Z ROUND[#2];IF [#1 EQ #0] GOTO 10;GOTO#3").unwrap();
-        let b = &p.programs[0].blocks;
+        let b = &p.programs[0].blocks.all();
         assert_eq!(b.len(), 3);
         assert!(b[0].words.iter().all(|w| w.expr.is_some()));
         assert!(b[1].stmt.is_some() && b[2].stmt.is_some());
@@ -1544,7 +1651,7 @@ mod tests {
     #[test]
     fn g_code_tenths() {
         let p = parse("G75.1 G01 G0").unwrap();
-        let codes: Vec<_> = p.programs[0].blocks[0]
+        let codes: Vec<_> = p.programs[0].blocks.all()[0]
             .words
             .iter()
             .map(|w| w.code_tenths())
@@ -1556,7 +1663,7 @@ mod tests {
     fn numbers_written_in_pieces_keep_their_spans() {
         // a number in one piece is a slice of the source; in pieces it is copied
         let p = parse("G1 X1 2.5(c)0\u{11}1 Z-3\n").unwrap();
-        let w = &p.programs[0].blocks[0].words;
+        let w = &p.programs[0].blocks.all()[0].words;
         assert_eq!((w[1].value, w[1].has_point), (12.501, true));
         assert_eq!(
             (w[1].span.column, w[1].span.offset, w[1].span.len),
@@ -1568,7 +1675,7 @@ mod tests {
             ..ReadOptions::default()
         };
         let p = parse_with("X1 2,5 Z3,25", comma).unwrap();
-        let w = &p.programs[0].blocks[0].words;
+        let w = &p.programs[0].blocks.all()[0].words;
         assert_eq!((w[0].value, w[1].value), (12.5, 3.25));
         assert_eq!((w[0].span.len, w[1].span.len), (6, 5));
         let e = parse_with("X1,2,3", comma).unwrap_err();
@@ -1616,10 +1723,65 @@ mod tests {
         assert_eq!((e.span.line, e.span.column), (1, 1));
     }
 
-    /// Issue 16/17 memory: a million-line program keeps every block and word at once, so
-    /// their size is the peak of a big run (macro parts are boxed; words exactly as many).
+    /// Blocks read again from the text ([`Blocks`]) are the blocks the reader read, for the
+    /// starts a block can have: an O or `:` on the block's line, `/2`, an N word before
+    /// `/`, a comma address, `;` between blocks and prose after one, a lone CR, non-ASCII
+    /// text before a block on its line, a leader, comments before the block, macro
+    /// statements, Haas `IF … THEN`, expressions, `M98 (path)`, and the closing `%`.
+    #[test]
+    fn blocks_read_again_are_the_blocks_read() {
+        let texts = [
+            "%\nO1000 G0 X1. Z2.\n:2000 G1 X3\n/2 G0 X4\nN5 /G1 Z-1.\nG1 X5. ,C1.\nG1 Z-9 , R 2.\nM30\n%\n",
+            "G0 X1;G1 Z2; ;N7 X3 ; this is prose\rG0 X9\r\nM30",
+            "(\u{e9}\u{e9}) G0 X1\n\u{3000}G1 Z-2. F0.1 (note)\n  N10 G0 X5\nM30",
+            "LEADER TEXT\n%\nO0001 (TITLE)\n#1=2.5\nN10 G0 X#1 Z[#1+1]\nWHILE[#1LT5]DO1\n#1=#1+1\nEND1\nIF[#1GT2]GOTO10\nM98 (sub.nc) P1\nM30\n%\ntrailer",
+            "O0002\nIF [#1 EQ 0] THEN G0 X1.\nG65 P9010 A1. I2. I3.\nM30\nO9010\nG0 X#1\nM99\n",
+        ];
+        for text in texts {
+            for macros in [None, Some(Dialect::Fanuc), Some(Dialect::Haas)] {
+                let options = ReadOptions {
+                    decimal_comma: false,
+                    macros,
+                };
+                let held = parse_held(text, options);
+                let read = parse_with(text, options);
+                assert_eq!(read, held, "{text:?} {macros:?}");
+                if let Ok(p) = read {
+                    assert!(p.block_count() > 0, "{text:?}");
+                    for sub in &p.programs {
+                        for (i, b) in sub.blocks.iter().enumerate() {
+                            assert_eq!(sub.blocks.seq(i), b.seq);
+                            assert_eq!(sub.blocks.block_delete(i), b.block_delete);
+                            assert_eq!(sub.blocks.ends_program(i), b.ends_program());
+                        }
+                        assert_eq!(
+                            sub.blocks.has_macro(),
+                            sub.blocks.iter().any(|b| b.has_macro())
+                        );
+                    }
+                }
+            }
+        }
+        let p = parse_with(
+            texts[3],
+            ReadOptions {
+                decimal_comma: false,
+                macros: Some(Dialect::Fanuc),
+            },
+        )
+        .unwrap();
+        assert!(p.programs[0].blocks.has_macro());
+        assert_eq!(p.programs[0].blocks.position_seq(10), Some(1));
+    }
+
+    /// Issue 16/17 memory: a million-line program keeps 20 bytes a block (where it starts,
+    /// read again where needed); the blocks being run stay small too (macro parts are
+    /// boxed; words exactly as many).
     #[test]
     fn blocks_and_words_stay_compact() {
+        assert_eq!(std::mem::size_of::<crate::program::BlockStart>(), 20);
+        let p = parse(&"G01 X1. Z2. F0.1;\n".repeat(1000)).unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 1000);
         assert_eq!(std::mem::size_of::<Span>(), 16);
         assert!(
             std::mem::size_of::<Word>() <= 40,
@@ -1632,7 +1794,7 @@ mod tests {
             std::mem::size_of::<Block>()
         );
         let p = parse("G01 X1. Z2. F0.1;\nG00 X3.;\n").unwrap();
-        let b = &p.programs[0].blocks;
+        let b = &p.programs[0].blocks.all();
         assert_eq!((b[0].words.len(), b[1].words.len()), (4, 2));
     }
 }

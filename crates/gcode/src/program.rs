@@ -1,5 +1,9 @@
 //! The parsed program: O programs made of blocks made of words.
 
+use std::borrow::Cow;
+use std::sync::Arc;
+
+use crate::parse::{read_block, ReadOptions};
 use crate::Span;
 
 /// An address letter with its number, e.g. `X100.` or `G75.1`.
@@ -73,15 +77,37 @@ impl Block {
     }
     /// Whether the block holds one of these M codes, written without a decimal point.
     pub fn has_m(&self, codes: &[f64]) -> bool {
-        self.words
-            .iter()
-            .any(|w| w.letter == 'M' && !w.has_point && codes.contains(&w.value))
+        has_m(&self.words, codes)
+    }
+    /// Whether the block ends the program: it holds M02 or M30.
+    pub fn ends_program(&self) -> bool {
+        self.has_m(&END_CODES)
     }
     /// Whether the block holds macro B: a statement, or a word written with an expression.
     pub fn has_macro(&self) -> bool {
         self.stmt.is_some() || self.words.iter().any(|w| w.expr.is_some())
     }
+    /// Move the spans [`Program::shift_spans`] moves.
+    fn shift_spans(&mut self, by: u32) {
+        self.span.offset += by;
+        if let Some(s) = &mut self.seq_span {
+            s.offset += by;
+        }
+        for w in &mut *self.words {
+            w.span.offset += by;
+        }
+    }
 }
+
+/// Whether `words` hold one of these M codes, written without a decimal point.
+pub(crate) fn has_m(words: &[Word], codes: &[f64]) -> bool {
+    words
+        .iter()
+        .any(|w| w.letter == 'M' && !w.has_point && codes.contains(&w.value))
+}
+
+/// The M codes that end the program ([`Block::ends_program`]).
+pub(crate) const END_CODES: [f64; 2] = [2.0, 30.0];
 
 /// One program (`O1234` up to the next `O` or the end of the tape).
 #[derive(Debug, Clone, PartialEq)]
@@ -91,7 +117,7 @@ pub struct Subprogram {
     /// Span of the O word.
     pub span: Span,
     /// The blocks.
-    pub blocks: Vec<Block>,
+    pub blocks: Blocks,
     /// The first comment after `M98` in a block, for those blocks only, by block index
     /// (ascending): Haas `M98 (path/O00001.nc)` calls the file the comment names. A side
     /// table, so the blocks of a million-line program do not each carry comment text.
@@ -105,6 +131,231 @@ impl Subprogram {
             .binary_search_by_key(&block, |c| c.block)
             .ok()
             .map(|k| &self.call_texts[k])
+    }
+}
+
+/// The blocks of one O program. As read, they are not held: each block is read again from
+/// the program text where it is needed ([`Blocks::get`]), so a million-line program costs
+/// 16 bytes a block instead of its words (~200 bytes a line), the largest part of a big
+/// run's peak (issue 16). A working copy whose words are changed (macro B values) holds
+/// its blocks ([`Blocks::make_mut`]).
+#[derive(Clone, Default)]
+pub struct Blocks(Repr);
+
+#[derive(Clone)]
+enum Repr {
+    Held(Vec<Block>),
+    Read(Reread),
+}
+
+impl Default for Repr {
+    fn default() -> Self {
+        Self::Held(vec![])
+    }
+}
+
+/// Blocks read again from the text: where each one starts.
+#[derive(Clone)]
+struct Reread {
+    text: Arc<str>,
+    options: ReadOptions,
+    /// Added to every span's offset (see [`Program::shift_spans`]).
+    shift: u32,
+    starts: Vec<BlockStart>,
+    /// Some block holds macro B (see [`Block::has_macro`]).
+    macros: bool,
+}
+
+/// Where a block's first character stands, and what is asked of a block without reading
+/// it again: its N number, whether `/` was written, whether it ends the program.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct BlockStart {
+    pub(crate) offset: u32,
+    pub(crate) line: u32,
+    pub(crate) column: u32,
+    /// The N number (0: none; `N0` is refused).
+    pub(crate) seq: u32,
+    /// [`BlockStart::DELETE`] and [`BlockStart::ENDS`].
+    pub(crate) flags: u8,
+}
+
+impl BlockStart {
+    /// Written with `/` (block delete).
+    pub(crate) const DELETE: u8 = 1;
+    /// Holds M02 or M30 ([`Block::ends_program`]).
+    pub(crate) const ENDS: u8 = 2;
+}
+
+impl Blocks {
+    /// Blocks to be read again from `text`, filled by the reader ([`Blocks::push_start`]).
+    pub(crate) fn reread(text: Arc<str>, options: ReadOptions) -> Self {
+        Self(Repr::Read(Reread {
+            text,
+            options,
+            shift: 0,
+            starts: vec![],
+            macros: false,
+        }))
+    }
+
+    /// Record the next block of blocks read again (reader only); `macros`: it holds macro B.
+    pub(crate) fn push_start(&mut self, start: BlockStart, macros: bool) {
+        if let Repr::Read(r) = &mut self.0 {
+            r.macros |= macros;
+            r.starts.push(start);
+        }
+    }
+
+    /// Free the spare capacity once reading is done.
+    pub(crate) fn shrink(&mut self) {
+        match &mut self.0 {
+            Repr::Read(r) => r.starts.shrink_to_fit(),
+            Repr::Held(v) => v.shrink_to_fit(),
+        }
+    }
+
+    /// Number of blocks.
+    pub fn len(&self) -> usize {
+        match &self.0 {
+            Repr::Held(v) => v.len(),
+            Repr::Read(r) => r.starts.len(),
+        }
+    }
+
+    /// No blocks.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Block `i`: borrowed when held, else read again from the text (the first reading
+    /// accepted it, and a block reads the same wherever the reading starts).
+    pub fn get(&self, i: usize) -> Option<Cow<'_, Block>> {
+        match &self.0 {
+            Repr::Held(v) => v.get(i).map(Cow::Borrowed),
+            Repr::Read(r) => {
+                let start = *r.starts.get(i)?;
+                let mut b = read_block(&r.text, r.options, start);
+                if r.shift != 0 {
+                    b.shift_spans(r.shift);
+                }
+                Some(Cow::Owned(b))
+            }
+        }
+    }
+
+    /// Block `i`, which must exist (as slice indexing).
+    pub fn at(&self, i: usize) -> Cow<'_, Block> {
+        let n = self.len();
+        self.get(i)
+            .unwrap_or_else(|| panic!("block {i} of a program of {n} blocks"))
+    }
+
+    /// The first block.
+    pub fn first(&self) -> Option<Cow<'_, Block>> {
+        self.get(0)
+    }
+
+    /// The last block.
+    pub fn last(&self) -> Option<Cow<'_, Block>> {
+        self.len().checked_sub(1).and_then(|i| self.get(i))
+    }
+
+    /// The blocks in order.
+    pub fn iter(&self) -> impl DoubleEndedIterator<Item = Cow<'_, Block>> + '_ {
+        (0..self.len()).map(|i| self.at(i))
+    }
+
+    /// Blocks `range` in order.
+    pub fn range(
+        &self,
+        range: std::ops::Range<usize>,
+    ) -> impl DoubleEndedIterator<Item = Cow<'_, Block>> + '_ {
+        range.map(|i| self.at(i))
+    }
+
+    /// All blocks, held (tests and small programs).
+    pub fn all(&self) -> Vec<Block> {
+        self.iter().map(Cow::into_owned).collect()
+    }
+
+    /// The N number of block `i`, without reading it again.
+    pub fn seq(&self, i: usize) -> Option<u32> {
+        match &self.0 {
+            Repr::Held(v) => v.get(i)?.seq,
+            Repr::Read(r) => Some(r.starts.get(i)?.seq).filter(|&n| n != 0),
+        }
+    }
+
+    /// Whether block `i` was written with `/` (block delete), without reading it again.
+    pub fn block_delete(&self, i: usize) -> bool {
+        match &self.0 {
+            Repr::Held(v) => v.get(i).is_some_and(|b| b.block_delete),
+            Repr::Read(r) => r
+                .starts
+                .get(i)
+                .is_some_and(|s| s.flags & BlockStart::DELETE != 0),
+        }
+    }
+
+    /// Whether block `i` ends the program ([`Block::ends_program`]), without reading it again.
+    pub fn ends_program(&self, i: usize) -> bool {
+        match &self.0 {
+            Repr::Held(v) => v.get(i).is_some_and(Block::ends_program),
+            Repr::Read(r) => r
+                .starts
+                .get(i)
+                .is_some_and(|s| s.flags & BlockStart::ENDS != 0),
+        }
+    }
+
+    /// Index of the first block numbered `n`.
+    pub fn position_seq(&self, n: u32) -> Option<usize> {
+        (0..self.len()).find(|&i| self.seq(i) == Some(n))
+    }
+
+    /// Whether some block holds macro B ([`Block::has_macro`]), without reading them again.
+    pub fn has_macro(&self) -> bool {
+        match &self.0 {
+            Repr::Held(v) => v.iter().any(Block::has_macro),
+            Repr::Read(r) => r.macros,
+        }
+    }
+
+    /// The blocks, held, to change their words: read once from the text the first time.
+    pub fn make_mut(&mut self) -> &mut Vec<Block> {
+        if let Repr::Read(_) = self.0 {
+            self.0 = Repr::Held(self.all());
+        }
+        match &mut self.0 {
+            Repr::Held(v) => v,
+            Repr::Read(_) => unreachable!("made held above"),
+        }
+    }
+
+    fn shift_spans(&mut self, by: u32) {
+        match &mut self.0 {
+            Repr::Held(v) => v.iter_mut().for_each(|b| b.shift_spans(by)),
+            Repr::Read(r) => r.shift += by,
+        }
+    }
+}
+
+impl From<Vec<Block>> for Blocks {
+    fn from(v: Vec<Block>) -> Self {
+        Self(Repr::Held(v))
+    }
+}
+
+/// Blocks are equal when they read the same, held or not.
+impl PartialEq for Blocks {
+    fn eq(&self, other: &Self) -> bool {
+        self.len() == other.len() && self.iter().eq(other.iter())
+    }
+}
+
+impl std::fmt::Debug for Blocks {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
     }
 }
 
@@ -157,15 +408,7 @@ impl Program {
             for c in &mut p.call_texts {
                 shift(&mut c.span);
             }
-            for b in &mut p.blocks {
-                shift(&mut b.span);
-                if let Some(s) = &mut b.seq_span {
-                    shift(s);
-                }
-                for w in &mut b.words {
-                    shift(&mut w.span);
-                }
-            }
+            p.blocks.shift_spans(by);
         }
         for n in &mut self.notes {
             shift(&mut n.span);

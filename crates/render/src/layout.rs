@@ -136,7 +136,7 @@ mod tests {
             toolpath: vec![PathLine {
                 kind: PathKind::Rapid,
                 line: 1,
-                points: vec![[200.0, 100.0], [2.0, 26.0]],
+                points: vec![[200.0, 100.0], [2.0, 26.0]].into(),
             }],
             ..Report::default()
         };

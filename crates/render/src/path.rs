@@ -256,7 +256,7 @@ fn candidates<'a>(lines: &'a [PathLine], min_dist: f64, window: &Bbox) -> Vec<&'
                 return false;
             }
             let mut b = Bbox::EMPTY;
-            for p in &l.points {
+            for p in l.points.iter() {
                 b.add(*p);
             }
             b.overlaps(window) && key(l, min_dist).is_none_or(|k| seen.insert(k))
@@ -325,7 +325,7 @@ mod tests {
         PathLine {
             kind,
             line: 1,
-            points: pts.to_vec(),
+            points: pts.to_vec().into(),
         }
     }
 

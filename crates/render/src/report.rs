@@ -32,7 +32,37 @@ pub struct PathLine {
     /// Source line (1-based).
     pub line: u32,
     /// The reference point's path in `[z, r]`.
-    pub points: Vec<[f64; 2]>,
+    pub points: Points,
+}
+
+/// A move's points: a straight move's two are held in place, a chorded arc's in a box. A
+/// million-move report holds one per move, and a vector of two points cost 48 bytes and an
+/// allocation beside the line (issue 16).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Points {
+    /// A straight move: start and end.
+    Two([[f64; 2]; 2]),
+    /// Any other number of points.
+    Many(Box<[[f64; 2]]>),
+}
+
+impl std::ops::Deref for Points {
+    type Target = [[f64; 2]];
+    fn deref(&self) -> &Self::Target {
+        match self {
+            Self::Two(p) => p,
+            Self::Many(p) => p,
+        }
+    }
+}
+
+impl From<Vec<[f64; 2]>> for Points {
+    fn from(v: Vec<[f64; 2]>) -> Self {
+        match <[[f64; 2]; 2]>::try_from(v.as_slice()) {
+            Ok(two) => Self::Two(two),
+            Err(_) => Self::Many(v.into_boxed_slice()),
+        }
+    }
 }
 
 /// A rapid move that ran into stock, a tool body that met stock, or a tool that entered
@@ -138,7 +168,8 @@ pub struct Report {
     pub final_part: Vec<Shape>,
     /// The intended part (dashed overlay); empty when none is known.
     pub intended: Vec<Shape>,
-    /// The toolpath, one entry per segment.
+    /// The toolpath, one entry per segment; empty when only the JSON report is written,
+    /// which does not list it (a million-move run saves 48 MB).
     pub toolpath: Vec<PathLine>,
     /// Rapids into stock deeper than the machine's `rapid_cut_tol`.
     pub crashes: Vec<Crash>,
@@ -313,5 +344,24 @@ impl Report {
         } else {
             Verdict::Clean
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A straight move's two points are held in the line (no allocation); other counts in
+    /// a box; either reads as the slice of points (issue 16: a million-move report).
+    #[test]
+    fn points_of_a_straight_move_are_held_in_place() {
+        let two = Points::from(vec![[1.0, 2.0], [3.0, 4.0]]);
+        assert!(matches!(two, Points::Two(_)));
+        assert_eq!(&*two, &[[1.0, 2.0], [3.0, 4.0]]);
+        let three = Points::from(vec![[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]]);
+        assert!(matches!(three, Points::Many(_)));
+        assert_eq!(three.len(), 3);
+        assert!(Points::from(vec![]).is_empty());
+        assert!(std::mem::size_of::<PathLine>() <= 48);
     }
 }

@@ -121,7 +121,7 @@ impl Bbox {
     pub(crate) fn of_path(path: &[PathLine]) -> Self {
         let mut b = Self::EMPTY;
         for l in path {
-            for p in &l.points {
+            for p in l.points.iter() {
                 b.add(*p);
             }
         }

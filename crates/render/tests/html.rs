@@ -164,7 +164,7 @@ fn coordinates_are_rounded_to_4_decimals() {
     r.toolpath = vec![PathLine {
         kind: PathKind::Feed,
         line: 7,
-        points: vec![[1.234_567_89, 2.000_011], [-0.000_01, 3.0]],
+        points: vec![[1.234_567_89, 2.000_011], [-0.000_01, 3.0]].into(),
     }];
     let d = data(&render::html(&r));
     let m = d["path"][0].as_array().unwrap();

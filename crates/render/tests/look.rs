@@ -127,19 +127,19 @@ fn write_big_part_picture() {
     let mut tp = vec![PathLine {
         kind: PathKind::Rapid,
         line: 2,
-        points: vec![[200.0, 100.0], [2.0, 64.0]],
+        points: vec![[200.0, 100.0], [2.0, 64.0]].into(),
     }];
     for k in 0..8 {
         let r = 62.0 - k as f64 * 1.5;
         tp.push(PathLine {
             kind: PathKind::Feed,
             line: 10 + k,
-            points: vec![[2.0, r], [-60.0, r], [-60.0, r + 1.0]],
+            points: vec![[2.0, r], [-60.0, r], [-60.0, r + 1.0]].into(),
         });
         tp.push(PathLine {
             kind: PathKind::Rapid,
             line: 10 + k,
-            points: vec![[-60.0, r + 1.0], [2.0, r + 1.0], [2.0, r - 1.5]],
+            points: vec![[-60.0, r + 1.0], [2.0, r + 1.0], [2.0, r - 1.5]].into(),
         });
     }
     for k in 0..4 {
@@ -147,7 +147,7 @@ fn write_big_part_picture() {
         tp.push(PathLine {
             kind: PathKind::Thread,
             line: 30,
-            points: vec![[2.0, r], [-8.0, r]],
+            points: vec![[2.0, r], [-8.0, r]].into(),
         });
     }
     let r = Report {

@@ -22,7 +22,8 @@ use crate::arc::ArcWords;
 use crate::corner::{self, Ask};
 use crate::tnrc::Side;
 use crate::{Arc, Diagnostic, Pt, Span};
-use gcode::{Block, Word};
+use gcode::{Block, Blocks, Word};
+use std::borrow::Cow;
 
 /// One element of a finishing shape: a line or an arc from `from` to `to` (G54 frame).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -111,11 +112,11 @@ impl FinishingShape {
     /// else the next block (a shape written before the cycle was already run in its place;
     /// one kept after M30/M02/M99, where the program's flow never reaches it, is no more in
     /// the way than one before).
-    pub(crate) fn resume_at(&self, cycle_index: usize, blocks: &[Block]) -> Option<usize> {
-        let between = blocks
-            .get(cycle_index + 1..self.ns_index)
-            .unwrap_or_default();
-        let follows = self.ns_index > cycle_index && !between.iter().any(ends_flow);
+    pub(crate) fn resume_at(&self, cycle_index: usize, blocks: &Blocks) -> Option<usize> {
+        let follows = self.ns_index > cycle_index
+            && !blocks
+                .range(cycle_index + 1..self.ns_index)
+                .any(|b| ends_flow(&b));
         follows.then_some(self.nf_index + 1)
     }
 
@@ -177,13 +178,9 @@ pub(crate) fn ns_nf(c: &mut Cycle) -> Result<(u32, u32, Span, Span), Diagnostic>
 
 /// The index of the one block numbered `n` (PS063 when absent, an alarm when written twice).
 fn find(c: &Cycle, n: u32, at: Span) -> Result<usize, Diagnostic> {
-    let mut hits = c
-        .program
-        .blocks
-        .iter()
-        .enumerate()
-        .filter(|(_, b)| b.seq == Some(n));
-    let Some((i, _)) = hits.next() else {
+    let blocks = &c.program.blocks;
+    let mut hits = (0..blocks.len()).filter(|&i| blocks.seq(i) == Some(n));
+    let Some(i) = hits.next() else {
         return Err(Diagnostic::new(
             at,
             "PS063",
@@ -191,11 +188,12 @@ fn find(c: &Cycle, n: u32, at: Span) -> Result<usize, Diagnostic> {
             "the finishing shape must be in the same O program as the cycle; check P and Q",
         ));
     };
-    if let Some((_, second)) = hits.next() {
+    if let Some(second) = hits.next() {
+        let second = blocks.at(second);
         return Err(Diagnostic::new(
             second.seq_span.unwrap_or(second.span),
             "LS-SHAPE-N-TWICE",
-            format!("N{n} is written twice in this program, so the finishing shape is ambiguous (first at {})", c.program.blocks[i].span),
+            format!("N{n} is written twice in this program, so the finishing shape is ambiguous (first at {})", blocks.at(i).span),
             "give every block of a finishing shape a sequence number of its own",
         ));
     }
@@ -227,7 +225,12 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
             "write the shape entirely before or after the cycle block",
         ));
     }
-    let blocks = &c.program.blocks[i0..=i1];
+    let blocks: Vec<Block> = c
+        .program
+        .blocks
+        .range(i0..i1 + 1)
+        .map(Cow::into_owned)
+        .collect();
     let mut r = Reader {
         pos: c.start,
         shift: c.shift,

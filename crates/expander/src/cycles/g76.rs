@@ -1139,7 +1139,7 @@ mod tests {
 
     /// The blocks of a program (main program, in order).
     fn blocks(src: &str) -> Vec<Block> {
-        gcode::parse(src).unwrap().main().unwrap().blocks.clone()
+        gcode::parse(src).unwrap().main().unwrap().blocks.all()
     }
 
     fn close(a: f64, b: f64, tol: f64) -> bool {

@@ -6,7 +6,7 @@ use super::Interp;
 use crate::cycles::{self, Cycle};
 use crate::words::Words;
 use crate::{Diagnostic, Motion};
-use gcode::{Subprogram, Word};
+use gcode::{Block, Subprogram, Word};
 
 impl Interp<'_> {
     /// Run a canned cycle and emit its moves with this block's span.
@@ -15,10 +15,10 @@ impl Interp<'_> {
         code: i32,
         g: Option<&'b Word>,
         sub: &'b Subprogram,
+        b: &'b Block,
         index: usize,
         used: &mut Words<'b>,
     ) -> Result<Flow, Diagnostic> {
-        let b = &sub.blocks[index];
         let tool_blade = self.blade_for(self.tool);
         let feed_mm = self.feed * self.unit();
         let out = {

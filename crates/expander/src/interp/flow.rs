@@ -19,7 +19,7 @@
 use super::{alarm, Interp};
 use crate::words::{whole_in, Words};
 use crate::{Control, Diagnostic, Span};
-use gcode::{Block, CallText, Program, Word};
+use gcode::{Blocks, CallText, Program, Word};
 use std::sync::Arc;
 
 /// FANUC's subprogram nesting limit.
@@ -78,12 +78,9 @@ enum Target {
 
 /// The index of the one block numbered `seq` (an alarm at `span` when absent or written
 /// twice: a jump to a duplicated N is ambiguous, spec/dialects.md §1).
-fn seq_index(blocks: &[Block], seq: u32, span: Span, what: &str) -> Result<usize, Diagnostic> {
-    let mut hits = blocks
-        .iter()
-        .enumerate()
-        .filter(|(_, b)| b.seq == Some(seq));
-    let Some((i, first)) = hits.next() else {
+fn seq_index(blocks: &Blocks, seq: u32, span: Span, what: &str) -> Result<usize, Diagnostic> {
+    let mut hits = (0..blocks.len()).filter(|&i| blocks.seq(i) == Some(seq));
+    let Some(i) = hits.next() else {
         return Err(alarm(
             span,
             "PS078",
@@ -91,13 +88,14 @@ fn seq_index(blocks: &[Block], seq: u32, span: Span, what: &str) -> Result<usize
             format!("give the block to go to the sequence number N{seq}"),
         ));
     };
-    if let Some((_, second)) = hits.next() {
+    if let Some(second) = hits.next() {
         return Err(alarm(
             span,
             "LS-N-TWICE",
             format!(
                 "{what} N{seq}, which is written twice (lines {} and {})",
-                first.span.line, second.span.line
+                blocks.at(i).span.line,
+                blocks.at(second).span.line
             ),
             "give each block that is a jump target a sequence number of its own",
         ));
@@ -117,14 +115,13 @@ impl Interp<'_> {
         let blocks = &program.programs[index].blocks;
         let mut i = start;
         'blocks: while i < blocks.len() {
-            let b = &blocks[i];
-            if b.block_delete && self.opts.block_delete {
+            if self.opts.block_delete && blocks.block_delete(i) {
                 i += 1;
                 continue;
             }
             self.out.blocks += 1;
             if self.out.blocks > self.opts.max_blocks {
-                return Err(self.budget_alarm(b.span, program));
+                return Err(self.budget_alarm(blocks.at(i).span, program));
             }
             match self.step(program, index, i)? {
                 Flow::Next => i += 1,

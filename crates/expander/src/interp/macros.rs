@@ -206,9 +206,13 @@ impl Macros {
         }
         let base = self.programs.len();
         for sub in &program.programs {
-            let lines = sub
-                .blocks
-                .iter()
+            // Statements (GOTO, WHILE, IF) consult their own program's lines only, so a
+            // program without macro B needs none: its blocks are not read again for them.
+            let macros = sub.blocks.has_macro();
+            let lines = macros
+                .then(|| sub.blocks.iter())
+                .into_iter()
+                .flatten()
                 .map(|b| Line {
                     seq: b.seq,
                     span: b.span,
@@ -221,8 +225,7 @@ impl Macros {
                 .collect();
             self.programs
                 .push(MacroProgram::new(sub.number, lines, &self.limits)?);
-            self.work
-                .push(sub.blocks.iter().any(Block::has_macro).then(|| sub.clone()));
+            self.work.push(macros.then(|| sub.clone()));
             self.counts.push(vec![0; sub.blocks.len()]);
             self.iterations.push(vec![0; sub.blocks.len()]);
         }
@@ -359,23 +362,26 @@ impl Macros {
         increment: f64,
         sys: &mut dyn System,
     ) -> Result<(), MacroError> {
-        if sub.blocks[i].has_macro() {
-            self.evaluate(&sub.blocks[i], &mut work.blocks[i], increment, sys)?;
+        let work = work.blocks.make_mut();
+        let original = sub.blocks.at(i);
+        if original.has_macro() {
+            self.evaluate(&original, &mut work[i], increment, sys)?;
         }
-        let b = &work.blocks[i];
+        let b = &work[i];
         if !reads_shape(b) {
             return Ok(());
         }
         let seq = |letter| {
             let n = b.get(letter)?.value as u32;
-            sub.blocks.iter().position(|x| x.seq == Some(n))
+            sub.blocks.position_seq(n)
         };
         let (Some(p), Some(q)) = (seq('P'), seq('Q')) else {
             return Ok(());
         };
-        for k in p..=q {
-            if sub.blocks[k].has_macro() {
-                self.evaluate(&sub.blocks[k], &mut work.blocks[k], increment, sys)?;
+        for (k, slot) in work.iter_mut().enumerate().take(q + 1).skip(p) {
+            let original = sub.blocks.at(k);
+            if original.has_macro() {
+                self.evaluate(&original, slot, increment, sys)?;
             }
         }
         Ok(())
@@ -507,9 +513,9 @@ impl Interp<'_> {
             .collect();
         let mut lines: Vec<(u32, u64)> = Vec::new();
         for (sub, counts) in program.programs.iter().zip(&m.counts) {
-            for (b, &n) in sub.blocks.iter().zip(counts) {
+            for (i, &n) in counts.iter().enumerate() {
                 if n > 1 {
-                    lines.push((b.span.line, n));
+                    lines.push((sub.blocks.at(i).span.line, n));
                 }
             }
         }
@@ -542,7 +548,8 @@ impl Interp<'_> {
         i: usize,
     ) -> Result<Flow, Diagnostic> {
         let Some(mut m) = self.macros.take() else {
-            return self.block(&program.programs[index], i);
+            let sub = &program.programs[index];
+            return self.block(sub, &sub.blocks.at(i), i);
         };
         let flow = match m.base(program) {
             Ok(base) => self.step_with(&mut m, &program.programs[index], base + index, i),
@@ -560,7 +567,8 @@ impl Interp<'_> {
         i: usize,
     ) -> Result<Flow, Diagnostic> {
         m.counts[index][i] += 1;
-        let b = &sub.blocks[i];
+        let b = sub.blocks.at(i);
+        let b: &Block = &b;
         let increment = self.increment();
         let span = b.span;
         if let Some(stmt) = &b.stmt {
@@ -629,12 +637,12 @@ impl Interp<'_> {
             return Ok(Flow::Next);
         }
         let flow = match m.work[index].take() {
-            None => self.block(sub, i),
+            None => self.block(sub, b, i),
             Some(mut work) => {
                 let flow = m
                     .evaluate_for(sub, &mut work, i, increment, &mut Sys { it: self, span })
                     .map_err(diagnostic)
-                    .and_then(|()| self.block(&work, i));
+                    .and_then(|()| self.block(&work, &work.blocks.at(i), i));
                 m.work[index] = Some(work);
                 flow
             }
@@ -717,7 +725,7 @@ impl Interp<'_> {
             in_program(m, last).map(|local| (m, last, local))
         }) {
             Some((m, (p, l), (local, _))) => {
-                let head = &program.programs[local].blocks[l];
+                let head = program.programs[local].blocks.at(l);
                 alarm(
                     head.span,
                     "LS-LOOP",

@@ -27,7 +27,7 @@ use crate::tnrc::{Nose, Side};
 use crate::words::Words;
 use crate::{Diagnostic, Machine, Pt, Segment, Span};
 use flow::{Exit, Flow};
-use gcode::{Program, Subprogram};
+use gcode::{Block, Program, Subprogram};
 pub(crate) use modal::MotionMode;
 
 /// Interpreter settings from the command line.
@@ -326,12 +326,15 @@ impl<'m> Interp<'m> {
     /// Haas: a program that states neither G20 nor G21 runs in the profile's power-on units;
     /// US machines are usually inch, so say which was assumed (dialects.md §3.1).
     fn warn_assumed_units(&mut self, program: &Program, main: &Subprogram) {
+        if self.machine.control != crate::Control::Haas {
+            return;
+        }
         let states = program
             .programs
             .iter()
-            .flat_map(|p| &p.blocks)
-            .any(|b| self.has_g(b, |t| t == G20 || t == G21));
-        if self.machine.control == crate::Control::Haas && !states {
+            .flat_map(|p| p.blocks.iter())
+            .any(|b| self.has_g(&b, |t| t == G20 || t == G21));
+        if !states {
             let unit = if self.inch { "inch" } else { "mm" };
             self.warn(
                 main.blocks.first().map_or(main.span, |b| b.span),
@@ -352,8 +355,7 @@ impl<'m> Interp<'m> {
     }
 
     /// Execute one block: its modal words, its one action, then its flow words.
-    fn block(&mut self, sub: &Subprogram, index: usize) -> Result<Flow, Diagnostic> {
-        let b = &sub.blocks[index];
+    fn block(&mut self, sub: &Subprogram, b: &Block, index: usize) -> Result<Flow, Diagnostic> {
         self.moved = false;
         if self.param_mode {
             // G10 L50 … G11: parameter data, not a program.
@@ -400,7 +402,7 @@ impl<'m> Interp<'m> {
             Some((G10, w)) => self.g10(&mut used, w)?,
             Some((t, w)) => {
                 flow = self
-                    .cycle(t, Some(w), sub, index, &mut used)
+                    .cycle(t, Some(w), sub, b, index, &mut used)
                     .map_err(|e| self.in_written_terms(e, t))?
             }
             None => {
@@ -414,12 +416,12 @@ impl<'m> Interp<'m> {
                     drill.filter(|_| ['X', 'Z', 'U', 'W', 'R', 'Q'].iter().any(|&l| b.has(l)))
                 {
                     // the drilling cycle in force repeats with the block's words
-                    flow = self.cycle(t, None, sub, index, &mut used)?;
+                    flow = self.cycle(t, None, sub, b, index, &mut used)?;
                 } else if let MotionMode::Cycle(t) = self.motion {
                     if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
                         let w = g.motion.map(|(_, w)| w);
                         flow = self
-                            .cycle(t, w, sub, index, &mut used)
+                            .cycle(t, w, sub, b, index, &mut used)
                             .map_err(|e| self.in_written_terms(e, t))?;
                     }
                 } else {

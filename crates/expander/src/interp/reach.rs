@@ -7,22 +7,24 @@
 //! sequence number is over-counted, so the warning errs on the side of silence.
 
 use gcode::{Block, Subprogram};
+use std::borrow::Cow;
 
 /// The first block after the first M02/M30 of `main`, when no P/Q word of the program names
 /// a sequence number of the blocks from there on.
-pub(super) fn unreachable_tail(main: &Subprogram) -> Option<&Block> {
-    let is_end = |b: &Block| b.has_m(&[2.0, 30.0]);
-    let end = main.blocks.iter().position(is_end)?;
-    let tail = &main.blocks[end + 1..];
-    let first = tail.first()?;
+pub(super) fn unreachable_tail(main: &Subprogram) -> Option<Cow<'_, Block>> {
+    let blocks = &main.blocks;
+    let end = (0..blocks.len()).find(|&i| blocks.ends_program(i))?;
+    let first = blocks.get(end + 1)?;
     let named = |n: u32| {
-        main.blocks.iter().any(|b| {
+        blocks.iter().any(|b| {
             b.words
                 .iter()
                 .any(|w| matches!(w.letter, 'P' | 'Q') && !w.has_point && w.value == f64::from(n))
         })
     };
-    let referred = tail.iter().filter_map(|b| b.seq).any(named);
+    let referred = (end + 1..blocks.len())
+        .filter_map(|i| blocks.seq(i))
+        .any(named);
     (!referred).then_some(first)
 }
 

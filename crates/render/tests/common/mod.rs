@@ -14,7 +14,7 @@ fn mv(kind: PathKind, line: u32, pts: &[[f64; 2]]) -> PathLine {
     PathLine {
         kind,
         line,
-        points: pts.to_vec(),
+        points: pts.to_vec().into(),
     }
 }
 
@@ -286,12 +286,12 @@ pub(crate) fn degenerate_reports() -> Vec<Report> {
     r.toolpath.push(PathLine {
         kind: PathKind::Thread,
         line: 1,
-        points: vec![[nan, 1.0], [f64::INFINITY, 2.0]],
+        points: vec![[nan, 1.0], [f64::INFINITY, 2.0]].into(),
     });
     r.toolpath.push(PathLine {
         kind: PathKind::Feed,
         line: 2,
-        points: vec![],
+        points: vec![].into(),
     });
     r.crashes[0].z = nan;
     r.gouges[0].depth_mm = nan;
@@ -304,7 +304,7 @@ pub(crate) fn degenerate_reports() -> Vec<Report> {
     r.toolpath.push(PathLine {
         kind: PathKind::Rapid,
         line: 1,
-        points: vec![[1e300, -1e300], [0.0, 0.0]],
+        points: vec![[1e300, -1e300], [0.0, 0.0]].into(),
     });
     r.final_part.push(Shape {
         outer: vec![[5.0, 5.0]],

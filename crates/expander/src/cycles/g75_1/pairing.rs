@@ -41,5 +41,5 @@ pub(super) fn follows(g: &Geometry, program: &gcode::Subprogram, index: usize) -
     let between = (g.at.0 + 1).min(index)..index;
     g.at.1 == program.number
         && g.at.0 < index
-        && program.blocks[between].iter().all(|b| b.words.is_empty())
+        && program.blocks.range(between).all(|b| b.words.is_empty())
 }
