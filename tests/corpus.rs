@@ -6,6 +6,8 @@
 //! meet it yet (a ratchet: when one starts passing, this test fails and says to promote it).
 //! Format of the sidecars: `assets/corpus/README.md`.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -16,23 +18,14 @@ fn corpus_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/corpus")
 }
 
+/// The sidecars of the corpus: each `.toml` beside its `.nc` (the `tools` folders hold
+/// tool tables).
 fn sidecars(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<_> = std::fs::read_dir(dir)
-        .unwrap()
-        .flatten()
-        .map(|e| e.path())
-        .collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            if p.file_name().is_some_and(|n| n == "tools") {
-                continue;
-            }
-            sidecars(&p, out);
-        } else if p.extension().is_some_and(|e| e == "toml") && p.with_extension("nc").exists() {
-            out.push(p);
-        }
-    }
+    out.extend(
+        common::files_under(dir, "toml", &["tools"])
+            .into_iter()
+            .filter(|p| p.with_extension("nc").exists()),
+    );
 }
 
 /// Flags `latsim run` has today.

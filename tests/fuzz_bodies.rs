@@ -4,6 +4,8 @@
 //! sessions); its bodies are included here instead. Each must take any bytes without a
 //! panic: the samples are the shipped programs and tables, and damaged copies of them.
 
+mod common;
+
 mod read {
     include!("../fuzz/bodies/read.rs");
 }
@@ -75,26 +77,10 @@ fn reader_and_interpreter_bodies_take_the_programs() {
 /// reader's blocks read again from the text are the blocks it read.
 #[test]
 fn reader_body_takes_the_corpus() {
-    fn walk(dir: &Path, out: &mut Vec<Vec<u8>>) {
-        let mut entries: Vec<_> = std::fs::read_dir(dir)
-            .unwrap()
-            .flatten()
-            .map(|e| e.path())
-            .collect();
-        entries.sort();
-        for p in entries {
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|e| e == "nc") {
-                out.push(std::fs::read(&p).unwrap());
-            }
-        }
-    }
-    let mut programs = vec![];
-    walk(
-        &Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/corpus"),
-        &mut programs,
-    );
+    let programs: Vec<Vec<u8>> = common::files_under(&common::asset("corpus"), "nc", &[])
+        .iter()
+        .map(|p| std::fs::read(p).unwrap())
+        .collect();
     assert!(programs.len() > 100, "{}", programs.len());
     for p in with_damage(programs) {
         read::body(&p);

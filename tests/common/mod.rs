@@ -10,6 +10,28 @@ pub fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// The files under `dir` (every depth) whose name ends in `.ext`, sorted, leaving out
+/// folders named in `skip`.
+pub fn files_under(dir: &Path, ext: &str, skip: &[&str]) -> Vec<PathBuf> {
+    let mut entries: Vec<_> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    entries.sort();
+    let mut out = vec![];
+    for p in entries {
+        if p.is_dir() {
+            if !p.file_name().is_some_and(|n| skip.iter().any(|s| n == *s)) {
+                out.extend(files_under(&p, ext, skip));
+            }
+        } else if p.extension().is_some_and(|e| e == ext) {
+            out.push(p);
+        }
+    }
+    out
+}
+
 /// A file under `assets/`.
 pub fn asset(rel: &str) -> PathBuf {
     root().join("assets").join(rel)
