@@ -125,6 +125,31 @@ fn run_writes_all_four_reports_by_default() {
     );
 }
 
+/// A run that writes only the JSON report leaves the toolpath out of the report (issue 16:
+/// 48 bytes a move); the JSON is the one written beside the pictures, byte for byte.
+#[test]
+fn json_alone_is_the_json_written_with_the_pictures() {
+    let all = tempfile::tempdir().unwrap();
+    let alone = tempfile::tempdir().unwrap();
+    let json = alone.path().join("O0002.json");
+    for out in [
+        ["--out", all.path().to_str().unwrap()],
+        ["--json", json.to_str().unwrap()],
+    ] {
+        let program = asset("programs/O0002.nc");
+        let tools = asset("tools/v35-sharp.toml");
+        let mut args = vec!["run", program.to_str().unwrap(), "--stock", "125x110"];
+        args.extend(["--tools", tools.to_str().unwrap(), "--quiet"]);
+        args.extend(out);
+        let r = latsim(&args);
+        assert_eq!(r.code, 0, "{}", r.stderr);
+    }
+    assert_eq!(std::fs::read_dir(alone.path()).unwrap().count(), 1);
+    let with_pictures = std::fs::read(all.path().join("O0002.json")).unwrap();
+    assert!(with_pictures.len() > 1000);
+    assert_eq!(std::fs::read(&json).unwrap(), with_pictures);
+}
+
 #[test]
 fn machine_profile_errors_point_at_the_line() {
     let (dir, prog) = temp_program("p.nc", b"G0 X50 Z5\nM30\n");
