@@ -31,6 +31,14 @@ fn diagnostic(loaded: &Loaded, d: &expander::Diagnostic) -> Diagnostic {
     }
 }
 
+/// The toolpath the pictures draw, made from the segments in their own memory (a path line
+/// is smaller than a segment, so the vector is reused): the last use of the segments, which
+/// a million-move run would otherwise hold beside 48 MB of path lines (issue 16). The JSON
+/// report does not list the toolpath, so a run that writes only JSON keeps it empty.
+pub(crate) fn add_toolpath(report: &mut Report, segments: Vec<Segment>) {
+    report.toolpath = segments.into_iter().map(|s| path_line(&s)).collect();
+}
+
 /// The toolpath as drawn: arcs chorded at a drawing tolerance (the removal uses its own).
 fn path_line(seg: &Segment) -> PathLine {
     let kind = match seg.motion {
@@ -223,8 +231,7 @@ fn tailstock_moves(loaded: &Loaded) -> Option<String> {
     }
 }
 
-/// Everything a finished run shows; `pictures`: an SVG, PNG, HTML or DXF report is written,
-/// so the toolpath is listed.
+/// Everything a finished run shows, but the toolpath ([`add_toolpath`]).
 pub(crate) fn build(
     loaded: &Loaded,
     program_name: &str,
@@ -232,7 +239,6 @@ pub(crate) fn build(
     tools: &stock::ToolTable,
     sim: &stock::Simulation,
     tol: f64,
-    pictures: bool,
 ) -> Report {
     let tp = &loaded.toolpath;
     let cut = |c: &stock::Crash| stock_crash(loaded, c);
@@ -305,11 +311,8 @@ pub(crate) fn build(
             shapes: blank.shapes.iter().map(shape).collect(),
         },
         final_part: sim.final_shapes.iter().map(shape).collect(),
-        toolpath: if pictures {
-            tp.segments.iter().map(path_line).collect()
-        } else {
-            vec![]
-        },
+        // filled last by `add_toolpath`, from the segments themselves
+        toolpath: vec![],
         rapid_cuts,
         alarms: tp
             .alarms

@@ -252,7 +252,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program, path, &tools, args.tool) else {
+    let Ok(mut loaded) = input::load_program(&args.program, path, &tools, args.tool) else {
         if batch {
             println!(
                 "{}: UNUSABLE — not simulated (see the message above)",
@@ -368,13 +368,37 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         )
     });
     let crashes = crate::report::crash_list(&loaded, &sim, &fixture_crashes);
-    let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol, pictures);
+    let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
     crate::report::add_crashes(&mut report, &loaded, &tools, &crashes, fixture.as_ref());
     crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
     let target = args.target.is_some().then(|| intents[0].part.as_slice());
     crate::report::add_threads(&mut report, &loaded, &tools, &sim, target, &thread_stock);
     if html {
         report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
+    }
+    let findings = (!batch).then(|| {
+        let crash_at: Vec<String> = crashes
+            .iter()
+            .map(|c| loaded.place(segments[c.segment].span))
+            .collect();
+        let gouge_at: Vec<String> = deviation
+            .as_ref()
+            .map(|d| {
+                d.gouges
+                    .iter()
+                    .map(|g| {
+                        g.made_by.and_then(|i| segments.get(i)).map_or_else(
+                            || format!("{}:0", loaded.source.name),
+                            |s| loaded.place(s.span),
+                        )
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        (crash_at, gouge_at)
+    });
+    if pictures {
+        crate::report::add_toolpath(&mut report, std::mem::take(&mut loaded.toolpath.segments));
     }
 
     // Render every report first, then write them all to disk, then make them visible:
@@ -416,25 +440,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         return EXIT_UNUSABLE;
     }
 
-    if !batch {
-        let crash_at: Vec<String> = crashes
-            .iter()
-            .map(|c| loaded.place(segments[c.segment].span))
-            .collect();
-        let gouge_at: Vec<String> = deviation
-            .as_ref()
-            .map(|d| {
-                d.gouges
-                    .iter()
-                    .map(|g| {
-                        g.made_by.and_then(|i| segments.get(i)).map_or_else(
-                            || format!("{}:0", loaded.source.name),
-                            |s| loaded.place(s.span),
-                        )
-                    })
-                    .collect()
-            })
-            .unwrap_or_default();
+    if let Some((crash_at, gouge_at)) = findings {
         print_findings(&loaded.source.name, &crash_at, &gouge_at, &report);
     }
     let verdict = report.verdict();
