@@ -136,7 +136,7 @@ impl Subprogram {
 
 /// The blocks of one O program. As read, they are not held: each block is read again from
 /// the program text where it is needed ([`Blocks::get`]), so a million-line program costs
-/// 16 bytes a block instead of its words (~200 bytes a line), the largest part of a big
+/// 20 bytes a block instead of its words (~200 bytes a line), the largest part of a big
 /// run's peak (issue 16). A working copy whose words are changed (macro B values) holds
 /// its blocks ([`Blocks::make_mut`]).
 #[derive(Clone, Default)]
@@ -200,6 +200,10 @@ impl Blocks {
 
     /// Record the next block of blocks read again (reader only); `macros`: it holds macro B.
     pub(crate) fn push_start(&mut self, start: BlockStart, macros: bool) {
+        debug_assert!(
+            matches!(self.0, Repr::Read(_)),
+            "held blocks are pushed whole"
+        );
         if let Repr::Read(r) = &mut self.0 {
             r.macros |= macros;
             r.starts.push(start);
