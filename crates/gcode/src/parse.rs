@@ -1771,7 +1771,7 @@ mod tests {
         )
         .unwrap();
         assert!(p.programs[0].blocks.has_macro());
-        assert_eq!(p.programs[0].blocks.position_seq(10), Some(1));
+        assert!(p.programs[0].blocks.positions_seq(10).eq([1]));
     }
 
     /// Issue 16/17 memory: a million-line program keeps 20 bytes a block (where it starts,

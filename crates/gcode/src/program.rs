@@ -312,9 +312,9 @@ impl Blocks {
         }
     }
 
-    /// Index of the first block numbered `n`.
-    pub fn position_seq(&self, n: u32) -> Option<usize> {
-        (0..self.len()).find(|&i| self.seq(i) == Some(n))
+    /// Indices of the blocks numbered `n`, in order, without reading them again.
+    pub fn positions_seq(&self, n: u32) -> impl Iterator<Item = usize> + '_ {
+        (0..self.len()).filter(move |&i| self.seq(i) == Some(n))
     }
 
     /// Whether some block holds macro B ([`Block::has_macro`]), without reading them again.

@@ -179,7 +179,7 @@ pub(crate) fn ns_nf(c: &mut Cycle) -> Result<(u32, u32, Span, Span), Diagnostic>
 /// The index of the one block numbered `n` (PS063 when absent, an alarm when written twice).
 fn find(c: &Cycle, n: u32, at: Span) -> Result<usize, Diagnostic> {
     let blocks = &c.program.blocks;
-    let mut hits = (0..blocks.len()).filter(|&i| blocks.seq(i) == Some(n));
+    let mut hits = blocks.positions_seq(n);
     let Some(i) = hits.next() else {
         return Err(Diagnostic::new(
             at,

@@ -79,7 +79,7 @@ enum Target {
 /// The index of the one block numbered `seq` (an alarm at `span` when absent or written
 /// twice: a jump to a duplicated N is ambiguous, spec/dialects.md §1).
 fn seq_index(blocks: &Blocks, seq: u32, span: Span, what: &str) -> Result<usize, Diagnostic> {
-    let mut hits = (0..blocks.len()).filter(|&i| blocks.seq(i) == Some(seq));
+    let mut hits = blocks.positions_seq(seq);
     let Some(i) = hits.next() else {
         return Err(alarm(
             span,

@@ -373,12 +373,12 @@ impl Macros {
         }
         let seq = |letter| {
             let n = b.get(letter)?.value as u32;
-            sub.blocks.position_seq(n)
+            sub.blocks.positions_seq(n).next()
         };
         let (Some(p), Some(q)) = (seq('P'), seq('Q')) else {
             return Ok(());
         };
-        for (k, slot) in work.iter_mut().enumerate().take(q + 1).skip(p) {
+        for (k, slot) in (p..=q).zip(&mut work[p..=q]) {
             let original = sub.blocks.at(k);
             if original.has_macro() {
                 self.evaluate(&original, slot, increment, sys)?;

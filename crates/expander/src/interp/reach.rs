@@ -8,6 +8,7 @@
 
 use gcode::{Block, Subprogram};
 use std::borrow::Cow;
+use std::collections::HashSet;
 
 /// The first block after the first M02/M30 of `main`, when no P/Q word of the program names
 /// a sequence number of the blocks from there on.
@@ -15,16 +16,24 @@ pub(super) fn unreachable_tail(main: &Subprogram) -> Option<Cow<'_, Block>> {
     let blocks = &main.blocks;
     let end = (0..blocks.len()).find(|&i| blocks.ends_program(i))?;
     let first = blocks.get(end + 1)?;
-    let named = |n: u32| {
-        blocks.iter().any(|b| {
-            b.words
-                .iter()
-                .any(|w| matches!(w.letter, 'P' | 'Q') && !w.has_point && w.value == f64::from(n))
-        })
-    };
-    let referred = (end + 1..blocks.len())
+    let tail: Vec<u32> = (end + 1..blocks.len())
         .filter_map(|i| blocks.seq(i))
-        .any(named);
+        .collect();
+    if tail.is_empty() {
+        return Some(first);
+    }
+    // the numbers P and Q words name, from one reading of the blocks (each block is read
+    // again from the text, so not once for every number of the tail)
+    let mut named = HashSet::new();
+    for b in blocks.iter() {
+        for w in b.words.iter() {
+            let n = w.value as u32;
+            if matches!(w.letter, 'P' | 'Q') && !w.has_point && w.value == f64::from(n) {
+                named.insert(n);
+            }
+        }
+    }
+    let referred = tail.iter().any(|n| named.contains(n));
     (!referred).then_some(first)
 }
 
@@ -43,5 +52,8 @@ mod tests {
         assert_eq!(tail("M97 P100\nM30\nN100 G0 X2\nM99\n"), None);
         assert_eq!(tail("G0 X1\nM30\n"), None);
         assert_eq!(tail("G0 X1\nM30\nN100 G0 X2\nM99\n"), Some(3));
+        // a Q names a block of the tail too; a P written with a point names none
+        assert_eq!(tail("G70 P5 Q200\nM30\nN100 G0 X2\nN200 X3\n"), None);
+        assert_eq!(tail("M97 P100.\nM30\nN100 G0 X2\n"), Some(3));
     }
 }
