@@ -303,6 +303,8 @@ struct Reader<'a> {
     stmt: Option<Stmt>,
     /// The first comment after an `M98` of the current block (Haas `M98 (path)`).
     call_text: Option<(String, Span)>,
+    /// The next character starts a block: [`Reader::read_plain_block`] may read it.
+    at_block_start: bool,
 }
 
 impl<'a> Reader<'a> {
@@ -345,6 +347,7 @@ impl<'a> Reader<'a> {
             unexpected_control: (0, Span::default()),
             stmt: None,
             call_text: None,
+            at_block_start: true,
         }
     }
 
@@ -555,7 +558,11 @@ impl<'a> Reader<'a> {
 
     /// Read to the end of the text (in [`Mode::One`], to the end of the first block).
     fn read(&mut self) -> Result<(), ParseError> {
-        while let Some((span, c)) = self.next() {
+        loop {
+            if std::mem::take(&mut self.at_block_start) && self.found.is_none() {
+                self.read_plain_block();
+            }
+            let Some((span, c)) = self.next() else { break };
             if self.found.is_some() {
                 return Ok(());
             }
@@ -1211,7 +1218,117 @@ impl<'a> Reader<'a> {
         self.delete_level = 0;
         self.stmt = None;
         self.call_text = None;
+        self.at_block_start = true;
         Ok(())
+    }
+
+    /// A plain block — address letters with numbers, spaces between — read in one go (most
+    /// blocks of a CAM program are plain, and the character loop is a third of a run). It
+    /// leaves the block's words read and the reader at the block's end (`\n`, `;` or the end
+    /// of the text) for the loop to end the block. A block with anything else (a comment,
+    /// `/`, `,`, `O`, a macro expression, a number in pieces, an error) is left whole to the
+    /// loop. The reference reading ([`Mode::Held`], [`parse_held`]) reads every block
+    /// with the loop, so that the tests compare the two.
+    fn read_plain_block(&mut self) {
+        if matches!(self.mode, Mode::Held) {
+            return;
+        }
+        let (pos, column, block_end) = (self.pos, self.column, self.block_end);
+        if !self.plain_block() {
+            self.pos = pos;
+            self.column = column;
+            self.block_end = block_end;
+            self.block_start = None;
+            self.words.clear();
+            self.seq = None;
+        }
+    }
+
+    /// [`Reader::read_plain_block`]'s reading: false where the block is not plain.
+    fn plain_block(&mut self) -> bool {
+        let bytes = self.src.as_bytes();
+        let (base, base_column) = (self.pos, self.column);
+        // every byte read is ASCII: one column each
+        let span_at = |line: u32, i: usize| Span {
+            line,
+            column: base_column + (i - base) as u32 + 1,
+            offset: i as u32,
+            len: 1,
+        };
+        let mut i = base;
+        loop {
+            while matches!(bytes.get(i), Some(b' ' | b'\t')) {
+                i += 1;
+            }
+            let Some(&b) = bytes.get(i) else { break };
+            match b {
+                b'\n' | b';' => break,
+                b'\r' if bytes.get(i + 1) == Some(&b'\n') => {
+                    i += 1;
+                    break;
+                }
+                b'O' | b'o' => return false,
+                b if b.is_ascii_alphabetic() => {}
+                _ => return false,
+            }
+            if self.options.macros.is_some()
+                && self.words.is_empty()
+                && macro_b::starts_statement(&self.src[i..])
+            {
+                return false;
+            }
+            let letter = char::from(b.to_ascii_uppercase());
+            let start = i + 1;
+            let mut end = start;
+            while end < bytes.len()
+                && end - start < MAX_NUMBER_CHARS
+                && matches!(bytes[end], b'0'..=b'9' | b'.' | b'+' | b'-')
+            {
+                end += 1;
+            }
+            if end - start == MAX_NUMBER_CHARS {
+                return false;
+            }
+            let text = &self.src[start..end];
+            let Some((value, has_point)) = parse_number(text) else {
+                return false;
+            };
+            let whole_digits = text
+                .bytes()
+                .take_while(|&b| b != b'.')
+                .skip_while(|&b| b == b'+' || b == b'-')
+                .skip_while(|&b| b == b'0')
+                .count();
+            if whole_digits > MAX_WHOLE_DIGITS {
+                return false;
+            }
+            let first = span_at(self.line, i);
+            let last = span_at(self.line, end - 1);
+            let span = first.to(last);
+            if letter == 'N' {
+                if self.seq.is_some() || has_point || !(1.0..=99_999_999.0).contains(&value) {
+                    return false;
+                }
+                self.seq = Some((value as u32, span));
+            } else {
+                if letter != 'G' && letter != 'M' && self.words.iter().any(|w| w.letter == letter) {
+                    return false;
+                }
+                self.words.push(Word {
+                    letter,
+                    value,
+                    has_point,
+                    span,
+                    expr: None,
+                });
+            }
+            self.block_start.get_or_insert(first);
+            self.block_end = last;
+            i = end;
+        }
+        self.column = base_column + (i - base) as u32;
+        self.pos = i;
+        true
     }
 }
 
@@ -1772,6 +1889,51 @@ mod tests {
         .unwrap();
         assert!(p.programs[0].blocks.has_macro());
         assert!(p.programs[0].blocks.positions_seq(10).eq([1]));
+    }
+
+    /// Plain blocks are read in one go ([`Reader::read_plain_block`]); the reference
+    /// reading reads them character by character. Both give the same blocks, notes and
+    /// errors, also for the blocks the quick reading must leave to the loop.
+    #[test]
+    fn plain_blocks_read_in_one_go_read_as_the_loop_reads_them() {
+        let texts = [
+            "G00 X1. Z2.\nG01 Z-5.0000 F0.1;\nN20 G1 X+.5 Z-0.;\n",
+            "\tg1 x1 z2\r\nG1\tX3 ;\r\n\r\nM30\r\n",
+            "G1 X1 .5\n",
+            "G1 X1. X2.\n",
+            "G65 P9010 I1. I2. J3.\nM30\n",
+            "N0 G1 X1\n",
+            "N1.5 G1 X1\n",
+            "N1 N2 G1 X1\n",
+            "N123456789 G1\n",
+            "G1 X1234567890.\n",
+            "G1 X12345678901234567890\n",
+            "G1 X1234567890123456789\n",
+            "G1 X-\n",
+            "G1 X--5\n",
+            "G1 X1.2.3\n",
+            "GX1\n",
+            "G1 X1\rG1 Z2\n",
+            "G1 X1 \u{11} Z2\n",
+            "O1234 G1 X1\nG1 X2\n",
+            "N10 G1 X1 (c)\nN20 /G1\nG1 X1 ,C1.\n",
+            "G1 X1; prose here\nG1 X#1\nG1 X-#1\nIF[#1GT1]GOTO10\nN10 #1=2\nG1 X[1]\n",
+            "G1 X1\u{3000}Z2\nG1 X1 %\n",
+            "G1 X1",
+        ];
+        for text in texts {
+            for macros in [None, Some(Dialect::Fanuc), Some(Dialect::Haas)] {
+                for decimal_comma in [false, true] {
+                    let options = ReadOptions {
+                        decimal_comma,
+                        macros,
+                    };
+                    let held = parse_held(text, options);
+                    let read = parse_with(text, options);
+                    assert_eq!(read, held, "{text:?} {macros:?}");
+                }
+            }
+        }
     }
 
     /// Issue 16/17 memory: a million-line program keeps 20 bytes a block (where it starts,
