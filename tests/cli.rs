@@ -129,25 +129,41 @@ fn run_writes_all_four_reports_by_default() {
 /// 48 bytes a move); the JSON is the one written beside the pictures, byte for byte.
 #[test]
 fn json_alone_is_the_json_written_with_the_pictures() {
+    alone_and_with_the_others(&["json"]);
+}
+
+/// The reports of a run are made on threads of their own, the SVG, PNG and HTML page from
+/// one drawing: each, made alone, is the same bytes, and the page holds the SVG.
+#[test]
+fn each_report_alone_is_the_report_written_with_the_others() {
+    alone_and_with_the_others(&["svg", "png", "html"]);
+}
+
+/// Each report of `kinds` made alone is the one a run writing all four writes.
+fn alone_and_with_the_others(kinds: &[&str]) {
     let all = tempfile::tempdir().unwrap();
-    let alone = tempfile::tempdir().unwrap();
-    let json = alone.path().join("O0002.json");
-    for out in [
-        ["--out", all.path().to_str().unwrap()],
-        ["--json", json.to_str().unwrap()],
-    ] {
-        let program = asset("programs/O0002.nc");
-        let tools = asset("tools/v35-sharp.toml");
+    let program = asset("programs/O0002.nc");
+    let tools = asset("tools/v35-sharp.toml");
+    let run = |out: [&str; 2]| {
         let mut args = vec!["run", program.to_str().unwrap(), "--stock", "125x110"];
         args.extend(["--tools", tools.to_str().unwrap(), "--quiet"]);
         args.extend(out);
         let r = latsim(&args);
         assert_eq!(r.code, 0, "{}", r.stderr);
+    };
+    run(["--out", all.path().to_str().unwrap()]);
+    for kind in kinds {
+        let alone = tempfile::tempdir().unwrap();
+        let file = alone.path().join(format!("O0002.{kind}"));
+        run([&format!("--{kind}"), file.to_str().unwrap()]);
+        assert_eq!(std::fs::read_dir(alone.path()).unwrap().count(), 1);
+        let with_others = std::fs::read(all.path().join(format!("O0002.{kind}"))).unwrap();
+        assert!(with_others.len() > 1000, "{kind}");
+        assert!(std::fs::read(&file).unwrap() == with_others, "{kind}");
     }
-    assert_eq!(std::fs::read_dir(alone.path()).unwrap().count(), 1);
-    let with_pictures = std::fs::read(all.path().join("O0002.json")).unwrap();
-    assert!(with_pictures.len() > 1000);
-    assert_eq!(std::fs::read(&json).unwrap(), with_pictures);
+    let svg = std::fs::read_to_string(all.path().join("O0002.svg")).unwrap();
+    let page = std::fs::read_to_string(all.path().join("O0002.html")).unwrap();
+    assert!(page.contains(&svg));
 }
 
 #[test]

@@ -599,9 +599,8 @@ fn player_legend(out: &mut String, report: &Report) {
     out.push_str("</p>\n");
 }
 
-/// The whole page.
-pub(crate) fn html(report: &Report) -> String {
-    let svg = crate::svg::svg(report);
+/// The whole page, showing `svg`, the report picture of `report`.
+pub(crate) fn html(report: &Report, svg: &str) -> String {
     let (data, moves) = data_json(report);
     let data = script_safe(&data);
     let n = report.toolpath.len();
@@ -632,7 +631,7 @@ pub(crate) fn html(report: &Report) -> String {
 
     // 1. The report picture.
     out.push_str("<section id=\"ls-picture\"><h2>Report picture</h2>\n<div class=\"picture\">\n");
-    out.push_str(&svg);
+    out.push_str(svg);
     out.push_str("</div></section>\n");
 
     // 2. The move slider.

@@ -66,7 +66,34 @@ pub fn svg(report: &Report) -> String {
 /// The same picture rasterised (anti-aliased, embedded `DejaVu Sans`), as PNG bytes of
 /// 1600 × 1000 px. Deterministic: the same report gives the same bytes.
 pub fn png(report: &Report) -> Result<Vec<u8>, RenderError> {
-    png::rasterise(&svg::svg(report))
+    Picture::draw(report).png()
+}
+
+/// The report picture drawn once for the SVG, the PNG and the HTML page that all show it:
+/// drawing a million-move toolpath was a quarter of a run writing all three.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Picture(String);
+
+impl Picture {
+    /// Draw the report picture.
+    pub fn draw(report: &Report) -> Self {
+        Self(svg::svg(report))
+    }
+
+    /// The picture as an SVG document: [`svg`].
+    pub fn svg(&self) -> &str {
+        &self.0
+    }
+
+    /// The picture as PNG bytes: [`png`].
+    pub fn png(&self) -> Result<Vec<u8>, RenderError> {
+        png::rasterise(&self.0)
+    }
+
+    /// The HTML page of `report`, the report this picture was drawn from: [`html`].
+    pub fn html(&self, report: &Report) -> String {
+        html::html(report, &self.0)
+    }
 }
 
 /// The report as one self-contained HTML page (no network, no external files; works
@@ -75,7 +102,7 @@ pub fn png(report: &Report) -> Result<Vec<u8>, RenderError> {
 /// [`Report::snapshots`] when present). Deterministic; bounded in size for any toolpath
 /// (the embedded path is thinned to about 200 000 points, and the page says so).
 pub fn html(report: &Report) -> String {
-    html::html(report)
+    Picture::draw(report).html(report)
 }
 
 /// The machine-readable report as pretty JSON (see the crate docs for the fields).
