@@ -426,3 +426,53 @@ fn g92_expansion() {
     let src = "G97 S500 M03 T0404\nG00 X32 Z5\nG92 X29 Z-20 F2\nX28\nG92 X28 Z-20 R-1 F1.5\nM30\n";
     insta::assert_snapshot!(common::listing(&run(src), |s| format!("lead {}", s.lead)));
 }
+
+/// A long O program's blocks are read again on another thread, ahead of the run
+/// (`interp::ahead`): the run is the one made from the blocks held, through calls, a jump
+/// forward over a finishing shape, block delete, and (with macro B) a loop back and GOTO.
+#[test]
+fn blocks_read_ahead_run_as_the_blocks_held() {
+    let moves = |n: usize| -> String {
+        (0..n)
+            .map(|k| format!("G1 X{}. Z-{:.1} F0.2\n", 100 + k % 2, (k % 50) as f64 * 0.1))
+            .collect()
+    };
+    let plain = format!(
+        "O0001\nG99 G21 M3 S500 T0101\nG0 X130. Z5.\n{a}/G0 X131.\nM98 P2000\n\
+         G0 X130. Z2.\nG71 U1. R0.5\nG71 P30 Q40 U0.2 W0.1 F0.2\nN30 G0 X60.\nG1 Z-20.\n\
+         X100. Z-40.\nN40 X130.\nG70 P30 Q40\n{b}M30\nO2000\n{c}M99\n",
+        a = moves(9000),
+        b = moves(9000),
+        c = moves(9000),
+    );
+    let looped = format!(
+        "O0001\nG99 G21 M3 S500 T0101\nG0 X130. Z5.\n#1=0\nWHILE[#1LT2]DO1\n{a}#1=#1+1\nEND1\n\
+         GOTO20\n{b}N20 G0 X130.\n{c}M30\n",
+        a = moves(9000),
+        b = moves(100),
+        c = moves(9000),
+    );
+    for (text, macros) in [
+        (&plain, None),
+        (&plain, Some(macro_b::Dialect::Fanuc)),
+        (&looped, Some(macro_b::Dialect::Fanuc)),
+    ] {
+        for block_delete in [false, true] {
+            let options = gcode::ReadOptions {
+                macros,
+                ..Default::default()
+            };
+            let opts = Options {
+                block_delete,
+                macros: macros.map(|_| macro_b::Options::fanuc()),
+                ..Default::default()
+            };
+            let machine = Machine::for_control(expander::Control::FanucA);
+            let read = expand(&gcode::parse_with(text, options).unwrap(), &machine, &opts);
+            let held = expand(&gcode::parse_held(text, options).unwrap(), &machine, &opts);
+            assert!(read.alarms.is_empty(), "{:?}", read.alarms);
+            assert!(read.segments.len() > 9000 * 2);
+            assert!(read == held, "{macros:?} {block_delete}");
+        }
+    }
+}

@@ -317,6 +317,11 @@ impl Blocks {
         (0..self.len()).filter(move |&i| self.seq(i) == Some(n))
     }
 
+    /// Whether each block is read again from the text where it is needed (else held).
+    pub fn reads_again(&self) -> bool {
+        matches!(self.0, Repr::Read(_))
+    }
+
     /// Whether some block holds macro B ([`Block::has_macro`]), without reading them again.
     pub fn has_macro(&self) -> bool {
         match &self.0 {

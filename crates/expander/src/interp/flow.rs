@@ -16,6 +16,7 @@
 //!
 //! Macro B statements and G65 run through `macros.rs` (`Interp::step`).
 
+use super::ahead::Ahead;
 use super::{alarm, Interp};
 use crate::words::{whole_in, Words};
 use crate::{Control, Diagnostic, Span};
@@ -113,6 +114,22 @@ impl Interp<'_> {
         depth: u32,
     ) -> Result<Exit, Diagnostic> {
         let blocks = &program.programs[index].blocks;
+        std::thread::scope(|s| {
+            let mut ahead = Ahead::start(s, blocks, start);
+            self.run_from(program, index, start, depth, &mut ahead)
+        })
+    }
+
+    /// [`Interp::run`], with the blocks read `ahead` where there are.
+    fn run_from(
+        &mut self,
+        program: &Program,
+        index: usize,
+        start: usize,
+        depth: u32,
+        ahead: &mut Option<Ahead>,
+    ) -> Result<Exit, Diagnostic> {
+        let blocks = &program.programs[index].blocks;
         let mut i = start;
         'blocks: while i < blocks.len() {
             if self.opts.block_delete && blocks.block_delete(i) {
@@ -123,7 +140,12 @@ impl Interp<'_> {
             if self.out.blocks > self.opts.max_blocks {
                 return Err(self.budget_alarm(blocks.at(i).span, program));
             }
-            match self.step(program, index, i)? {
+            let read = ahead.as_mut().and_then(|a| a.take(i));
+            if read.is_none() {
+                // gone back before the blocks read ahead: read where they run from now on
+                *ahead = None;
+            }
+            match self.step(program, index, i, read)? {
                 Flow::Next => i += 1,
                 Flow::Jump(j) => i = j,
                 Flow::End => return Ok(Exit::End),

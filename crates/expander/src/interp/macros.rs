@@ -16,6 +16,7 @@ use macro_b::{
     Axis, Body, ErrorKind, Expr, Line, Locals, MacroError, MacroProgram, MacroState, Position,
     StmtKind, System, Value,
 };
+use std::borrow::Cow;
 
 /// The macro side of a run.
 pub(crate) struct Macros {
@@ -539,36 +540,40 @@ impl Interp<'_> {
         }
     }
 
-    /// Run block `i` of O program `index`: a macro statement, a `G65` call, or an NC block
-    /// with its expressions evaluated. Without custom macro B, just the block.
+    /// Run block `i` of O program `index` (`read`: the block, when read already): a macro
+    /// statement, a `G65` call, or an NC block with its expressions evaluated. Without custom
+    /// macro B, just the block.
     pub(super) fn step(
         &mut self,
         program: &Program,
         index: usize,
         i: usize,
+        read: Option<Block>,
     ) -> Result<Flow, Diagnostic> {
+        let sub = &program.programs[index];
+        let b = read.map_or_else(|| sub.blocks.at(i), Cow::Owned);
         let Some(mut m) = self.macros.take() else {
-            let sub = &program.programs[index];
-            return self.block(sub, &sub.blocks.at(i), i);
+            return self.block(sub, &b, i);
         };
         let flow = match m.base(program) {
-            Ok(base) => self.step_with(&mut m, &program.programs[index], base + index, i),
+            Ok(base) => self.step_with(&mut m, sub, &b, base + index, i),
             Err(e) => Err(diagnostic(e)),
         };
         self.macros = Some(m);
         flow
     }
 
+    /// [`Interp::step`] with macro B: block `b`, block `i` of `sub`, O program `index` of
+    /// the programs macro B knows.
     fn step_with(
         &mut self,
         m: &mut Macros,
         sub: &Subprogram,
+        b: &Block,
         index: usize,
         i: usize,
     ) -> Result<Flow, Diagnostic> {
         m.counts[index][i] += 1;
-        let b = sub.blocks.at(i);
-        let b: &Block = &b;
         let increment = self.increment();
         let span = b.span;
         if let Some(stmt) = &b.stmt {

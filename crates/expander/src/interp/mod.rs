@@ -9,6 +9,7 @@
 //! compensation buffer in `crate::tnrc`.
 
 mod actions;
+mod ahead;
 mod corner;
 mod cycle;
 mod dialect_words;
