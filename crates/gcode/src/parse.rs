@@ -97,17 +97,13 @@ pub fn parse_held(source: &str, options: ReadOptions) -> Result<Program, ParseEr
 
 /// Read the one block that starts at `start` again (see [`Blocks::get`]).
 pub(crate) fn read_block(text: &str, options: ReadOptions, start: BlockStart) -> Block {
+    Reader::new(text, options, Mode::One).read_again(start)
+}
+
+/// Read the blocks that start at `starts` again, with one reader (see [`Blocks::read`]).
+pub(crate) fn read_blocks(text: &str, options: ReadOptions, starts: &[BlockStart]) -> Vec<Block> {
     let mut r = Reader::new(text, options, Mode::One);
-    r.pos = start.offset as usize;
-    r.line = start.line;
-    r.column = start.column - 1;
-    match (r.read(), r.found) {
-        (Ok(()), Some(b)) => b,
-        (read, _) => panic!(
-            "the block at line {}, column {} read differently the second time: {read:?}",
-            start.line, start.column
-        ),
-    }
+    starts.iter().map(|&start| r.read_again(start)).collect()
 }
 
 /// Spans hold byte offsets as `u32` (a million-line program holds millions of them), so a
@@ -1222,6 +1218,24 @@ impl<'a> Reader<'a> {
         Ok(())
     }
 
+    /// The block that starts at `start`, read again ([`Mode::One`]); the reader is as new
+    /// for it, whatever it read before.
+    fn read_again(&mut self, start: BlockStart) -> Block {
+        self.pos = start.offset as usize;
+        self.line = start.line;
+        self.column = start.column - 1;
+        self.no_prose_before = 0;
+        self.at_block_start = true;
+        self.program.notes.clear();
+        match (self.read(), self.found.take()) {
+            (Ok(()), Some(b)) => b,
+            (read, _) => panic!(
+                "the block at line {}, column {} read differently the second time: {read:?}",
+                start.line, start.column
+            ),
+        }
+    }
+
     /// A plain block — address letters with numbers, spaces between — read in one go (most
     /// blocks of a CAM program are plain, and the character loop is a third of a run). It
     /// leaves the block's words read and the reader at the block's end (`\n`, `;` or the end
@@ -1866,6 +1880,8 @@ mod tests {
                 if let Ok(p) = read {
                     assert!(p.block_count() > 0, "{text:?}");
                     for sub in &p.programs {
+                        // one reader for all, as a chunk read ahead is
+                        assert_eq!(sub.blocks.read(0..sub.blocks.len()), sub.blocks.all());
                         for (i, b) in sub.blocks.iter().enumerate() {
                             assert_eq!(sub.blocks.seq(i), b.seq);
                             assert_eq!(sub.blocks.block_delete(i), b.block_delete);

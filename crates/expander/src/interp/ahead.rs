@@ -1,7 +1,6 @@
 //! The blocks of a long O program read again on another thread, ahead of the run.
 
 use gcode::{Block, Blocks};
-use std::borrow::Cow;
 use std::sync::mpsc::{sync_channel, Receiver};
 use std::thread::Scope;
 
@@ -40,8 +39,7 @@ impl Ahead {
             let mut i = start;
             while i < blocks.len() {
                 let end = (i + CHUNK).min(blocks.len());
-                let chunk: Vec<Block> = blocks.range(i..end).map(Cow::into_owned).collect();
-                if tx.send(chunk).is_err() {
+                if tx.send(blocks.read(i..end)).is_err() {
                     // the run has dropped the reading ahead
                     return;
                 }
