@@ -140,11 +140,11 @@ impl Interp<'_> {
             if self.out.blocks > self.opts.max_blocks {
                 return Err(self.budget_alarm(blocks.at(i).span, program));
             }
-            let read = ahead.as_mut().and_then(|a| a.take(i));
-            if read.is_none() {
+            if ahead.as_mut().is_some_and(|a| a.get(i).is_none()) {
                 // gone back before the blocks read ahead: read where they run from now on
                 *ahead = None;
             }
+            let read = ahead.as_mut().and_then(|a| a.get(i));
             match self.step(program, index, i, read)? {
                 Flow::Next => i += 1,
                 Flow::Jump(j) => i = j,

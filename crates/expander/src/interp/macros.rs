@@ -548,10 +548,10 @@ impl Interp<'_> {
         program: &Program,
         index: usize,
         i: usize,
-        read: Option<Block>,
+        read: Option<&Block>,
     ) -> Result<Flow, Diagnostic> {
         let sub = &program.programs[index];
-        let b = read.map_or_else(|| sub.blocks.at(i), Cow::Owned);
+        let b = read.map_or_else(|| sub.blocks.at(i), Cow::Borrowed);
         let Some(mut m) = self.macros.take() else {
             return self.block(sub, &b, i);
         };
