@@ -905,6 +905,49 @@ fn a_library_macro_program_runs_its_own_loops() {
     }
 }
 
+/// An alarm inside a macro statement or expression of a `--lib` program is shown in that
+/// file, at its line and column (its spans were left in the main file's range before).
+#[test]
+fn a_library_macro_alarm_is_shown_in_its_own_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let lib = dir.path().join("lib");
+    std::fs::create_dir(&lib).unwrap();
+    let main = dir.path().join("main.nc");
+    std::fs::write(
+        &main,
+        "O0001\nG99 G21 M3 S500 T0101\nG0 X60. Z2.\nG65 P1000 A2.\nM30\n",
+    )
+    .unwrap();
+    for (body, at, shown) in [
+        ("#2 = #1 / 0\nM99\n", "O1000.nc:2:6", "2 │ #2 = #1 / 0"),
+        (
+            "IF [#1 / 0 GT 1] GOTO 5\nM99\n",
+            "O1000.nc:2:5",
+            "2 │ IF [#1 / 0 GT 1] GOTO 5",
+        ),
+        (
+            "#2 = 0\nG1 X[#1 / #2] F0.2\nM99\n",
+            "O1000.nc:3:6",
+            "3 │ G1 X[#1 / #2] F0.2",
+        ),
+    ] {
+        std::fs::write(lib.join("O1000.nc"), format!("O1000\n{body}")).unwrap();
+        let out = latsim(&[
+            "check",
+            main.to_str().unwrap(),
+            "--control",
+            "fanuc-a",
+            "--lib",
+            lib.to_str().unwrap(),
+        ]);
+        assert_eq!(out.code, 1, "{}", out.stderr);
+        assert!(out.stderr.contains("division by zero"), "{}", out.stderr);
+        assert!(out.stderr.contains(at), "{at}: {}", out.stderr);
+        assert!(out.stderr.contains(shown), "{shown}: {}", out.stderr);
+        assert!(!out.stderr.contains("main.nc:"), "{}", out.stderr);
+    }
+}
+
 /// The parts counters #3901/#3902 (spec/dialects.md §5.7): 0 at the start, set by the
 /// program; a loop on them runs its count. The modal groups 2 (G96/G97), 3
 /// (G90/G91) and 7 (G40/G41/G42) read the interpreter's state.

@@ -95,6 +95,12 @@ impl Block {
         }
         for w in &mut *self.words {
             w.span.offset += by;
+            if let Some(e) = &mut w.expr {
+                e.shift_spans(by);
+            }
+        }
+        if let Some(s) = &mut self.stmt {
+            s.shift_spans(by);
         }
     }
 }

@@ -232,6 +232,23 @@ impl Expr {
             span,
         }
     }
+
+    /// Add `by` to the byte offset of every span in it (a file placed after another).
+    pub fn shift_spans(&mut self, by: u32) {
+        self.span.offset += by;
+        match &mut self.kind {
+            ExprKind::Num(_) | ExprKind::Var(VarRef::Direct(_)) => {}
+            ExprKind::Var(VarRef::Indirect(e))
+            | ExprKind::Group(e)
+            | ExprKind::Neg(e)
+            | ExprKind::Pos(e) => e.shift_spans(by),
+            ExprKind::Binary(_, a, b) => {
+                a.shift_spans(by);
+                b.shift_spans(by);
+            }
+            ExprKind::Call(_, args) => args.iter_mut().for_each(|a| a.shift_spans(by)),
+        }
+    }
 }
 
 impl fmt::Display for VarRef {
@@ -352,6 +369,44 @@ pub struct Stmt {
     pub kind: StmtKind,
     /// Where it is written.
     pub span: Span,
+}
+
+impl Stmt {
+    /// Add `by` to the byte offset of every span in it (a file placed after another).
+    pub fn shift_spans(&mut self, by: u32) {
+        self.span.offset += by;
+        match &mut self.kind {
+            StmtKind::Assign {
+                target,
+                target_span,
+                value,
+                ..
+            } => {
+                if let VarRef::Indirect(e) = target {
+                    e.shift_spans(by);
+                }
+                target_span.offset += by;
+                value.shift_spans(by);
+            }
+            StmtKind::IfGoto { cond, target } => {
+                cond.shift_spans(by);
+                target.shift_spans(by);
+            }
+            StmtKind::IfThen { cond, then } => {
+                cond.shift_spans(by);
+                then.shift_spans(by);
+            }
+            StmtKind::IfThenBlock {
+                cond, text_span, ..
+            } => {
+                cond.shift_spans(by);
+                text_span.offset += by;
+            }
+            StmtKind::IfBlock { cond } | StmtKind::While { cond, .. } => cond.shift_spans(by),
+            StmtKind::Goto { target } => target.shift_spans(by),
+            StmtKind::Else | StmtKind::EndIf | StmtKind::Do { .. } | StmtKind::End { .. } => {}
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1115,6 +1170,41 @@ pub fn starts_statement(text: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Shifting a statement's spans is reading it further on in the text: every kind, with
+    /// indirect variables, groups, signs, functions and a Haas `THEN` block.
+    #[test]
+    fn shifted_statements_are_statements_read_further_on() {
+        let at = |offset: u32| Span {
+            line: 3,
+            column: 1,
+            offset,
+            len: 0,
+        };
+        let fanuc = Options::fanuc();
+        let haas = Options::haas();
+        for (text, options) in [
+            ("#[#1 + 1] = -SIN[#2] * [#3 - 1] (note)", &fanuc),
+            ("IF [#1 GT +2] GOTO #[#4]", &fanuc),
+            ("IF [#1 EQ 0] THEN #5 = ATAN[#1]/[2]", &fanuc),
+            ("IF [#1 EQ 0] THEN G0 X1.", &haas),
+            ("IF [#1 NE 0] THEN", &haas),
+            ("ELSE", &haas),
+            ("ENDIF", &haas),
+            ("WHILE [#1 LT 3] DO1", &fanuc),
+            ("DO2", &fanuc),
+            ("END1", &fanuc),
+            ("GOTO [#1 + 10]", &fanuc),
+        ] {
+            let mut shifted = parse_stmt(text, at(0), options).unwrap();
+            shifted.shift_spans(1000);
+            assert_eq!(
+                shifted,
+                parse_stmt(text, at(1000), options).unwrap(),
+                "{text}"
+            );
+        }
+    }
 
     fn p(s: &str) -> Expr {
         parse_expr(s, Span::default()).unwrap_or_else(|e| panic!("{s}: {e} at {}", e.span))
