@@ -1293,29 +1293,10 @@ impl<'a> Reader<'a> {
             }
             let letter = char::from(b.to_ascii_uppercase());
             let start = i + 1;
-            let mut end = start;
-            while end < bytes.len()
-                && end - start < MAX_NUMBER_CHARS
-                && matches!(bytes[end], b'0'..=b'9' | b'.' | b'+' | b'-')
-            {
-                end += 1;
-            }
-            if end - start == MAX_NUMBER_CHARS {
-                return false;
-            }
-            let text = &self.src[start..end];
-            let Some((value, has_point)) = parse_number(text) else {
+            let Some((len, value, has_point)) = plain_number(&bytes[start..]) else {
                 return false;
             };
-            let whole_digits = text
-                .bytes()
-                .take_while(|&b| b != b'.')
-                .skip_while(|&b| b == b'+' || b == b'-')
-                .skip_while(|&b| b == b'0')
-                .count();
-            if whole_digits > MAX_WHOLE_DIGITS {
-                return false;
-            }
+            let end = start + len;
             let first = span_at(self.line, i);
             let last = span_at(self.line, end - 1);
             let span = first.to(last);
@@ -1365,6 +1346,50 @@ fn whole(value: f64, has_point: bool, span: Span, letter: char) -> Result<u32, P
     Ok(value as u32)
 }
 
+/// The exact powers of ten of [`parse_number`]'s fast path.
+const POW10: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// The number at the start of `bytes` as a plain block writes it, read in one pass: an
+/// optional sign, digits with at most one point, fewer than [`MAX_NUMBER_CHARS`]
+/// characters and at most [`MAX_WHOLE_DIGITS`] digits before the point (leading zeros
+/// aside), ended by anything but a digit, point or sign, with a value on
+/// [`parse_number`]'s fast path. Its length, value (the one `parse_number` gives) and
+/// whether a point was written; `None` for anything else, which the character loop reads.
+fn plain_number(bytes: &[u8]) -> Option<(usize, f64, bool)> {
+    let mut i = usize::from(matches!(bytes.first(), Some(b'+' | b'-')));
+    let (mut mantissa, mut digits, mut decimals, mut point, mut whole) =
+        (0u64, 0usize, 0usize, false, 0usize);
+    while let Some(&b) = bytes.get(i) {
+        match b {
+            b'0'..=b'9' => {
+                if !point && (whole > 0 || b != b'0') {
+                    whole += 1;
+                }
+                // fewer than 20 characters: at most 19 digits, below u64::MAX
+                mantissa = mantissa * 10 + u64::from(b - b'0');
+                digits += 1;
+                decimals += usize::from(point);
+            }
+            b'.' if !point => point = true,
+            b'.' | b'+' | b'-' => return None,
+            _ => break,
+        }
+        i += 1;
+        if i >= MAX_NUMBER_CHARS {
+            return None;
+        }
+    }
+    if digits == 0 || whole > MAX_WHOLE_DIGITS || mantissa >= 1 << 53 {
+        return None;
+    }
+    let value = mantissa as f64 / POW10[decimals];
+    let value = if bytes[0] == b'-' { -value } else { value };
+    Some((i, value, point))
+}
+
 /// `[+-]? (digits [. digits*] | . digits)`; returns the value and whether a point was written.
 fn parse_number(text: &str) -> Option<(f64, bool)> {
     let bytes = text.as_bytes();
@@ -1395,10 +1420,6 @@ fn parse_number(text: &str) -> Option<(f64, bool)> {
     // Clinger's fast path: an integer below 2^53 over an exact power of ten is one
     // correctly rounded division, the very value `str::parse` returns (a million-line
     // program has millions of numbers, and `parse` was a third of reading them)
-    const POW10: [f64; 23] = [
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-        1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
-    ];
     if mantissa < 1 << 53 && digits <= 19 && decimals <= 22 {
         let value = mantissa as f64 / POW10[decimals as usize];
         let value = if bytes[0] == b'-' { -value } else { value };
@@ -1947,6 +1968,75 @@ mod tests {
                     let held = parse_held(text, options);
                     let read = parse_with(text, options);
                     assert_eq!(read, held, "{text:?} {macros:?}");
+                }
+            }
+        }
+    }
+
+    /// [`plain_number`] reads what [`parse_number`] reads from the same characters, or
+    /// leaves it to the character loop: every string of up to 5 characters of `0 5 . + - X`,
+    /// and long ones at the limits.
+    #[test]
+    fn plain_numbers_read_as_parse_number_reads_them() {
+        let alphabet = [b'0', b'5', b'.', b'+', b'-', b'X'];
+        let mut texts: Vec<Vec<u8>> = vec![vec![]];
+        for len in 1..=5 {
+            let mut more = vec![];
+            for t in texts.iter().filter(|t| t.len() == len - 1) {
+                for &c in &alphabet {
+                    let mut u = t.clone();
+                    u.push(c);
+                    more.push(u);
+                }
+            }
+            texts.extend(more);
+        }
+        for long in [
+            "123456789.123",
+            "1234567890.",
+            "0001234567.5",
+            "9007199254740991",
+            "9007199254740992",
+            "-1234567.8901234",
+            "12345678901234567.5",
+            "1234567890123456789",
+            "-.000000000000000001",
+        ] {
+            texts.push(long.as_bytes().to_vec());
+        }
+        for t in &texts {
+            let scanned = t
+                .iter()
+                .take_while(|b| matches!(b, b'0'..=b'9' | b'.' | b'+' | b'-'))
+                .count();
+            let text = std::str::from_utf8(&t[..scanned]).unwrap();
+            let reference = parse_number(text);
+            let whole = text
+                .bytes()
+                .take_while(|&b| b != b'.')
+                .skip_while(|&b| b == b'+' || b == b'-')
+                .skip_while(|&b| b == b'0')
+                .count();
+            match plain_number(t) {
+                Some((len, value, point)) => {
+                    assert_eq!(len, scanned, "{text}");
+                    let (v, p) = reference.unwrap_or_else(|| panic!("{text}"));
+                    assert_eq!((value.to_bits(), point), (v.to_bits(), p), "{text}");
+                    assert!(
+                        whole <= MAX_WHOLE_DIGITS && scanned < MAX_NUMBER_CHARS,
+                        "{text}"
+                    );
+                }
+                None => {
+                    let digits: String = text.chars().filter(char::is_ascii_digit).collect();
+                    let slow = digits.parse::<u128>().is_ok_and(|m| m >= 1 << 53);
+                    assert!(
+                        reference.is_none()
+                            || whole > MAX_WHOLE_DIGITS
+                            || scanned >= MAX_NUMBER_CHARS
+                            || slow,
+                        "{text}"
+                    );
                 }
             }
         }
