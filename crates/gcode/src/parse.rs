@@ -1890,29 +1890,22 @@ mod tests {
             "O0002\nIF [#1 EQ 0] THEN G0 X1.\nG65 P9010 A1. I2. I3.\nM30\nO9010\nG0 X#1\nM99\n",
         ];
         for text in texts {
-            for macros in [None, Some(Dialect::Fanuc), Some(Dialect::Haas)] {
-                let options = ReadOptions {
-                    decimal_comma: false,
-                    macros,
-                };
-                let held = parse_held(text, options);
-                let read = parse_with(text, options);
-                assert_eq!(read, held, "{text:?} {macros:?}");
-                if let Ok(p) = read {
-                    assert!(p.block_count() > 0, "{text:?}");
-                    for sub in &p.programs {
-                        // one reader for all, as a chunk read ahead is
-                        assert_eq!(sub.blocks.read(0..sub.blocks.len()), sub.blocks.all());
-                        for (i, b) in sub.blocks.iter().enumerate() {
-                            assert_eq!(sub.blocks.seq(i), b.seq);
-                            assert_eq!(sub.blocks.block_delete(i), b.block_delete);
-                            assert_eq!(sub.blocks.ends_program(i), b.ends_program());
-                        }
-                        assert_eq!(
-                            sub.blocks.has_macro(),
-                            sub.blocks.iter().any(|b| b.has_macro())
-                        );
+            let read = read_as_held(text);
+            assert!(!read.is_empty(), "{text:?}");
+            for p in read {
+                assert!(p.block_count() > 0, "{text:?}");
+                for sub in &p.programs {
+                    // one reader for all, as a chunk read ahead is
+                    assert_eq!(sub.blocks.read(0..sub.blocks.len()), sub.blocks.all());
+                    for (i, b) in sub.blocks.iter().enumerate() {
+                        assert_eq!(sub.blocks.seq(i), b.seq);
+                        assert_eq!(sub.blocks.block_delete(i), b.block_delete);
+                        assert_eq!(sub.blocks.ends_program(i), b.ends_program());
                     }
+                    assert_eq!(
+                        sub.blocks.has_macro(),
+                        sub.blocks.iter().any(|b| b.has_macro())
+                    );
                 }
             }
         }
@@ -1959,18 +1952,27 @@ mod tests {
             "G1 X1",
         ];
         for text in texts {
-            for macros in [None, Some(Dialect::Fanuc), Some(Dialect::Haas)] {
-                for decimal_comma in [false, true] {
-                    let options = ReadOptions {
-                        decimal_comma,
-                        macros,
-                    };
-                    let held = parse_held(text, options);
-                    let read = parse_with(text, options);
-                    assert_eq!(read, held, "{text:?} {macros:?}");
-                }
+            read_as_held(text);
+        }
+    }
+
+    /// `text` read under every option set, read again from the text ([`parse_with`]) and
+    /// held by the reference reading ([`parse_held`]): the same blocks, notes or error. The
+    /// programs read.
+    fn read_as_held(text: &str) -> Vec<Program> {
+        let mut programs = vec![];
+        for macros in [None, Some(Dialect::Fanuc), Some(Dialect::Haas)] {
+            for decimal_comma in [false, true] {
+                let options = ReadOptions {
+                    decimal_comma,
+                    macros,
+                };
+                let read = parse_with(text, options);
+                assert_eq!(read, parse_held(text, options), "{text:?} {options:?}");
+                programs.extend(read.ok());
             }
         }
+        programs
     }
 
     /// [`plain_number`] reads what [`parse_number`] reads from the same characters, or
