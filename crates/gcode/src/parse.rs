@@ -1237,7 +1237,7 @@ impl<'a> Reader<'a> {
     }
 
     /// A plain block — address letters with numbers, spaces between — read in one go (most
-    /// blocks of a CAM program are plain, and the character loop is a third of a run). It
+    /// blocks of a CAM program are plain, and the character loop was a third of a run). It
     /// leaves the block's words read and the reader at the block's end (`\n`, `;` or the end
     /// of the text) for the loop to end the block. A block with anything else (a comment,
     /// `/`, `,`, `O`, a macro expression, a number in pieces, an error) is left whole to the
