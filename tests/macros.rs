@@ -905,6 +905,16 @@ fn a_library_macro_program_runs_its_own_loops() {
     }
 }
 
+/// Under macro B a G70 evaluates its finishing shape's expressions first; a shape named
+/// backwards (Q's block before P's) is the cycle's alarm, not a panic (fuzz, found after a
+/// change of that loop).
+#[test]
+fn a_finishing_shape_named_backwards_is_an_alarm_with_macro_b() {
+    let tp = run("O0040\nN20 Z100.\nG96 S220 M03\nG00 X52. Z2.\nN10 X#103\nG70 P10 Q20\nM30\n");
+    assert_eq!(tp.alarms.len(), 1, "{:?}", tp.alarms);
+    assert_eq!(tp.alarms[0].code, "LS-SHAPE-ORDER");
+}
+
 /// An alarm inside a macro statement or expression of a `--lib` program is shown in that
 /// file, at its line and column (its spans were left in the main file's range before).
 #[test]

@@ -379,7 +379,11 @@ impl Macros {
         let (Some(p), Some(q)) = (seq('P'), seq('Q')) else {
             return Ok(());
         };
-        for (k, slot) in (p..=q).zip(&mut work[p..=q]) {
+        // (a Q before P names no shape: the cycle's alarm, not this loop's)
+        let Some(shape) = work.get_mut(p..=q) else {
+            return Ok(());
+        };
+        for (k, slot) in (p..=q).zip(shape) {
             let original = sub.blocks.at(k);
             if original.has_macro() {
                 self.evaluate(&original, slot, increment, sys)?;
