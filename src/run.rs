@@ -72,6 +72,11 @@ fn outputs(args: &RunArgs, stem: &str) -> Vec<(PathBuf, &'static str)> {
     .collect()
 }
 
+/// Whether a report of this kind shows the report picture (and so its toolpath).
+fn shows_picture(kind: &str) -> bool {
+    matches!(kind, "svg" | "png" | "html")
+}
+
 /// The bytes of each report `targets` asks for, in its order, each made on a thread of its
 /// own. The picture is drawn once, on this thread, for the SVG, the PNG and the HTML page
 /// that show it (drawn on a new thread, its million-move scratch memory came from a new
@@ -83,7 +88,7 @@ fn render_all(
 ) -> Vec<Result<Vec<u8>, String>> {
     let picture = targets
         .iter()
-        .any(|(_, kind)| matches!(*kind, "svg" | "png" | "html"))
+        .any(|(_, kind)| shows_picture(kind))
         .then(|| render::Picture::draw(report));
     let picture = || {
         picture
@@ -326,8 +331,9 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         }
     };
     // the HTML player's snapshots cost a second cut of every sweep: only for an HTML report
-    let html = outputs(args, stem).iter().any(|(_, kind)| *kind == "html");
-    let pictures = outputs(args, stem).iter().any(|(_, kind)| *kind != "json");
+    let targets = outputs(args, stem);
+    let html = targets.iter().any(|(_, kind)| *kind == "html");
+    let pictures = targets.iter().any(|(_, kind)| shows_picture(kind));
     let marks = if html {
         crate::report::snapshot_marks(segments.len())
     } else {
@@ -444,7 +450,6 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
 
     // Render every report first, then write them all to disk, then make them visible:
     // a failure anywhere leaves the previous reports as they were.
-    let targets = outputs(args, stem);
     let mut staged = vec![];
     for ((path, _), bytes) in targets
         .iter()
