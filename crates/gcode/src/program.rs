@@ -172,6 +172,16 @@ struct Reread {
     macros: bool,
 }
 
+impl Reread {
+    /// A block read again, with its spans where [`Program::shift_spans`] put the blocks.
+    fn shifted(&self, mut b: Block) -> Block {
+        if self.shift != 0 {
+            b.shift_spans(self.shift);
+        }
+        b
+    }
+}
+
 /// Where a block's first character stands, and what is asked of a block without reading
 /// it again: its N number, whether `/` was written, whether it ends the program.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -244,11 +254,7 @@ impl Blocks {
             Repr::Held(v) => v.get(i).map(Cow::Borrowed),
             Repr::Read(r) => {
                 let start = *r.starts.get(i)?;
-                let mut b = read_block(&r.text, r.options, start);
-                if r.shift != 0 {
-                    b.shift_spans(r.shift);
-                }
-                Some(Cow::Owned(b))
+                Some(Cow::Owned(r.shifted(read_block(&r.text, r.options, start))))
             }
         }
     }
@@ -288,15 +294,10 @@ impl Blocks {
     pub fn read(&self, range: std::ops::Range<usize>) -> Vec<Block> {
         match &self.0 {
             Repr::Held(v) => v[range].to_vec(),
-            Repr::Read(r) => {
-                let mut blocks = read_blocks(&r.text, r.options, &r.starts[range]);
-                if r.shift != 0 {
-                    for b in &mut blocks {
-                        b.shift_spans(r.shift);
-                    }
-                }
-                blocks
-            }
+            Repr::Read(r) => read_blocks(&r.text, r.options, &r.starts[range])
+                .into_iter()
+                .map(|b| r.shifted(b))
+                .collect(),
         }
     }
 
