@@ -38,17 +38,25 @@ use std::sync::Mutex;
 /// rapid shares with an earlier cut (a few 10⁻⁵ mm² for a 100 mm bar: ~0.1 nm grid step).
 pub const CRASH_MIN_AREA: f64 = 1e-6;
 
-/// Sweeps subtracted per boolean call in a tile (measured with callgrind on the pipeline
-/// profiling bench: 2 / 4 / 8 / 16 give 4.42 / 3.89 / 4.27 / 5.13·10⁹ instructions at 2·10⁴
-/// moves; consecutive sweeps of tiny moves overlap pairwise, so the cost grows with k²).
-const BATCH: usize = 4;
+/// Sweeps subtracted per boolean call in a tile. Consecutive sweeps overlap pairwise, so a
+/// call's cost grows with k². Chosen with [`MAX_TILE_VERTICES`] on the stock bench at 10⁵
+/// moves (roughing / taper / G73, s, tile 64): batch 2 0.97 / 0.85 / 3.53, 3 1.04 / 0.92 /
+/// 3.86, 4 1.03 / 0.93 / 4.14; 8 and 16 took 1.8 and 23 s on the roughing (its passes lie
+/// 0.00013 mm apart: the splitter meets nearly coincident edges k² times). With 256-vertex
+/// tiles, 4 had been best on the tiny moves of the pipeline bench (4.42 / 3.89·10⁹
+/// instructions for 2 / 4); the whole 10⁶-move contour run is the same with 2 (`farm-bench`
+/// A/B 1.00), the 10⁶ grooving run 0.90.
+const BATCH: usize = 2;
 /// Target width of a Z strip, mm (strips are the units of parallel work; complex stock is
 /// split further into tiles).
 const STRIP_WIDTH: f64 = 30.0;
 /// Upper bound on the number of strips.
 const MAX_STRIPS: usize = 64;
-/// A tile whose stock has more vertices than this is split in two.
-const MAX_TILE_VERTICES: usize = 256;
+/// A tile whose stock has more vertices than this is split in two. Smaller tiles make each
+/// boolean call smaller and the tree deeper: stock bench at 10⁵ moves, batch 2 (roughing /
+/// taper / G73 / contour, s): 256 1.41 / 0.93 / 4.55 / 0.024 (batch 4), 96 1.15 / 0.87 /
+/// 3.77 / 0.028, 64 0.97 / 0.85 / 3.53 / 0.029, 48 0.96 / 0.82 / 3.46 / 0.037.
+const MAX_TILE_VERTICES: usize = 64;
 /// Smallest tile side, mm.
 const MIN_TILE: f64 = 0.01;
 /// Segments handled between two progress reports (also bounds the sweeps held in memory).
