@@ -19,8 +19,8 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
-/// The extensions of program files (as `latsim run FOLDER` takes them).
-pub(crate) const NC_EXTENSIONS: [&str; 7] = ["nc", "cnc", "tap", "ngc", "iso", "txt", "gcode"];
+/// The extensions of program files (see [`is_program_file`]).
+const NC_EXTENSIONS: [&str; 7] = ["nc", "cnc", "tap", "ngc", "iso", "txt", "gcode"];
 /// Most entries one `--lib` folder may hold: more is not a folder of subprograms.
 const MAX_FILES: usize = 10_000;
 /// Most bytes read in all to find programs by their first program number.
@@ -71,7 +71,7 @@ impl Folders {
                     ));
                 }
                 let p = e.path();
-                if p.is_file() && (is_nc(&p) || number_in_name(&p).is_some()) {
+                if p.is_file() && is_program_file(&p) {
                     found.push(p);
                 }
             }
@@ -248,6 +248,12 @@ fn file_base(next_base: usize, len: usize) -> Option<u32> {
     let base = u32::try_from(next_base).ok()?;
     base.checked_add(u32::try_from(len).ok()?)?;
     Some(base)
+}
+
+/// A program file by its name: an NC extension, or a program number (`O1234`, `O01234`,
+/// with or without an NC extension: how DNC software and controls name their files).
+pub(crate) fn is_program_file(p: &Path) -> bool {
+    is_nc(p) || number_in_name(p).is_some()
 }
 
 fn is_nc(p: &Path) -> bool {

@@ -118,29 +118,43 @@ fn render_all(
     })
 }
 
-/// Program files to run: the files given, and the program files inside the folders given
-/// (by extension: nc cnc tap ngc iso txt gcode), sorted.
+/// Program files to run: the files given, and the program files directly inside the
+/// folders given ([`crate::library::is_program_file`]: an NC extension, or a program
+/// number for a name, as `O1234`), sorted. The subfolders a folder holds are not searched
+/// (a `lib` of subprograms must not run as main programs); each is named on stderr, so that
+/// none is passed over silently.
 fn program_files(paths: &[PathBuf]) -> Vec<PathBuf> {
-    const EXT: [&str; 7] = crate::library::NC_EXTENSIONS;
     let mut out = vec![];
     for p in paths {
-        if p.is_dir() {
-            let mut found: Vec<PathBuf> = std::fs::read_dir(p)
-                .into_iter()
-                .flatten()
-                .flatten()
-                .map(|e| e.path())
-                .filter(|f| {
-                    f.is_file()
-                        && f.extension()
-                            .and_then(|e| e.to_str())
-                            .is_some_and(|e| EXT.contains(&e.to_ascii_lowercase().as_str()))
-                })
-                .collect();
-            found.sort();
-            out.extend(found);
-        } else {
+        if !p.is_dir() {
             out.push(p.clone());
+            continue;
+        }
+        let entries: Vec<PathBuf> = std::fs::read_dir(p)
+            .into_iter()
+            .flatten()
+            .flatten()
+            .map(|e| e.path())
+            .collect();
+        let mut found: Vec<PathBuf> = entries
+            .iter()
+            .filter(|f| f.is_file() && crate::library::is_program_file(f))
+            .cloned()
+            .collect();
+        found.sort();
+        out.extend(found);
+        let mut folders: Vec<String> = entries
+            .iter()
+            .filter(|f| f.is_dir())
+            .filter_map(|f| f.file_name().map(|n| n.to_string_lossy().into_owned()))
+            .collect();
+        folders.sort();
+        if !folders.is_empty() {
+            eprintln!(
+                "note: subfolders of {} are not searched: {} (give a subfolder to run its programs)",
+                p.display(),
+                folders.join(", ")
+            );
         }
     }
     out

@@ -182,14 +182,20 @@ fn machine_profile_errors_point_at_the_line() {
 }
 
 /// Several programs (a folder and a file) run in parallel: one verdict line each, reports
-/// for each in --out, and the worst exit status.
+/// for each in --out, and the worst exit status. A folder gives the files with an NC
+/// extension and those named by a program number (`O0005`, no extension, as DNC software
+/// saves them); its subfolders are named on stderr, not searched.
 #[test]
 fn run_on_a_folder_prints_one_verdict_line_per_program() {
     let src = tempfile::tempdir().unwrap();
     for f in ["O0002.nc", "seed004-contour.nc"] {
         std::fs::copy(asset(&format!("programs/{f}")), src.path().join(f)).unwrap();
     }
+    std::fs::copy(asset("programs/O0002.nc"), src.path().join("O0005")).unwrap();
     std::fs::write(src.path().join("notes.md"), "not a program").unwrap();
+    std::fs::write(src.path().join("O12ab"), "not a program number").unwrap();
+    std::fs::create_dir(src.path().join("lib")).unwrap();
+    std::fs::write(src.path().join("lib/O9001.nc"), "G0 X20 Z-10\nM99\n").unwrap();
     let (_d, crash) = temp_program(
         "crash.nc",
         b"G99 M3 S500 T0101\nG0 X50 Z5\nG0 X20 Z-10\nM30\n",
@@ -208,18 +214,26 @@ fn run_on_a_folder_prints_one_verdict_line_per_program() {
     ]);
     assert_eq!(out.code, 1, "{}\n{}", out.stdout, out.stderr);
     let lines: Vec<&str> = out.stdout.lines().collect();
-    assert_eq!(lines.len(), 3, "{}", out.stdout);
+    assert_eq!(lines.len(), 4, "{}", out.stdout);
+    for clean in ["O0002.nc: CLEAN", "O0005: CLEAN"] {
+        assert!(
+            lines.iter().any(|l| l.starts_with(clean)),
+            "{clean}\n{}",
+            out.stdout
+        );
+    }
     assert!(
-        lines.iter().any(|l| l.starts_with("O0002.nc: CLEAN")),
+        out.stderr
+            .contains("are not searched: lib (give a subfolder to run its programs)"),
         "{}",
-        out.stdout
+        out.stderr
     );
     assert!(
         lines.iter().any(|l| l.starts_with("crash.nc: CRASH")),
         "{}",
         out.stdout
     );
-    for stem in ["O0002", "seed004-contour", "crash"] {
+    for stem in ["O0002", "O0005", "seed004-contour", "crash"] {
         assert!(
             out_dir.path().join(format!("{stem}.json")).exists(),
             "{stem}"
