@@ -3,7 +3,8 @@
 //! `cargo bench -p stock --bench removal -- [N ...]` (default N = 100000 1000000);
 //! `PATTERN=name` runs one pattern, `FEED_PATHS=0` sweeps feeds one by one
 //! (`SimOptions::feed_paths` off), `RING_AIR=0` tries rings on every tile their box
-//! overlaps (`SimOptions::ring_air` off); measure peak memory with `/usr/bin/time -v`. Patterns, on a
+//! overlaps (`SimOptions::ring_air` off), `COVER=0` sends every sweep to the boolean call
+//! (`SimOptions::cover` off); measure peak memory with `/usr/bin/time -v`. Patterns, on a
 //! Φ125 × 110 bar (`g73` on Φ190 × 110):
 //! - `grooves`: G75-like pecking across the bar with a 3 mm blade (grooves stepped by
 //!   2.5 mm so they overlap), pecks fed down and retracted by rapid;
@@ -214,6 +215,7 @@ fn main() {
             let opts = SimOptions {
                 feed_paths: std::env::var("FEED_PATHS").map_or(true, |v| v != "0"),
                 ring_air: std::env::var("RING_AIR").map_or(true, |v| v != "0"),
+                cover: std::env::var("COVER").map_or(true, |v| v != "0"),
                 ..SimOptions::default()
             };
             let t = Instant::now();

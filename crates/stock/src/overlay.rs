@@ -171,6 +171,11 @@ impl IBox {
         ]
     }
 
+    /// True when the box holds no point.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.min[0] > self.max[0] || self.min[1] > self.max[1]
+    }
+
     /// True when the boxes share at least a point.
     pub(crate) fn overlaps(&self, o: &Self) -> bool {
         self.min[0] <= o.max[0]
@@ -224,6 +229,131 @@ pub(crate) fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
                 .iter()
                 .all(|p| ex * i64::from(p.y - a.y) - ey * i64::from(p.x - a.x) >= 0)
         })
+}
+
+/// A large axis-aligned box inside the convex counter-clockwise `poly` (EMPTY when none was
+/// found): a box that meets it meets the polygon, with no edge to test. The largest of the
+/// boxes spanned by two of four horizontal chords, at the bottom, a third and two thirds up
+/// and the top (by convexity the polygon holds the hull
+/// of two chords, so the overlap of their Z ranges between their heights), shrunk by a
+/// grid step, and kept only when its corners pass the exact test of every edge (which a
+/// polygon that snapping left a little reflex may fail). One pass over the edges; built
+/// for every sweep polygon, so kept cheap.
+pub(crate) fn inscribed_box(poly: &[IPt]) -> IBox {
+    const LEVELS: usize = 4;
+    let n = poly.len();
+    let b = IBox::of(poly.iter().copied());
+    if n < 3 || b.max[1] - b.min[1] < 4 || b.max[0] - b.min[0] < 4 {
+        return IBox::EMPTY;
+    }
+    let (lo, hi) = (f64::from(b.min[1]), f64::from(b.max[1]));
+    let ys: [f64; LEVELS] =
+        std::array::from_fn(|k| (lo + (hi - lo) * k as f64 / (LEVELS - 1) as f64).round());
+    // the chord at each height: the least and largest x of the polygon there
+    let mut chords = [(f64::INFINITY, f64::NEG_INFINITY); LEVELS];
+    for i in 0..n {
+        let (p, q) = (poly[i], poly[(i + 1) % n]);
+        let (py, qy) = (f64::from(p.y), f64::from(q.y));
+        let (px, qx) = (f64::from(p.x), f64::from(q.x));
+        for (&y, c) in ys.iter().zip(chords.iter_mut()) {
+            if (py - y) * (qy - y) > 0.0 {
+                continue;
+            }
+            let (l, r) = if py == qy {
+                (px.min(qx), px.max(qx))
+            } else {
+                let x = px + (y - py) * (qx - px) / (qy - py);
+                (x, x)
+            };
+            *c = (c.0.min(l), c.1.max(r));
+        }
+    }
+    let mut best = (0.0, IBox::EMPTY);
+    for i in 0..LEVELS {
+        for j in i + 1..LEVELS {
+            // shrunk a step from every side (the chords are rounded)
+            let x0 = chords[i].0.max(chords[j].0).ceil() + 1.0;
+            let x1 = chords[i].1.min(chords[j].1).floor() - 1.0;
+            let (y0, y1) = (ys[i] + 1.0, ys[j] - 1.0);
+            let area = (x1 - x0) * (y1 - y0);
+            if x1 > x0 && y1 > y0 && area > best.0 {
+                let c = IBox {
+                    min: [x0 as i32, y0 as i32],
+                    max: [x1 as i32, y1 as i32],
+                };
+                best = (area, c);
+            }
+        }
+    }
+    if best.1.is_empty() || !convex_contains(poly, &best.1.corners()) {
+        return IBox::EMPTY;
+    }
+    best.1
+}
+
+/// True when the part of the polygon `inner` inside the box `b` lies inside or on the
+/// convex counter-clockwise `outer` (closed sets; either may reach outside `b`). Exact: the
+/// corners of the hull of `inner ∩ b` are among `inner`'s vertices in `b`, `b`'s corners
+/// inside `inner`, and the points where `inner`'s edges cross `b`'s sides (rational: tested
+/// with the denominator multiplied out, in i128); a point passes when it lies on or left of
+/// every edge of `outer`, and the points that do make a convex set inside `outer` (all of
+/// it when `outer` is convex; its kernel when grid snapping left it a little reflex).
+pub(crate) fn convex_covers_in_box(outer: &[IPt], inner: &[IPt], b: &IBox) -> bool {
+    if outer.len() < 3 {
+        return false;
+    }
+    let w = |v: i32| i128::from(v);
+    // `(x, y)` = `(xn / d, yn / d)` with `d > 0` inside or on `outer`
+    let holds = |xn: i128, yn: i128, d: i128| {
+        (0..outer.len()).all(|i| {
+            let (a, e) = (outer[i], outer[(i + 1) % outer.len()]);
+            let (ex, ey) = (w(e.x) - w(a.x), w(e.y) - w(a.y));
+            ex * (yn - w(a.y) * d) - ey * (xn - w(a.x) * d) >= 0
+        })
+    };
+    let in_box = |p: IPt| p.x >= b.min[0] && p.x <= b.max[0] && p.y >= b.min[1] && p.y <= b.max[1];
+    if inner
+        .iter()
+        .any(|&p| in_box(p) && !holds(w(p.x), w(p.y), 1))
+    {
+        return false;
+    }
+    if inner.len() >= 3
+        && b.corners()
+            .iter()
+            .any(|&c| point_in_ring(c, inner) && !holds(w(c.x), w(c.y), 1))
+    {
+        return false;
+    }
+    // the crossings of each edge with the lines of the box's sides, where they lie on a side
+    (0..inner.len()).all(|i| {
+        let (p, q) = (inner[i], inner[(i + 1) % inner.len()]);
+        // axis 0: the sides x = const, the crossing's y from the edge; axis 1 the other way
+        [0usize, 1].iter().all(|&axis| {
+            let (pa, qa) = if axis == 0 { (p.x, q.x) } else { (p.y, q.y) };
+            let (po, qo) = if axis == 0 { (p.y, q.y) } else { (p.x, q.x) };
+            let d = w(qa) - w(pa);
+            [b.min[axis], b.max[axis]].iter().all(|&line| {
+                if d == 0 || line < pa.min(qa) || line > pa.max(qa) {
+                    return true;
+                }
+                // the other coordinate: po + (qo - po)(line - pa) / d, over a positive d
+                let (num, den) = ((w(qo) - w(po)) * (w(line) - w(pa)), d);
+                let (num, den) = if den < 0 { (-num, -den) } else { (num, den) };
+                let other = w(po) * den + num;
+                let (lo, hi) = (w(b.min[1 - axis]) * den, w(b.max[1 - axis]) * den);
+                if other < lo || other > hi {
+                    return true;
+                }
+                let line = w(line) * den;
+                if axis == 0 {
+                    holds(line, other, den)
+                } else {
+                    holds(other, line, den)
+                }
+            })
+        })
+    })
 }
 
 /// Closed segments [a, b] and [c, d] share a point.
@@ -455,4 +585,172 @@ pub enum BoolOp {
     Difference,
     /// (a − b) ∪ (b − a)
     Xor,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ring_air::tests::Rng;
+
+    /// A random convex counter-clockwise polygon on a coarse grid (touching and collinear
+    /// cases are frequent), or fewer than three points.
+    fn random_hull(rng: &mut Rng, span: i64) -> Vec<IPt> {
+        let pts: Vec<P> = (0..6)
+            .map(|_| [rng.next(span) as f64, rng.next(span) as f64])
+            .collect();
+        crate::geom::convex_hull(&pts)
+            .iter()
+            .map(|p| IPt::new(p[0] as i32, p[1] as i32))
+            .collect()
+    }
+
+    fn random_box(rng: &mut Rng, span: i64) -> IBox {
+        let (a, b, c, d) = (
+            rng.next(span),
+            rng.next(span),
+            rng.next(span),
+            rng.next(span),
+        );
+        IBox {
+            min: [a.min(c) as i32, b.min(d) as i32],
+            max: [a.max(c) as i32, b.max(d) as i32],
+        }
+    }
+
+    /// A rational point `(x / d, y / d)`, `d > 0`.
+    type Q = (i128, i128, i128);
+
+    /// Sutherland–Hodgman in exact rationals: the convex `poly` clipped to the box.
+    fn clip_exact(poly: &[IPt], b: &IBox) -> Vec<Q> {
+        let mut out: Vec<Q> = poly
+            .iter()
+            .map(|p| (i128::from(p.x), i128::from(p.y), 1))
+            .collect();
+        // (axis, bound, keep when the coordinate is at least the bound)
+        let planes = [
+            (0, b.min[0], true),
+            (0, b.max[0], false),
+            (1, b.min[1], true),
+            (1, b.max[1], false),
+        ];
+        for (axis, bound, keep_above) in planes {
+            let coord = |q: &Q| if axis == 0 { q.0 } else { q.1 };
+            // sign of (coordinate - bound), times d > 0
+            let side = |q: &Q| {
+                let v = coord(q) - i128::from(bound) * q.2;
+                if keep_above {
+                    v
+                } else {
+                    -v
+                }
+            };
+            let input = std::mem::take(&mut out);
+            for i in 0..input.len() {
+                let (p, q) = (input[i], input[(i + 1) % input.len()]);
+                let (sp, sq) = (side(&p), side(&q));
+                if sp >= 0 {
+                    out.push(p);
+                }
+                if (sp > 0 && sq < 0) || (sp < 0 && sq > 0) {
+                    // p + t (q - p) with t = sp_true / (sp_true - sq_true); over the common
+                    // denominator p.2 q.2 (sp_true = sp / p.2, sq_true = sq / q.2)
+                    let (a, c) = (sp * q.2, sq * p.2); // t = a / (a - c)
+                    let den = a - c;
+                    let (den, a) = if den < 0 { (-den, -a) } else { (den, a) };
+                    let x = p.0 * q.2 * den + (q.0 * p.2 - p.0 * q.2) * a;
+                    let y = p.1 * q.2 * den + (q.1 * p.2 - p.1 * q.2) * a;
+                    out.push((x, y, p.2 * q.2 * den));
+                }
+            }
+        }
+        out
+    }
+
+    /// Reference for `convex_covers_in_box`: every corner of `inner ∩ b` (exact) is on or
+    /// left of every edge of `outer`.
+    fn covers_reference(outer: &[IPt], inner: &[IPt], b: &IBox) -> bool {
+        let n = outer.len();
+        clip_exact(inner, b).iter().all(|&(x, y, d)| {
+            (0..n).all(|i| {
+                let (a, e) = (outer[i], outer[(i + 1) % n]);
+                let (ex, ey) = (i128::from(e.x - a.x), i128::from(e.y - a.y));
+                ex * (y - i128::from(a.y) * d) - ey * (x - i128::from(a.x) * d) >= 0
+            })
+        })
+    }
+
+    /// The box test by edge crossings agrees with clipping `inner` to the box exactly and
+    /// testing the clip's corners, on hulls and boxes of a grid coarse enough that touching,
+    /// collinear and degenerate cases are common (both answers occur often).
+    #[test]
+    fn covering_in_a_box_matches_the_exact_clip() {
+        let mut rng = Rng(0x5eed_c0de_0001_2345);
+        let (mut yes, mut no) = (0, 0);
+        for _ in 0..40_000 {
+            let (outer, inner) = (random_hull(&mut rng, 6), random_hull(&mut rng, 6));
+            if outer.len() < 3 || inner.len() < 3 {
+                continue;
+            }
+            let b = random_box(&mut rng, 6);
+            let want = covers_reference(&outer, &inner, &b);
+            assert_eq!(
+                convex_covers_in_box(&outer, &inner, &b),
+                want,
+                "{outer:?} {inner:?} {b:?}"
+            );
+            if want {
+                yes += 1;
+            } else {
+                no += 1;
+            }
+        }
+        assert!(yes > 3_000 && no > 3_000, "{yes} covered, {no} not");
+    }
+
+    /// The inscribed box lies in the polygon (its corners pass the exact edge test) and,
+    /// on a long swept hull like a roughing pass's, reaches down to a grid step above the
+    /// bottom edge, where the stock lies.
+    #[test]
+    fn the_inscribed_box_lies_inside() {
+        let mut rng = Rng(0x1b0c_5eed);
+        let mut found = 0;
+        for _ in 0..20_000 {
+            let hull = random_hull(&mut rng, 1_000);
+            if hull.len() < 3 {
+                continue;
+            }
+            let c = inscribed_box(&hull);
+            if c.is_empty() {
+                continue;
+            }
+            found += 1;
+            assert!(convex_contains(&hull, &c.corners()), "{hull:?} {c:?}");
+        }
+        assert!(found > 15_000, "{found}");
+        // a notch from the top (a reflex vertex, as snapping may leave a hull): its chords
+        // span the square, but no box of them lies in the kernel (the triangle under the
+        // notch), so none is given
+        let notched =
+            [(0, 0), (100, 0), (100, 100), (50, 40), (0, 100)].map(|(x, y)| IPt::new(x, y));
+        let c = inscribed_box(&notched);
+        assert!(
+            c.is_empty() || convex_contains(&notched, &c.corners()),
+            "{c:?}"
+        );
+        // a pass: a 35° rhombus swept 100 000 steps along -z
+        let rhombus = [
+            [0.0, 0.0],
+            [8000.0, 3000.0],
+            [9000.0, 11000.0],
+            [1000.0, 8000.0],
+        ];
+        let swept: Vec<IPt> = crate::geom::sweep_convex(&rhombus, [-100_000.0, 0.0])
+            .iter()
+            .map(|p| IPt::new(p[0] as i32, p[1] as i32))
+            .collect();
+        let c = inscribed_box(&swept);
+        assert!(convex_contains(&swept, &c.corners()));
+        assert_eq!(c.min[1], 1, "{c:?}");
+        assert!(c.max[0] - c.min[0] > 90_000, "{c:?}");
+    }
 }

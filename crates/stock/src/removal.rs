@@ -20,16 +20,17 @@
 
 use crate::geom::{pts, P};
 use crate::overlay::{
-    convex_contains, orient, point_in_ring, segments_meet, winds, Engine, Grid, IBox, IPt, IShapes,
+    convex_contains, convex_covers_in_box, orient, point_in_ring, segments_meet, winds, Engine,
+    Grid, IBox, IPt, IShapes,
 };
 use crate::ring_air;
 use crate::snapshot::Snapshots;
-use crate::sweep::{Item, SweepBuilder, Sweeps};
+use crate::sweep::{Item, Poly, SweepBuilder, Sweeps};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
 use expander::{Motion, Segment};
 use geom::distance::point_segment;
 use geom::{ring, Pt, Rect};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicU32, AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 /// Smallest overlap (mm²) between a rapid's sweep and the stock that counts as a crash.
@@ -58,7 +59,7 @@ const MAX_STRIPS: usize = 64;
 /// 3.77 / 0.028, 64 0.97 / 0.85 / 3.53 / 0.029, 48 0.96 / 0.82 / 3.46 / 0.037.
 const MAX_TILE_VERTICES: usize = 64;
 /// Smallest tile side, mm.
-const MIN_TILE: f64 = 0.01;
+const MIN_TILE: f64 = 0.001;
 /// Segments handled between two progress reports (also bounds the sweeps held in memory).
 const EPOCH: usize = 32_768;
 
@@ -84,6 +85,12 @@ pub struct SimOptions {
     /// (default true). Exact either way; false tries every tile its box overlaps with the
     /// ring's full edge test (the behaviour before round 6 of PERFORMANCE.md).
     pub ring_air: bool,
+    /// A sweep that a sweep already waiting in a tile's batch covers there (inside the
+    /// tile's stock box) stays out of the batch, and a sweep takes out of the batch those it
+    /// covers (default true): the passes of a roughing, each lowering a flat top, then make
+    /// one boolean call per tile and epoch instead of one per pass. Exact either way; false
+    /// sends every sweep that touches a tile's stock to its boolean call.
+    pub cover: bool,
     /// Move counts after which the stock is wanted (see [`Simulation::snapshots`]), taken
     /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
     /// the blank and [`Simulation::final_shapes`].
@@ -97,6 +104,7 @@ impl Default for SimOptions {
             merge_tol: 0.0005,
             feed_paths: true,
             ring_air: true,
+            cover: true,
             snapshot_after: Vec::new(),
         }
     }
@@ -147,7 +155,6 @@ struct Tile {
     rect: IBox,
     stock: IShapes,
     bbox: IBox,
-    pending: Vec<u32>,
     /// Vertex count of `stock`.
     verts: usize,
 }
@@ -183,47 +190,55 @@ fn bbox_of(shapes: &IShapes) -> IBox {
 struct Trimmed {
     pts: Vec<IPt>,
     rings: Vec<std::ops::Range<usize>>,
-    /// Per ring: whether it came from a convex polygon (see `Sweeps::polys_with_runs_of`).
-    convex: Vec<bool>,
+    /// Per ring: whether it came from a convex polygon ([`Poly::convex`]), and that
+    /// polygon's [`Poly::core`].
+    kinds: Vec<(bool, IBox)>,
     /// Rings (not convex) are trimmed with the tests of [`trim_to_box`] for rings
     /// ([`SimOptions::ring_air`]).
     ring_air: bool,
+}
+
+/// A trimmed ring with what its polygon was ([`Trimmed::kinds`]).
+#[derive(Clone, Copy)]
+struct Ring<'a> {
+    pts: &'a [IPt],
+    convex: bool,
+    core: IBox,
 }
 
 impl Trimmed {
     fn clear(&mut self) {
         self.pts.clear();
         self.rings.clear();
-        self.convex.clear();
+        self.kinds.clear();
     }
 
     /// Appends every polygon of the sweep `it`, trimmed to `b`.
     fn push_sweep(&mut self, sweeps: &Sweeps, it: &Item, b: &IBox) {
-        for p in sweeps.polys_with_runs_of(it) {
+        for p in sweeps.parts_of(it) {
             self.push(p, b);
         }
     }
 
-    /// Appends `poly` trimmed to `b` (nothing when its overlap with `b` has no area); `runs`
-    /// are a ring's run boxes ([`ring_air::run_boxes`]).
-    fn push(&mut self, (poly, convex, runs): (&[IPt], bool, &[IBox]), b: &IBox) {
+    /// Appends `poly` trimmed to `b` (nothing when its overlap with `b` has no area).
+    fn push(&mut self, poly: Poly, b: &IBox) {
         let start = self.pts.len();
-        if self.ring_air && !convex {
+        if self.ring_air && !poly.convex {
             // a run strictly on one outer side of `b` keeps its first vertex only: the
             // closed triangles of the vertices dropped lie on that side (see trim_to_box)
-            let n = poly.len();
-            let verts = runs.iter().enumerate().flat_map(|(j, rb)| {
+            let n = poly.pts.len();
+            let verts = poly.runs.iter().enumerate().flat_map(|(j, rb)| {
                 let (lo, hi) = (j * ring_air::RUN, ((j + 1) * ring_air::RUN).min(n));
                 let away = !rb.overlaps(b);
-                poly[lo..if away { lo + 1 } else { hi }].iter().copied()
+                poly.pts[lo..if away { lo + 1 } else { hi }].iter().copied()
             });
             trim_to_box(verts, b, &mut self.pts, true);
         } else {
-            trim_to_box(poly.iter().copied(), b, &mut self.pts, false);
+            trim_to_box(poly.pts.iter().copied(), b, &mut self.pts, false);
         }
         if self.pts.len() > start {
             self.rings.push(start..self.pts.len());
-            self.convex.push(convex);
+            self.kinds.push((poly.convex, poly.core));
         }
     }
 
@@ -231,9 +246,136 @@ impl Trimmed {
         self.rings.iter().map(|r| &self.pts[r.clone()])
     }
 
-    fn iter_flagged(&self) -> impl Iterator<Item = (&[IPt], bool)> {
-        self.iter().zip(self.convex.iter().copied())
+    /// Every ring with its kind.
+    fn rings(&self) -> impl Iterator<Item = Ring<'_>> + Clone {
+        self.ranged(0..self.rings.len())
     }
+
+    /// The rings of `from` with their kinds.
+    fn ranged(&self, from: std::ops::Range<usize>) -> impl Iterator<Item = Ring<'_>> + Clone {
+        self.rings[from.clone()]
+            .iter()
+            .zip(&self.kinds[from])
+            .map(|(r, &(convex, core))| Ring {
+                pts: &self.pts[r.clone()],
+                convex,
+                core,
+            })
+    }
+
+    /// Appends the rings of `other`.
+    fn extend_from(&mut self, other: &Self) {
+        let base = self.pts.len();
+        self.pts.extend_from_slice(&other.pts);
+        self.rings
+            .extend(other.rings.iter().map(|r| r.start + base..r.end + base));
+        self.kinds.extend_from_slice(&other.kinds);
+    }
+}
+
+/// The sweeps of a tile waiting for its next boolean call, each trimmed to the tile's stock
+/// box. A trimmed polygon stays right while the stock shrinks (its part in any smaller
+/// box is the sweep's), so the batch outlives a flush of the stock box.
+#[derive(Default)]
+struct Batch {
+    /// Per sweep still in the batch: the range of its rings in `rings`.
+    kept: Vec<std::ops::Range<usize>>,
+    rings: Trimmed,
+}
+
+impl Batch {
+    fn len(&self) -> usize {
+        self.kept.len()
+    }
+
+    fn clear(&mut self) {
+        self.kept.clear();
+        self.rings.clear();
+    }
+
+    /// The rings of every sweep in the batch.
+    fn iter(&self) -> impl Iterator<Item = &[IPt]> {
+        self.kept
+            .iter()
+            .flat_map(|r| self.rings.ranged(r.clone()).map(|ring| ring.pts))
+    }
+
+    /// True when the sweeps of the batch cover the sweep trimmed into `t` wherever the stock
+    /// may be (inside `b`, its box; see [`covered`]). Then `stock − (batch ∪ t) = stock −
+    /// batch`, and for a rapid, its overlap with the stock after the batch is empty.
+    fn covers(&self, t: &Trimmed, b: &IBox) -> bool {
+        let all = self.kept.iter().flat_map(|r| self.rings.ranged(r.clone()));
+        covered(t.rings(), all, b)
+    }
+
+    /// Adds the sweep trimmed into `t`, dropping (with `cover`) the sweeps of the batch it
+    /// covers (the passes of a roughing or a zig-zag, each lowering a flat top, cover the
+    /// last one there; nearly coincident edges in one call cost the splitter pairwise).
+    fn push(&mut self, t: &Trimmed, b: &IBox, cover: bool) {
+        let rings = &self.rings;
+        if cover {
+            self.kept
+                .retain(|r| !covered(rings.ranged(r.clone()), t.rings(), b));
+        }
+        let first = self.rings.rings.len();
+        self.rings.extend_from(t);
+        self.kept.push(first..self.rings.rings.len());
+    }
+}
+
+/// True when every ring of `inner` is convex and, inside `b`, lies in one convex ring of
+/// `outer`: then `inner ∩ b ⊆ outer`. Exact: the box of `inner ∩ b` inside the core of an
+/// outer polygon, else [`convex_covers_in_box`] after a test of the outer ring's box.
+fn covered<'a>(
+    mut inner: impl Iterator<Item = Ring<'a>>,
+    outer: impl Iterator<Item = Ring<'a>> + Clone,
+    b: &IBox,
+) -> bool {
+    inner.all(|p| {
+        let need = clamp_box(IBox::of(p.pts.iter().copied()), b);
+        p.convex
+            && outer.clone().any(|o| {
+                o.convex
+                    && (contains_box(&o.core, &need)
+                        || contains_box(&IBox::of(o.pts.iter().copied()), &need)
+                            && convex_covers_in_box(o.pts, p.pts, b))
+            })
+    })
+}
+
+/// A box that holds `b` less the box `core` (`b` itself unless `core` spans `b` across one
+/// axis and reaches past one end along the other).
+fn outside_core(b: IBox, core: &IBox) -> IBox {
+    let mut out = b;
+    for axis in 0..2 {
+        let other = 1 - axis;
+        if core.is_empty() || core.min[other] > b.min[other] || core.max[other] < b.max[other] {
+            continue;
+        }
+        if core.max[axis] >= b.max[axis] {
+            out.max[axis] = out.max[axis].min(core.min[axis].max(b.min[axis]));
+        }
+        if core.min[axis] <= b.min[axis] {
+            out.min[axis] = out.min[axis].max(core.max[axis].min(b.max[axis]));
+        }
+    }
+    out
+}
+
+/// `a ∩ b` (empty when they miss each other: min above max).
+fn clamp_box(a: IBox, b: &IBox) -> IBox {
+    IBox {
+        min: [a.min[0].max(b.min[0]), a.min[1].max(b.min[1])],
+        max: [a.max[0].min(b.max[0]), a.max[1].min(b.max[1])],
+    }
+}
+
+/// True when `outer` contains `inner`.
+fn contains_box(outer: &IBox, inner: &IBox) -> bool {
+    outer.min[0] <= inner.min[0]
+        && outer.min[1] <= inner.min[1]
+        && outer.max[0] >= inner.max[0]
+        && outer.max[1] >= inner.max[1]
 }
 
 /// Appends to `out` a polygon `t` with `t ∩ b == poly ∩ b` (as closed point sets, so any
@@ -300,31 +442,15 @@ fn trim_to_box(poly: impl Iterator<Item = IPt>, b: &IBox, out: &mut Vec<IPt>, ri
 }
 
 impl Tile {
-    fn flush(&mut self, sweeps: &Sweeps, engine: &mut Engine, trim: &mut Trimmed) {
-        if self.pending.is_empty() {
+    /// Subtracts the batch from the stock in one boolean call.
+    fn flush(&mut self, batch: &mut Batch, engine: &mut Engine) {
+        if batch.len() == 0 {
             return;
         }
-        let items = &sweeps.items;
-        trim.clear();
-        for &i in &self.pending {
-            trim.push_sweep(sweeps, &items[i as usize], &self.bbox);
-        }
-        self.stock = engine.difference(&self.stock, trim.iter());
+        self.stock = engine.difference(&self.stock, batch.iter());
         self.bbox = bbox_of(&self.stock);
         self.verts = self.stock.iter().flatten().map(Vec::len).sum();
-        self.pending.clear();
-    }
-
-    /// True when the rapid's sweep lies inside one convex pending sweep polygon (already
-    /// cut).
-    fn covered_by_pending(&self, sweeps: &Sweeps, it: &Item) -> bool {
-        sweeps.polys_of(it).all(|rp| {
-            self.pending.iter().rev().any(|&j| {
-                sweeps
-                    .polys_with_runs_of(&sweeps.items[j as usize])
-                    .any(|(pp, convex, _)| convex && convex_contains(pp, rp))
-            })
-        })
+        batch.clear();
     }
 
     fn new(rect: IBox, stock: IShapes) -> Self {
@@ -333,7 +459,6 @@ impl Tile {
             rect,
             bbox: bbox_of(&stock),
             stock,
-            pending: Vec::new(),
             verts,
         }
     }
@@ -342,64 +467,88 @@ impl Tile {
     /// the tile grew too complex and must split first.
     fn process(&mut self, list: &[u32], ctx: &Ctx, worker: &mut Worker) -> Option<usize> {
         let sweeps = ctx.sweeps;
-        let mut trim = Trimmed {
-            ring_air: ctx.ring_air,
-            ..Trimmed::default()
-        };
-        let mut runs = Vec::new();
+        let Worker {
+            engine,
+            frags,
+            batch,
+            trim,
+            runs,
+        } = worker;
+        trim.ring_air = ctx.ring_air;
+        // a box of the stock as it will be after the batch: smaller than the stock's box
+        // when a core of the batch spans that (the stock outside it is the batch's to
+        // cut); trimming and covering keep to the box of the stock as it is
+        let mut reach = self.bbox;
         for (k, &i) in list.iter().enumerate() {
-            if self.verts > MAX_TILE_VERTICES && self.pending.is_empty() && self.splittable(ctx) {
+            if self.verts > MAX_TILE_VERTICES && batch.len() == 0 && self.splittable(ctx) {
                 return Some(k);
             }
             let it = &sweeps.items[i as usize];
             // air in this tile: the stock only shrinks, so missing the stock of the last
-            // flush means missing the stock of this moment
-            if misses_box(ctx, it, &self.bbox) {
+            // flush (less the batch's cores) means missing the stock of this moment
+            if misses_box(ctx, it, &reach) {
                 continue;
             }
             trim.clear();
             trim.push_sweep(sweeps, it, &self.bbox);
-            if !trim.iter_flagged().any(|(p, convex)| {
-                if convex || !ctx.ring_air {
-                    touches(p, convex, &self.stock, &self.bbox)
+            if !trim.rings().any(|r| {
+                if r.convex || !ctx.ring_air {
+                    touches(r.pts, r.convex, &self.stock, &reach)
                 } else {
-                    ring_air::touches(p, &self.stock, &self.bbox, &mut runs)
+                    ring_air::touches(r.pts, &self.stock, &reach, runs)
                 }
             }) {
                 continue;
             }
             if it.body.is_some() {
                 // a probe: the stock after every earlier cut (this move's own included)
-                self.flush(sweeps, worker.engine, &mut trim);
-                self.probe(it, ctx, worker, &mut trim);
+                self.flush(batch, engine);
+                reach = self.bbox;
+                self.probe(it, ctx, engine, frags, trim);
                 continue;
             }
-            if it.rapid && !self.covered_by_pending(sweeps, it) {
-                self.flush(sweeps, worker.engine, &mut trim);
-                self.probe(it, ctx, worker, &mut trim);
+            let covered = ctx.cover && batch.covers(trim, &self.bbox);
+            if it.rapid && !covered {
+                self.flush(batch, engine);
+                reach = self.bbox;
+                self.probe(it, ctx, engine, frags, trim);
             }
-            self.pending.push(i);
-            if self.pending.len() >= BATCH {
-                self.flush(sweeps, worker.engine, &mut trim);
+            if covered {
+                continue;
+            }
+            batch.push(trim, &self.bbox, ctx.cover);
+            for r in trim.rings() {
+                reach = outside_core(reach, &r.core);
+            }
+            if batch.len() >= BATCH {
+                self.flush(batch, engine);
+                reach = self.bbox;
             }
         }
-        self.flush(sweeps, worker.engine, &mut trim);
+        self.flush(batch, engine);
         None
     }
 
     /// Intersects the sweep `it` with the (flushed) stock and keeps the overlap as a
-    /// crash fragment.
-    fn probe(&self, it: &Item, ctx: &Ctx, worker: &mut Worker, trim: &mut Trimmed) {
+    /// crash fragment; leaves `trim` holding `it` trimmed to a box of the stock.
+    fn probe(
+        &self,
+        it: &Item,
+        ctx: &Ctx,
+        engine: &mut Engine,
+        frags: &mut Vec<Fragment>,
+        trim: &mut Trimmed,
+    ) {
         if !it.bbox.overlaps(&self.bbox) {
             return;
         }
         trim.clear();
         trim.push_sweep(ctx.sweeps, it, &self.bbox);
-        let overlap = worker.engine.intersection(&self.stock, trim.iter());
+        let overlap = engine.intersection(&self.stock, trim.iter());
         let a = ctx.grid.area(&overlap);
         if a > 0.0 {
             let (dist, at) = nearest(ctx.grid, &overlap, it.start);
-            worker.frags.push(Fragment {
+            frags.push(Fragment {
                 seg: it.seg,
                 body: it.body,
                 eps: it.eps,
@@ -417,7 +566,10 @@ impl Tile {
         size > ctx.min_tile
     }
 
-    /// The two halves of the tile along its longer side (pending must be empty).
+    /// The two halves of the tile along its longer side (its batch must be empty). Where
+    /// it splits depends on the tile alone, not on the stock at that moment: the seams of
+    /// the final part (a grid point where an edge crossed a tile's side) are then the same
+    /// however the moves are batched (two tools that cut alike give the same report).
     fn split(self, engine: &mut Engine) -> Node {
         let r = self.rect;
         let halves = if r.max[0] - r.min[0] >= r.max[1] - r.min[1] {
@@ -465,12 +617,21 @@ struct Ctx<'a> {
     sweeps: &'a Sweeps,
     /// Rings get their exact air tests ([`SimOptions::ring_air`]).
     ring_air: bool,
+    /// Batches leave out what they cover ([`SimOptions::cover`]).
+    cover: bool,
 }
 
-/// What one worker thread writes to: its boolean engine and the rapid cuts it found.
+/// What one worker thread writes to: its boolean engine, the rapid cuts it found, and its
+/// scratch space.
 struct Worker<'e> {
     engine: &'e mut Engine,
     frags: Vec<Fragment>,
+    /// The tile at hand's sweeps waiting for a boolean call (empty between tiles).
+    batch: Batch,
+    /// The sweep at hand trimmed to the tile.
+    trim: Trimmed,
+    /// Run boxes of a ring ([`ring_air::touches`]).
+    runs: Vec<IBox>,
 }
 
 impl Node {
@@ -485,7 +646,7 @@ impl Node {
                 self.process(&list[rest..], ctx, worker);
             }
             Self::Split(children, rects, boxes) => {
-                for ((child, rect), sb) in children.iter_mut().zip(rects.iter()).zip(boxes) {
+                for ((child, rect), sb) in children.iter_mut().zip(rects.iter()).zip(&mut *boxes) {
                     let sub: Vec<u32> = list
                         .iter()
                         .copied()
@@ -498,6 +659,18 @@ impl Node {
                         child.process(&sub, ctx, worker);
                         *sb = child.stock_box();
                     }
+                }
+                // a child cut empty stays empty: the node is its sibling (one level less
+                // for every later sweep to descend)
+                if let Some(k) = boxes.iter().position(IBox::is_empty) {
+                    let [a, b] = std::mem::replace(
+                        children.as_mut(),
+                        [
+                            Self::Leaf(Tile::new(IBox::EMPTY, Vec::new())),
+                            Self::Leaf(Tile::new(IBox::EMPTY, Vec::new())),
+                        ],
+                    );
+                    *self = if k == 0 { b } else { a };
                 }
             }
         }
@@ -568,27 +741,26 @@ fn misses_box(ctx: &Ctx, it: &Item, b: &IBox) -> bool {
     if !it.bbox.overlaps(b) {
         return true;
     }
-    let single = it.polys.len() == 1;
-    ctx.sweeps
-        .polys_with_runs_of(it)
-        .all(|(poly, convex, runs)| {
-            if !single && !IBox::of(poly.iter().copied()).overlaps(b) {
-                return true;
-            }
-            if convex {
-                separated(poly, b)
-            } else {
-                ctx.ring_air && ring_air::misses(poly, runs, b)
-            }
-        })
+    ctx.sweeps.parts_of(it).all(|poly| {
+        if !poly.bbox.overlaps(b) {
+            return true;
+        }
+        if poly.core.overlaps(b) {
+            return false;
+        }
+        if poly.convex {
+            separated(poly.pts, poly.hint, b)
+        } else {
+            ctx.ring_air && ring_air::misses(poly.pts, poly.runs, b)
+        }
+    })
 }
 
-/// True when an edge of the convex counter-clockwise `poly` has every corner of `b`
-/// strictly on its right.
-fn separated(poly: &[IPt], b: &IBox) -> bool {
-    let n = poly.len();
-    (0..n).any(|i| {
-        let (p, q) = (poly[i], poly[(i + 1) % n]);
+/// True when an edge of the convex counter-clockwise polygon has every corner of `b`
+/// strictly on its right; the edge of its hint first, which it then holds.
+fn separated(pts: &[IPt], hint: &AtomicU32, b: &IBox) -> bool {
+    let n = pts.len();
+    let apart = |p: IPt, q: IPt| {
         // the corner maximising cross(q - p, c - p): largest y when the edge runs to +x,
         // smallest x when it runs to +y
         let c = IPt::new(
@@ -596,7 +768,28 @@ fn separated(poly: &[IPt], b: &IBox) -> bool {
             if q.x > p.x { b.max[1] } else { b.min[1] },
         );
         right_of(p, q, c)
-    })
+    };
+    let edge = |i: usize| (pts[i], pts[if i + 1 == n { 0 } else { i + 1 }]);
+    let first = hint.load(Ordering::Relaxed) as usize;
+    if first < n {
+        let (p, q) = edge(first);
+        if apart(p, q) {
+            return true;
+        }
+    }
+    // every edge in order (the last closes the ring), without a division per edge
+    let found = pts
+        .windows(2)
+        .map(|w| (w[0], w[1]))
+        .chain(pts.last().zip(pts.first()).map(|(&p, &q)| (p, q)))
+        .position(|(p, q)| apart(p, q));
+    match found {
+        Some(i) => {
+            hint.store(i as u32, Ordering::Relaxed);
+            true
+        }
+        None => false,
+    }
 }
 
 /// True when `c` lies strictly right of the directed line `p → q`, exactly: the
@@ -872,11 +1065,15 @@ pub fn simulate(
             min_tile,
             sweeps: &sweeps,
             ring_air: opts.ring_air,
+            cover: opts.cover,
         };
         let work = |engine: &mut Engine| {
             let mut worker = Worker {
                 engine,
                 frags: Vec::new(),
+                batch: Batch::default(),
+                trim: Trimmed::default(),
+                runs: Vec::new(),
             };
             loop {
                 let k = next.fetch_add(1, Ordering::Relaxed);
@@ -1164,7 +1361,10 @@ mod tests {
                     .iter()
                     .all(|&q| orient(hull[i], hull[(i + 1) % n], q) < 0)
             });
-            assert_eq!(separated(&hull, &bx), four, "{hull:?} {bx:?}");
+            // twice: the second starts from the hint the first left
+            let hint = AtomicU32::new(0);
+            assert_eq!(separated(&hull, &hint, &bx), four, "{hull:?} {bx:?}");
+            assert_eq!(separated(&hull, &hint, &bx), four, "{hull:?} {bx:?}");
             for &q in &bx.corners() {
                 for i in 0..n {
                     let (p0, p1) = (hull[i], hull[(i + 1) % n]);
@@ -1739,7 +1939,16 @@ mod tests {
                 ring_air: true,
                 ..Trimmed::default()
             };
-            trim.push((&ring, false, &runs), &b);
+            let hint = AtomicU32::new(0);
+            let poly = Poly {
+                pts: &ring,
+                convex: false,
+                runs: &runs,
+                bbox: IBox::of(ring.iter().copied()),
+                core: IBox::EMPTY,
+                hint: &hint,
+            };
+            trim.push(poly, &b);
             let t: Vec<IPt> = trim.iter().next().map(<[IPt]>::to_vec).unwrap_or_default();
             assert!(t.iter().all(|p| ring.contains(p)));
             for x in b.min[0] + 1..b.max[0] {
@@ -1767,6 +1976,138 @@ mod tests {
     /// edges, others in its box but outside it): the removal with the rings' air tests
     /// equals the one without (every tile tried with the ring's full edge test), so no tile
     /// an arc cuts was skipped; then a rapid that crashes into what is left.
+    /// Roughing passes (each lowering the flat top, so each covers the last there),
+    /// rapids back over the cut, one rapid through material a pass in the same batch cut
+    /// and one into stock: leaving covered sweeps out of the batches removes exactly what
+    /// every boolean call removes, with the same crashes.
+    #[test]
+    fn covered_sweeps_left_out_remove_exactly_what_every_sweep_removes() {
+        let blank = Blank::bar(50.0, 40.0, 0.0, None).unwrap();
+        let mut segs = Vec::new();
+        for k in 1..=40 {
+            let r = 25.0 - 0.05 * f64::from(k);
+            let zend = -30.0 + 0.1 * f64::from(k % 3);
+            segs.push(seg(Motion::Rapid, [5.0, r + 0.55], [5.0, r]));
+            segs.push(seg(Motion::Feed, [5.0, r], [zend, r]));
+            segs.push(seg(Motion::Feed, [zend, r], [zend + 0.5, r + 0.5]));
+            segs.push(seg(Motion::Rapid, [zend + 0.5, r + 0.5], [5.0, r + 0.5]));
+        }
+        // back through the last pass's cut, then down into the stock
+        segs.push(seg(Motion::Rapid, [5.0, 23.1], [-20.0, 23.1]));
+        segs.push(seg(Motion::Rapid, [-20.0, 23.1], [-20.0, 21.0]));
+        let sim = |cover| {
+            let opts = SimOptions {
+                cover,
+                ..SimOptions::default()
+            };
+            simulate(&blank, &v35(), &segs, &opts, &mut |_| {})
+        };
+        let (with, without) = (sim(true), sim(false));
+        assert!(without.removed_area > 50.0, "{}", without.removed_area);
+        let xor = symmetric_difference_area(&with.final_shapes, &without.final_shapes);
+        assert!(xor < 1e-9, "symmetric difference {xor} mm²");
+        assert!((with.removed_area - without.removed_area).abs() < 1e-9);
+        let verdicts = |s: &Simulation| {
+            s.crashes
+                .iter()
+                .map(|c| (c.segment, c.area))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(verdicts(&with), verdicts(&without));
+        assert_eq!(
+            verdicts(&with).iter().map(|v| v.0).collect::<Vec<_>>(),
+            vec![segs.len() - 1]
+        );
+    }
+
+    /// What a box keeps when a core is cut out of it holds every unit cell of the box the
+    /// core does not cover (what a cut leaves is the closure of such cells), and it shrinks
+    /// when the core spans the box.
+    #[test]
+    fn the_box_outside_a_core_holds_what_the_cut_leaves() {
+        use crate::ring_air::tests::Rng;
+        let mut rng = Rng(0x0b0c_5eed_0042);
+        let mut shrunk = 0;
+        for _ in 0..20_000 {
+            let mut rbox = |span: i64| {
+                let (a, b, c, d) = (
+                    rng.next(span),
+                    rng.next(span),
+                    rng.next(span),
+                    rng.next(span),
+                );
+                IBox {
+                    min: [a.min(c) as i32, b.min(d) as i32],
+                    max: [a.max(c) as i32, b.max(d) as i32],
+                }
+            };
+            let (b, core) = (rbox(5), rbox(7));
+            let out = outside_core(b, &core);
+            // every unit cell of the box the core does not cover lies in what is kept
+            for x in b.min[0]..b.max[0] {
+                for y in b.min[1]..b.max[1] {
+                    let cut =
+                        core.min[0] <= x && x < core.max[0] && core.min[1] <= y && y < core.max[1];
+                    let kept =
+                        out.min[0] <= x && x < out.max[0] && out.min[1] <= y && y < out.max[1];
+                    assert!(
+                        cut || kept,
+                        "{b:?} less {core:?} gave {out:?}: cell ({x}, {y})"
+                    );
+                }
+            }
+            shrunk += usize::from(out != b);
+        }
+        assert!(shrunk > 2_000, "{shrunk}");
+    }
+
+    /// A lower pass covers the one above it inside the stock's box: it takes its place in
+    /// the batch, and the higher one is then left out; a pass reaching further left is not
+    /// covered by a shorter one.
+    #[test]
+    fn a_lower_pass_takes_the_place_of_the_one_above_in_the_batch() {
+        let bb = Rect::new(geom::Pt::new(-60.0, -10.0), geom::Pt::new(20.0, 60.0));
+        let grid = Grid::new(bb);
+        let tools = v35();
+        let mut builder = SweepBuilder::new(&grid, bb, &tools, 0.001, 0.0);
+        let passes = [(20.0, -30.0), (19.9, -30.0), (19.8, -25.0)];
+        for (i, &(r, z)) in passes.iter().enumerate() {
+            builder.push(i, &seg(Motion::Feed, [5.0, r], [z, r]));
+        }
+        builder.flush_run();
+        let sweeps = builder.take();
+        assert_eq!(sweeps.items.len(), 3);
+        // the stock's box: the bar down to the axis, up to the first pass's top
+        let b = grid.box_to_int(&Rect::new(
+            geom::Pt::new(-50.0, 0.0),
+            geom::Pt::new(0.0, 20.05),
+        ));
+        let trimmed: Vec<Trimmed> = sweeps
+            .items
+            .iter()
+            .map(|it| {
+                let mut t = Trimmed::default();
+                t.push_sweep(&sweeps, it, &b);
+                t
+            })
+            .collect();
+        let mut batch = Batch::default();
+        batch.push(&trimmed[0], &b, true);
+        assert!(!batch.covers(&trimmed[1], &b));
+        batch.push(&trimmed[1], &b, true);
+        assert_eq!(batch.len(), 1, "the lower pass replaces the upper");
+        assert!(batch.covers(&trimmed[0], &b));
+        // the shorter third pass, lower still, leaves the second's far end uncovered
+        batch.push(&trimmed[2], &b, true);
+        assert_eq!(batch.len(), 2);
+        // without covering, every sweep stays
+        let mut all = Batch::default();
+        for t in &trimmed {
+            all.push(t, &b, false);
+        }
+        assert_eq!(all.len(), 3);
+    }
+
     #[test]
     fn ring_air_tests_remove_exactly_what_every_tile_test_removes() {
         let mut outline = vec![[-30.0, 28.0], [0.0, 28.0]];

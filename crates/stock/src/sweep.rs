@@ -46,12 +46,13 @@
 
 use crate::geom::{clip_convex, dist, pts, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
-use crate::overlay::{ring_perimeter, Grid, IBox, IPt};
+use crate::overlay::{inscribed_box, ring_perimeter, Grid, IBox, IPt};
 use crate::{Shape, ToolTable};
 use expander::{Motion, Segment, ToolHint};
 use geom::Rect;
 use std::collections::HashMap;
 use std::ops::Range;
+use std::sync::atomic::AtomicU32;
 use std::sync::Arc;
 
 /// Most stamps one thread move may make before it is swept continuously instead, with a
@@ -105,6 +106,12 @@ pub(crate) struct Sweeps {
     /// convex polygon).
     runs: Vec<Range<u32>>,
     run_boxes: Vec<IBox>,
+    /// Per polygon: its bounding box.
+    boxes: Vec<IBox>,
+    /// Per polygon: a box inside it ([`Poly::core`]).
+    cores: Vec<IBox>,
+    /// Per polygon: the edge that last told it apart from a box ([`Poly::hint`]).
+    hints: Vec<AtomicU32>,
     /// The sweeps, in program order.
     pub(crate) items: Vec<Item>,
 }
@@ -121,6 +128,9 @@ impl Sweeps {
         self.runs
             .extend(other.runs.into_iter().map(|r| r.start + db..r.end + db));
         self.run_boxes.extend(other.run_boxes);
+        self.boxes.extend(other.boxes);
+        self.cores.extend(other.cores);
+        self.hints.extend(other.hints);
         self.items.extend(other.items.into_iter().map(|mut it| {
             it.polys = it.polys.start + dq..it.polys.end + dq;
             it
@@ -134,25 +144,43 @@ impl Sweeps {
             .map(|r| &self.pts[r.start as usize..r.end as usize])
     }
 
-    /// The polygons of one item, each with whether it is convex and its run boxes (a
-    /// ring's, see [`crate::ring_air`]).
-    pub(crate) fn polys_with_runs_of(
-        &self,
-        it: &Item,
-    ) -> impl Iterator<Item = (&[IPt], bool, &[IBox])> + Clone {
-        let r = it.polys.start as usize..it.polys.end as usize;
-        self.polys[r.clone()]
-            .iter()
-            .zip(&self.convex[r.clone()])
-            .zip(&self.runs[r])
-            .map(|((p, &c), b)| {
-                (
-                    &self.pts[p.start as usize..p.end as usize],
-                    c,
-                    &self.run_boxes[b.start as usize..b.end as usize],
-                )
-            })
+    /// The polygons of one item with what the air tests know of each ([`Poly`]).
+    pub(crate) fn parts_of(&self, it: &Item) -> impl Iterator<Item = Poly<'_>> + Clone {
+        (it.polys.start as usize..it.polys.end as usize).map(|k| {
+            let (p, b) = (&self.polys[k], &self.runs[k]);
+            Poly {
+                pts: &self.pts[p.start as usize..p.end as usize],
+                convex: self.convex[k],
+                runs: &self.run_boxes[b.start as usize..b.end as usize],
+                bbox: self.boxes[k],
+                core: self.cores[k],
+                hint: &self.hints[k],
+            }
+        })
     }
+}
+
+/// One polygon of a sweep, as the removal's tests read it.
+#[derive(Clone, Copy)]
+pub(crate) struct Poly<'a> {
+    /// Its vertices.
+    pub(crate) pts: &'a [IPt],
+    /// A hull or a stamp; else a chain sweep's ring whose positive winding is the sweep
+    /// (see [`sweep_chain`]).
+    pub(crate) convex: bool,
+    /// A ring's run boxes ([`crate::ring_air`]; none for a convex polygon).
+    pub(crate) runs: &'a [IBox],
+    /// Its bounding box.
+    pub(crate) bbox: IBox,
+    /// A large box inside a convex polygon ([`inscribed_box`]; EMPTY for a ring): a tile's
+    /// stock box that meets it meets the sweep, and what it holds the sweep covers, both
+    /// without an edge test (a long pass meets the boxes of every tile along its bottom).
+    pub(crate) core: IBox,
+    /// The edge of a convex polygon that last had a box wholly outside it: a sweep meets
+    /// the boxes of a tile tree in order, and neighbouring boxes are mostly told apart by
+    /// the same edge, so this one is tried first. Only a hint (any value is safe), shared by
+    /// the threads that walk the strips.
+    pub(crate) hint: &'a AtomicU32,
 }
 
 /// A run of merged feeds swept as the one segment a -> b: either exact (collinear feeds,
@@ -905,6 +933,14 @@ impl<'a> SweepBuilder<'a> {
             crate::ring_air::run_boxes(&self.out.pts[start as usize..], &mut self.out.run_boxes);
         }
         self.out.runs.push(b..self.out.run_boxes.len() as u32);
+        let added = &self.out.pts[start as usize..];
+        self.out.boxes.push(IBox::of(added.iter().copied()));
+        self.out.cores.push(if convex {
+            inscribed_box(added)
+        } else {
+            IBox::EMPTY
+        });
+        self.out.hints.push(AtomicU32::new(0));
     }
 
     fn end(&mut self, (first, _): (u32, f64), idx: usize, rapid: bool, start: P, dir: P) {
