@@ -554,6 +554,7 @@ pub(crate) fn add_threads(
             line: t.span.line,
             inside: t.surface == stock::Surface::Bore,
             lead_mm: t.lead,
+            starts: t.starts,
             x_mm: t.x(),
             expected_x_mm: expected,
             pass_depths_mm: t.pass_depths.clone(),

@@ -396,3 +396,141 @@ fn cycle_alarms_speak_the_program_s_codes_and_g91_can_be_the_power_on_mode() {
     let tp = run_with(&m, "G0 X-10 Z-5\nG90 G0 X40 Z2\nM30\n");
     assert_eq!(ends(&tp), [(145.0, 240.0), (2.0, 40.0)]);
 }
+
+/// GSK 980TD G92 `L` (spec/dialects.md §4.6): a block cuts every start at its depth in turn,
+/// the n-th shifted n/L of the lead (after Q's shift); its modal repeats keep L, a new G92
+/// block starts with one.
+#[test]
+fn gsk_g92_l_cuts_every_start_in_turn() {
+    let src = "T0404 M3 S500\nG0 X18 Z6\nG92 X15.4 Z-20 F3 L2\nX14.8\nG92 X14.4 Z-20 F3\nM30\n";
+    let tp = run_on(Control::Gsk980, src);
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let threads: Vec<(f64, f64)> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .map(|s| (2.0 * s.to.r, s.thread_phase))
+        .collect();
+    assert_eq!(
+        threads,
+        [
+            (15.4, 0.0),
+            (15.4, 0.5),
+            (14.8, 0.0),
+            (14.8, 0.5),
+            (14.4, 0.0)
+        ]
+    );
+    // each start is a whole pass: in X, thread, out X, back Z
+    assert_eq!(
+        ends(&tp)[1..9],
+        [
+            (6.0, 15.4),
+            (-20.0, 15.4),
+            (-20.0, 18.0),
+            (6.0, 18.0),
+            (6.0, 15.4),
+            (-20.0, 15.4),
+            (-20.0, 18.0),
+            (6.0, 18.0)
+        ]
+    );
+    // with Q, the starts follow the shifted first one
+    let tp = run_on(
+        Control::Gsk980,
+        "T0404\nG0 X18 Z6\nG92 X15.4 Z-20 F3 L3 Q60000\nM30\n",
+    );
+    let phases: Vec<f64> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .map(|s| (s.thread_phase * 1e9).round() / 1e9)
+        .collect();
+    let third = |x: f64| (x * 1e9).round() / 1e9;
+    assert_eq!(phases, [third(1.0 / 6.0), third(0.5), third(5.0 / 6.0)]);
+}
+
+/// GSK G92 `J` `K`: the run-out (pull-out) in X (radius) and Z, unsigned; K omitted is J;
+/// J0 is none; they stay for the modal repeats.
+#[test]
+fn gsk_g92_j_k_run_out() {
+    let tp = run_on(
+        Control::Gsk980,
+        "T0404\nG0 X22 Z2\nG92 X19 Z-20 F2 J1 K2\nX18.6\nG92 X18.4 Z-20 J0.5\nG92 X18.2 Z-20 J0\nM30\n",
+    );
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let threads: Vec<((f64, f64), (f64, f64))> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .map(|s| {
+            let r = |v: f64| (v * 1e6).round() / 1e6;
+            (
+                (r(s.from.z), r(2.0 * s.from.r)),
+                (r(s.to.z), r(2.0 * s.to.r)),
+            )
+        })
+        .collect();
+    assert_eq!(
+        threads,
+        [
+            // J1 K2: thread to 2 before the end, then out 1 (radius) at the end Z
+            ((2.0, 19.0), (-18.0, 19.0)),
+            ((-18.0, 19.0), (-20.0, 21.0)),
+            // the repeat keeps them
+            ((2.0, 18.6), (-18.0, 18.6)),
+            ((-18.0, 18.6), (-20.0, 20.6)),
+            // J without K: K = J
+            ((2.0, 18.4), (-19.5, 18.4)),
+            ((-19.5, 18.4), (-20.0, 19.4)),
+            // J0: no run-out
+            ((2.0, 18.2), (-20.0, 18.2)),
+        ]
+    );
+}
+
+/// The GSK words are errors elsewhere, and bad values are alarms at the word.
+#[test]
+fn gsk_g92_words_are_checked() {
+    for (control, src, code) in [
+        (
+            Control::FanucA,
+            "G0 X18 Z6\nG92 X15.4 Z-20 F3 L2\n",
+            "LS-WORD-UNUSED",
+        ),
+        (
+            Control::FanucA,
+            "G0 X18 Z6\nG92 X15.4 Z-20 F3 J1\n",
+            "LS-WORD-UNUSED",
+        ),
+        (
+            Control::Gsk980,
+            "G0 X18 Z6\nG92 X15.4 Z-20 F3 L2.\n",
+            "LS-G92-STARTS",
+        ),
+        (
+            Control::Gsk980,
+            "G0 X18 Z6\nG92 X15.4 Z-20 F3 L0\n",
+            "LS-G92-STARTS",
+        ),
+        (
+            Control::Gsk980,
+            "G0 X18 Z6\nG92 X15.4 Z-20 F3 L100\n",
+            "LS-G92-STARTS",
+        ),
+        (
+            Control::Gsk980,
+            "G0 X18 Z6\nG92 X15.4 Z-20 F3 J-1\n",
+            "LS-G92-RUNOUT",
+        ),
+        (
+            Control::Gsk980,
+            "G0 X18 Z6\nG92 X15.4 Z-20 F3 J1 K30\n",
+            "LS-G92-RUNOUT",
+        ),
+    ] {
+        let tp = run_on(control, src);
+        assert_eq!(codes(&tp.alarms), [code], "{src}");
+        assert!(tp.alarms[0].span.line == 2, "{src}: {:?}", tp.alarms[0]);
+    }
+}

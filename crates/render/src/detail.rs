@@ -233,9 +233,13 @@ fn thread_window(t: &ThreadCheck) -> Option<Bbox> {
 }
 
 /// `thread line 14, lead 1.5: X18.05 reached, 60°` (the flanks' included angle; the
-/// expected diameter is labelled on its line inside the view).
+/// expected diameter is labelled on its line inside the view); a multi-start thread says
+/// `lead 3, 2 starts`.
 fn thread_title(t: &ThreadCheck) -> String {
     let mut s = format!("thread line {}, lead {}", t.line, num(t.lead_mm, 3));
+    if t.starts > 1 {
+        s += &format!(", {} starts", t.starts);
+    }
     match t.achieved_x_mm.filter(|a| a.is_finite()) {
         Some(a) => s += &format!(": X{} reached", num(a, 3)),
         None => s += ": no material cut",
@@ -526,6 +530,24 @@ mod tests {
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() < 1e-9
+    }
+
+    /// The title names the starts of a multi-start thread, and says nothing of one start.
+    #[test]
+    fn a_multi_start_thread_title_names_its_starts() {
+        assert_eq!(
+            thread_title(&m20()),
+            "thread line 4, lead 1.5: X18.05 reached"
+        );
+        let two = ThreadCheck {
+            lead_mm: 3.0,
+            starts: 2,
+            ..m20()
+        };
+        assert_eq!(
+            thread_title(&two),
+            "thread line 4, lead 3, 2 starts: X18.05 reached"
+        );
     }
 
     /// Four leads around the middle of the root line; radially root to crest (the passes'

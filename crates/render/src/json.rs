@@ -111,6 +111,8 @@ struct ThreadJ {
     line: u32,
     side: &'static str,
     lead_mm: Option<f64>,
+    /// Number of starts (additive field): the pitch is the lead over it.
+    starts: usize,
     x: Option<f64>,
     expected_x: Option<f64>,
     passes: usize,
@@ -254,6 +256,7 @@ pub(crate) fn json(report: &Report) -> String {
                 line: t.line,
                 side: if t.inside { "id" } else { "od" },
                 lead_mm: r6(t.lead_mm),
+                starts: t.starts.max(1),
                 x: r6(t.x_mm),
                 expected_x: t.expected_x_mm.and_then(r6),
                 passes: t.pass_depths_mm.len(),

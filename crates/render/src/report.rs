@@ -249,6 +249,8 @@ pub struct ThreadCheck {
     pub inside: bool,
     /// Programmed lead, mm.
     pub lead_mm: f64,
+    /// Number of starts (the pitch is the lead over it); 0 or 1: one.
+    pub starts: usize,
     /// Programmed final X (the deepest pass's end): minor diameter (OD), major (ID).
     pub x_mm: f64,
     /// The diameter that should be reached: `--target`'s surface over the thread, else

@@ -157,6 +157,7 @@ fn threads_are_listed_with_their_pitch_diameter() {
             line: 4,
             inside: false,
             lead_mm: 1.5,
+            starts: 1,
             x_mm: 18.05,
             expected_x_mm: Some(18.05),
             pass_depths_mm: vec![0.4, 0.3, 0.275],
@@ -171,6 +172,7 @@ fn threads_are_listed_with_their_pitch_diameter() {
             line: 9,
             inside: true,
             lead_mm: 2.0,
+            starts: 2,
             x_mm: 30.0,
             ..Default::default()
         },
@@ -198,6 +200,17 @@ fn threads_are_listed_with_their_pitch_diameter() {
     );
     assert_eq!(
         rows[1],
-        ["9", "ID", "2", "0", "30", "—", "—", "—", "—", "—"]
+        [
+            "9",
+            "ID",
+            "2 (2 starts)",
+            "0",
+            "30",
+            "—",
+            "—",
+            "—",
+            "—",
+            "—"
+        ]
     );
 }

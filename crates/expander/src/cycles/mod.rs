@@ -37,6 +37,9 @@ pub(crate) struct Move {
     pub(crate) hint: ToolHint,
     /// S, T and G96–G99 to put in force before this move (G70 runs its shape's own).
     pub(crate) modes: Option<contour::ShapeModes>,
+    /// Start shift of this thread move as a fraction of the lead (a GSK G92 with L starts
+    /// cuts each start in turn); `None`: the cycle's [`Output::thread_phase`].
+    pub(crate) phase: Option<f64>,
 }
 
 impl Move {
@@ -58,6 +61,7 @@ impl Move {
             span: None,
             hint: ToolHint::Table,
             modes: None,
+            phase: None,
         }
     }
 }
@@ -82,6 +86,9 @@ pub(crate) struct Retained {
     pub(crate) g76: Option<g76::FirstBlock>,
     /// The last G92 block had a start angle Q ≠ 0 (a modal repeat without Q is warned).
     pub(crate) g92_shifted: bool,
+    /// GSK G92 J K L of the last G92 block (spec/dialects.md §4.6), which its modal repeats
+    /// keep.
+    pub(crate) g92_gsk: g92::GskWords,
     /// The drilling cycle in force (modal until G80 or a group-01 code) and its words.
     pub(crate) drill: Option<drill::DrillWords>,
 }

@@ -70,7 +70,6 @@ impl Interp<'_> {
         // block that wrote G41/G42 inside the shape; cancel back to A).
         let side = out.comp.and_then(|shape_side| shape_side.or(self.comp));
         let feed = self.feed;
-        self.thread_phase = out.thread_phase;
         for (k, m) in out.moves.into_iter().enumerate() {
             if k == out.comp_from {
                 if let Some(side) = side {
@@ -93,6 +92,7 @@ impl Interp<'_> {
                 } else {
                     0.0
                 };
+                self.thread_phase = m.phase.unwrap_or(out.thread_phase);
                 self.push_at(span, m.motion, m.to, m.arc, lead, m.hint)?;
             }
         }

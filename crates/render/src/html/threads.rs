@@ -41,7 +41,7 @@ pub(super) fn threads_table(out: &mut String, list: &[ThreadCheck]) {
             t.line,
             t.line,
             if t.inside { "ID" } else { "OD" },
-            pos(t.lead_mm),
+            lead_cell(t),
             t.pass_depths_mm.len(),
             pos(t.x_mm),
             cell(t.expected_x_mm, pos),
@@ -52,4 +52,13 @@ pub(super) fn threads_table(out: &mut String, list: &[ThreadCheck]) {
         );
     }
     out.push_str("</tbody></table>\n");
+}
+
+/// The lead, with the number of starts of a multi-start thread (`3 (2 starts)`).
+fn lead_cell(t: &ThreadCheck) -> String {
+    if t.starts > 1 {
+        format!("{} ({} starts)", pos(t.lead_mm), t.starts)
+    } else {
+        pos(t.lead_mm)
+    }
 }
