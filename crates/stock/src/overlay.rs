@@ -590,7 +590,7 @@ pub enum BoolOp {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ring_air::tests::Rng;
+    use crate::ring_air::tests::{box_within, Rng};
 
     /// A random convex counter-clockwise polygon on a coarse grid (touching and collinear
     /// cases are frequent), or fewer than three points.
@@ -602,19 +602,6 @@ mod tests {
             .iter()
             .map(|p| IPt::new(p[0] as i32, p[1] as i32))
             .collect()
-    }
-
-    fn random_box(rng: &mut Rng, span: i64) -> IBox {
-        let (a, b, c, d) = (
-            rng.next(span),
-            rng.next(span),
-            rng.next(span),
-            rng.next(span),
-        );
-        IBox {
-            min: [a.min(c) as i32, b.min(d) as i32],
-            max: [a.max(c) as i32, b.max(d) as i32],
-        }
     }
 
     /// A rational point `(x / d, y / d)`, `d > 0`.
@@ -691,7 +678,7 @@ mod tests {
             if outer.len() < 3 || inner.len() < 3 {
                 continue;
             }
-            let b = random_box(&mut rng, 6);
+            let b = box_within(&mut rng, 6);
             let want = covers_reference(&outer, &inner, &b);
             assert_eq!(
                 convex_covers_in_box(&outer, &inner, &b),

@@ -2004,20 +2004,23 @@ mod tests {
         };
         let (with, without) = (sim(true), sim(false));
         assert!(without.removed_area > 50.0, "{}", without.removed_area);
-        let xor = symmetric_difference_area(&with.final_shapes, &without.final_shapes);
+        assert_eq!(same_cut(&with, &without), [segs.len() - 1]);
+    }
+
+    /// Asserts that two runs cut the same stock (symmetric difference and removed area
+    /// within 10⁻⁹) with the same crashes (move and area); returns the crashes' moves.
+    fn same_cut(a: &Simulation, b: &Simulation) -> Vec<usize> {
+        let xor = symmetric_difference_area(&a.final_shapes, &b.final_shapes);
         assert!(xor < 1e-9, "symmetric difference {xor} mm²");
-        assert!((with.removed_area - without.removed_area).abs() < 1e-9);
+        assert!((a.removed_area - b.removed_area).abs() < 1e-9);
         let verdicts = |s: &Simulation| {
             s.crashes
                 .iter()
                 .map(|c| (c.segment, c.area))
                 .collect::<Vec<_>>()
         };
-        assert_eq!(verdicts(&with), verdicts(&without));
-        assert_eq!(
-            verdicts(&with).iter().map(|v| v.0).collect::<Vec<_>>(),
-            vec![segs.len() - 1]
-        );
+        assert_eq!(verdicts(a), verdicts(b));
+        a.crashes.iter().map(|c| c.segment).collect()
     }
 
     /// What a box keeps when a core is cut out of it holds every unit cell of the box the
@@ -2025,23 +2028,11 @@ mod tests {
     /// when the core spans the box.
     #[test]
     fn the_box_outside_a_core_holds_what_the_cut_leaves() {
-        use crate::ring_air::tests::Rng;
+        use crate::ring_air::tests::{box_within, Rng};
         let mut rng = Rng(0x0b0c_5eed_0042);
         let mut shrunk = 0;
         for _ in 0..20_000 {
-            let mut rbox = |span: i64| {
-                let (a, b, c, d) = (
-                    rng.next(span),
-                    rng.next(span),
-                    rng.next(span),
-                    rng.next(span),
-                );
-                IBox {
-                    min: [a.min(c) as i32, b.min(d) as i32],
-                    max: [a.max(c) as i32, b.max(d) as i32],
-                }
-            };
-            let (b, core) = (rbox(5), rbox(7));
+            let (b, core) = (box_within(&mut rng, 5), box_within(&mut rng, 7));
             let out = outside_core(b, &core);
             // every unit cell of the box the core does not cover lies in what is kept
             for x in b.min[0]..b.max[0] {
@@ -2142,16 +2133,6 @@ mod tests {
         };
         let (with, without) = (sim(true), sim(false));
         assert!(without.removed_area > 40.0, "{}", without.removed_area);
-        let xor = symmetric_difference_area(&with.final_shapes, &without.final_shapes);
-        assert!(xor < 1e-9, "symmetric difference {xor} mm²");
-        assert!((with.removed_area - without.removed_area).abs() < 1e-9);
-        let verdicts = |s: &Simulation| {
-            s.crashes
-                .iter()
-                .map(|c| (c.segment, c.area))
-                .collect::<Vec<_>>()
-        };
-        assert_eq!(verdicts(&with), verdicts(&without));
-        assert_eq!(verdicts(&with).len(), 1);
+        assert_eq!(same_cut(&with, &without).len(), 1);
     }
 }

@@ -184,6 +184,20 @@ pub(crate) mod tests {
         }
     }
 
+    /// A random box with its corners anywhere in `-span..=span`.
+    pub(crate) fn box_within(rng: &mut Rng, span: i64) -> IBox {
+        let (a, b, c, d) = (
+            rng.next(span),
+            rng.next(span),
+            rng.next(span),
+            rng.next(span),
+        );
+        IBox {
+            min: [a.min(c) as i32, b.min(d) as i32],
+            max: [a.max(c) as i32, b.max(d) as i32],
+        }
+    }
+
     fn runs_of(ring: &[IPt]) -> Vec<IBox> {
         let mut runs = Vec::new();
         run_boxes(ring, &mut runs);
