@@ -440,14 +440,17 @@ fn gsk_g92_l_cuts_every_start_in_turn() {
         Control::Gsk980,
         "T0404\nG0 X18 Z6\nG92 X15.4 Z-20 F3 L3 Q60000\nM30\n",
     );
+    let rounded = |x: f64| (x * 1e9).round() / 1e9;
     let phases: Vec<f64> = tp
         .segments
         .iter()
         .filter(|s| s.motion == expander::Motion::Thread)
-        .map(|s| (s.thread_phase * 1e9).round() / 1e9)
+        .map(|s| rounded(s.thread_phase))
         .collect();
-    let third = |x: f64| (x * 1e9).round() / 1e9;
-    assert_eq!(phases, [third(1.0 / 6.0), third(0.5), third(5.0 / 6.0)]);
+    assert_eq!(
+        phases,
+        [rounded(1.0 / 6.0), rounded(0.5), rounded(5.0 / 6.0)]
+    );
 }
 
 /// GSK G92 `J` `K`: the run-out (pull-out) in X (radius) and Z, unsigned; K omitted is J;
