@@ -6,7 +6,10 @@
 //!   only sees the stock near the move; strips are independent, so they run in parallel;
 //! - within a strip, sweeps are subtracted in batches of [`BATCH`]: one call removes the
 //!   union of the batch (no sweep-by-sweep subtraction from an ever-growing polygon, no
-//!   single giant call with k² tool-tool intersections);
+//!   single giant call with k² tool-tool intersections); a sweep that one in the batch
+//!   covers where the tile has stock is left out, and one that covers those takes their
+//!   place ([`SimOptions::cover`]: a roughing's passes then make one call per tile and
+//!   epoch);
 //! - sweeps that cannot touch a subtree's stock box (box overlap, then a separating axis)
 //!   never descend into it, and those that miss a tile's stock (air cuts) never reach a
 //!   boolean call;
@@ -274,8 +277,8 @@ impl Trimmed {
 }
 
 /// The sweeps of a tile waiting for its next boolean call, each trimmed to the tile's stock
-/// box. A trimmed polygon stays right while the stock shrinks (its part in any smaller
-/// box is the sweep's), so the batch outlives a flush of the stock box.
+/// box (its part in any box inside that one is the sweep's, so the box later sweeps are
+/// tested against may shrink while the batch waits).
 #[derive(Default)]
 struct Batch {
     /// Per sweep still in the batch: the range of its rings in `rings`.
