@@ -233,12 +233,11 @@ pub(crate) fn convex_contains(outer: &[IPt], inner: &[IPt]) -> bool {
 
 /// A large axis-aligned box inside the convex counter-clockwise `poly` (EMPTY when none was
 /// found): a box that meets it meets the polygon, with no edge to test. The largest of the
-/// boxes spanned by two of four horizontal chords, at the bottom, a third and two thirds up
-/// and the top (by convexity the polygon holds the hull
-/// of two chords, so the overlap of their Z ranges between their heights), shrunk by a
-/// grid step, and kept only when its corners pass the exact test of every edge (which a
-/// polygon that snapping left a little reflex may fail). One pass over the edges; built
-/// for every sweep polygon, so kept cheap.
+/// boxes spanned by two of four horizontal chords (at the bottom, a third and two thirds
+/// up, and the top; by convexity the polygon holds the hull of two chords, so the overlap
+/// of their Z ranges between their heights), shrunk by a grid step, and kept only when its
+/// corners pass the exact test of every edge (which a polygon that snapping left a little
+/// reflex may fail). One pass over the edges: it is built for most sweep polygons.
 pub(crate) fn inscribed_box(poly: &[IPt]) -> IBox {
     const LEVELS: usize = 4;
     let n = poly.len();
