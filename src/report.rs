@@ -244,6 +244,7 @@ pub(crate) fn build(
     tol: f64,
 ) -> Report {
     let tp = &loaded.toolpath;
+    let times = expander::timing::times(tp, &loaded.machine);
     let cut = |c: &stock::Crash| stock_crash(loaded, c);
     let cut_tol = loaded.machine.rapid_cut_tol;
     let rapid_cuts: Vec<Crash> = sim
@@ -325,11 +326,14 @@ pub(crate) fn build(
             .collect(),
         warnings,
         tools: {
-            let times = expander::timing::per_tool(tp, &loaded.machine);
             tool_numbers
                 .iter()
                 .map(|&t| {
-                    let secs = times.iter().find(|(n, _)| *n == t).map_or(0.0, |(_, s)| *s);
+                    let secs = times
+                        .per_tool
+                        .iter()
+                        .find(|(n, _)| *n == t)
+                        .map_or(0.0, |(_, s)| *s);
                     {
                         // "T01 · 32.6 s · turning …": the time before the long description
                         let line = tool_line(tools, t);
@@ -349,7 +353,7 @@ pub(crate) fn build(
             .iter()
             .filter(|s| s.motion == Motion::Rapid)
             .count(),
-        cycle_time_s: expander::timing::cycle_time(tp, &loaded.machine),
+        cycle_time_s: times.total,
         tolerance_mm: tol,
         grooves: tp
             .intended

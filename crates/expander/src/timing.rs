@@ -57,26 +57,33 @@ pub fn rpm_css(vc: f64, r: f64, max_rpm: f64) -> f64 {
     (1000.0 * vc / (std::f64::consts::PI * d)).min(max_rpm)
 }
 
-/// Total cycle time of a toolpath with its dwells, s.
-pub fn cycle_time(tp: &Toolpath, machine: &Machine) -> f64 {
-    tp.segments
-        .iter()
-        .map(|s| segment_time(tp, s, machine))
-        .sum::<f64>()
-        + tp.dwell_s
+/// A toolpath's cycle time and its share per tool.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Times {
+    /// Every move and dwell, s.
+    pub total: f64,
+    /// Cutting and rapid time per tool number, in order of first use (dwells not
+    /// included), s.
+    pub per_tool: Vec<(u32, f64)>,
 }
 
-/// Cutting and rapid time per tool number, in order of first use (dwells not included).
-pub fn per_tool(tp: &Toolpath, machine: &Machine) -> Vec<(u32, f64)> {
-    let mut out: Vec<(u32, f64)> = vec![];
+/// The cycle time and the time per tool, in one pass over the moves (a million-move
+/// program's moves are 120 MB: each pass over them costs about as much as its sums).
+pub fn times(tp: &Toolpath, machine: &Machine) -> Times {
+    let mut total = 0.0;
+    let mut per_tool: Vec<(u32, f64)> = vec![];
     for s in &tp.segments {
         let t = segment_time(tp, s, machine);
-        match out.iter_mut().find(|(tool, _)| *tool == s.tool) {
+        total += t;
+        match per_tool.iter_mut().find(|(tool, _)| *tool == s.tool) {
             Some((_, sum)) => *sum += t,
-            None => out.push((s.tool, t)),
+            None => per_tool.push((s.tool, t)),
         }
     }
-    out
+    Times {
+        total: total + tp.dwell_s,
+        per_tool,
+    }
 }
 
 #[cfg(test)]
@@ -111,7 +118,7 @@ mod tests {
             Pt::new(-100.0, 10.0),
             Feed::PerMinute(200.0),
         );
-        assert!((cycle_time(&s, &m) - 30.0).abs() < 1e-9);
+        assert!((times(&s, &m).total - 30.0).abs() < 1e-9);
         let s = seg(
             Pt::new(0.0, 10.0),
             Pt::new(-30.0, 10.0),
@@ -120,7 +127,7 @@ mod tests {
                 spindle: Spindle::Rpm(600.0),
             },
         );
-        assert!((cycle_time(&s, &m) - 30.0).abs() < 1e-9);
+        assert!((times(&s, &m).total - 30.0).abs() < 1e-9);
     }
 
     #[test]
@@ -139,6 +146,6 @@ mod tests {
             },
         );
         let n = 1000.0 * 150.0 / (std::f64::consts::PI * 100.0);
-        assert!((cycle_time(&s, &m) - 250.0 / n * 60.0).abs() < 1e-6);
+        assert!((times(&s, &m).total - 250.0 / n * 60.0).abs() < 1e-6);
     }
 }

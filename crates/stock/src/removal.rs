@@ -1013,10 +1013,8 @@ pub fn simulate(
     // moves whose cuts are all in the tiles at the last epoch end (a merged run still open
     // is not: its sweep comes when it ends)
     let mut cut_moves = 0;
-    let mut done = 0;
     // pieces parted off the held bar: (moves done when they fell, the pieces)
     let mut fallen: Vec<(usize, IShapes)> = Vec::new();
-    let mut to_erase: Option<(usize, Vec<Shape>)> = None;
     let mut separation_checks = 0;
     let left_end = grid.box_to_int(&bb).min[0];
     // a tube's bore: a blade parts it off when it reaches the bore, not the axis
@@ -1026,47 +1024,30 @@ pub fn simulate(
         .map(|p| p[1])
         .fold(f64::INFINITY, f64::min)
         .max(0.0);
-    while done < segments.len() || done == 0 {
-        let mut end = (done + epoch).min(segments.len());
-        // a part-off may leave a piece: its epoch ends with it, so that the stock can be
-        // looked at before the next move
+    let mut next = Some(build_epoch(
+        &mut builder,
+        &mut snapshots,
+        None,
+        segments,
+        0..epoch.min(segments.len()),
+        separation_checks < MAX_SEPARATION_CHECKS,
+        tools,
+        bore,
+    ));
+    while let Some(ep) = next.take() {
+        let lists = strip_lists(&ep.sweeps, &bounds);
+        // the next epoch's sweeps are built while the workers cut this one's, unless this
+        // one ends with a part-off (the stock is looked at first: pieces that fell are
+        // erased from what comes after) or the snapshots are exact (their counts are read
+        // epoch by epoch; such programs fit one epoch anyway)
+        let ahead = !ep.parting && ep.end < segments.len() && !snapshots.exact();
+        let upcoming = ep.end..(ep.end + epoch).min(segments.len());
         let looking = separation_checks < MAX_SEPARATION_CHECKS;
-        if let Some(k) = segments[done..end]
-            .iter()
-            .position(|s| looking && parts_off(s, tools, bore))
-        {
-            end = done + k + 1;
-        }
-        if let Some((idx, pieces)) = to_erase.take() {
-            builder.erase(idx, &pieces);
-        }
-        for (k, seg) in segments[done..end].iter().enumerate() {
-            builder.push_before(done + k, seg, segments.get(done + k + 1));
-            snapshots.after_push(done + k + 1, &mut builder);
-        }
-        let parting = end > done && looking && parts_off(&segments[end - 1], tools, bore);
-        if end == segments.len() || parting {
-            builder.flush_run();
-        }
-        let sweeps = builder.take();
-        let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n_strips];
-        for (i, it) in sweeps.items.iter().enumerate() {
-            // strips whose Z range the sweep's box touches
-            let lo = bounds
-                .partition_point(|&b| b <= it.bbox.min[0])
-                .saturating_sub(1);
-            let hi = bounds
-                .partition_point(|&b| b < it.bbox.max[0])
-                .min(n_strips);
-            for list in &mut lists[lo..hi.max(lo + 1).min(n_strips)] {
-                list.push(i as u32);
-            }
-        }
-        let next = AtomicUsize::new(0);
+        let next_strip = AtomicUsize::new(0);
         let ctx = Ctx {
             grid: &grid,
             min_tile,
-            sweeps: &sweeps,
+            sweeps: &ep.sweeps,
             ring_air: opts.ring_air,
             cover: opts.cover,
         };
@@ -1079,7 +1060,7 @@ pub fn simulate(
                 runs: Vec::new(),
             };
             loop {
-                let k = next.fetch_add(1, Ordering::Relaxed);
+                let k = next_strip.fetch_add(1, Ordering::Relaxed);
                 if k >= n_strips {
                     break;
                 }
@@ -1093,13 +1074,26 @@ pub fn simulate(
             worker.frags
         };
         let total: usize = lists.iter().map(Vec::len).sum();
-        let mut new_frags = if threads <= 1 || total < 256 {
+        let mut new_frags = if threads <= 1 || (total < 256 && !ahead) {
             work(&mut engine)
         } else {
             std::thread::scope(|s| {
                 let handles: Vec<_> = (1..threads)
                     .map(|_| s.spawn(|| work(&mut Engine::new())))
                     .collect();
+                // this thread builds ahead, then joins the cutting of the strips left
+                if ahead {
+                    next = Some(build_epoch(
+                        &mut builder,
+                        &mut snapshots,
+                        None,
+                        segments,
+                        upcoming.clone(),
+                        looking,
+                        tools,
+                        bore,
+                    ));
+                }
                 let mut all = work(&mut engine);
                 for h in handles {
                     // a worker that panicked lost its fragments; the strips stay consistent
@@ -1109,9 +1103,9 @@ pub fn simulate(
             })
         };
         fragments.append(&mut new_frags);
-        snapshots.epoch(&sweeps, &mut engine);
-        cut_moves = if builder.has_open_run() {
-            sweeps
+        snapshots.epoch(&ep.sweeps, &mut engine);
+        cut_moves = if ep.open_run {
+            ep.sweeps
                 .items
                 .iter()
                 .filter(|it| it.body.is_none())
@@ -1119,10 +1113,10 @@ pub fn simulate(
                 .max()
                 .unwrap_or(cut_moves)
         } else {
-            end
+            ep.end
         };
         // (at the last epoch end the stock is the final part, which the caller has anyway)
-        if end < segments.len() {
+        if ep.end < segments.len() {
             snapshots.at_epoch_end(cut_moves, || stock_of(&strips, &mut engine));
         }
         let beyond = |seg: &Segment| {
@@ -1133,23 +1127,32 @@ pub fn simulate(
                     .has_stock_right_of(x)
             })
         };
-        if parting && end < segments.len() && beyond(&segments[end - 1]) {
+        let mut to_erase = None;
+        if ep.parting && ep.end < segments.len() && beyond(&segments[ep.end - 1]) {
             separation_checks += 1;
             if separation_checks == MAX_SEPARATION_CHECKS {
                 warnings.push((
-                    end - 1,
+                    ep.end - 1,
                     format!("{MAX_SEPARATION_CHECKS} part-offs: pieces parted off after this move stay in the stock"),
                 ));
             }
             if let Some(off) = fallen_pieces(stock_of(&strips, &mut engine), left_end) {
-                to_erase = Some((end - 1, grid.shapes_to_float(&off)));
-                fallen.push((end, off));
+                to_erase = Some((ep.end - 1, grid.shapes_to_float(&off)));
+                fallen.push((ep.end, off));
             }
         }
-        done = end;
-        progress(done);
-        if segments.is_empty() {
-            break;
+        progress(ep.end);
+        if next.is_none() && ep.end < segments.len() {
+            next = Some(build_epoch(
+                &mut builder,
+                &mut snapshots,
+                to_erase,
+                segments,
+                upcoming,
+                separation_checks < MAX_SEPARATION_CHECKS,
+                tools,
+                bore,
+            ));
         }
     }
     let mut parts: Vec<IShapes> = Vec::new();
@@ -1191,6 +1194,77 @@ pub fn simulate(
             })
             .collect(),
     }
+}
+
+/// One epoch's sweeps, built (possibly while the workers cut the epoch before).
+struct Epoch {
+    /// The epoch holds the moves up to this index.
+    end: usize,
+    /// It ends with a part-off: the stock is looked at for pieces that fell before the
+    /// next epoch is built.
+    parting: bool,
+    sweeps: Sweeps,
+    /// A merged run of feeds was still open at its end (its cut comes in a later epoch).
+    open_run: bool,
+}
+
+/// Builds the sweeps of the moves `moves` (shortened to end at the first part-off while
+/// `looking`), after erasing the pieces `fallen` from what later sweeps see.
+#[allow(clippy::too_many_arguments)]
+fn build_epoch(
+    builder: &mut SweepBuilder,
+    snapshots: &mut Snapshots,
+    fallen: Option<(usize, Vec<Shape>)>,
+    segments: &[Segment],
+    moves: std::ops::Range<usize>,
+    looking: bool,
+    tools: &ToolTable,
+    bore: f64,
+) -> Epoch {
+    let (done, mut end) = (moves.start, moves.end);
+    // a part-off may leave a piece: its epoch ends with it, so that the stock can be
+    // looked at before the next move
+    if let Some(k) = segments[done..end]
+        .iter()
+        .position(|s| looking && parts_off(s, tools, bore))
+    {
+        end = done + k + 1;
+    }
+    if let Some((idx, pieces)) = fallen {
+        builder.erase(idx, &pieces);
+    }
+    for (k, seg) in segments[done..end].iter().enumerate() {
+        builder.push_before(done + k, seg, segments.get(done + k + 1));
+        snapshots.after_push(done + k + 1, builder);
+    }
+    let parting = end > done && looking && parts_off(&segments[end - 1], tools, bore);
+    if end == segments.len() || parting {
+        builder.flush_run();
+    }
+    Epoch {
+        end,
+        parting,
+        sweeps: builder.take(),
+        open_run: builder.has_open_run(),
+    }
+}
+
+/// For each Z strip (between `bounds`), the sweeps whose box reaches into it.
+fn strip_lists(sweeps: &Sweeps, bounds: &[i32]) -> Vec<Vec<u32>> {
+    let n_strips = bounds.len() - 1;
+    let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n_strips];
+    for (i, it) in sweeps.items.iter().enumerate() {
+        let lo = bounds
+            .partition_point(|&b| b <= it.bbox.min[0])
+            .saturating_sub(1);
+        let hi = bounds
+            .partition_point(|&b| b < it.bbox.max[0])
+            .min(n_strips);
+        for list in &mut lists[lo..hi.max(lo + 1).min(n_strips)] {
+            list.push(i as u32);
+        }
+    }
+    lists
 }
 
 /// Most part-offs after which the stock is looked at for pieces that fell.
@@ -1762,6 +1836,55 @@ mod tests {
     /// pecks (3 mm blade-like V35 plunges stepped 0.01 mm, each followed by a retract) ask
     /// for two counts; each snapshot is labelled with the moves it holds (at or after the
     /// count asked for, before the end) and is the stock of that prefix run.
+    /// A part-off in the middle of a long program (epochs of 1 024 moves, the next one's
+    /// sweeps built while the last is cut): the pin falls before any later epoch is built,
+    /// so a rapid through its place three epochs later meets air, while a rapid into the
+    /// bar at the end is a crash. Removed: a 3 mm groove 2 mm deep, the kerf to the axis
+    /// and the crash's 3 × 5, 6 + 75 + 15 = 96 mm² (the fallen pin stays in the section).
+    #[test]
+    fn a_part_off_inside_a_long_program_drops_the_piece_for_later_epochs() {
+        let blank = Blank::bar(50.0, 100.0, 0.0, None).unwrap();
+        let blade = |motion, from, to| {
+            let mut s = seg(motion, from, to);
+            s.hint = expander::ToolHint::Grooving;
+            s
+        };
+        let mut segs = vec![];
+        for k in 1..=2_000 {
+            let r = 24.0 - 0.0005 * f64::from(k);
+            segs.push(blade(Motion::Feed, [-40.0, 26.0], [-40.0, r]));
+            segs.push(blade(Motion::Rapid, [-40.0, r], [-40.0, 26.0]));
+        }
+        segs.push(blade(Motion::Rapid, [-40.0, 26.0], [-13.0, 26.0]));
+        let part_off = segs.len();
+        segs.push(blade(Motion::Feed, [-13.0, 26.0], [-13.0, 0.0]));
+        segs.push(blade(Motion::Rapid, [-13.0, 0.0], [-13.0, 26.0]));
+        for _ in 0..750 {
+            segs.push(blade(Motion::Rapid, [-13.0, 26.0], [-60.0, 30.0]));
+            segs.push(blade(Motion::Rapid, [-60.0, 30.0], [-13.0, 26.0]));
+        }
+        segs.push(blade(Motion::Rapid, [-13.0, 26.0], [-6.0, 26.0]));
+        let through_pin = segs.len();
+        segs.push(blade(Motion::Rapid, [-6.0, 26.0], [-6.0, 10.0]));
+        segs.push(blade(Motion::Rapid, [-6.0, 10.0], [-6.0, 26.0]));
+        segs.push(blade(Motion::Rapid, [-6.0, 26.0], [-70.0, 26.0]));
+        segs.push(blade(Motion::Rapid, [-70.0, 26.0], [-70.0, 20.0]));
+        assert!(part_off % 1_024 > 0 && through_pin / 1_024 > part_off / 1_024);
+        let sim = run(&blank, &ToolTable::empty(), &segs);
+        let crashed: Vec<usize> = sim.crashes.iter().map(|c| c.segment).collect();
+        assert_eq!(crashed, vec![segs.len() - 1], "{:?}", sim.crashes);
+        assert!(
+            (sim.crashes[0].area - 15.0).abs() < 1e-6,
+            "{:?}",
+            sim.crashes
+        );
+        assert!(
+            (sim.removed_area - 96.0).abs() < 1e-6,
+            "{}",
+            sim.removed_area
+        );
+    }
+
     #[test]
     fn a_long_program_gets_its_snapshots_at_epoch_ends() {
         let blank = Blank::bar(50.0, 100.0, 0.0, None).unwrap();

@@ -54,6 +54,12 @@ impl Snapshots {
         }
     }
 
+    /// Whether the snapshots are taken exactly at their counts (a short program) rather
+    /// than at epoch ends.
+    pub(crate) fn exact(&self) -> bool {
+        self.exact
+    }
+
     /// Called after `moves` moves were pushed into `builder`: at a snapshot count, notes how
     /// far the builder got and the sweep of its open run.
     pub(crate) fn after_push(&mut self, moves: usize, builder: &mut SweepBuilder) {

@@ -807,12 +807,12 @@ impl<'a> SweepBuilder<'a> {
         }
     }
 
-    /// Number of sweeps emitted since the last [`SweepBuilder::take`].
     /// Whether a merged run of feeds is still open (its sweep not yet emitted).
     pub(crate) fn has_open_run(&self) -> bool {
         self.run.is_some()
     }
 
+    /// Number of sweeps emitted since the last [`SweepBuilder::take`].
     pub(crate) fn emitted(&self) -> usize {
         self.out.items.len()
     }
@@ -982,7 +982,6 @@ impl<'a> SweepBuilder<'a> {
         });
     }
 
-    /// Takes the sweeps built so far (the current run, if any, stays open).
     /// Removes `pieces` (section shapes) from the stock as a sweep of move `idx` that cuts
     /// nothing anyone reports: pieces a part-off separated from the held bar have fallen,
     /// and later moves through their place meet air.
@@ -1003,6 +1002,7 @@ impl<'a> SweepBuilder<'a> {
         self.end(item, idx, false, start, [0.0, 0.0]);
     }
 
+    /// Takes the sweeps built so far (the current run, if any, stays open).
     pub(crate) fn take(&mut self) -> Sweeps {
         std::mem::take(&mut self.out)
     }
