@@ -141,6 +141,38 @@ pub(crate) fn crash_list(
     out
 }
 
+/// What the reports read from the moves alone, not from the stock, so that it can be
+/// worked out beside the removal: each is a pass over the moves (120 MB of them in a
+/// million-move program).
+pub(crate) struct MoveFacts {
+    times: expander::timing::Times,
+    rapid_segments: usize,
+    /// The tools on a rear post ([`stock::rear_tools`]).
+    rear: Vec<u32>,
+    /// Each move's tool outline for the HTML player ([`stock::tool_outlines`]).
+    #[allow(clippy::type_complexity)]
+    outlines: (
+        Vec<(Vec<Vec<[f64; 2]>>, Vec<Vec<[f64; 2]>>)>,
+        Vec<(usize, usize)>,
+    ),
+}
+
+impl MoveFacts {
+    pub(crate) fn of(loaded: &Loaded, tools: &stock::ToolTable) -> Self {
+        let segments = &loaded.toolpath.segments;
+        let rear = stock::rear_tools(segments);
+        Self {
+            times: expander::timing::times(&loaded.toolpath, &loaded.machine),
+            rapid_segments: segments
+                .iter()
+                .filter(|s| s.motion == Motion::Rapid)
+                .count(),
+            outlines: stock::tool_outlines(tools, segments, &rear),
+            rear,
+        }
+    }
+}
+
 /// Crashes whose tool is drawn where it hit (the first ones: more would hide the picture).
 const MAX_TOOL_POSES: usize = 20;
 
@@ -152,9 +184,14 @@ pub(crate) fn add_crashes(
     tools: &stock::ToolTable,
     crashes: &[Listed],
     fixture: Option<&stock::Fixture>,
+    facts: MoveFacts,
 ) {
     let segments = &loaded.toolpath.segments;
-    let rear = stock::rear_tools(segments);
+    let MoveFacts {
+        rear,
+        outlines: (outlines, runs),
+        ..
+    } = facts;
     let tol = stock::SimOptions::default().chord_tol;
     report.crashes = crashes
         .iter()
@@ -168,7 +205,6 @@ pub(crate) fn add_crashes(
             c
         })
         .collect();
-    let (outlines, runs) = stock::tool_outlines(tools, segments, &rear);
     report.tool_outlines = outlines
         .into_iter()
         .map(|(edge, body)| render::ToolOutline { edge, body })
@@ -242,9 +278,10 @@ pub(crate) fn build(
     tools: &stock::ToolTable,
     sim: &stock::Simulation,
     tol: f64,
+    facts: &MoveFacts,
 ) -> Report {
     let tp = &loaded.toolpath;
-    let times = expander::timing::times(tp, &loaded.machine);
+    let times = &facts.times;
     let cut = |c: &stock::Crash| stock_crash(loaded, c);
     let cut_tol = loaded.machine.rapid_cut_tol;
     let rapid_cuts: Vec<Crash> = sim
@@ -296,12 +333,6 @@ pub(crate) fn build(
             });
         }
     }
-    let mut tool_numbers: Vec<u32> = vec![];
-    for s in &tp.segments {
-        if !tool_numbers.contains(&s.tool) {
-            tool_numbers.push(s.tool);
-        }
-    }
     Report {
         program: program_name.to_string(),
         title: tp.title.clone(),
@@ -325,34 +356,23 @@ pub(crate) fn build(
             .map(|d| diagnostic(loaded, d))
             .collect(),
         warnings,
-        tools: {
-            tool_numbers
-                .iter()
-                .map(|&t| {
-                    let secs = times
-                        .per_tool
-                        .iter()
-                        .find(|(n, _)| *n == t)
-                        .map_or(0.0, |(_, s)| *s);
-                    {
-                        // "T01 · 32.6 s · turning …": the time before the long description
-                        let line = tool_line(tools, t);
-                        match line.split_once(' ') {
-                            Some((num, rest)) => format!("{num} · {secs:.1} s · {rest}"),
-                            None => format!("{line} · {secs:.1} s"),
-                        }
-                    }
-                })
-                .collect()
-        },
+        // every tool of the moves in order of first use, with its time
+        tools: times
+            .per_tool
+            .iter()
+            .map(|&(t, secs)| {
+                // "T01 · 32.6 s · turning …": the time before the long description
+                let line = tool_line(tools, t);
+                match line.split_once(' ') {
+                    Some((num, rest)) => format!("{num} · {secs:.1} s · {rest}"),
+                    None => format!("{line} · {secs:.1} s"),
+                }
+            })
+            .collect(),
         removed_area_mm2: sim.removed_area,
         removed_volume_mm3: sim.removed_volume,
         segments: tp.segments.len(),
-        rapid_segments: tp
-            .segments
-            .iter()
-            .filter(|s| s.motion == Motion::Rapid)
-            .count(),
+        rapid_segments: facts.rapid_segments,
         cycle_time_s: times.total,
         tolerance_mm: tol,
         grooves: tp

@@ -358,27 +358,40 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     snapshot_after.extend(&stock_marks);
     snapshot_after.sort_unstable();
     snapshot_after.dedup();
-    let mut sim = stock::simulate(
-        &blank,
-        &tools,
-        segments,
-        &stock::SimOptions {
-            snapshot_after,
-            ..stock::SimOptions::default()
-        },
-        &mut tick,
-    );
-    let fixture_crashes = fixture
-        .as_ref()
-        .map(|f| {
-            f.check(
-                &tools,
-                segments,
-                stock::SimOptions::default().chord_tol,
-                &loaded.toolpath.tailstock,
+    // what the reports read from the moves alone is worked out beside the removal (the
+    // cores are not both busy all through it)
+    let (mut sim, (facts, fixture_crashes, thread_starts)) = std::thread::scope(|s| {
+        let side = s.spawn(|| {
+            (
+                crate::report::MoveFacts::of(&loaded, &tools),
+                fixture
+                    .as_ref()
+                    .map(|f| {
+                        f.check(
+                            &tools,
+                            segments,
+                            stock::SimOptions::default().chord_tol,
+                            &loaded.toolpath.tailstock,
+                        )
+                    })
+                    .unwrap_or_default(),
+                stock::thread_starts(segments, &tools),
             )
-        })
-        .unwrap_or_default();
+        });
+        let sim = stock::simulate(
+            &blank,
+            &tools,
+            segments,
+            &stock::SimOptions {
+                snapshot_after,
+                ..stock::SimOptions::default()
+            },
+            &mut tick,
+        );
+        // a panic there is a bug in latsim: `guarded` reports it
+        let side = side.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+        (sim, side)
+    });
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
@@ -409,7 +422,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         return EXIT_UNUSABLE;
     };
     // the stock each thread cuts into, where it was kept (short programs)
-    let thread_stock: Vec<(usize, Vec<stock::Shape>)> = stock::thread_starts(segments, &tools)
+    let thread_stock: Vec<(usize, Vec<stock::Shape>)> = thread_starts
         .into_iter()
         .filter_map(|k| kept_at(k).map(|s| (k, s)))
         .collect();
@@ -429,8 +442,15 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         )
     });
     let crashes = crate::report::crash_list(&loaded, &sim, &fixture_crashes);
-    let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol);
-    crate::report::add_crashes(&mut report, &loaded, &tools, &crashes, fixture.as_ref());
+    let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol, &facts);
+    crate::report::add_crashes(
+        &mut report,
+        &loaded,
+        &tools,
+        &crashes,
+        fixture.as_ref(),
+        facts,
+    );
     crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
     let target = args.target.is_some().then(|| intents[0].part.as_slice());
     crate::report::add_threads(&mut report, &loaded, &tools, &sim, target, &thread_stock);
