@@ -516,13 +516,13 @@ pub(crate) fn add_deviation(
 pub(crate) fn add_threads(
     report: &mut Report,
     loaded: &Loaded,
-    tools: &stock::ToolTable,
     sim: &stock::Simulation,
     target: Option<&[stock::Shape]>,
     before: &[(usize, Vec<stock::Shape>)],
+    passes: &stock::ThreadPasses,
 ) {
     let shapes = &sim.final_shapes;
-    for t in stock::threads(&loaded.toolpath.segments, tools, shapes) {
+    for t in passes.measure(&loaded.toolpath.segments, shapes) {
         if t.wrong_side {
             let (side, toward, other) = match t.surface {
                 stock::Surface::Outer => ("an OD", "outward (an inside thread)", "id"),

@@ -360,7 +360,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     snapshot_after.dedup();
     // what the reports read from the moves alone is worked out beside the removal (the
     // cores are not both busy all through it)
-    let (mut sim, (facts, fixture_crashes, thread_starts)) = std::thread::scope(|s| {
+    let (mut sim, (facts, fixture_crashes, thread_passes)) = std::thread::scope(|s| {
         let side = s.spawn(|| {
             (
                 crate::report::MoveFacts::of(&loaded, &tools),
@@ -375,7 +375,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
                         )
                     })
                     .unwrap_or_default(),
-                stock::thread_starts(segments, &tools),
+                stock::ThreadPasses::of(segments, &tools),
             )
         });
         let sim = stock::simulate(
@@ -422,7 +422,8 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         return EXIT_UNUSABLE;
     };
     // the stock each thread cuts into, where it was kept (short programs)
-    let thread_stock: Vec<(usize, Vec<stock::Shape>)> = thread_starts
+    let thread_stock: Vec<(usize, Vec<stock::Shape>)> = thread_passes
+        .starts()
         .into_iter()
         .filter_map(|k| kept_at(k).map(|s| (k, s)))
         .collect();
@@ -453,7 +454,14 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     );
     crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
     let target = args.target.is_some().then(|| intents[0].part.as_slice());
-    crate::report::add_threads(&mut report, &loaded, &tools, &sim, target, &thread_stock);
+    crate::report::add_threads(
+        &mut report,
+        &loaded,
+        &sim,
+        target,
+        &thread_stock,
+        &thread_passes,
+    );
     if html {
         report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
     }

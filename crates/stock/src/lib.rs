@@ -35,7 +35,7 @@ pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH, TAILSTOCK_CEN
 pub use measure::{
     area, deepest_radius, groove_deviation, hausdorff, least_gap, revolved_volume,
     surface_radius_at, symmetric_difference_area, thread_starts, threads, Reference, Surface,
-    Thread, ThreadForm,
+    Thread, ThreadForm, ThreadPasses,
 };
 pub use outline::Outline;
 pub use overlay::BoolOp;

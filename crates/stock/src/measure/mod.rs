@@ -9,7 +9,7 @@ mod thread;
 pub use groove::groove_deviation;
 pub use thread::{
     deepest_radius, least_gap, surface_radius_at, thread_starts, threads, Reference, Surface,
-    Thread, ThreadForm,
+    Thread, ThreadForm, ThreadPasses,
 };
 
 use crate::geom::{pts, P};

@@ -333,9 +333,47 @@ fn height_where(groove: &dyn Fn(f64) -> f64, root: f64, crest: f64, share: f64) 
 /// The threads of a toolpath, in program order (see [`Thread`]); `shapes` is the final
 /// section, where the first pass's depth is measured from the crest.
 pub fn threads(segments: &[Segment], tools: &ToolTable, shapes: &[Shape]) -> Vec<Thread> {
-    let groups: Vec<(Surface, Vec<&Segment>, usize)> = thread_groups(segments, tools)
-        .into_iter()
-        .map(|(surface, passes)| {
+    ThreadPasses::of(segments, tools).measure(segments, shapes)
+}
+
+/// The index of the first move of each thread of a toolpath, in program order: where the
+/// stock a thread cuts into is taken (see [`Thread::achieved_x`]).
+pub fn thread_starts(segments: &[Segment], tools: &ToolTable) -> Vec<usize> {
+    ThreadPasses::of(segments, tools).starts()
+}
+
+/// The passes of a toolpath's threads, found in one pass over the moves (a reader of a
+/// long program's moves does it once, before the final section is known, and measures
+/// them after).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThreadPasses(Vec<(Surface, Vec<usize>)>);
+
+impl ThreadPasses {
+    /// The threads' passes of `segments`, grouped as [`Thread`] says.
+    pub fn of(segments: &[Segment], tools: &ToolTable) -> Self {
+        Self(thread_groups(segments, tools))
+    }
+
+    /// The index of the first move of each thread, in program order.
+    pub fn starts(&self) -> Vec<usize> {
+        self.0.iter().map(|(_, passes)| passes[0]).collect()
+    }
+
+    /// The threads measured in the final section `shapes` (see [`threads`]); `segments`
+    /// are the moves the passes were found in.
+    pub fn measure(&self, segments: &[Segment], shapes: &[Shape]) -> Vec<Thread> {
+        measure(&self.0, segments, shapes)
+    }
+}
+
+fn measure(
+    groups: &[(Surface, Vec<usize>)],
+    segments: &[Segment],
+    shapes: &[Shape],
+) -> Vec<Thread> {
+    let groups: Vec<(Surface, Vec<&Segment>, usize)> = groups
+        .iter()
+        .map(|&(surface, ref passes)| {
             let first = passes[0];
             (
                 surface,
@@ -398,15 +436,6 @@ pub fn threads(segments: &[Segment], tools: &ToolTable, shapes: &[Shape]) -> Vec
                 pass_depths,
             }
         })
-        .collect()
-}
-
-/// The index of the first move of each thread of a toolpath, in program order: where the
-/// stock a thread cuts into is taken (see [`Thread::achieved_x`]).
-pub fn thread_starts(segments: &[Segment], tools: &ToolTable) -> Vec<usize> {
-    thread_groups(segments, tools)
-        .into_iter()
-        .map(|(_, passes)| passes[0])
         .collect()
 }
 
