@@ -1043,7 +1043,6 @@ pub fn simulate(
         let ahead = !ep.parting && ep.end < segments.len() && !snapshots.exact();
         let upcoming = ep.end..(ep.end + epoch).min(segments.len());
         let looking = separation_checks < MAX_SEPARATION_CHECKS;
-        let next_strip = AtomicUsize::new(0);
         let ctx = Ctx {
             grid: &grid,
             min_tile,
@@ -1051,57 +1050,20 @@ pub fn simulate(
             ring_air: opts.ring_air,
             cover: opts.cover,
         };
-        let work = |engine: &mut Engine| {
-            let mut worker = Worker {
-                engine,
-                frags: Vec::new(),
-                batch: Batch::default(),
-                trim: Trimmed::default(),
-                runs: Vec::new(),
-            };
-            loop {
-                let k = next_strip.fetch_add(1, Ordering::Relaxed);
-                if k >= n_strips {
-                    break;
-                }
-                if lists[k].is_empty() {
-                    continue;
-                }
-                // a poisoned lock only means another worker panicked; its data is still whole
-                let mut strip = strips[k].lock().unwrap_or_else(|e| e.into_inner());
-                strip.process(&lists[k], &ctx, &mut worker);
+        let mut new_frags = cut_strips(&strips, &lists, &ctx, threads, &mut engine, || {
+            if ahead {
+                next = Some(build_epoch(
+                    &mut builder,
+                    &mut snapshots,
+                    None,
+                    segments,
+                    upcoming.clone(),
+                    looking,
+                    tools,
+                    bore,
+                ));
             }
-            worker.frags
-        };
-        let total: usize = lists.iter().map(Vec::len).sum();
-        let mut new_frags = if threads <= 1 || (total < 256 && !ahead) {
-            work(&mut engine)
-        } else {
-            std::thread::scope(|s| {
-                let handles: Vec<_> = (1..threads)
-                    .map(|_| s.spawn(|| work(&mut Engine::new())))
-                    .collect();
-                // this thread builds ahead, then joins the cutting of the strips left
-                if ahead {
-                    next = Some(build_epoch(
-                        &mut builder,
-                        &mut snapshots,
-                        None,
-                        segments,
-                        upcoming.clone(),
-                        looking,
-                        tools,
-                        bore,
-                    ));
-                }
-                let mut all = work(&mut engine);
-                for h in handles {
-                    // a worker that panicked lost its fragments; the strips stay consistent
-                    all.extend(h.join().unwrap_or_default());
-                }
-                all
-            })
-        };
+        });
         fragments.append(&mut new_frags);
         snapshots.epoch(&ep.sweeps, &mut engine);
         cut_moves = if ep.open_run {
@@ -1247,6 +1209,59 @@ fn build_epoch(
         sweeps: builder.take(),
         open_run: builder.has_open_run(),
     }
+}
+
+/// Cuts an epoch's sweeps into the strips (`lists[k]`: the sweeps that reach strip `k`),
+/// `threads` workers taking strips in turn; the calling thread first does `meanwhile`
+/// (building the next epoch), then joins them. Returns the rapid cuts found.
+fn cut_strips(
+    strips: &[Mutex<Node>],
+    lists: &[Vec<u32>],
+    ctx: &Ctx,
+    threads: usize,
+    engine: &mut Engine,
+    meanwhile: impl FnOnce(),
+) -> Vec<Fragment> {
+    let next_strip = AtomicUsize::new(0);
+    let work = |engine: &mut Engine| {
+        let mut worker = Worker {
+            engine,
+            frags: Vec::new(),
+            batch: Batch::default(),
+            trim: Trimmed::default(),
+            runs: Vec::new(),
+        };
+        loop {
+            let k = next_strip.fetch_add(1, Ordering::Relaxed);
+            if k >= strips.len() {
+                break;
+            }
+            if lists[k].is_empty() {
+                continue;
+            }
+            // a poisoned lock only means another worker panicked; its data is still whole
+            let mut strip = strips[k].lock().unwrap_or_else(|e| e.into_inner());
+            strip.process(&lists[k], ctx, &mut worker);
+        }
+        worker.frags
+    };
+    let total: usize = lists.iter().map(Vec::len).sum();
+    if threads <= 1 || total < 256 {
+        meanwhile();
+        return work(engine);
+    }
+    std::thread::scope(|s| {
+        let handles: Vec<_> = (1..threads)
+            .map(|_| s.spawn(|| work(&mut Engine::new())))
+            .collect();
+        meanwhile();
+        let mut all = work(engine);
+        for h in handles {
+            // a worker that panicked lost its fragments; the strips stay consistent
+            all.extend(h.join().unwrap_or_default());
+        }
+        all
+    })
 }
 
 /// For each Z strip (between `bounds`), the sweeps whose box reaches into it.
