@@ -1002,14 +1002,6 @@ pub fn simulate(
     builder.set_rear(crate::section::rear_tools(segments));
     builder.set_feed_paths(opts.feed_paths);
     let mut fragments: Vec<Fragment> = Vec::new();
-    let mut snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), &stock);
-    // Programs whose snapshots come from epoch ends get about 30 epochs (depending only on
-    // the program's length, so every report of a run reads the same removal).
-    let epoch = if segments.len() > crate::snapshot::EXACT_MAX_MOVES {
-        (segments.len() / 30).clamp(1024, EPOCH)
-    } else {
-        EPOCH
-    };
     // moves whose cuts are all in the tiles at the last epoch end (a merged run still open
     // is not: its sweep comes when it ends)
     let mut cut_moves = 0;
@@ -1024,24 +1016,28 @@ pub fn simulate(
         .map(|p| p[1])
         .fold(f64::INFINITY, f64::min)
         .max(0.0);
-    let mut next = Some(build_epoch(
-        &mut builder,
-        &mut snapshots,
-        None,
+    let mut epochs = Epochs {
+        builder,
+        snapshots: Snapshots::new(&opts.snapshot_after, segments.len(), &stock),
         segments,
-        0..epoch.min(segments.len()),
-        separation_checks < MAX_SEPARATION_CHECKS,
         tools,
         bore,
-    ));
+        // programs whose snapshots come from epoch ends get about 30 epochs (depending
+        // only on the program's length, so every report of a run reads the same removal)
+        len: if segments.len() > crate::snapshot::EXACT_MAX_MOVES {
+            (segments.len() / 30).clamp(1024, EPOCH)
+        } else {
+            EPOCH
+        },
+    };
+    let mut next = Some(epochs.build(0, None, separation_checks < MAX_SEPARATION_CHECKS));
     while let Some(ep) = next.take() {
         let lists = strip_lists(&ep.sweeps, &bounds);
         // the next epoch's sweeps are built while the workers cut this one's, unless this
         // one ends with a part-off (the stock is looked at first: pieces that fell are
         // erased from what comes after) or the snapshots are exact (their counts are read
         // epoch by epoch; such programs fit one epoch anyway)
-        let ahead = !ep.parting && ep.end < segments.len() && !snapshots.exact();
-        let upcoming = ep.end..(ep.end + epoch).min(segments.len());
+        let ahead = !ep.parting && ep.end < segments.len() && !epochs.snapshots.exact();
         let looking = separation_checks < MAX_SEPARATION_CHECKS;
         let ctx = Ctx {
             grid: &grid,
@@ -1052,20 +1048,11 @@ pub fn simulate(
         };
         let mut new_frags = cut_strips(&strips, &lists, &ctx, threads, &mut engine, || {
             if ahead {
-                next = Some(build_epoch(
-                    &mut builder,
-                    &mut snapshots,
-                    None,
-                    segments,
-                    upcoming.clone(),
-                    looking,
-                    tools,
-                    bore,
-                ));
+                next = Some(epochs.build(ep.end, None, looking));
             }
         });
         fragments.append(&mut new_frags);
-        snapshots.epoch(&ep.sweeps, &mut engine);
+        epochs.snapshots.epoch(&ep.sweeps, &mut engine);
         cut_moves = if ep.open_run {
             ep.sweeps
                 .items
@@ -1079,7 +1066,9 @@ pub fn simulate(
         };
         // (at the last epoch end the stock is the final part, which the caller has anyway)
         if ep.end < segments.len() {
-            snapshots.at_epoch_end(cut_moves, || stock_of(&strips, &mut engine));
+            epochs
+                .snapshots
+                .at_epoch_end(cut_moves, || stock_of(&strips, &mut engine));
         }
         let beyond = |seg: &Segment| {
             let x = grid.to_int([seg.from.z.max(seg.to.z), 0.0]).x;
@@ -1105,16 +1094,8 @@ pub fn simulate(
         }
         progress(ep.end);
         if next.is_none() && ep.end < segments.len() {
-            next = Some(build_epoch(
-                &mut builder,
-                &mut snapshots,
-                to_erase,
-                segments,
-                upcoming,
-                separation_checks < MAX_SEPARATION_CHECKS,
-                tools,
-                bore,
-            ));
+            let looking = separation_checks < MAX_SEPARATION_CHECKS;
+            next = Some(epochs.build(ep.end, to_erase, looking));
         }
     }
     let mut parts: Vec<IShapes> = Vec::new();
@@ -1128,7 +1109,7 @@ pub fn simulate(
     let final_int = engine.union(&parts);
     let final_shapes = grid.shapes_to_float(&final_int);
     let crashes = merge_fragments(fragments);
-    warnings.extend(builder.warnings);
+    warnings.extend(epochs.builder.warnings);
     warnings.sort_by_key(|w| w.0);
     let removed_area = area(&shapes) - area(&final_shapes);
     let removed_volume = revolved_volume(&shapes) - revolved_volume(&final_shapes);
@@ -1138,7 +1119,8 @@ pub fn simulate(
         removed_area,
         removed_volume,
         warnings,
-        snapshots: snapshots
+        snapshots: epochs
+            .snapshots
             .out
             .iter()
             .map(|(k, s)| {
@@ -1170,44 +1152,51 @@ struct Epoch {
     open_run: bool,
 }
 
-/// Builds the sweeps of the moves `moves` (shortened to end at the first part-off while
-/// `looking`), after erasing the pieces `fallen` from what later sweeps see.
-#[allow(clippy::too_many_arguments)]
-fn build_epoch(
-    builder: &mut SweepBuilder,
-    snapshots: &mut Snapshots,
-    fallen: Option<(usize, Vec<Shape>)>,
-    segments: &[Segment],
-    moves: std::ops::Range<usize>,
-    looking: bool,
-    tools: &ToolTable,
+/// What builds the epochs' sweeps in program order: the sweep builder, the snapshot counts
+/// it passes, and the program.
+struct Epochs<'a> {
+    builder: SweepBuilder<'a>,
+    snapshots: Snapshots,
+    segments: &'a [Segment],
+    tools: &'a ToolTable,
+    /// The blank's bore radius (a blade parts off there).
     bore: f64,
-) -> Epoch {
-    let (done, mut end) = (moves.start, moves.end);
-    // a part-off may leave a piece: its epoch ends with it, so that the stock can be
-    // looked at before the next move
-    if let Some(k) = segments[done..end]
-        .iter()
-        .position(|s| looking && parts_off(s, tools, bore))
-    {
-        end = done + k + 1;
-    }
-    if let Some((idx, pieces)) = fallen {
-        builder.erase(idx, &pieces);
-    }
-    for (k, seg) in segments[done..end].iter().enumerate() {
-        builder.push_before(done + k, seg, segments.get(done + k + 1));
-        snapshots.after_push(done + k + 1, builder);
-    }
-    let parting = end > done && looking && parts_off(&segments[end - 1], tools, bore);
-    if end == segments.len() || parting {
-        builder.flush_run();
-    }
-    Epoch {
-        end,
-        parting,
-        sweeps: builder.take(),
-        open_run: builder.has_open_run(),
+    /// Most moves an epoch holds.
+    len: usize,
+}
+
+impl Epochs<'_> {
+    /// Builds the sweeps of the epoch starting at move `start` (ended at the first part-off
+    /// while `looking`), after erasing the pieces `fallen` from what later sweeps see.
+    fn build(&mut self, start: usize, fallen: Option<(usize, Vec<Shape>)>, looking: bool) -> Epoch {
+        let (segments, tools, bore) = (self.segments, self.tools, self.bore);
+        let mut end = (start + self.len).min(segments.len());
+        // a part-off may leave a piece: its epoch ends with it, so that the stock can be
+        // looked at before the next move
+        if let Some(k) = segments[start..end]
+            .iter()
+            .position(|s| looking && parts_off(s, tools, bore))
+        {
+            end = start + k + 1;
+        }
+        if let Some((idx, pieces)) = fallen {
+            self.builder.erase(idx, &pieces);
+        }
+        for (k, seg) in segments[start..end].iter().enumerate() {
+            self.builder
+                .push_before(start + k, seg, segments.get(start + k + 1));
+            self.snapshots.after_push(start + k + 1, &mut self.builder);
+        }
+        let parting = end > start && looking && parts_off(&segments[end - 1], tools, bore);
+        if end == segments.len() || parting {
+            self.builder.flush_run();
+        }
+        Epoch {
+            end,
+            parting,
+            sweeps: self.builder.take(),
+            open_run: self.builder.has_open_run(),
+        }
     }
 }
 
