@@ -216,6 +216,7 @@ fn main() {
                 feed_paths: std::env::var("FEED_PATHS").map_or(true, |v| v != "0"),
                 ring_air: std::env::var("RING_AIR").map_or(true, |v| v != "0"),
                 cover: std::env::var("COVER").map_or(true, |v| v != "0"),
+                pass_groups: std::env::var("PASS_GROUPS").map_or(true, |v| v != "0"),
                 ..SimOptions::default()
             };
             let t = Instant::now();

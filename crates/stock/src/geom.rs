@@ -215,6 +215,112 @@ pub(crate) fn sweep_convex(poly: &[P], d: P) -> Vec<P> {
     out
 }
 
+/// The Minkowski sum of two convex counter-clockwise polygons (either may be a point or a
+/// segment: one or two points): their edges merged by angle from both lowest vertices.
+/// Linear time.
+pub(crate) fn minkowski(a: &[P], b: &[P]) -> Vec<P> {
+    let (a, b) = if a.len() < b.len() { (b, a) } else { (a, b) };
+    let shift = |poly: &[P], d: P| poly.iter().map(|p| [p[0] + d[0], p[1] + d[1]]).collect();
+    match b.len() {
+        0 => return Vec::new(),
+        1 => return shift(a, b[0]),
+        2 => return sweep_convex(&shift(a, b[0]), [b[1][0] - b[0][0], b[1][1] - b[0][1]]),
+        _ => {}
+    }
+    let lowest = |p: &[P]| {
+        (0..p.len())
+            .min_by(|&i, &j| {
+                p[i][1]
+                    .total_cmp(&p[j][1])
+                    .then(p[i][0].total_cmp(&p[j][0]))
+            })
+            .unwrap_or(0)
+    };
+    let (n, m) = (a.len(), b.len());
+    let (i0, j0) = (lowest(a), lowest(b));
+    let edge = |p: &[P], k: usize| {
+        let (u, v) = (p[k % p.len()], p[(k + 1) % p.len()]);
+        [v[0] - u[0], v[1] - u[1]]
+    };
+    let mut out = Vec::with_capacity(n + m);
+    let (mut i, mut j) = (0, 0);
+    while i < n || j < m {
+        let (p, q) = (a[(i0 + i) % n], b[(j0 + j) % m]);
+        out.push([p[0] + q[0], p[1] + q[1]]);
+        let turn = if i >= n {
+            -1.0
+        } else if j >= m {
+            1.0
+        } else {
+            let (ea, eb) = (edge(a, i0 + i), edge(b, j0 + j));
+            ea[0] * eb[1] - ea[1] * eb[0]
+        };
+        if turn >= 0.0 && i < n {
+            i += 1;
+        }
+        if turn <= 0.0 && j < m {
+            j += 1;
+        }
+    }
+    out
+}
+
+/// The parts of the convex polygon `p` outside the convex counter-clockwise polygon `h`,
+/// as convex pieces (none when `h` covers `p`; pieces of area ≤ `tiny` are left out): the
+/// part beyond each edge of `h` in turn, the rest kept for the next edge.
+pub(crate) fn minus_convex(p: &[P], h: &[P], tiny: f64) -> Vec<Vec<P>> {
+    let n = h.len();
+    if n < 3 {
+        return vec![p.to_vec()];
+    }
+    let mut out = Vec::new();
+    let mut rest = p.to_vec();
+    let mut side = Vec::with_capacity(p.len() + 8);
+    for i in 0..n {
+        let (a, b) = (h[i], h[(i + 1) % n]);
+        side.clear();
+        side.extend(rest.iter().map(|x| cross(a, b, *x)));
+        if side.iter().all(|&s| s >= 0.0) {
+            continue;
+        }
+        if side.iter().all(|&s| s <= 0.0) {
+            // wholly beyond this edge: the rest is outside `h`
+            out.push(rest);
+            return out;
+        }
+        let (inner, outer) = split_by_sides(&rest, &side);
+        if ring::signed_area(&pts(&outer)).abs() > tiny {
+            out.push(outer);
+        }
+        rest = inner;
+    }
+    out
+}
+
+/// A convex polygon cut by a line, given each vertex's signed side: the parts on the
+/// non-negative and the non-positive side (crossings in both).
+fn split_by_sides(poly: &[P], side: &[f64]) -> (Vec<P>, Vec<P>) {
+    let (mut pos, mut neg) = (Vec::with_capacity(poly.len() + 2), Vec::with_capacity(8));
+    for j in 0..poly.len() {
+        let k = (j + 1) % poly.len();
+        let (p, sp, sq) = (poly[j], side[j], side[k]);
+        if sp >= 0.0 {
+            pos.push(p);
+        }
+        if sp <= 0.0 {
+            neg.push(p);
+        }
+        if (sp > 0.0 && sq < 0.0) || (sp < 0.0 && sq > 0.0) {
+            let t = sp / (sp - sq);
+            let q = poly[k];
+            let x = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
+            pos.push(x);
+            neg.push(x);
+        }
+    }
+    (pos, neg)
+}
+
 /// Clips a polygon to a box (Sutherland–Hodgman): a convex one stays convex; any ring keeps
 /// the winding number of every point inside the box (the chain sweeps rely on that). Points
 /// made on a side of the box lie exactly on it.

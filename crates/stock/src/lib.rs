@@ -19,6 +19,7 @@ mod geom;
 mod measure;
 mod outline;
 mod overlay;
+mod pass_group;
 mod pose;
 mod profile;
 mod removal;

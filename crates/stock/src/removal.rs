@@ -15,7 +15,9 @@
 //!   boolean call;
 //! - collinear overlapping feeds (pecks) were already merged into one sweep, as were
 //!   chains of nearly collinear short feeds (within [`SimOptions::merge_tol`]), and short
-//!   paths of feeds are swept as one ring ([`SimOptions::feed_paths`]).
+//!   paths of feeds are swept as one ring ([`SimOptions::feed_paths`]);
+//! - in long programs, passes that repeat the one before moved by a tiny step are one
+//!   sweep ([`SimOptions::pass_groups`], the `pass_group` module).
 //!
 //! Crashes: a rapid whose box meets a strip's stock box flushes that strip's batch (so
 //! the stock is exactly the stock after every earlier move) and intersects its sweep with
@@ -94,6 +96,12 @@ pub struct SimOptions {
     /// one boolean call per tile and epoch instead of one per pass. Exact either way; false
     /// sends every sweep that touches a tile's stock to its boolean call.
     pub cover: bool,
+    /// Repeated passes (each the last moved by at most `merge_tol`, every vertex on its own
+    /// line) are cut as the one region they sweep together, within `merge_tol / 2` of their
+    /// union (default true; see the `pass_group` module). Only in programs of more than
+    /// [`crate::snapshot::EXACT_MAX_MOVES`] moves: shorter ones are cut pass by pass, so
+    /// their snapshots stay exact. False cuts every pass on its own.
+    pub pass_groups: bool,
     /// Move counts after which the stock is wanted (see [`Simulation::snapshots`]), taken
     /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
     /// the blank and [`Simulation::final_shapes`].
@@ -108,6 +116,7 @@ impl Default for SimOptions {
             feed_paths: true,
             ring_air: true,
             cover: true,
+            pass_groups: true,
             snapshot_after: Vec::new(),
         }
     }
@@ -1001,6 +1010,7 @@ pub fn simulate(
     let mut builder = SweepBuilder::new(&grid, clip, tools, tol, merge_tol);
     builder.set_rear(crate::section::rear_tools(segments));
     builder.set_feed_paths(opts.feed_paths);
+    builder.set_pass_groups(opts.pass_groups && segments.len() > crate::snapshot::EXACT_MAX_MOVES);
     let mut fragments: Vec<Fragment> = Vec::new();
     // moves whose cuts are all in the tiles at the last epoch end (a merged run still open
     // is not: its sweep comes when it ends)

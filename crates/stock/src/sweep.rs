@@ -47,6 +47,7 @@
 use crate::geom::{clip_convex, dist, pts, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
 use crate::overlay::{inscribed_box, ring_perimeter, Grid, IBox, IPt};
+use crate::pass_group::{Lane, Offer, PassGroups};
 use crate::{Shape, ToolTable};
 use expander::{Motion, Segment, ToolHint};
 use geom::Rect;
@@ -209,6 +210,8 @@ struct Run {
     /// Total turning of the path up to `a` (radians): the ring inserts outline vertices at
     /// every turn, and the loops of sharp turns overlap each other.
     turn: f64,
+    /// A chain merged within the merge tolerance lies in `path` (not the programmed points).
+    approx: bool,
 }
 
 impl Run {
@@ -350,6 +353,8 @@ pub(crate) struct SweepBuilder<'a> {
     /// After such a move: where it ended and where the next stamp falls from there, as a
     /// fraction of the lead.
     thread_carry: Option<(P, f64)>,
+    /// Repeated passes merged into one sweep (see [`crate::pass_group`]); `None`: off.
+    groups: Option<PassGroups>,
     /// (first segment index, message) for skipped moves and defaulted tools.
     pub(crate) warnings: Vec<(usize, String)>,
     /// The sweeps built so far.
@@ -385,6 +390,7 @@ impl<'a> SweepBuilder<'a> {
             scratch: Vec::new(),
             next_continues: false,
             thread_carry: None,
+            groups: None,
             warnings: Vec::new(),
             out: Sweeps::default(),
         }
@@ -393,6 +399,12 @@ impl<'a> SweepBuilder<'a> {
     /// Whether consecutive feeds are swept as one path ([`crate::SimOptions::feed_paths`]).
     pub(crate) fn set_feed_paths(&mut self, on: bool) {
         self.feed_paths = on;
+    }
+
+    /// Whether repeated passes are merged into one sweep ([`crate::pass_group`]; only with
+    /// a merge tolerance, their step's limit).
+    pub(crate) fn set_pass_groups(&mut self, on: bool) {
+        self.groups = (on && self.merge_tol > 0.0).then(|| PassGroups::new(self.merge_tol));
     }
 
     /// Tools on a rear post ([`crate::section::rear_tools`]).
@@ -465,6 +477,13 @@ impl<'a> SweepBuilder<'a> {
     /// Adds segment number `idx`: the sweep of its cutting outline, then the probe of its
     /// body (held while a merged run is open: it follows the run's sweep).
     pub(crate) fn push(&mut self, idx: usize, seg: &Segment) {
+        if self.groups.as_ref().is_some_and(PassGroups::is_open) {
+            let flip = self.rear.contains(&seg.tool);
+            if self.body(seg.tool, seg.hint, flip).is_some() {
+                // its probes must meet the stock the group's passes cut
+                self.close_group();
+            }
+        }
         if self.push_cut(idx, seg) {
             let flip = self.rear.contains(&seg.tool);
             let Some(body) = self.body(seg.tool, seg.hint, flip) else {
@@ -592,9 +611,9 @@ impl<'a> SweepBuilder<'a> {
                     && seg.arc.is_some()
                     && self.feed_paths
                     && self.body(seg.tool, seg.hint, flip).is_none();
-                starts.then(|| (Vec::new(), 0.0, 0.0))
+                starts.then(|| (Vec::new(), 0.0, 0.0, false))
             });
-            if let Some((mut path, len, turn)) = path {
+            if let Some((mut path, len, turn, approx)) = path {
                 for v in chords {
                     if path.last() != Some(&v) {
                         path.push(v);
@@ -606,7 +625,7 @@ impl<'a> SweepBuilder<'a> {
                         flip,
                         idx,
                         (end, end),
-                        (path, len + arc_len, turn + arc_turn),
+                        (path, len + arc_len, turn + arc_turn, approx),
                     );
                     if self
                         .run
@@ -716,7 +735,7 @@ impl<'a> SweepBuilder<'a> {
         flip: bool,
         idx: usize,
         (a, b): (P, P),
-        (path, path_len, turn): (Vec<P>, f64, f64),
+        (path, path_len, turn, approx): (Vec<P>, f64, f64, bool),
     ) {
         let outline = self.outline(seg.tool, seg.hint, flip, idx);
         let max_len = outline
@@ -734,6 +753,7 @@ impl<'a> SweepBuilder<'a> {
             path,
             path_len,
             turn,
+            approx,
         });
     }
 
@@ -750,7 +770,7 @@ impl<'a> SweepBuilder<'a> {
         p: P,
         len: f64,
         (first, inner_turn): (P, f64),
-    ) -> Option<(Vec<P>, f64, f64)> {
+    ) -> Option<(Vec<P>, f64, f64, bool)> {
         let run = self.run.as_ref()?;
         let same = run.tool == seg.tool && run.hint == seg.hint && run.flip == flip;
         let near = dist(p, run.b) <= COLLINEAR_TOL;
@@ -775,6 +795,7 @@ impl<'a> SweepBuilder<'a> {
             return None;
         }
         let run = self.run.take()?;
+        let approx = run.approx || !run.mid.is_empty();
         let mut path = run.path;
         for v in [run.a, run.b, p] {
             if path.last() != Some(&v) {
@@ -782,7 +803,7 @@ impl<'a> SweepBuilder<'a> {
             }
         }
         path.pop(); // p is the new run's `a`
-        Some((path, path_len, turn - inner_turn))
+        Some((path, path_len, turn - inner_turn, approx))
     }
 
     /// Ends the current merged run, emitting its sweep and then its moves' body probes.
@@ -803,8 +824,97 @@ impl<'a> SweepBuilder<'a> {
             if run.path.len() == 1 {
                 run.path.push(run.b);
             }
+            let exact = !run.approx && run.mid.is_empty();
+            if self.offer_to_group(exact, &outline, &run) {
+                return;
+            }
             self.emit_path(run.last, false, &outline, &run.path);
         }
+    }
+
+    /// Offers a run's path to the pass groups: true when the open group took it; else the
+    /// group, if it closed, has been emitted.
+    fn offer_to_group(&mut self, exact: bool, outline: &Arc<Outline>, run: &Run) -> bool {
+        if self.groups.is_none() {
+            return false;
+        }
+        if !exact || self.body(run.tool, run.hint, run.flip).is_some() {
+            self.close_group();
+            return false;
+        }
+        let Some(groups) = self.groups.as_mut() else {
+            return false;
+        };
+        match groups.offer(outline, &run.path, run.last) {
+            Offer::Absorbed => true,
+            Offer::Emit(closed) => {
+                if let Some(lanes) = closed {
+                    self.emit_group(lanes);
+                }
+                false
+            }
+        }
+    }
+
+    /// Ends the open pass group, emitting its sweep.
+    fn close_group(&mut self) {
+        if let Some(lanes) = self.groups.as_mut().and_then(PassGroups::close) {
+            self.emit_group(lanes);
+        }
+    }
+
+    /// One sweep for a closed group's lanes, as a move of its last segment.
+    fn emit_group(&mut self, lanes: Vec<Lane>) {
+        let item = self.begin();
+        let mut seg = 0;
+        let start = lanes.first().map_or([0.0, 0.0], |l| l.first[0]);
+        for mut lane in lanes {
+            seg = seg.max(lane.seg);
+            let (polys, convex) = lane.sweep();
+            for p in &polys {
+                self.add(p, convex);
+            }
+        }
+        self.end(item, seg, false, start, [0.0, 0.0]);
+    }
+
+    /// Emits a rapid's straight sweep with the open group's regions carved out of it (see
+    /// [`crate::pass_group`]); false, emitting nothing, when it cannot be carved.
+    fn emit_carved(&mut self, idx: usize, outline: &Outline, path: &[P]) -> bool {
+        let (a, b) = (path[0], path[1]);
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let clip = self.clip;
+        let Some(groups) = self.groups.as_mut() else {
+            return false;
+        };
+        let mut pieces = Vec::new();
+        for part in &outline.parts {
+            let placed: Vec<P> = part.iter().map(|v| [v[0] + a[0], v[1] + a[1]]).collect();
+            let poly = sweep_convex(&placed, d);
+            let reach = crate::pass_group::bounds(&poly);
+            if reach.min.r < 0.0 {
+                return false;
+            }
+            if !reach.intersects(&clip) {
+                continue;
+            }
+            match groups.carve(&poly) {
+                Some(p) => pieces.extend(p),
+                None => return false,
+            }
+        }
+        let item = self.begin();
+        for p in &pieces {
+            self.add_poly(p);
+        }
+        let len = d[0].hypot(d[1]);
+        let dir = if len > 0.0 {
+            [d[0] / len, d[1] / len]
+        } else {
+            [0.0, 0.0]
+        };
+        self.end(item, idx, true, a, dir);
+        true
     }
 
     /// Whether a merged run of feeds is still open (its sweep not yet emitted).
@@ -824,12 +934,20 @@ impl<'a> SweepBuilder<'a> {
             return Sweeps::default();
         };
         let done = std::mem::take(&mut self.out);
+        let groups = self.groups.take();
         self.emit_run();
+        self.groups = groups;
         self.run = Some(run);
         std::mem::replace(&mut self.out, done)
     }
 
     fn emit_path(&mut self, idx: usize, rapid: bool, outline: &Outline, path: &[P]) {
+        if self.groups.as_ref().is_some_and(PassGroups::is_open) {
+            if rapid && path.len() == 2 && self.emit_carved(idx, outline, path) {
+                return;
+            }
+            self.close_group();
+        }
         let start = path[0];
         let item = self.begin();
         if path.len() > 2 {
@@ -868,6 +986,7 @@ impl<'a> SweepBuilder<'a> {
     }
 
     fn emit_stamps(&mut self, idx: usize, outline: &Outline, at: &[P], start: P) {
+        self.close_group();
         let item = self.begin();
         for p in at {
             for part in &outline.parts {
@@ -986,6 +1105,7 @@ impl<'a> SweepBuilder<'a> {
     /// nothing anyone reports: pieces a part-off separated from the held bar have fallen,
     /// and later moves through their place meet air.
     pub(crate) fn erase(&mut self, idx: usize, pieces: &[Shape]) {
+        self.close_group();
         let item = self.begin();
         for s in pieces {
             // counter-clockwise, so that its winding is positive (what the removal reads)
@@ -1002,8 +1122,10 @@ impl<'a> SweepBuilder<'a> {
         self.end(item, idx, false, start, [0.0, 0.0]);
     }
 
-    /// Takes the sweeps built so far (the current run, if any, stays open).
+    /// Takes the sweeps built so far (the current run, if any, stays open; a pass group
+    /// closes).
     pub(crate) fn take(&mut self) -> Sweeps {
+        self.close_group();
         std::mem::take(&mut self.out)
     }
 }
