@@ -225,6 +225,14 @@ impl Segment {
         geom::arc::sweep_between(self.from, self.to, a.center, a.ccw)
     }
 
+    /// How many chords [`Segment::polyline`] makes at `tol` (1 for a line), without
+    /// making them.
+    pub fn chord_count(&self, tol: f64) -> usize {
+        self.arc.map_or(1, |a| {
+            geom::arc::Arc::between(self.from, self.to, a.center, a.ccw).chords(tol.max(1e-6))
+        })
+    }
+
     /// Points along the segment such that no chord strays more than `tol` mm from the
     /// true arc (lines give their two end points). Always starts at `from`, ends at `to`.
     pub fn polyline(&self, tol: f64) -> Vec<Pt> {

@@ -24,8 +24,9 @@
 //! it then meets of the stock is what it meets of the true stock, up to the notches between
 //! the passes (at most `δ / 2` thick: a rapid retracing the cut can miss such a sliver, the
 //! caveat of merged chains in [`crate::sweep`]); it never meets material the group removed,
-//! so a group adds no false crash. Where a rapid cannot be carved (its sweep reaches a ring
-//! lane, or below the axis), the group closes first and the rapid meets the cut stock.
+//! so a group adds no false crash. A ring lane carves segment by segment (each segment's
+//! region is convex). Where a rapid cannot be carved (below the axis, or into too many
+//! pieces), the group closes first and the rapid meets the cut stock.
 
 use crate::geom::{convex_hull, minkowski, minus_convex, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
@@ -43,12 +44,18 @@ const TINY_AREA: f64 = 1e-10;
 /// Most convex pieces a carved rapid may leave; more closes the group instead.
 const MAX_PIECES: usize = 64;
 
-/// A feed path as the builder emits it.
-#[derive(Clone)]
-struct Path {
+/// A feed path as the builder offers it.
+#[derive(Clone, Copy)]
+struct Path<'a> {
+    outline: &'a Arc<Outline>,
+    pts: &'a [P],
+    seg: usize,
+}
+
+/// A feed path emitted on its own, kept while a group may still start from it.
+struct Recorded {
     outline: Arc<Outline>,
     pts: Vec<P>,
-    seg: usize,
 }
 
 /// One feed path of the repeated pass, over the passes absorbed so far.
@@ -66,10 +73,6 @@ pub(crate) struct Lane {
     bbox: Rect,
     /// The outline's box (min, max) about its reference point.
     extent: (P, P),
-    /// Its convex regions (one per outline part) at `cached` passes, for a lane of one
-    /// segment.
-    regions: Vec<Vec<P>>,
-    cached: usize,
 }
 
 impl Lane {
@@ -84,9 +87,9 @@ impl Lane {
 
     /// Whether `path` is this lane's next pass.
     fn next_is(&self, path: &Path) -> bool {
-        Arc::ptr_eq(&self.outline, &path.outline)
+        Arc::ptr_eq(&self.outline, path.outline)
             && path.pts.len() == self.first.len()
-            && self.path_at(self.count).zip(&path.pts).all(|(e, p)| {
+            && self.path_at(self.count).zip(path.pts).all(|(e, p)| {
                 (e[0] - p[0]).abs() <= LINEAR_TOL && (e[1] - p[1]).abs() <= LINEAR_TOL
             })
     }
@@ -94,8 +97,8 @@ impl Lane {
     /// The steps from `from` to `to` when `to` may continue it as a lane: same outline,
     /// same vertex count, every step within `limit`, one common step for a path of more
     /// than one segment.
-    fn steps(from: &Path, to: &Path, limit: f64) -> Option<Vec<P>> {
-        if !Arc::ptr_eq(&from.outline, &to.outline) || from.pts.len() != to.pts.len() {
+    fn steps(from: &Recorded, to: &Path, limit: f64) -> Option<Vec<P>> {
+        if !Arc::ptr_eq(&from.outline, to.outline) || from.pts.len() != to.pts.len() {
             return None;
         }
         let step = |k: usize| {
@@ -125,15 +128,13 @@ impl Lane {
     fn new(path: Path, step: Vec<P>) -> Option<Self> {
         let extent = path.outline.bbox()?;
         let mut lane = Self {
-            outline: path.outline,
-            first: path.pts,
+            outline: Arc::clone(path.outline),
+            first: path.pts.to_vec(),
             step,
             count: 1,
             seg: path.seg,
             bbox: Rect::EMPTY,
             extent,
-            regions: Vec::new(),
-            cached: 0,
         };
         lane.grow_box(0).then_some(lane)
     }
@@ -152,9 +153,9 @@ impl Lane {
     }
 
     /// The sweep of the passes so far: convex polygons (a lane of one segment) or rings.
-    pub(crate) fn sweep(&mut self) -> (Vec<Vec<P>>, bool) {
+    pub(crate) fn sweep(&self) -> (Vec<Vec<P>>, bool) {
         if self.first.len() == 2 {
-            (self.convex_regions().to_vec(), true)
+            (self.regions(0).collect(), true)
         } else {
             let n = (self.count - 1) as f64;
             let w = [self.step[0][0] * n, self.step[0][1] * n];
@@ -168,20 +169,57 @@ impl Lane {
         }
     }
 
-    /// `part ⊕ hull(a, b, b + N w_b, a + N w_a)` for each outline part (one-segment lane).
-    fn convex_regions(&mut self) -> &[Vec<P>] {
-        if self.cached != self.count {
-            let last: Vec<P> = self.path_at(self.count - 1).collect();
-            let quad = convex_hull(&[self.first[0], self.first[1], last[1], last[0]]);
-            self.regions = self
-                .outline
-                .parts
-                .iter()
-                .map(|part| minkowski(part, &quad))
-                .collect();
-            self.cached = self.count;
+    /// The region segment `i` of the path sweeps over the passes so far, one convex
+    /// polygon per outline part: `part ⊕ hull(a, b, b + N w_b, a + N w_a)`.
+    fn regions(&self, i: usize) -> impl Iterator<Item = Vec<P>> + '_ {
+        let quad = self.quad(i);
+        let quad = convex_hull(&quad);
+        self.outline
+            .parts
+            .iter()
+            .map(move |part| minkowski(part, &quad))
+    }
+
+    /// The corners a, b, b + N w_b, a + N w_a of segment `i` over the passes so far.
+    fn quad(&self, i: usize) -> [P; 4] {
+        let n = (self.count - 1) as f64;
+        let (a, b) = (self.first[i], self.first[i + 1]);
+        let (wa, wb) = (self.step[i], self.step[i + 1]);
+        [
+            a,
+            b,
+            [b[0] + n * wb[0], b[1] + n * wb[1]],
+            [a[0] + n * wa[0], a[1] + n * wa[1]],
+        ]
+    }
+
+    /// `pieces` (convex) with this lane's regions so far taken out; `None` when they
+    /// would be more than [`MAX_PIECES`]. Only segments whose region's box meets the
+    /// pieces are looked at (a ring lane of an arc has a hundred).
+    fn carve(&self, mut pieces: Vec<Vec<P>>) -> Option<Vec<Vec<P>>> {
+        let (lo, hi) = self.extent;
+        for i in 0..self.first.len() - 1 {
+            let reach = bounds(pieces.iter().flatten());
+            let mut quad_box = bounds(&self.quad(i));
+            quad_box.add(Pt::new(quad_box.min.z + lo[0], quad_box.min.r + lo[1]));
+            quad_box.add(Pt::new(quad_box.max.z + hi[0], quad_box.max.r + hi[1]));
+            if !reach.intersects(&quad_box) {
+                continue;
+            }
+            for region in self.regions(i) {
+                pieces = pieces
+                    .iter()
+                    .flat_map(|p| minus_convex(p, &region, TINY_AREA))
+                    .collect();
+                if pieces.is_empty() {
+                    return Some(pieces);
+                }
+                if pieces.len() > MAX_PIECES {
+                    return None;
+                }
+            }
         }
-        &self.regions
+        Some(pieces)
     }
 }
 
@@ -207,7 +245,7 @@ pub(crate) struct PassGroups {
     /// Largest step between passes, mm (the merge tolerance).
     limit: f64,
     /// Feed paths emitted one by one since the last group (the pass a group would repeat).
-    recent: Vec<Path>,
+    recent: Vec<Recorded>,
     /// Where in `recent` the group's pass starts.
     base: usize,
     lanes: Vec<Lane>,
@@ -245,11 +283,7 @@ impl PassGroups {
     /// segment `seg`): taken into the group when it continues its lane, or it starts a
     /// group with the recent path it repeats, or it is emitted (closing the group).
     pub(crate) fn offer(&mut self, outline: &Arc<Outline>, pts: &[P], seg: usize) -> Offer {
-        let path = Path {
-            outline: Arc::clone(outline),
-            pts: pts.to_vec(),
-            seg,
-        };
+        let path = Path { outline, pts, seg };
         if self.is_open() {
             if self.absorb(&path) {
                 return Offer::Absorbed;
@@ -266,7 +300,7 @@ impl PassGroups {
             .enumerate()
             .find_map(|(k, q)| Lane::steps(q, &path, limit).map(|w| (k, w)));
         if let Some((k, step)) = start {
-            if let Some(lane) = Lane::new(path.clone(), step) {
+            if let Some(lane) = Lane::new(path, step) {
                 self.base = k;
                 self.lanes.push(lane);
                 self.cursor = 1;
@@ -281,7 +315,10 @@ impl PassGroups {
         if self.recent.len() == MAX_LANES {
             self.recent.remove(0);
         }
-        self.recent.push(path);
+        self.recent.push(Recorded {
+            outline: Arc::clone(path.outline),
+            pts: path.pts.to_vec(),
+        });
     }
 
     /// Takes `path` into the open group as its expected lane's next pass.
@@ -295,7 +332,7 @@ impl PassGroups {
                 .and_then(|q| Lane::steps(q, path, self.limit))
             {
                 if self.lanes.len() < MAX_LANES {
-                    if let Some(lane) = Lane::new(path.clone(), step) {
+                    if let Some(lane) = Lane::new(*path, step) {
                         self.lanes.push(lane);
                         self.cursor = self.lanes.len();
                         return true;
@@ -321,29 +358,15 @@ impl PassGroups {
     }
 
     /// The convex `poly` (a rapid's sweep) with the group's regions so far taken out, as
-    /// convex pieces; `None` when that cannot be done (it reaches a ring lane, or the
-    /// pieces get too many): close the group first.
-    pub(crate) fn carve(&mut self, poly: &[P]) -> Option<Vec<Vec<P>>> {
+    /// convex pieces; `None` when they get too many: close the group first.
+    pub(crate) fn carve(&self, poly: &[P]) -> Option<Vec<Vec<P>>> {
         let mut pieces = vec![poly.to_vec()];
-        for lane in &mut self.lanes {
-            let reach = bounds(pieces.iter().flatten());
-            if !reach.intersects(&lane.bbox) {
-                continue;
+        for lane in &self.lanes {
+            if pieces.is_empty() {
+                break;
             }
-            if lane.first.len() != 2 {
-                return None;
-            }
-            for region in lane.convex_regions() {
-                pieces = pieces
-                    .iter()
-                    .flat_map(|p| minus_convex(p, region, TINY_AREA))
-                    .collect();
-                if pieces.is_empty() {
-                    return Some(pieces);
-                }
-                if pieces.len() > MAX_PIECES {
-                    return None;
-                }
+            if bounds(pieces.iter().flatten()).intersects(&lane.bbox) {
+                pieces = lane.carve(pieces)?;
             }
         }
         Some(pieces)

@@ -551,7 +551,7 @@ impl<'a> SweepBuilder<'a> {
             && seg.motion == Motion::Feed
             && self.merge_tol > 0.0
             && arc_budget > 0.0
-            && seg.polyline(arc_budget).len() == 2;
+            && seg.chord_count(arc_budget) == 1;
         if (seg.arc.is_none() || arc_as_chord) && seg.motion != Motion::Thread {
             let merge_tol = self.merge_tol;
             if let Some(run) = &mut self.run {
@@ -598,7 +598,12 @@ impl<'a> SweepBuilder<'a> {
                 .windows(2)
                 .map(|w| [w[1][0] - w[0][0], w[1][1] - w[0][1]])
                 .collect();
-            let arc_turn: f64 = dirs.windows(2).map(|w| angle(w[0], w[1])).sum();
+            // an arc's equal chords each turn by the same angle: one atan2, not one a chord
+            // (they were a tenth of a 10⁶-move G73's removal)
+            let arc_turn = match dirs.as_slice() {
+                [d0, d1, ..] => angle(*d0, *d1) * (dirs.len() - 1) as f64,
+                _ => 0.0,
+            };
             let first = dirs.first().copied().unwrap_or([0.0, 0.0]);
             let path = if seg.motion == Motion::Feed {
                 self.continued_path(seg, flip, p, arc_len, (first, arc_turn))
@@ -868,7 +873,7 @@ impl<'a> SweepBuilder<'a> {
         let item = self.begin();
         let mut seg = 0;
         let start = lanes.first().map_or([0.0, 0.0], |l| l.first[0]);
-        for mut lane in lanes {
+        for lane in lanes {
             seg = seg.max(lane.seg);
             let (polys, convex) = lane.sweep();
             for p in &polys {
