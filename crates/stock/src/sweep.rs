@@ -903,6 +903,11 @@ impl<'a> SweepBuilder<'a> {
             if !reach.intersects(&clip) {
                 continue;
             }
+            // only its part inside the clip box is kept anyway: fewer pieces to carve
+            let poly = clip_convex(&poly, &clip);
+            if poly.len() < 3 {
+                continue;
+            }
             match groups.carve(&poly) {
                 Some(p) => pieces.extend(p),
                 None => return false,
