@@ -31,6 +31,7 @@
 use crate::geom::{convex_hull, minkowski, minus_convex, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
 use geom::{Pt, Rect};
+use std::collections::VecDeque;
 use std::sync::Arc;
 
 /// Most lanes (feed paths) one pass may hold.
@@ -56,6 +57,8 @@ struct Path<'a> {
 struct Recorded {
     outline: Arc<Outline>,
     pts: Vec<P>,
+    /// Its first point (kept beside: compared with every path offered).
+    first: P,
 }
 
 /// One feed path of the repeated pass, over the passes absorbed so far.
@@ -105,15 +108,17 @@ impl Lane {
             let (a, b) = (from.pts[k], to.pts[k]);
             [b[0] - a[0], b[1] - a[1]]
         };
-        // most recent paths are far from this one: told at the first vertex
+        // (squared lengths: most recent paths are far from this one, told at the first
+        // vertex, and a square root there for every path was 2 % of a grooving run)
+        let far = |w: P| w[0] * w[0] + w[1] * w[1] > limit * limit;
         let w0 = step(0);
-        if w0[0].hypot(w0[1]) > limit {
+        if far(w0) {
             return None;
         }
         let mut common = true;
         for k in 1..from.pts.len() {
             let w = step(k);
-            if w[0].hypot(w[1]) > limit {
+            if far(w) {
                 return None;
             }
             common &= (w[0] - w0[0]).abs() <= LINEAR_TOL && (w[1] - w0[1]).abs() <= LINEAR_TOL;
@@ -245,7 +250,7 @@ pub(crate) struct PassGroups {
     /// Largest step between passes, mm (the merge tolerance).
     limit: f64,
     /// Feed paths emitted one by one since the last group (the pass a group would repeat).
-    recent: Vec<Recorded>,
+    recent: VecDeque<Recorded>,
     /// Where in `recent` the group's pass starts.
     base: usize,
     lanes: Vec<Lane>,
@@ -259,7 +264,7 @@ impl PassGroups {
     pub(crate) fn new(limit: f64) -> Self {
         Self {
             limit,
-            recent: Vec::new(),
+            recent: VecDeque::new(),
             base: 0,
             lanes: Vec::new(),
             fixed: false,
@@ -294,10 +299,15 @@ impl PassGroups {
         }
         // a group starts where a recent path repeats with a small step
         let limit = self.limit;
+        let p0 = pts.first().copied().unwrap_or_default();
         let start = self
             .recent
             .iter()
             .enumerate()
+            .filter(|(_, q)| {
+                // told apart by their first points, most of them
+                (q.first[0] - p0[0]).abs() <= limit && (q.first[1] - p0[1]).abs() <= limit
+            })
             .find_map(|(k, q)| Lane::steps(q, &path, limit).map(|w| (k, w)));
         if let Some((k, step)) = start {
             if let Some(lane) = Lane::new(path, step) {
@@ -312,12 +322,18 @@ impl PassGroups {
     }
 
     fn record(&mut self, path: Path) {
-        if self.recent.len() == MAX_LANES {
-            self.recent.remove(0);
-        }
-        self.recent.push(Recorded {
+        // the oldest one's vector is reused
+        let mut pts = if self.recent.len() == MAX_LANES {
+            self.recent.pop_front().map(|r| r.pts).unwrap_or_default()
+        } else {
+            Vec::new()
+        };
+        pts.clear();
+        pts.extend_from_slice(path.pts);
+        self.recent.push_back(Recorded {
             outline: Arc::clone(path.outline),
-            pts: path.pts.to_vec(),
+            first: path.pts.first().copied().unwrap_or_default(),
+            pts,
         });
     }
 
