@@ -692,4 +692,85 @@ mod tests {
         assert!(many >= 5 * passes, "{many}");
         assert!(few <= 20, "{few}");
     }
+
+    /// Pseudo-random roughings (bar, depth step up to the merge tolerance, shoulder or
+    /// taper, retract) with rapids that plunge into the stock later passes cut and rapids
+    /// that pass just over the floor: grouped, the same crashes (move, area, depth) as pass
+    /// by pass, and the part within `merge_tol / 2`.
+    #[test]
+    fn random_roughings_keep_their_crashes_and_their_part() {
+        let mut seed = 0x1234_5678_9abc_def1_u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for case in 0..6 {
+            let radius = 15.0 + 10.0 * next();
+            let step = 0.0001 + 0.0004 * next();
+            let zend0 = -10.0 - 15.0 * next();
+            let taper = case % 2 == 1;
+            let retract = 0.3 + 0.5 * next();
+            let passes = 1300;
+            let mut detours: Vec<(usize, u8, f64, f64)> = (0..4)
+                .map(|k| {
+                    let at = 50 + (next() * (passes - 100) as f64) as usize;
+                    (at, (k % 2) as u8, next(), next())
+                })
+                .collect();
+            detours.sort_by_key(|d| d.0);
+            detours.dedup_by_key(|d| d.0);
+            let mut segs = Vec::new();
+            let mut at = [5.0, radius + 1.0];
+            let mut go = |m: Motion, to: P| {
+                segs.push(seg(m, at, to));
+                at = to;
+            };
+            for k in 1..=passes {
+                let r = radius - 0.05 - step * k as f64;
+                let zend = if taper {
+                    zend0 + 2.0 * step * k as f64
+                } else {
+                    zend0
+                };
+                go(Motion::Rapid, [5.0, r]);
+                go(Motion::Feed, [zend, r]);
+                go(Motion::Feed, [zend + retract, r + retract]);
+                for &(_, kind, u, v) in detours.iter().filter(|d| d.0 == k) {
+                    let z = zend + 2.0 + u * (-zend - 3.0);
+                    if kind == 0 {
+                        // a plunge 0.01-0.1 mm below this pass's floor: a crash
+                        go(Motion::Rapid, [z, r + retract]);
+                        go(Motion::Rapid, [z, r - 0.01 - 0.09 * v]);
+                        go(Motion::Rapid, [z, r + retract]);
+                    } else {
+                        // down to 0.001-0.3 mm over the floor, then along it: no crash
+                        go(Motion::Rapid, [z, r + 0.001 + 0.3 * v]);
+                        go(Motion::Rapid, [-0.5, r + 0.001 + 0.3 * v]);
+                    }
+                }
+                go(Motion::Rapid, [5.0, r + retract]);
+            }
+            let blank = Blank::bar(2.0 * radius, 40.0, 0.0, None).expect("bar");
+            let sim = |pass_groups| {
+                let opts = SimOptions {
+                    pass_groups,
+                    ..SimOptions::default()
+                };
+                simulate(&blank, &v35(), &segs, &opts, &mut |_| {})
+            };
+            let (grouped, single) = (sim(true), sim(false));
+            let plunges = detours.iter().filter(|d| d.1 == 0).count();
+            assert_eq!(single.crashes.len(), plunges, "case {case}: {:?}", single.crashes);
+            assert_eq!(grouped.crashes.len(), plunges, "case {case}: {:?}", grouped.crashes);
+            for (g, s) in grouped.crashes.iter().zip(&single.crashes) {
+                assert_eq!(g.segment, s.segment, "case {case}");
+                assert!((g.area - s.area).abs() <= 1e-3 * s.area + 1e-5, "case {case}: {g:?} {s:?}");
+                assert!((g.depth - s.depth).abs() <= 0.00025, "case {case}: {g:?} {s:?}");
+            }
+            let h = hausdorff(&grouped.final_shapes, &single.final_shapes);
+            assert!(h <= 0.00025 + 1e-6, "case {case}: hausdorff {h}");
+        }
+    }
 }
