@@ -185,7 +185,7 @@ impl Lane {
             .map(move |part| minkowski(part, &quad))
     }
 
-    /// The corners a, b, b + N w_b, a + N w_a of segment `i` over the passes so far.
+    /// The corners `a, b, b + N w_b, a + N w_a` of segment `i` over the passes so far.
     fn quad(&self, i: usize) -> [P; 4] {
         let n = (self.count - 1) as f64;
         let (a, b) = (self.first[i], self.first[i + 1]);
@@ -393,12 +393,13 @@ impl PassGroups {
 mod tests {
     use crate::geom::{clip_to_hull, convex_hull, minkowski, minus_convex, pts, P};
     use crate::overlay::Grid;
+    use crate::removal::tests::{seg, v35};
     use crate::sweep::SweepBuilder;
     use crate::{
-        hausdorff, simulate, symmetric_difference_area, Blank, Insert, SimOptions, Simulation,
-        Tool, ToolTable,
+        hausdorff, simulate, symmetric_difference_area, Blank, SimOptions, Simulation, Tool,
+        ToolTable,
     };
-    use expander::{FeedId, Motion, Pt, Segment, Span};
+    use expander::{Motion, Pt, Segment};
     use geom::ring::signed_area;
 
     fn area(p: &[P]) -> f64 {
@@ -481,34 +482,6 @@ mod tests {
         let beside = minus_convex(&sq(5.0, 0.0, 1.0), &sq(0.0, 0.0, 3.0), 0.0);
         assert_eq!(beside.len(), 1);
         assert!((area(&beside[0]) - 1.0).abs() < 1e-12);
-    }
-
-    fn seg(motion: Motion, from: P, to: P) -> Segment {
-        Segment {
-            motion,
-            from: Pt::new(from[0], from[1]),
-            to: Pt::new(to[0], to[1]),
-            arc: None,
-            tool: 1,
-            hint: expander::ToolHint::Table,
-            lead: 0.0,
-            thread_phase: 0.0,
-            feed: FeedId::default(),
-            span: Span::default(),
-        }
-    }
-
-    fn v35() -> ToolTable {
-        ToolTable::from_tools(vec![(
-            1,
-            Tool::Turning {
-                insert: Insert::V,
-                nose_radius: 0.4,
-                tip: 3,
-                entering_angle: 93.0,
-                edge: 11.0,
-            },
-        )])
     }
 
     /// Passes of a G90-like roughing on a Φ40 bar: every pass 0.0002 mm deeper (more than
@@ -762,12 +735,28 @@ mod tests {
             };
             let (grouped, single) = (sim(true), sim(false));
             let plunges = detours.iter().filter(|d| d.1 == 0).count();
-            assert_eq!(single.crashes.len(), plunges, "case {case}: {:?}", single.crashes);
-            assert_eq!(grouped.crashes.len(), plunges, "case {case}: {:?}", grouped.crashes);
+            assert_eq!(
+                single.crashes.len(),
+                plunges,
+                "case {case}: {:?}",
+                single.crashes
+            );
+            assert_eq!(
+                grouped.crashes.len(),
+                plunges,
+                "case {case}: {:?}",
+                grouped.crashes
+            );
             for (g, s) in grouped.crashes.iter().zip(&single.crashes) {
                 assert_eq!(g.segment, s.segment, "case {case}");
-                assert!((g.area - s.area).abs() <= 1e-3 * s.area + 1e-5, "case {case}: {g:?} {s:?}");
-                assert!((g.depth - s.depth).abs() <= 0.00025, "case {case}: {g:?} {s:?}");
+                assert!(
+                    (g.area - s.area).abs() <= 1e-3 * s.area + 1e-5,
+                    "case {case}: {g:?} {s:?}"
+                );
+                assert!(
+                    (g.depth - s.depth).abs() <= 0.00025,
+                    "case {case}: {g:?} {s:?}"
+                );
             }
             let h = hausdorff(&grouped.final_shapes, &single.final_shapes);
             assert!(h <= 0.00025 + 1e-6, "case {case}: hausdorff {h}");

@@ -1370,12 +1370,13 @@ fn merge_fragments(mut frags: Vec<Fragment>) -> Vec<Crash> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::{hausdorff, symmetric_difference_area, Insert, Tool};
     use expander::{Arc, FeedId, Motion, Pt, Span};
 
-    fn seg(motion: Motion, from: [f64; 2], to: [f64; 2]) -> Segment {
+    /// A move of tool 1 (shared with the other modules' tests).
+    pub(crate) fn seg(motion: Motion, from: [f64; 2], to: [f64; 2]) -> Segment {
         Segment {
             motion,
             from: Pt::new(from[0], from[1]),
@@ -1401,7 +1402,8 @@ mod tests {
         simulate(blank, tools, segs, &SimOptions::default(), &mut |_| {})
     }
 
-    fn v35() -> ToolTable {
+    /// T1: a V 35° insert, r0.4, tip 3, 93° (shared with the other modules' tests).
+    pub(crate) fn v35() -> ToolTable {
         ToolTable::from_tools(vec![(
             1,
             Tool::Turning {
