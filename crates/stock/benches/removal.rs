@@ -4,7 +4,11 @@
 //! `PATTERN=name` runs one pattern, `FEED_PATHS=0` sweeps feeds one by one
 //! (`SimOptions::feed_paths` off), `RING_AIR=0` tries rings on every tile their box
 //! overlaps (`SimOptions::ring_air` off), `COVER=0` sends every sweep to the boolean call
-//! (`SimOptions::cover` off); measure peak memory with `/usr/bin/time -v`. Patterns, on a
+//! (`SimOptions::cover` off), `PASS_GROUPS=0` cuts repeated passes one by one
+//! (`SimOptions::pass_groups` off), `EXACT=1` also cuts each program with `merge_tol = 0`
+//! (no merged chains, no pass groups) and prints the Hausdorff distance and the area of the
+//! symmetric difference between the two final parts; measure peak memory with
+//! `/usr/bin/time -v`. Patterns, on a
 //! Φ125 × 110 bar (`g73` on Φ190 × 110):
 //! - `grooves`: G75-like pecking across the bar with a 3 mm blade (grooves stepped by
 //!   2.5 mm so they overlap), pecks fed down and retracted by rapid;
@@ -21,7 +25,48 @@
 
 use expander::{FeedId, Motion, Pt, Segment, Span};
 use std::time::Instant;
-use stock::{area, simulate, Blank, Insert, SimOptions, Tool, ToolTable};
+use stock::{
+    area, hausdorff, simulate, symmetric_difference_area, Blank, Insert, Shape, SimOptions, Tool,
+    ToolTable,
+};
+
+/// The shapes with their needles taken out (a vertex where the boundary turns straight
+/// back, its two sides within 10⁻⁶ mm: the integer boolean core leaves a few, µm long and
+/// 10⁻⁷ mm wide, where edges of consecutive passes meet nearly collinear; they bound no
+/// area to speak of, but a Hausdorff distance sees them).
+fn without_needles(shapes: &[Shape]) -> Vec<Shape> {
+    let clean = |ring: &[[f64; 2]]| {
+        let mut r = ring.to_vec();
+        let mut changed = true;
+        while changed && r.len() > 3 {
+            changed = false;
+            let mut i = 0;
+            while i < r.len() && r.len() > 3 {
+                let n = r.len();
+                let (a, b, c) = (r[(i + n - 1) % n], r[i], r[(i + 1) % n]);
+                let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
+                let cross = u[0] * v[1] - u[1] * v[0];
+                let dot = u[0] * v[0] + u[1] * v[1];
+                // a turn back whose sides lie within 10⁻⁶ mm of each other
+                let longer = u[0].hypot(u[1]).max(v[0].hypot(v[1]));
+                if dot < 0.0 && cross.abs() <= 1e-6 * longer {
+                    r.remove(i);
+                    changed = true;
+                } else {
+                    i += 1;
+                }
+            }
+        }
+        r
+    };
+    shapes
+        .iter()
+        .map(|s| Shape {
+            outer: clean(&s.outer),
+            holes: s.holes.iter().map(|h| clean(h)).collect(),
+        })
+        .collect()
+}
 
 fn seg(motion: Motion, from: Pt, to: Pt) -> Segment {
     Segment {
@@ -237,6 +282,25 @@ fn main() {
                 sim.crashes.len(),
                 area(&blank.shapes) - area(&sim.final_shapes)
             );
+            if std::env::var("EXACT").is_ok_and(|v| v == "1") {
+                let exact_opts = SimOptions {
+                    merge_tol: 0.0,
+                    ..opts
+                };
+                let exact = simulate(blank, tools, &segs, &exact_opts, &mut |_| {});
+                let (ours, exact_shapes) = (
+                    without_needles(&sim.final_shapes),
+                    without_needles(&exact.final_shapes),
+                );
+                println!(
+                    "  against merge_tol = 0: hausdorff {:.6} mm ({:.6} without needles), symmetric difference {:.6} mm², crashes {} / {}",
+                    hausdorff(&sim.final_shapes, &exact.final_shapes),
+                    hausdorff(&ours, &exact_shapes),
+                    symmetric_difference_area(&sim.final_shapes, &exact.final_shapes),
+                    sim.crashes.len(),
+                    exact.crashes.len()
+                );
+            }
         }
     }
 }
