@@ -27,6 +27,13 @@
 //! so a group adds no false crash. A ring lane carves segment by segment (each segment's
 //! region is convex). Where a rapid cannot be carved (below the axis, or into too many
 //! pieces), the group closes first and the rapid meets the cut stock.
+//!
+//! Why our own Minkowski sum and convex difference ([`crate::geom::minkowski`],
+//! [`crate::geom::minus_convex`]): geo, parry2d and i_overlay have no Minkowski sum of
+//! polygons (the edge merge of two convex ones is 30 lines), and carving a rapid with
+//! i_overlay's difference would be a boolean call a rapid, ~147 000 instructions each on the
+//! stock bench (`PERFORMANCE.md`), where cutting a convex piece by a few convex regions
+//! costs a few thousand.
 
 use crate::geom::{convex_hull, minkowski, minus_convex, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
