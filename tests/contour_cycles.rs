@@ -57,6 +57,39 @@ fn o0006_g70_finishes_the_shape() {
     assert!(h <= 0.01, "Hausdorff {h}, symmetric difference {sym}");
 }
 
+/// O0006's G73 with 3 000 passes (21 000 moves; each pass (1, 0.5) mm / 2 999 = 0.00037 mm
+/// from the last, within the merge tolerance): its
+/// passes are cut as groups (`stock::SimOptions::pass_groups`), and the part is within
+/// `merge_tol / 2` of the one cut pass by pass, with the same (no) crashes; both leave the
+/// allowance.
+#[test]
+fn o0006_g73_of_3000_passes_groups_within_half_the_merge_tolerance() {
+    let text = read(&asset("programs/O0006-rough.nc"))
+        .replace("g73 u1.0 w1.0 r3 ", "g73 u1.0 w1.0 r3000 ");
+    assert!(text.contains("r3000"));
+    let tools = stock::ToolTable::from_toml(&read(&asset("tools/v35-sharp.toml"))).unwrap();
+    let blank =
+        stock::Blank::from_profile_toml(&read(&asset("blanks/o0006-casting.toml")), 0.001).unwrap();
+    let (tp, grouped) = simulate(&text, &blank, &tools);
+    assert!(tp.segments.len() > 20_000, "{}", tp.segments.len());
+    let single = stock::simulate(
+        &blank,
+        &tools,
+        &tp.segments,
+        &stock::SimOptions {
+            pass_groups: false,
+            ..Default::default()
+        },
+        &mut |_| {},
+    );
+    let h = stock::hausdorff(&grouped.final_shapes, &single.final_shapes);
+    eprintln!("grouped against pass by pass: Hausdorff {h:.7} mm");
+    assert!(h <= 0.00025, "Hausdorff {h}");
+    assert_eq!(grouped.crashes, single.crashes);
+    let want = [o0006_part(0.3, 0.25)];
+    assert!(stock::hausdorff(&grouped.final_shapes, &want) <= 0.01);
+}
+
 /// Run `program` (from assets/programs) on a Φ60 × 80 bar with its face at Z0, with or
 /// without its G70 line.
 fn on_bar(program: &str, with_g70: bool) -> (expander::Toolpath, stock::Simulation) {
