@@ -29,9 +29,9 @@
 //! pieces), the group closes first and the rapid meets the cut stock.
 //!
 //! Why our own Minkowski sum and convex difference ([`crate::geom::minkowski`],
-//! [`crate::geom::minus_convex`]): geo, parry2d and i_overlay have no Minkowski sum of
+//! [`crate::geom::minus_convex`]): geo, `parry2d` and `i_overlay` have no Minkowski sum of
 //! polygons (the edge merge of two convex ones is 30 lines), and carving a rapid with
-//! i_overlay's difference would be a boolean call a rapid, ~147 000 instructions each on the
+//! `i_overlay`'s difference would be a boolean call a rapid, ~147 000 instructions each on the
 //! stock bench (`PERFORMANCE.md`), where cutting a convex piece by a few convex regions
 //! costs a few thousand.
 
