@@ -769,4 +769,46 @@ mod tests {
             assert!(h <= 0.00025 + 1e-6, "case {case}: hausdorff {h}");
         }
     }
+
+    /// A lane of one pass sweeps what that pass sweeps (its quad is a segment), and of
+    /// three passes 0.0002 mm apart along r the segment's sweep grown by 0.0004 mm.
+    #[test]
+    fn a_lane_sweeps_its_passes_by_hand() {
+        let tools = v35();
+        let (outline, _) = tools.outline_for(1, expander::ToolHint::Table);
+        let outline = std::sync::Arc::new(outline);
+        let path = [[0.0, 10.0], [-20.0, 10.0]];
+        let step = vec![[0.0, -0.0002], [0.0, -0.0002]];
+        let lane = |count| super::Lane {
+            outline: outline.clone(),
+            first: path.to_vec(),
+            step: step.clone(),
+            count,
+            seg: 0,
+            bbox: geom::Rect::EMPTY,
+            extent: outline.bbox().expect("an outline"),
+        };
+        let single: f64 = outline
+            .parts
+            .iter()
+            .map(|part| {
+                let placed: Vec<P> = part
+                    .iter()
+                    .map(|v| [v[0] + path[0][0], v[1] + path[0][1]])
+                    .collect();
+                area(&crate::geom::sweep_convex(&placed, [-20.0, 0.0]))
+            })
+            .sum();
+        let one: f64 = lane(1).regions(0).map(|r| area(&r)).sum();
+        assert!((one - single).abs() < 1e-9, "{one} vs {single}");
+        // three passes: a convex region moved 0.0004 mm along r grows by its width along z
+        // (the 20 mm path plus the outline's width) times 0.0004 mm
+        let three: f64 = lane(3).regions(0).map(|r| area(&r)).sum();
+        let (lo, hi) = outline.bbox().expect("an outline");
+        let width = 20.0 + (hi[0] - lo[0]);
+        assert!(
+            (three - single - width * 0.0004).abs() < 1e-9,
+            "{three} vs {single}"
+        );
+    }
 }
