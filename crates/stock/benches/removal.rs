@@ -292,6 +292,20 @@ fn main() {
                     without_needles(&sim.final_shapes),
                     without_needles(&exact.final_shapes),
                 );
+                let count = |v: &[Shape]| {
+                    v.iter()
+                        .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
+                        .sum::<usize>()
+                };
+                println!(
+                    "  needle vertices: {} here, {} with merge_tol = 0",
+                    count(&sim.final_shapes) - count(&ours),
+                    count(&exact.final_shapes) - count(&exact_shapes)
+                );
+                println!(
+                    "  longest needle here: {:.6} mm",
+                    hausdorff(&sim.final_shapes, &ours)
+                );
                 println!(
                     "  against merge_tol = 0: hausdorff {:.6} mm ({:.6} without needles), symmetric difference {:.6} mm², crashes {} / {}",
                     hausdorff(&sim.final_shapes, &exact.final_shapes),
