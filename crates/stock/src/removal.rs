@@ -232,6 +232,13 @@ impl Trimmed {
         }
     }
 
+    /// Appends the polygons a rapid's crash test reads ([`Item::probe`]), trimmed to `b`.
+    fn push_probe(&mut self, sweeps: &Sweeps, it: &Item, b: &IBox) {
+        for p in sweeps.probe_parts_of(it) {
+            self.push(p, b);
+        }
+    }
+
     /// Appends `poly` trimmed to `b` (nothing when its overlap with `b` has no area).
     fn push(&mut self, poly: Poly, b: &IBox) {
         let start = self.pts.len();
@@ -502,7 +509,8 @@ impl Tile {
                 continue;
             }
             trim.clear();
-            trim.push_sweep(sweeps, it, &self.bbox);
+            // a carved rapid: in the air where its pieces are (the rest is the group's)
+            trim.push_probe(sweeps, it, &self.bbox);
             if !trim.rings().any(|r| {
                 if r.convex || !ctx.ring_air {
                     touches(r.pts, r.convex, &self.stock, &reach)
@@ -523,7 +531,18 @@ impl Tile {
             if it.rapid && !covered {
                 self.flush(batch, engine);
                 reach = self.bbox;
-                self.probe(it, ctx, engine, frags, trim);
+                let met = self.probe(it, ctx, engine, frags, trim);
+                if !it.probe.is_empty() {
+                    // probed with its carved pieces: where they meet stock it cuts its
+                    // whole sweep (cutting the pieces alone would leave slivers between
+                    // them and the group's later cut); where not, it leaves the rest to
+                    // the group (no boolean for a rapid in the air the group cut)
+                    if !met {
+                        continue;
+                    }
+                    trim.clear();
+                    trim.push_sweep(sweeps, it, &self.bbox);
+                }
             }
             if covered {
                 continue;
@@ -541,8 +560,9 @@ impl Tile {
         None
     }
 
-    /// Intersects the sweep `it` with the (flushed) stock and keeps the overlap as a
-    /// crash fragment; leaves `trim` holding `it` trimmed to a box of the stock.
+    /// Intersects the sweep `it` (its [`Item::probe`] polygons) with the (flushed) stock
+    /// and keeps the overlap as a crash fragment; leaves `trim` holding those polygons
+    /// trimmed to a box of the stock. True when they overlap the stock.
     fn probe(
         &self,
         it: &Item,
@@ -550,12 +570,12 @@ impl Tile {
         engine: &mut Engine,
         frags: &mut Vec<Fragment>,
         trim: &mut Trimmed,
-    ) {
+    ) -> bool {
         if !it.bbox.overlaps(&self.bbox) {
-            return;
+            return false;
         }
         trim.clear();
-        trim.push_sweep(ctx.sweeps, it, &self.bbox);
+        trim.push_probe(ctx.sweeps, it, &self.bbox);
         let overlap = engine.intersection(&self.stock, trim.iter());
         let a = ctx.grid.area(&overlap);
         if a > 0.0 {
@@ -570,6 +590,7 @@ impl Tile {
                 across: across(ctx.grid, &overlap, it.dir),
             });
         }
+        a > 0.0
     }
 
     fn splittable(&self, ctx: &Ctx) -> bool {

@@ -86,6 +86,10 @@ pub(crate) struct Item {
     pub(crate) body: Option<&'static str>,
     /// Its polygons, indices into [`Sweeps::polys`].
     pub(crate) polys: Range<u32>,
+    /// The polygons a rapid's crash test reads, when not `polys` (empty): a rapid between
+    /// the passes of a group is carved by what they cut ([`crate::pass_group`]) but cuts
+    /// its whole sweep, so that no sliver is left between its pieces and the group's sweep.
+    pub(crate) probe: Range<u32>,
     /// Bounding box of all its polygons.
     pub(crate) bbox: IBox,
     /// Reference point at the start of the move (for the crash contact point).
@@ -136,6 +140,9 @@ impl Sweeps {
         self.hints.extend(other.hints);
         self.items.extend(other.items.into_iter().map(|mut it| {
             it.polys = it.polys.start + dq..it.polys.end + dq;
+            if !it.probe.is_empty() {
+                it.probe = it.probe.start + dq..it.probe.end + dq;
+            }
             it
         }));
     }
@@ -149,7 +156,20 @@ impl Sweeps {
 
     /// The polygons of one item with what the air tests know of each ([`Poly`]).
     pub(crate) fn parts_of(&self, it: &Item) -> impl Iterator<Item = Poly<'_>> + Clone {
-        (it.polys.start as usize..it.polys.end as usize).map(|k| {
+        self.parts_in(it.polys.clone())
+    }
+
+    /// The polygons a rapid's crash test reads ([`Item::probe`]).
+    pub(crate) fn probe_parts_of(&self, it: &Item) -> impl Iterator<Item = Poly<'_>> + Clone {
+        self.parts_in(if it.probe.is_empty() {
+            it.polys.clone()
+        } else {
+            it.probe.clone()
+        })
+    }
+
+    fn parts_in(&self, polys: Range<u32>) -> impl Iterator<Item = Poly<'_>> + Clone {
+        (polys.start as usize..polys.end as usize).map(|k| {
             let (p, b) = (&self.polys[k], &self.runs[k]);
             Poly {
                 pts: &self.pts[p.start as usize..p.end as usize],
@@ -355,6 +375,9 @@ pub(crate) struct SweepBuilder<'a> {
     thread_carry: Option<(P, f64)>,
     /// Repeated passes merged into one sweep (see [`crate::pass_group`]); `None`: off.
     groups: Option<PassGroups>,
+    /// The polygons added now get no core: a carved rapid's whole sweep, which is cut only
+    /// where its pieces meet stock (rarely), and whose core cost the builder 20 %.
+    coreless: bool,
     /// (first segment index, message) for skipped moves and defaulted tools.
     pub(crate) warnings: Vec<(usize, String)>,
     /// The sweeps built so far.
@@ -391,6 +414,7 @@ impl<'a> SweepBuilder<'a> {
             next_continues: false,
             thread_carry: None,
             groups: None,
+            coreless: false,
             warnings: Vec::new(),
             out: Sweeps::default(),
         }
@@ -892,7 +916,7 @@ impl<'a> SweepBuilder<'a> {
         let Some(groups) = self.groups.as_mut() else {
             return false;
         };
-        let mut pieces = Vec::new();
+        let (mut whole, mut pieces) = (Vec::new(), Vec::new());
         for part in &outline.parts {
             let placed: Vec<P> = part.iter().map(|v| [v[0] + a[0], v[1] + a[1]]).collect();
             let poly = sweep_convex(&placed, d);
@@ -904,7 +928,12 @@ impl<'a> SweepBuilder<'a> {
                 continue;
             }
             // only its part inside the clip box is kept anyway: fewer pieces to carve
-            let poly = clip_convex(&poly, &clip);
+            let inside = clip.contains(reach.min) && clip.contains(reach.max);
+            let poly = if inside {
+                poly
+            } else {
+                clip_convex(&poly, &clip)
+            };
             if poly.len() < 3 {
                 continue;
             }
@@ -912,8 +941,22 @@ impl<'a> SweepBuilder<'a> {
                 Some(p) => pieces.extend(p),
                 None => return false,
             }
+            whole.push(poly);
         }
+        if pieces.is_empty() {
+            // wholly inside what the group cut: air, and the group's sweep cuts it
+            return true;
+        }
+        // it cuts its whole sweep (the group's sweep would cut the rest, but pieces cut
+        // apart from it leave slivers of a grid step between them) and is tested for a
+        // crash with its pieces
         let item = self.begin();
+        self.coreless = true;
+        for p in &whole {
+            self.add_poly(p);
+        }
+        self.coreless = false;
+        let cut = self.out.polys.len() as u32;
         for p in &pieces {
             self.add_poly(p);
         }
@@ -923,7 +966,17 @@ impl<'a> SweepBuilder<'a> {
         } else {
             [0.0, 0.0]
         };
+        let count = self.out.items.len();
         self.end(item, idx, true, a, dir);
+        if let Some(it) = self.out.items.get_mut(count) {
+            if cut < it.polys.end {
+                it.probe = cut..it.polys.end;
+                it.polys = it.polys.start..cut;
+            } else {
+                // the pieces were all slivers the clipping dropped: no crash to find
+                it.rapid = false;
+            }
+        }
         true
     }
 
@@ -1035,7 +1088,7 @@ impl<'a> SweepBuilder<'a> {
     }
 
     fn add_section_poly(&mut self, poly: &[P], convex: bool) {
-        let quick = Rect::of(pts(poly));
+        let quick = crate::pass_group::bounds(poly);
         let inside = self.clip.contains(quick.min) && self.clip.contains(quick.max);
         let clipped;
         let poly = if inside {
@@ -1068,11 +1121,13 @@ impl<'a> SweepBuilder<'a> {
         self.out.boxes.push(IBox::of(added.iter().copied()));
         // a core saves edge tests: a polygon of a few edges (a blade's peck) has few to save,
         // and its core would cost more than they (wobble 10⁵: +7 % instructions)
-        self.out.cores.push(if convex && added.len() >= CORE_FROM {
-            inscribed_box(added)
-        } else {
-            IBox::EMPTY
-        });
+        self.out
+            .cores
+            .push(if convex && added.len() >= CORE_FROM && !self.coreless {
+                inscribed_box(added)
+            } else {
+                IBox::EMPTY
+            });
         self.out.hints.push(AtomicU32::new(0));
     }
 
@@ -1104,6 +1159,7 @@ impl<'a> SweepBuilder<'a> {
             rapid,
             body: None,
             polys: first..last,
+            probe: 0..0,
             bbox,
             start,
             eps,
