@@ -24,7 +24,9 @@
 //! it then meets of the stock is what it meets of the true stock, up to the notches between
 //! the passes (at most `δ / 2` thick: a rapid retracing the cut can miss such a sliver, the
 //! caveat of merged chains in [`crate::sweep`]); it never meets material the group removed,
-//! so a group adds no false crash. A ring lane carves segment by segment (each segment's
+//! so a group adds no false crash. Where its pieces do meet stock (a crash), the rapid cuts
+//! its whole sweep, as it would pass by pass: cutting only the pieces left slivers of a grid
+//! step between them and the group's later cut. A ring lane carves segment by segment (each segment's
 //! region is convex). Where a rapid cannot be carved (below the axis, or into too many
 //! pieces), the group closes first and the rapid meets the cut stock.
 //!
