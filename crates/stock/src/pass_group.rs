@@ -649,6 +649,20 @@ mod tests {
         segs
     }
 
+    /// `segs` cut on a Φ100 bar with the default 55° insert, with and without groups.
+    fn g73_cut(segs: &[Segment]) -> (Simulation, Simulation) {
+        let blank = Blank::bar(100.0, 60.0, 0.0, None).expect("bar");
+        let tools = ToolTable::from_tools(vec![(1, Tool::DEFAULT)]);
+        let sim = |pass_groups| {
+            let opts = SimOptions {
+                pass_groups,
+                ..SimOptions::default()
+            };
+            simulate(&blank, &tools, segs, &opts, &mut |_| {})
+        };
+        (sim(true), sim(false))
+    }
+
     /// The G73-like pattern with a rapid from the arc's end into stock that later passes
     /// cut (and, with the tool's upper part, through the uncut bar above: 110 mm²), across
     /// the channel the group cut so far, carved by the arc's ring lane segment by segment:
@@ -657,17 +671,7 @@ mod tests {
     /// rapid cuts its whole sweep: cutting only its pieces left slivers 8.5 mm from the part).
     #[test]
     fn a_rapid_over_an_arc_lane_into_later_passes_is_the_same_crash() {
-        let segs = g73_pattern(700, Some(350));
-        let blank = Blank::bar(100.0, 60.0, 0.0, None).expect("bar");
-        let tools = ToolTable::from_tools(vec![(1, Tool::DEFAULT)]);
-        let sim = |pass_groups| {
-            let opts = SimOptions {
-                pass_groups,
-                ..SimOptions::default()
-            };
-            simulate(&blank, &tools, &segs, &opts, &mut |_| {})
-        };
-        let (grouped, single) = (sim(true), sim(false));
+        let (grouped, single) = g73_cut(&g73_pattern(700, Some(350)));
         assert!(!single.crashes.is_empty());
         assert_eq!(
             grouped.crashes.len(),
@@ -692,16 +696,8 @@ mod tests {
         let passes = 700;
         let segs = g73_pattern(passes, None);
         assert!(segs.len() > crate::snapshot::EXACT_MAX_MOVES);
-        let blank = Blank::bar(100.0, 60.0, 0.0, None).expect("bar");
         let tools = ToolTable::from_tools(vec![(1, Tool::DEFAULT)]);
-        let sim = |pass_groups| {
-            let opts = SimOptions {
-                pass_groups,
-                ..SimOptions::default()
-            };
-            simulate(&blank, &tools, &segs, &opts, &mut |_| {})
-        };
-        let (grouped, single) = (sim(true), sim(false));
+        let (grouped, single) = g73_cut(&segs);
         let h = hausdorff(&grouped.final_shapes, &single.final_shapes);
         assert!(h <= 0.00025, "hausdorff {h}");
         assert!((grouped.removed_area - single.removed_area).abs() < 1e-3);
