@@ -206,6 +206,10 @@ pub struct Segment {
     pub span: Span,
 }
 
+/// Smallest chord tolerance an arc is flattened with, mm (a finer one would cut a large
+/// arc into tens of thousands of chords).
+const MIN_CHORD_TOL: f64 = 1e-6;
+
 impl Segment {
     /// Length of the path, mm.
     pub fn length(&self) -> f64 {
@@ -228,19 +232,23 @@ impl Segment {
     /// How many chords [`Segment::polyline`] makes at `tol` (1 for a line), without
     /// making them.
     pub fn chord_count(&self, tol: f64) -> usize {
-        self.arc.map_or(1, |a| {
-            geom::arc::Arc::between(self.from, self.to, a.center, a.ccw).chords(tol.max(1e-6))
-        })
+        self.circle()
+            .map_or(1, |arc| arc.chords(tol.max(MIN_CHORD_TOL)))
+    }
+
+    /// The arc of an arc move, as the geometry kernel computes with it.
+    fn circle(&self) -> Option<geom::arc::Arc> {
+        self.arc
+            .map(|a| geom::arc::Arc::between(self.from, self.to, a.center, a.ccw))
     }
 
     /// Points along the segment such that no chord strays more than `tol` mm from the
     /// true arc (lines give their two end points). Always starts at `from`, ends at `to`.
     pub fn polyline(&self, tol: f64) -> Vec<Pt> {
-        let Some(a) = self.arc else {
+        let Some(arc) = self.circle() else {
             return vec![self.from, self.to];
         };
-        let arc = geom::arc::Arc::between(self.from, self.to, a.center, a.ccw);
-        let n = arc.chords(tol.max(1e-6));
+        let n = arc.chords(tol.max(MIN_CHORD_TOL));
         // the end points exactly as given; the angle (sweep · i) / n as it always was
         let mut pts = Vec::with_capacity(n + 1);
         pts.push(self.from);

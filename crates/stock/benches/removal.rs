@@ -68,6 +68,14 @@ fn without_needles(shapes: &[Shape]) -> Vec<Shape> {
         .collect()
 }
 
+/// Vertices of the shapes, holes included.
+fn vertices(shapes: &[Shape]) -> usize {
+    shapes
+        .iter()
+        .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
+        .sum()
+}
+
 fn seg(motion: Motion, from: Pt, to: Pt) -> Segment {
     Segment {
         motion,
@@ -267,18 +275,13 @@ fn main() {
             let t = Instant::now();
             let sim = simulate(blank, tools, &segs, &opts, &mut |_| {});
             let dt = t.elapsed().as_secs_f64();
-            let verts: usize = sim
-                .final_shapes
-                .iter()
-                .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
-                .sum();
             println!(
                 "{:<9} {:>9} {:>9.3} {:>12.0} {:>9} {:>8} {:>12.3}",
                 name,
                 segs.len(),
                 dt,
                 segs.len() as f64 / dt,
-                verts,
+                vertices(&sim.final_shapes),
                 sim.crashes.len(),
                 area(&blank.shapes) - area(&sim.final_shapes)
             );
@@ -292,15 +295,10 @@ fn main() {
                     without_needles(&sim.final_shapes),
                     without_needles(&exact.final_shapes),
                 );
-                let count = |v: &[Shape]| {
-                    v.iter()
-                        .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
-                        .sum::<usize>()
-                };
                 println!(
                     "  needle vertices: {} here, {} with merge_tol = 0",
-                    count(&sim.final_shapes) - count(&ours),
-                    count(&exact.final_shapes) - count(&exact_shapes)
+                    vertices(&sim.final_shapes) - vertices(&ours),
+                    vertices(&exact.final_shapes) - vertices(&exact_shapes)
                 );
                 println!(
                     "  longest needle here: {:.6} mm",

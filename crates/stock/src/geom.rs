@@ -22,6 +22,15 @@ pub(crate) fn pts(ring: &[P]) -> Vec<Pt> {
     ring.iter().map(|&p| Pt::from(p)).collect()
 }
 
+/// The box of some points (no copy of them, unlike `Rect::of(pts(..))`).
+pub(crate) fn bounds<'a>(points: impl IntoIterator<Item = &'a P>) -> Rect {
+    let mut r = Rect::EMPTY;
+    for &p in points {
+        r.add(Pt::new(p[0], p[1]));
+    }
+    r
+}
+
 /// Convex hull through the kernel ([`geom::ring::convex_hull`]), on `[f64; 2]` points.
 pub(crate) fn convex_hull(points: &[P]) -> Vec<P> {
     ring::convex_hull(&pts(points))

@@ -37,7 +37,7 @@
 //! stock bench (`PERFORMANCE.md`), where cutting a convex piece by a few convex regions
 //! costs a few thousand.
 
-use crate::geom::{convex_hull, minkowski, minus_convex, sweep_chain, sweep_convex, P};
+use crate::geom::{bounds, convex_hull, minkowski, minus_convex, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
 use geom::{Pt, Rect};
 use std::collections::VecDeque;
@@ -81,8 +81,6 @@ pub(crate) struct Lane {
     pub(crate) count: usize,
     /// The last segment of its last pass.
     pub(crate) seg: usize,
-    /// Box of its region so far.
-    bbox: Rect,
     /// The outline's box (min, max) about its reference point.
     extent: (P, P),
 }
@@ -141,29 +139,43 @@ impl Lane {
 
     fn new(path: Path, step: Vec<P>) -> Option<Self> {
         let extent = path.outline.bbox()?;
-        let mut lane = Self {
+        let lane = Self {
             outline: Arc::clone(path.outline),
             first: path.pts.to_vec(),
             step,
             count: 1,
             seg: path.seg,
-            bbox: Rect::EMPTY,
             extent,
         };
-        lane.grow_box(0).then_some(lane)
+        lane.above_axis(0).then_some(lane)
     }
 
-    /// Adds pass `n`'s path to the box; false when it reaches below the axis (a carved
-    /// rapid is measured in the folded section, the regions are not).
-    fn grow_box(&mut self, n: usize) -> bool {
+    /// Whether pass `n` stays above the axis (a carved rapid is measured in the folded
+    /// section, the regions are not).
+    fn above_axis(&self, n: usize) -> bool {
+        self.reach(self.path_at(n)).min.r >= 0.0
+    }
+
+    /// The box of the outline placed at each of `points`.
+    fn reach(&self, points: impl IntoIterator<Item = P>) -> Rect {
         let (lo, hi) = self.extent;
-        let mut bbox = self.bbox;
-        for p in self.path_at(n) {
-            bbox.add(Pt::new(p[0] + lo[0], p[1] + lo[1]));
-            bbox.add(Pt::new(p[0] + hi[0], p[1] + hi[1]));
+        let mut r = Rect::EMPTY;
+        for p in points {
+            r.add(Pt::new(p[0] + lo[0], p[1] + lo[1]));
+            r.add(Pt::new(p[0] + hi[0], p[1] + hi[1]));
         }
-        self.bbox = bbox;
-        bbox.min.r >= 0.0
+        r
+    }
+
+    /// The box of its region so far: the outline about its first and last paths (every
+    /// vertex moves on a line in between).
+    fn bbox(&self) -> Rect {
+        self.reach(
+            self.first
+                .iter()
+                .copied()
+                .chain(self.path_at(self.count - 1)),
+        )
     }
 
     /// The sweep of the passes so far: convex polygons (a lane of one segment) or rings.
@@ -211,13 +223,8 @@ impl Lane {
     /// would be more than [`MAX_PIECES`]. Only segments whose region's box meets the
     /// pieces are looked at (a ring lane of an arc has a hundred).
     fn carve(&self, mut pieces: Vec<Vec<P>>) -> Option<Vec<Vec<P>>> {
-        let (lo, hi) = self.extent;
         for i in 0..self.first.len() - 1 {
-            let reach = bounds(pieces.iter().flatten());
-            let mut quad_box = bounds(&self.quad(i));
-            quad_box.add(Pt::new(quad_box.min.z + lo[0], quad_box.min.r + lo[1]));
-            quad_box.add(Pt::new(quad_box.max.z + hi[0], quad_box.max.r + hi[1]));
-            if !reach.intersects(&quad_box) {
+            if !bounds(pieces.iter().flatten()).intersects(&self.reach(self.quad(i))) {
                 continue;
             }
             for region in self.regions(i) {
@@ -235,15 +242,6 @@ impl Lane {
         }
         Some(pieces)
     }
-}
-
-/// The box of some points.
-pub(crate) fn bounds<'a>(points: impl IntoIterator<Item = &'a P>) -> Rect {
-    let mut r = Rect::EMPTY;
-    for &p in points {
-        r.add(Pt::new(p[0], p[1]));
-    }
-    r
 }
 
 /// What [`PassGroups::offer`] did with a feed path.
@@ -373,7 +371,7 @@ impl PassGroups {
         }
         let c = self.cursor;
         let lane = &mut self.lanes[c];
-        if !lane.next_is(path) || !lane.grow_box(lane.count) {
+        if !lane.next_is(path) || !lane.above_axis(lane.count) {
             return false;
         }
         lane.count += 1;
@@ -390,7 +388,7 @@ impl PassGroups {
             if pieces.is_empty() {
                 break;
             }
-            if bounds(pieces.iter().flatten()).intersects(&lane.bbox) {
+            if bounds(pieces.iter().flatten()).intersects(&lane.bbox()) {
                 pieces = lane.carve(pieces)?;
             }
         }
@@ -830,7 +828,6 @@ mod tests {
             step: step.clone(),
             count,
             seg: 0,
-            bbox: geom::Rect::EMPTY,
             extent: outline.bbox().expect("an outline"),
         };
         let single: f64 = outline

@@ -1031,7 +1031,9 @@ pub fn simulate(
     let mut builder = SweepBuilder::new(&grid, clip, tools, tol, merge_tol);
     builder.set_rear(crate::section::rear_tools(segments));
     builder.set_feed_paths(opts.feed_paths);
-    builder.set_pass_groups(opts.pass_groups && segments.len() > crate::snapshot::EXACT_MAX_MOVES);
+    let snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), &stock);
+    // a group's passes are one sweep: only where snapshots are not taken move by move
+    builder.set_pass_groups(opts.pass_groups && !snapshots.exact());
     let mut fragments: Vec<Fragment> = Vec::new();
     // moves whose cuts are all in the tiles at the last epoch end (a merged run still open
     // is not: its sweep comes when it ends)
@@ -1049,17 +1051,17 @@ pub fn simulate(
         .max(0.0);
     let mut epochs = Epochs {
         builder,
-        snapshots: Snapshots::new(&opts.snapshot_after, segments.len(), &stock),
+        // programs whose snapshots come from epoch ends get about 30 epochs (depending
+        // only on the program's length, so every report of a run reads the same removal)
+        len: if snapshots.exact() {
+            EPOCH
+        } else {
+            (segments.len() / 30).clamp(1024, EPOCH)
+        },
+        snapshots,
         segments,
         tools,
         bore,
-        // programs whose snapshots come from epoch ends get about 30 epochs (depending
-        // only on the program's length, so every report of a run reads the same removal)
-        len: if segments.len() > crate::snapshot::EXACT_MAX_MOVES {
-            (segments.len() / 30).clamp(1024, EPOCH)
-        } else {
-            EPOCH
-        },
     };
     let mut next = Some(epochs.build(0, None, separation_checks < MAX_SEPARATION_CHECKS));
     while let Some(ep) = next.take() {
@@ -1869,10 +1871,6 @@ pub(crate) mod tests {
         assert_eq!(sim.final_shapes, run(&blank, &v35(), &segs).final_shapes);
     }
 
-    /// A program of more than 5 000 moves gets its snapshots at epoch ends: 6 400 grooving
-    /// pecks (3 mm blade-like V35 plunges stepped 0.01 mm, each followed by a retract) ask
-    /// for two counts; each snapshot is labelled with the moves it holds (at or after the
-    /// count asked for, before the end) and is the stock of that prefix run.
     /// A part-off in the middle of a long program (epochs of 1 024 moves, the next one's
     /// sweeps built while the last is cut): the pin falls before any later epoch is built,
     /// so a rapid through its place three epochs later meets air, while a rapid into the
@@ -1922,6 +1920,10 @@ pub(crate) mod tests {
         );
     }
 
+    /// A program of more than 5 000 moves gets its snapshots at epoch ends: 6 400 grooving
+    /// pecks (3 mm blade-like V35 plunges stepped 0.01 mm, each followed by a retract) ask
+    /// for two counts; each snapshot is labelled with the moves it holds (at or after the
+    /// count asked for, before the end) and is the stock of that prefix run.
     #[test]
     fn a_long_program_gets_its_snapshots_at_epoch_ends() {
         let blank = Blank::bar(50.0, 100.0, 0.0, None).unwrap();

@@ -44,7 +44,7 @@
 //! programmed point. An arc whose single chord is within `chord_tol − δ` of it joins such
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
-use crate::geom::{clip_convex, dist, pts, sweep_chain, sweep_convex, P};
+use crate::geom::{bounds, clip_convex, dist, pts, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
 use crate::overlay::{inscribed_box, ring_perimeter, Grid, IBox, IPt};
 use crate::pass_group::{Lane, Offer, PassGroups};
@@ -501,16 +501,14 @@ impl<'a> SweepBuilder<'a> {
     /// Adds segment number `idx`: the sweep of its cutting outline, then the probe of its
     /// body (held while a merged run is open: it follows the run's sweep).
     pub(crate) fn push(&mut self, idx: usize, seg: &Segment) {
-        if self.groups.as_ref().is_some_and(PassGroups::is_open) {
-            let flip = self.rear.contains(&seg.tool);
-            if self.body(seg.tool, seg.hint, flip).is_some() {
-                // its probes must meet the stock the group's passes cut
-                self.close_group();
-            }
+        let flip = self.rear.contains(&seg.tool);
+        let body = self.body(seg.tool, seg.hint, flip);
+        if body.is_some() {
+            // its probes must meet the stock the group's passes cut
+            self.close_group();
         }
         if self.push_cut(idx, seg) {
-            let flip = self.rear.contains(&seg.tool);
-            let Some(body) = self.body(seg.tool, seg.hint, flip) else {
+            let Some(body) = body else {
                 return;
             };
             let path: Vec<P> = if seg.motion == Motion::Thread {
@@ -920,7 +918,7 @@ impl<'a> SweepBuilder<'a> {
         for part in &outline.parts {
             let placed: Vec<P> = part.iter().map(|v| [v[0] + a[0], v[1] + a[1]]).collect();
             let poly = sweep_convex(&placed, d);
-            let reach = crate::pass_group::bounds(&poly);
+            let reach = bounds(&poly);
             if reach.min.r < 0.0 {
                 return false;
             }
@@ -1088,7 +1086,7 @@ impl<'a> SweepBuilder<'a> {
     }
 
     fn add_section_poly(&mut self, poly: &[P], convex: bool) {
-        let quick = crate::pass_group::bounds(poly);
+        let quick = bounds(poly);
         let inside = self.clip.contains(quick.min) && self.clip.contains(quick.max);
         let clipped;
         let poly = if inside {

@@ -362,81 +362,74 @@ impl ThreadPasses {
     /// The threads measured in the final section `shapes` (see [`threads`]); `segments`
     /// are the moves the passes were found in.
     pub fn measure(&self, segments: &[Segment], shapes: &[Shape]) -> Vec<Thread> {
-        measure(&self.0, segments, shapes)
-    }
-}
-
-fn measure(
-    groups: &[(Surface, Vec<usize>)],
-    segments: &[Segment],
-    shapes: &[Shape],
-) -> Vec<Thread> {
-    let groups: Vec<(Surface, Vec<&Segment>, usize)> = groups
-        .iter()
-        .map(|&(surface, ref passes)| {
-            let first = passes[0];
-            (
-                surface,
-                passes.iter().map(|&i| &segments[i]).collect(),
-                first,
-            )
-        })
-        .collect();
-    groups
-        .into_iter()
-        .map(|(surface, passes, first_move)| {
-            let deeper = |a: f64, b: f64| match surface {
-                Surface::Outer => a < b,
-                Surface::Bore => a > b,
-            };
-            let deepest = passes
-                .iter()
-                .copied()
-                .reduce(|d, p| if deeper(p.to.r, d.to.r) { p } else { d })
-                .expect("a thread has a pass");
-            let end = deepest.to;
-            let toward_start = (deepest.from.z - end.z).signum() * deepest.lead;
-            let crest = crest_radius(shapes, end.z, end.z + toward_start, surface);
-            // each start (multi-start: each phase) goes down from the crest on its own; a
-            // thread cut in the air has no crest, and its first depth is 0
-            let mut before: Vec<(f64, f64)> = vec![];
-            let pass_depths = passes
-                .iter()
-                .map(|p| {
-                    let k = match before.iter().position(|b| b.0 == p.thread_phase) {
-                        Some(k) => k,
-                        None => {
-                            before.push((p.thread_phase, crest.unwrap_or(p.to.r)));
-                            before.len() - 1
-                        }
-                    };
-                    let d = (before[k].1 - p.to.r).abs();
-                    before[k].1 = p.to.r;
-                    d
-                })
-                .collect();
-            // the infeed direction: from the first pass to the last
-            let (first, last) = (passes[0].to.r, passes[passes.len() - 1].to.r);
-            let wrong_side = (last - first).abs() > 1e-9
-                && match surface {
-                    Surface::Outer => last > first,
-                    Surface::Bore => last < first,
+        let groups: Vec<(Surface, Vec<&Segment>, usize)> = self
+            .0
+            .iter()
+            .map(|&(surface, ref passes)| {
+                let first = passes[0];
+                (
+                    surface,
+                    passes.iter().map(|&i| &segments[i]).collect(),
+                    first,
+                )
+            })
+            .collect();
+        groups
+            .into_iter()
+            .map(|(surface, passes, first_move)| {
+                let deeper = |a: f64, b: f64| match surface {
+                    Surface::Outer => a < b,
+                    Surface::Bore => a > b,
                 };
-            let mut phases: Vec<f64> = passes.iter().map(|p| p.thread_phase).collect();
-            phases.sort_by(f64::total_cmp);
-            phases.dedup();
-            Thread {
-                first_move,
-                starts: phases.len(),
-                wrong_side,
-                span: passes[0].span,
-                surface,
-                lead: deepest.lead,
-                root: [[deepest.from.z, deepest.from.r], [end.z, end.r]],
-                pass_depths,
-            }
-        })
-        .collect()
+                let deepest = passes
+                    .iter()
+                    .copied()
+                    .reduce(|d, p| if deeper(p.to.r, d.to.r) { p } else { d })
+                    .expect("a thread has a pass");
+                let end = deepest.to;
+                let toward_start = (deepest.from.z - end.z).signum() * deepest.lead;
+                let crest = crest_radius(shapes, end.z, end.z + toward_start, surface);
+                // each start (multi-start: each phase) goes down from the crest on its own; a
+                // thread cut in the air has no crest, and its first depth is 0
+                let mut before: Vec<(f64, f64)> = vec![];
+                let pass_depths = passes
+                    .iter()
+                    .map(|p| {
+                        let k = match before.iter().position(|b| b.0 == p.thread_phase) {
+                            Some(k) => k,
+                            None => {
+                                before.push((p.thread_phase, crest.unwrap_or(p.to.r)));
+                                before.len() - 1
+                            }
+                        };
+                        let d = (before[k].1 - p.to.r).abs();
+                        before[k].1 = p.to.r;
+                        d
+                    })
+                    .collect();
+                // the infeed direction: from the first pass to the last
+                let (first, last) = (passes[0].to.r, passes[passes.len() - 1].to.r);
+                let wrong_side = (last - first).abs() > 1e-9
+                    && match surface {
+                        Surface::Outer => last > first,
+                        Surface::Bore => last < first,
+                    };
+                let mut phases: Vec<f64> = passes.iter().map(|p| p.thread_phase).collect();
+                phases.sort_by(f64::total_cmp);
+                phases.dedup();
+                Thread {
+                    first_move,
+                    starts: phases.len(),
+                    wrong_side,
+                    span: passes[0].span,
+                    surface,
+                    lead: deepest.lead,
+                    root: [[deepest.from.z, deepest.from.r], [end.z, end.r]],
+                    pass_depths,
+                }
+            })
+            .collect()
+    }
 }
 
 /// The threads' passes, each by the index of its first thread move (a chamfer pull-out
