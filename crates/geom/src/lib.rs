@@ -5,7 +5,8 @@
 //! - [`Rect`]: an axis-aligned box,
 //! - [`arc`]: circular arcs and the one routine that chords them,
 //! - [`ring`]: closed rings (area, moments, point in ring, convex hull),
-//! - [`distance`]: point–segment and point–polyline distances, Hausdorff distance.
+//! - [`distance`]: point–segment and point–polyline distances, Hausdorff distance,
+//! - [`flat`]: convex parts, sweeps, Minkowski sums and clipping on `[f64; 2]` points.
 //!
 //! Algorithms come from **geo** (area, containment, hull, Hausdorff, simplification) and
 //! **parry2d-f64** (projection onto polylines); boolean operations live in the `stock`
@@ -14,6 +15,7 @@
 
 pub mod arc;
 pub mod distance;
+pub mod flat;
 mod pt;
 mod rect;
 pub mod ring;

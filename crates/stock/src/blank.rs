@@ -101,7 +101,7 @@ impl Blank {
     /// [`profile_from_toml`]: crate::profile_from_toml
     pub fn from_profile_toml(text: &str, chord_tol: f64) -> Result<Self, StockError> {
         let shapes = profile::profile_from_toml(text, chord_tol)?;
-        let r = geom::Rect::of(shapes.iter().flat_map(|s| crate::geom::pts(&s.outer)));
+        let r = geom::Rect::of(shapes.iter().flat_map(|s| geom::flat::pts(&s.outer)));
         Ok(Self {
             description: format!(
                 "profile Z{}..Z{}, up to Ø{}",

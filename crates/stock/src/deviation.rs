@@ -2,11 +2,11 @@
 //! leftovers (material that should be gone), each with its area, depth, position and the
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
-use crate::geom::{clip_convex, clip_to_hull, convex_hull, dist, lerp, pts, sweep_convex, P};
 use crate::overlay::BoolOp;
 use crate::{area, boolean, Outline, Shape, ToolTable};
 use expander::Segment;
 use geom::distance::EdgeIndex;
+use geom::flat::{clip_convex, clip_to_hull, convex_hull, dist, lerp, pts, sweep_convex, P};
 use geom::{ring, Rect};
 
 /// What the part should be, and where that statement holds.

@@ -28,10 +28,10 @@
 //! that meets the obstacle the move before it met continues that crash: one crash is
 //! reported, at its first move.
 
-use crate::geom::{convex_hull, sweep_convex, P};
 use crate::outline::Outline;
 use crate::{area, Blank, BoolOp, Shape, StockError, ToolTable, CRASH_MIN_AREA};
 use expander::{Motion, Segment, ToolHint, Workholding};
+use geom::flat::{convex_hull, sweep_convex, P};
 use geom::{Pt, Rect};
 use std::collections::HashMap;
 
@@ -114,7 +114,7 @@ impl Obstacle {
         let bbox = shapes_box(&shapes);
         let convex = shapes
             .iter()
-            .all(|s| s.holes.is_empty() && crate::geom::is_convex(&s.outer))
+            .all(|s| s.holes.is_empty() && geom::flat::is_convex(&s.outer))
             .then(|| shapes.iter().map(|s| s.outer.clone()).collect());
         Self {
             name,

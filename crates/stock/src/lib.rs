@@ -15,7 +15,6 @@ mod blank;
 mod deviation;
 mod error;
 mod fixture;
-mod geom;
 mod measure;
 mod outline;
 mod overlay;

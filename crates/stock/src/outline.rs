@@ -4,8 +4,8 @@
 //! body: the insert is what touches the part in normal work, and a holder outline would
 //! need dimensions the tool table does not carry.
 
-use crate::geom::{convex_hull, convex_parts, pts, P};
 use geom::arc::Arc;
+use geom::flat::{convex_hull, convex_parts, pts, P};
 use geom::{Pt, Rect};
 
 /// Largest distance between a chorded nose and the true arc, mm.

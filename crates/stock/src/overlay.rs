@@ -6,8 +6,8 @@
 //! boolean call works on exact integer points, and nothing is re-snapped between calls, so
 //! the stock cannot drift however many operations it goes through.
 
-use crate::geom::P;
 use crate::Shape;
+use geom::flat::P;
 use geom::Rect;
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay::{Overlay, ShapeType};
@@ -597,7 +597,7 @@ mod tests {
         let pts: Vec<P> = (0..6)
             .map(|_| [rng.next(span) as f64, rng.next(span) as f64])
             .collect();
-        crate::geom::convex_hull(&pts)
+        geom::flat::convex_hull(&pts)
             .iter()
             .map(|p| IPt::new(p[0] as i32, p[1] as i32))
             .collect()
@@ -730,7 +730,7 @@ mod tests {
             [9000.0, 11000.0],
             [1000.0, 8000.0],
         ];
-        let swept: Vec<IPt> = crate::geom::sweep_convex(&rhombus, [-100_000.0, 0.0])
+        let swept: Vec<IPt> = geom::flat::sweep_convex(&rhombus, [-100_000.0, 0.0])
             .iter()
             .map(|p| IPt::new(p[0] as i32, p[1] as i32))
             .collect();
@@ -738,5 +738,100 @@ mod tests {
         assert!(convex_contains(&swept, &c.corners()));
         assert_eq!(c.min[1], 1, "{c:?}");
         assert!(c.max[0] - c.min[0] > 90_000, "{c:?}");
+    }
+
+    /// (geom::flat's chain sweep read by the boolean engine.)
+    mod chain_sweep {
+        use super::super::clean;
+        use geom::flat::{convex_hull, pts, sweep_chain, sweep_convex, P};
+        use geom::Rect;
+
+        /// The chain sweep's ring fills (non-zero) exactly the union of the per-chord hulls,
+        /// and no point has a negative winding number: arcs of both turning directions, an S
+        /// curve, a half circle (turns up to 180° in total) and a polyline with sharp corners,
+        /// with a 35° insert whose nose is chorded (a convex part of many vertices).
+        #[test]
+        fn chain_sweep_is_the_union_of_the_chord_hulls() {
+            let nose = 0.4;
+            let mut insert: Vec<P> = (0..=14)
+                .map(|k| {
+                    let t = (-90.0 + 145.0 * f64::from(k) / 14.0_f64).to_radians();
+                    [nose * t.cos() - 0.3, nose * t.sin() + nose]
+                })
+                .collect();
+            insert.push([4.0, 2.5]);
+            let insert = convex_hull(&insert);
+            let arc = |c: P, r: f64, a0: f64, a1: f64, n: usize| -> Vec<P> {
+                (0..=n)
+                    .map(|k| {
+                        let t = (a0 + (a1 - a0) * k as f64 / n as f64).to_radians();
+                        [c[0] + r * t.cos(), c[1] + r * t.sin()]
+                    })
+                    .collect()
+            };
+            let mut s_curve = arc([0.0, 10.0], 0.5, 0.0, 180.0, 25);
+            s_curve.extend(arc([-1.0, 10.0], 0.5, 0.0, -180.0, 25).into_iter().skip(1));
+            let paths = [
+                arc([0.0, 10.0], 5.0, 0.0, 90.0, 40),
+                arc([0.0, 10.0], 5.0, 90.0, 0.0, 40),
+                arc([0.0, 10.0], 0.5, 180.0, 0.0, 25),
+                s_curve,
+                vec![
+                    [0.0, 10.0],
+                    [-5.0, 10.0],
+                    [-5.0, 6.0],
+                    [-9.0, 12.0],
+                    [-2.0, 13.0],
+                ],
+            ];
+            for (i, path) in paths.iter().enumerate() {
+                let ring = sweep_chain(&insert, path);
+                let hulls: Vec<Vec<P>> = path
+                    .windows(2)
+                    .map(|w| {
+                        let moved: Vec<P> = insert
+                            .iter()
+                            .map(|v| [v[0] + w[0][0], v[1] + w[0][1]])
+                            .collect();
+                        sweep_convex(&moved, [w[1][0] - w[0][0], w[1][1] - w[0][1]])
+                    })
+                    .collect();
+                let union = clean(&hulls);
+                let chain = clean(std::slice::from_ref(&ring));
+                let xor = crate::symmetric_difference_area(&union, &chain);
+                assert!(xor < 1e-6, "path {i}: symmetric difference {xor} mm²");
+                // arcs turn a little at each vertex: about four points per chord plus the caps
+                assert!(
+                    i == 4 || ring.len() < path.len() * 4 + 2 * insert.len(),
+                    "path {i}: {} points",
+                    ring.len()
+                );
+                // winding numbers: never negative on a grid of sample points
+                let r = Rect::of(pts(&ring));
+                for a in 0..60 {
+                    for b in 0..60 {
+                        let p = [
+                            r.min.z + (r.max.z - r.min.z) * (f64::from(a) + 0.37) / 60.0,
+                            r.min.r + (r.max.r - r.min.r) * (f64::from(b) + 0.61) / 60.0,
+                        ];
+                        assert!(winding(&ring, p) >= 0, "path {i}: winding < 0 at {p:?}");
+                    }
+                }
+            }
+        }
+
+        fn winding(ring: &[P], p: P) -> i32 {
+            let mut w = 0;
+            for i in 0..ring.len() {
+                let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+                let side = (b[0] - a[0]) * (p[1] - a[1]) - (p[0] - a[0]) * (b[1] - a[1]);
+                if a[1] <= p[1] && b[1] > p[1] && side > 0.0 {
+                    w += 1;
+                } else if a[1] > p[1] && b[1] <= p[1] && side < 0.0 {
+                    w -= 1;
+                }
+            }
+            w
+        }
     }
 }

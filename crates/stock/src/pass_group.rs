@@ -20,7 +20,7 @@
 //! The group's sweep is emitted when it closes, after the rapids between its passes. A
 //! rapid must meet the stock as it is after the passes before it, which the removal's stock
 //! still holds at that point: so each rapid is first *carved*, the regions the group has
-//! swept so far taken out of its sweep (convex pieces, [`crate::geom::minus_convex`]). What
+//! swept so far taken out of its sweep (convex pieces, [`geom::flat::minus_convex`]). What
 //! it then meets of the stock is what it meets of the true stock, up to the notches between
 //! the passes (at most `δ / 2` thick: a rapid retracing the cut can miss such a sliver, the
 //! caveat of merged chains in [`crate::sweep`]); it never meets material the group removed,
@@ -30,15 +30,15 @@
 //! region is convex). Where a rapid cannot be carved (below the axis, or into too many
 //! pieces), the group closes first and the rapid meets the cut stock.
 //!
-//! Why our own Minkowski sum and convex difference ([`crate::geom::minkowski`],
-//! [`crate::geom::minus_convex`]): geo, `parry2d` and `i_overlay` have no Minkowski sum of
+//! Why our own Minkowski sum and convex difference ([`geom::flat::minkowski`],
+//! [`geom::flat::minus_convex`]): geo, `parry2d` and `i_overlay` have no Minkowski sum of
 //! polygons (the edge merge of two convex ones is 30 lines), and carving a rapid with
 //! `i_overlay`'s difference would be a boolean call a rapid, ~147 000 instructions each on the
 //! stock bench (`PERFORMANCE.md`), where cutting a convex piece by a few convex regions
 //! costs a few thousand.
 
-use crate::geom::{bounds, convex_hull, minkowski, minus_convex, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
+use geom::flat::{bounds, convex_hull, minkowski, minus_convex, sweep_chain, sweep_convex, P};
 use geom::{Pt, Rect};
 use std::collections::VecDeque;
 use std::sync::Arc;
@@ -398,7 +398,6 @@ impl PassGroups {
 
 #[cfg(test)]
 mod tests {
-    use crate::geom::{clip_to_hull, convex_hull, minkowski, minus_convex, pts, P};
     use crate::overlay::Grid;
     use crate::removal::tests::{seg, v35};
     use crate::sweep::SweepBuilder;
@@ -407,6 +406,7 @@ mod tests {
         ToolTable,
     };
     use expander::{Motion, Pt, Segment};
+    use geom::flat::{clip_to_hull, convex_hull, minkowski, minus_convex, pts, P};
     use geom::ring::signed_area;
 
     fn area(p: &[P]) -> f64 {
@@ -838,7 +838,7 @@ mod tests {
                     .iter()
                     .map(|v| [v[0] + path[0][0], v[1] + path[0][1]])
                     .collect();
-                area(&crate::geom::sweep_convex(&placed, [-20.0, 0.0]))
+                area(&geom::flat::sweep_convex(&placed, [-20.0, 0.0]))
             })
             .sum();
         let one: f64 = lane(1).regions(0).map(|r| area(&r)).sum();

@@ -2,10 +2,10 @@
 //! and body) at the first point of its move where the part that hit reaches the crash's
 //! contact point, so a machinist sees what met what.
 
-use crate::geom::{convex_hull, sweep_convex, P};
 use crate::outline::Outline;
 use crate::ToolTable;
 use expander::{Motion, Segment, ToolHint};
+use geom::flat::{convex_hull, sweep_convex, P};
 
 /// Bisection steps along the move (2⁻⁴⁰ of its length).
 const STEPS: usize = 40;

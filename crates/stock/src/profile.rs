@@ -125,7 +125,7 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
     }
     // A crossing found by the kernel's sweep first: a tangled outline of 10⁵ points would
     // make the boolean engine split every one of its crossings before the test below.
-    let outline = crate::geom::pts(&ring);
+    let outline = geom::flat::pts(&ring);
     if let Some(x) = geom::ring::self_intersection(&outline) {
         return Err(at(
             raw.start.span(),

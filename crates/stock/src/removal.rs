@@ -23,7 +23,6 @@
 //! the stock is exactly the stock after every earlier move) and intersects its sweep with
 //! it; the overlaps of all strips add up to the crash area.
 
-use crate::geom::{pts, P};
 use crate::overlay::{
     convex_contains, convex_covers_in_box, orient, point_in_ring, segments_meet, winds, Engine,
     Grid, IBox, IPt, IShapes,
@@ -34,6 +33,7 @@ use crate::sweep::{Item, Poly, SweepBuilder, Sweeps};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
 use expander::{Motion, Segment};
 use geom::distance::point_segment;
+use geom::flat::{pts, P};
 use geom::{ring, Pt, Rect};
 use std::sync::atomic::{AtomicU32, AtomicUsize, Ordering};
 use std::sync::Mutex;
@@ -1461,7 +1461,7 @@ pub(crate) mod tests {
             let pts: Vec<[f64; 2]> = (0..6)
                 .map(|_| [next(span) as f64, next(span) as f64])
                 .collect();
-            let hull: Vec<IPt> = crate::geom::convex_hull(&pts)
+            let hull: Vec<IPt> = geom::flat::convex_hull(&pts)
                 .iter()
                 .map(|p| IPt::new(p[0] as i32, p[1] as i32))
                 .collect();

@@ -1,5 +1,5 @@
 //! The air tests of a ring: a path of feeds or a chorded arc swept as one ring (the
-//! convolution cycle of [`crate::geom::sweep_chain`]), whose non-zero winding is the sweep.
+//! convolution cycle of [`geom::flat::sweep_chain`]), whose non-zero winding is the sweep.
 //!
 //! A ring is not convex, so the separating-axis test that tells a hull from a tile's stock
 //! box does not apply. Without a test of its own, every tile and tree node that the ring's
@@ -135,7 +135,7 @@ pub(crate) fn touches(
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::geom::{sweep_chain, P};
+    use geom::flat::{sweep_chain, P};
 
     /// A xorshift generator of integers in `-span..=span`.
     pub(crate) struct Rng(pub(crate) u64);
@@ -164,7 +164,7 @@ pub(crate) mod tests {
         let pts: Vec<P> = (0..5)
             .map(|_| [rng.next(4) as f64, rng.next(4) as f64])
             .collect();
-        let part = crate::geom::convex_hull(&pts);
+        let part = geom::flat::convex_hull(&pts);
         let n = 2 + rng.next(3).unsigned_abs() as usize;
         let path: Vec<P> = (0..n)
             .map(|_| [rng.next(20) as f64, rng.next(20) as f64])

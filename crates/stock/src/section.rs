@@ -8,8 +8,8 @@
 //! tool is tip 3 on either), so a rear-post tool — one that works at negative X — is mounted
 //! as the mirror of the table's picture.
 
-use crate::geom::{clip_convex, P};
 use expander::{Motion, Segment};
+use geom::flat::{clip_convex, P};
 use geom::{Pt, Rect};
 
 /// A convex polygon of a sweep folded into the section: its part at r ≥ 0 as it is, its part
@@ -67,8 +67,8 @@ pub fn rear_tools(segments: &[Segment]) -> Vec<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geom::pts;
     use expander::{FeedId, Span};
+    use geom::flat::pts;
 
     fn seg(tool: u32, from: [f64; 2], to: [f64; 2]) -> Segment {
         Segment {

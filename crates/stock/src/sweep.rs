@@ -44,12 +44,12 @@
 //! programmed point. An arc whose single chord is within `chord_tol − δ` of it joins such
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
-use crate::geom::{bounds, clip_convex, dist, pts, sweep_chain, sweep_convex, P};
 use crate::outline::Outline;
 use crate::overlay::{inscribed_box, ring_perimeter, Grid, IBox, IPt};
 use crate::pass_group::{Lane, Offer, PassGroups};
 use crate::{Shape, ToolTable};
 use expander::{Motion, Segment, ToolHint};
+use geom::flat::{bounds, clip_convex, dist, pts, sweep_chain, sweep_convex, P};
 use geom::Rect;
 use std::collections::HashMap;
 use std::ops::Range;

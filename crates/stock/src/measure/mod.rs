@@ -12,10 +12,10 @@ pub use thread::{
     Thread, ThreadForm, ThreadPasses,
 };
 
-use crate::geom::{pts, P};
 use crate::overlay::{boolean, BoolOp};
 use crate::Shape;
 use geom::distance::EdgeIndex;
+use geom::flat::{pts, P};
 use geom::{ring, Pt};
 
 /// Area in mm² of a shape set (outer areas minus hole areas, whatever the ring orientation).

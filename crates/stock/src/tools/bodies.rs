@@ -113,7 +113,7 @@ impl Tool {
                     .collect();
                 Body {
                     outline: Outline {
-                        parts: vec![crate::geom::convex_hull(&pts)],
+                        parts: vec![geom::flat::convex_hull(&pts)],
                     },
                     name: "blade holder",
                 }
