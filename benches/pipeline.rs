@@ -80,10 +80,20 @@ fn main() {
         );
         assert!(tp.alarms.is_empty(), "{:?}", tp.alarms.first());
         let t2 = Instant::now();
-        let sim = stock::simulate(
-            &blank,
-            &tools,
-            &tp.segments,
+        // the library pipeline `latsim run` calls: the removal with the analysis beside and
+        // after it (the program's own shapes, default machine, no workholding)
+        let machine = expander::Machine::default();
+        let settings = analysis::Settings {
+            blank: &blank,
+            tools: &tools,
+            machine: &machine,
+            fixture: None,
+            tol: 0.01,
+        };
+        let (sim, findings) = analysis::pipeline(
+            &tp,
+            &analysis::Intents::Program,
+            &settings,
             &stock::SimOptions::default(),
             &mut |_| {},
         );
@@ -94,15 +104,16 @@ fn main() {
             .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
             .sum();
         println!(
-            "{name:>9} {n:>8} moves requested, {:>8} segments: parse {:>6.3} s, expand {:>6.3} s, removal {:>6.3} s, total {:>6.3} s; {} crashes, final {} vertices, removed {:.1} mm²",
+            "{name:>9} {n:>8} moves requested, {:>8} segments: parse {:>6.3} s, expand {:>6.3} s, removal+analysis {:>6.3} s, total {:>6.3} s; {} crashes, final {} vertices, removed {:.1} mm², {:?}",
             tp.segments.len(),
             (t1 - t0).as_secs_f64(),
             (t2 - t1).as_secs_f64(),
             (t3 - t2).as_secs_f64(),
             (t3 - t0).as_secs_f64(),
-            sim.crashes.len(),
+            findings.crashes.len(),
             vertices,
-            sim.removed_area
+            sim.removed_area,
+            findings.verdict
         );
     }
 }

@@ -211,7 +211,7 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "SPEC|F", allow_hyphen_values = true)]
     pub(crate) chuck: Option<String>,
     /// Deviation tolerance in mm for gouges and leftovers.
-    #[arg(long, value_name = "MM", default_value_t = 0.01)]
+    #[arg(long, value_name = "MM", default_value_t = 0.01, allow_hyphen_values = true, value_parser = positive_length)]
     pub(crate) tol: f64,
 }
 
@@ -257,4 +257,14 @@ pub(crate) struct ExpandArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Csv)]
     pub(crate) format: Format,
+}
+
+/// A length that must be positive and finite (`--tol`).
+fn positive_length(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        _ => Err(format!(
+            "`{text}` is not a positive length: give the deviation tolerance in mm, e.g. --tol 0.01"
+        )),
+    }
 }

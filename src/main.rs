@@ -1,14 +1,16 @@
 //! `latsim`: simulate a FANUC/GSK lathe program on a blank and report the part it makes.
 //!
-//! The CLI only wires the stages (`gcode` → `expander` → `stock` → `render`) and owns
-//! files, flags, progress and exit codes.
+//! The CLI reads the job (`job`, `input`: files and flags), runs the library pipeline
+//! (`gcode` → `expander` → `analysis::pipeline`, which removes with `stock` and concludes),
+//! maps the findings onto `render`'s report (`report`) and owns progress, atomic writing
+//! and exit codes. It decides nothing about the part.
 
-mod analysis;
 mod cad;
 mod cli;
 mod diag;
 mod expand_cmd;
 mod input;
+mod job;
 mod library;
 mod report;
 mod run;

@@ -1,7 +1,9 @@
-//! Turn the stages' results into the render crate's plain `Report`.
+//! The findings as the render crate's plain `Report`: a mapping, no rule. What a run
+//! concludes is `analysis`'; here it is only put into the report's words and units.
 
 use crate::input::Loaded;
-use expander::{Motion, Segment};
+use analysis::{Findings, MAX_LISTED};
+use expander::{Motion, Segment, Span};
 use render::{Crash, Diagnostic, PathKind, PathLine, Points, Report, Shape, StockInfo};
 use std::fmt::Write as _;
 
@@ -74,142 +76,184 @@ fn tool_line(tools: &stock::ToolTable, t: u32) -> String {
     }
 }
 
-/// A removal crash as the report shows it.
-fn stock_crash(loaded: &Loaded, c: &stock::Crash) -> Crash {
-    crash_at(loaded, c.segment, c.at, c.area, c.depth, c.body)
+/// What the report is made of besides the findings.
+pub(crate) struct Run<'a> {
+    pub(crate) loaded: &'a Loaded,
+    pub(crate) name: &'a str,
+    pub(crate) blank: &'a stock::Blank,
+    pub(crate) tools: &'a stock::ToolTable,
+    pub(crate) sim: &'a stock::Simulation,
+    pub(crate) fixture: Option<&'a analysis::Fixture>,
+    pub(crate) tol: f64,
 }
 
-/// A crash at `segment`'s line: where the tool met stock or an obstacle, how much and how
-/// deep, and the tool body that did (none for the cutting outline).
-fn crash_at(
-    loaded: &Loaded,
-    segment: usize,
-    at: [f64; 2],
-    area_mm2: f64,
-    depth_mm: f64,
-    body: Option<&str>,
-) -> Crash {
-    let span = loaded.toolpath.segments[segment].span;
+/// Everything a finished run shows, but the toolpath ([`add_toolpath`]) and the player's
+/// snapshots ([`snapshots`]).
+pub(crate) fn report(run: &Run, findings: &Findings) -> Report {
+    let mut report = summary(run, findings);
+    add_crashes(&mut report, run, findings);
+    add_deviation(&mut report, run.loaded, findings);
+    add_threads(&mut report, findings);
+    report.verdict = verdict(findings.verdict);
+    report
+}
+
+fn verdict(v: analysis::Verdict) -> render::Verdict {
+    match v {
+        analysis::Verdict::Clean => render::Verdict::Clean,
+        analysis::Verdict::Alarm => render::Verdict::Alarm,
+        analysis::Verdict::Crash => render::Verdict::Crash,
+        analysis::Verdict::Gouge => render::Verdict::Gouge,
+    }
+}
+
+/// A note of the analysis at its place in the program.
+fn note(n: &analysis::Note) -> Diagnostic {
+    Diagnostic {
+        line: n.span.line,
+        column: n.span.column,
+        code: n.code.into(),
+        message: n.message.clone(),
+    }
+}
+
+/// A crash (or scrape) of the analysis at its move's line.
+fn crash(segments: &[Segment], c: &analysis::Crash) -> Crash {
+    let span: Span = segments[c.segment].span;
     Crash {
         line: span.line,
         column: span.column,
-        z: at[0],
-        r: at[1],
-        area_mm2,
-        depth_mm,
-        body: body.map(str::to_string),
-        ..Crash::default()
+        z: c.at[0],
+        r: c.at[1],
+        area_mm2: c.area,
+        depth_mm: c.depth,
+        body: c.body.map(str::to_string),
+        obstacle: c.obstacle.map(str::to_string),
+        tool: c.tool.clone(),
     }
 }
 
-/// A crash of the report with the move that made it and the tool's part that hit.
-pub(crate) struct Listed {
-    pub(crate) segment: usize,
-    pub(crate) crash: Crash,
-    body: Option<&'static str>,
-}
-
-/// The crashes of a run in program order: the removal's (spec/simulation.md, "Rapids that
-/// cut": deeper than the profile's `rapid_cut_tol` is a crash, else a rapid scrape, a
-/// warning; a body touching stock is always a crash) and the workholding's (always).
-pub(crate) fn crash_list(
-    loaded: &Loaded,
-    sim: &stock::Simulation,
-    fixture: &[stock::FixtureCrash],
-) -> Vec<Listed> {
-    let cut_tol = loaded.machine.rapid_cut_tol;
-    let mut out: Vec<Listed> = sim
-        .crashes
-        .iter()
-        .filter(|c| c.body.is_some() || c.depth > cut_tol)
-        .map(|c| Listed {
-            segment: c.segment,
-            crash: stock_crash(loaded, c),
-            body: c.body,
-        })
-        .collect();
-    out.extend(fixture.iter().map(|f| Listed {
-        segment: f.segment,
-        crash: Crash {
-            obstacle: Some(f.obstacle.to_string()),
-            ..crash_at(loaded, f.segment, f.at, f.area, f.depth, f.body)
-        },
-        body: f.body,
-    }));
-    // stable: at one move, the stock's crash before the workholding's
-    out.sort_by_key(|l| l.segment);
-    out
-}
-
-/// What the reports read from the moves alone, not from the stock, so that it can be
-/// worked out beside the removal: each is a pass over the moves (120 MB of them in a
-/// million-move program).
-pub(crate) struct MoveFacts {
-    times: expander::timing::Times,
-    rapid_segments: usize,
-    /// The tools on a rear post ([`stock::rear_tools`]).
-    rear: Vec<u32>,
-    /// Each move's tool outline for the HTML player ([`stock::tool_outlines`]).
-    #[allow(clippy::type_complexity)]
-    outlines: (
-        Vec<(Vec<Vec<[f64; 2]>>, Vec<Vec<[f64; 2]>>)>,
-        Vec<(usize, usize)>,
-    ),
-}
-
-impl MoveFacts {
-    pub(crate) fn of(loaded: &Loaded, tools: &stock::ToolTable) -> Self {
-        let segments = &loaded.toolpath.segments;
-        let rear = stock::rear_tools(segments);
-        Self {
-            times: expander::timing::times(&loaded.toolpath, &loaded.machine),
-            rapid_segments: segments
-                .iter()
-                .filter(|s| s.motion == Motion::Rapid)
-                .count(),
-            outlines: stock::tool_outlines(tools, segments, &rear),
-            rear,
+/// The title block, the blank and the final part, the alarms and warnings of the toolpath
+/// and of the moves, the tools and times, the grooves.
+fn summary(run: &Run, findings: &Findings) -> Report {
+    let loaded = run.loaded;
+    let tp = &loaded.toolpath;
+    let times = &findings.facts.times;
+    let sim = run.sim;
+    let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(|d| diagnostic(loaded, d)).collect();
+    warnings.extend(findings.warnings.iter().map(note));
+    for (seg, message) in &sim.warnings {
+        let span = tp.segments.get(*seg).map(|s| s.span).unwrap_or_default();
+        warnings.push(Diagnostic {
+            line: span.line,
+            column: span.column,
+            code: "LS-STOCK".into(),
+            message: message.clone(),
+        });
+    }
+    // alarms and warnings listed up to a cap; the count of the rest is the last warning
+    warnings.truncate(MAX_LISTED);
+    for (what, n) in [
+        ("alarms", tp.alarms.len()),
+        (
+            "warnings",
+            tp.warnings.len() + findings.warnings.len() + sim.warnings.len(),
+        ),
+    ] {
+        if n > MAX_LISTED {
+            warnings.push(Diagnostic {
+                line: 0,
+                column: 0,
+                code: "LS-LIST-CAPPED".into(),
+                message: format!(
+                    "{n} {what}: the {MAX_LISTED} first are listed, {} more are not",
+                    n - MAX_LISTED
+                ),
+            });
         }
     }
+    Report {
+        program: run.name.to_string(),
+        title: tp.title.clone(),
+        control: format!(
+            "{} — {}",
+            loaded.machine.control.key(),
+            loaded.machine.control.title()
+        ),
+        stock: StockInfo {
+            description: run.blank.description.clone(),
+            shapes: run.blank.shapes.iter().map(shape).collect(),
+        },
+        final_part: sim.final_shapes.iter().map(shape).collect(),
+        // filled last by `add_toolpath`, from the segments themselves
+        toolpath: vec![],
+        rapid_cuts: findings
+            .scrapes
+            .iter()
+            .map(|c| crash(&tp.segments, c))
+            .collect(),
+        alarms: tp
+            .alarms
+            .iter()
+            .take(MAX_LISTED)
+            .map(|d| diagnostic(loaded, d))
+            .collect(),
+        warnings,
+        // every tool of the moves in order of first use, with its time
+        tools: times
+            .per_tool
+            .iter()
+            .map(|&(t, secs)| {
+                // "T01 · 32.6 s · turning …": the time before the long description
+                let line = tool_line(run.tools, t);
+                match line.split_once(' ') {
+                    Some((num, rest)) => format!("{num} · {secs:.1} s · {rest}"),
+                    None => format!("{line} · {secs:.1} s"),
+                }
+            })
+            .collect(),
+        removed_area_mm2: sim.removed_area,
+        removed_volume_mm3: sim.removed_volume,
+        segments: tp.segments.len(),
+        rapid_segments: findings.facts.rapid_segments,
+        cycle_time_s: times.total,
+        tolerance_mm: run.tol,
+        grooves: findings
+            .grooves
+            .iter()
+            .map(|g| render::Groove {
+                line: g.span.line,
+                ring: g.ring.clone(),
+                deviation_mm: g.deviation_mm,
+            })
+            .collect(),
+        variables: tp.variables.clone(),
+        line_counts: tp.line_counts.clone(),
+        ..Report::default()
+    }
 }
 
-/// Crashes whose tool is drawn where it hit (the first ones: more would hide the picture).
-const MAX_TOOL_POSES: usize = 20;
-
-/// The crashes (the first [`MAX_TOOL_POSES`] with the tool drawn where it hit), the
-/// workholding drawn, and each move's tool outline for the HTML player.
-pub(crate) fn add_crashes(
-    report: &mut Report,
-    loaded: &Loaded,
-    tools: &stock::ToolTable,
-    crashes: &[Listed],
-    fixture: Option<&stock::Fixture>,
-    facts: MoveFacts,
-) {
+/// The crashes (the first with the tool drawn where it hit), the workholding drawn, and
+/// each move's tool outline for the HTML player.
+fn add_crashes(report: &mut Report, run: &Run, findings: &Findings) {
+    let loaded = run.loaded;
     let segments = &loaded.toolpath.segments;
-    let MoveFacts {
-        rear,
-        outlines: (outlines, runs),
-        ..
-    } = facts;
-    let tol = stock::SimOptions::default().chord_tol;
-    report.crashes = crashes
+    report.crashes = findings
+        .crashes
         .iter()
-        .enumerate()
-        .map(|(i, l)| {
-            let mut c = l.crash.clone();
-            if i < MAX_TOOL_POSES {
-                let seg = &segments[l.segment];
-                c.tool = stock::tool_at_crash(tools, seg, &rear, [c.z, c.r], l.body, tol);
-            }
-            c
+        .map(|c| crash(segments, c))
+        .collect();
+    report.tool_outlines = findings
+        .facts
+        .outlines
+        .iter()
+        .map(|(edge, body)| render::ToolOutline {
+            edge: edge.clone(),
+            body: body.clone(),
         })
         .collect();
-    report.tool_outlines = outlines
-        .into_iter()
-        .map(|(edge, body)| render::ToolOutline { edge, body })
-        .collect();
-    report.tool_runs = runs;
+    report.tool_runs = findings.facts.runs.clone();
+    let fixture = run.fixture;
     if let Some(so) = fixture.and_then(|f| f.stick_out) {
         // "stick-out 15 mm", "stick-out 69.5 mm": three decimals, trailing zeros cut
         let n = format!("{so:.3}");
@@ -219,7 +263,7 @@ pub(crate) fn add_crashes(
     if fixture.is_some_and(|f| {
         f.obstacles
             .iter()
-            .any(|o| o.name == stock::TAILSTOCK_CENTRE)
+            .any(|o| o.name == analysis::TAILSTOCK_CENTRE)
     }) {
         if let Some(moves) = tailstock_moves(loaded) {
             let _ = write!(report.stock.description, "; {moves}");
@@ -233,8 +277,8 @@ pub(crate) fn add_crashes(
         .flat_map(|f| f.obstacles.iter())
         .filter(|o| !o.cut_only)
         .map(|o| render::Fixture {
-            name: if retracted && o.name == stock::TAILSTOCK_CENTRE {
-                format!("{} (retracted)", stock::TAILSTOCK_CENTRE)
+            name: if retracted && o.name == analysis::TAILSTOCK_CENTRE {
+                format!("{} (retracted)", analysis::TAILSTOCK_CENTRE)
             } else {
                 o.name.to_string()
             },
@@ -270,143 +314,12 @@ fn tailstock_moves(loaded: &Loaded) -> Option<String> {
     }
 }
 
-/// Everything a finished run shows, but the toolpath ([`add_toolpath`]).
-pub(crate) fn build(
-    loaded: &Loaded,
-    program_name: &str,
-    blank: &stock::Blank,
-    tools: &stock::ToolTable,
-    sim: &stock::Simulation,
-    tol: f64,
-    facts: &MoveFacts,
-) -> Report {
-    let tp = &loaded.toolpath;
-    let times = &facts.times;
-    let cut = |c: &stock::Crash| stock_crash(loaded, c);
-    let cut_tol = loaded.machine.rapid_cut_tol;
-    let rapid_cuts: Vec<Crash> = sim
-        .crashes
-        .iter()
-        .filter(|c| c.body.is_none() && c.depth <= cut_tol)
-        .map(cut)
-        .collect();
-    let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(|d| diagnostic(loaded, d)).collect();
-    warnings.extend(rapid_cuts.iter().map(|c| Diagnostic {
-        line: c.line,
-        column: c.column,
-        code: "LS-RAPID-SCRAPE".into(),
-        message: format!(
-            "rapid scrapes {:.3} mm deep ({:.4} mm² of stock) at Z{:.3} X{:.3}: not more than rapid_cut_tol {cut_tol} mm, so not a crash; a rapid should clear the stock",
-            c.depth_mm,
-            c.area_mm2,
-            c.z,
-            2.0 * c.r
-        ),
-    }));
-    for (seg, message) in &sim.warnings {
-        let span = tp.segments.get(*seg).map(|s| s.span).unwrap_or_default();
-        warnings.push(Diagnostic {
-            line: span.line,
-            column: span.column,
-            code: "LS-STOCK".into(),
-            message: message.clone(),
-        });
-    }
-    // alarms and warnings listed up to a cap; the count of the rest is the last warning
-    warnings.truncate(MAX_LISTED);
-    for (what, n) in [
-        ("alarms", tp.alarms.len()),
-        (
-            "warnings",
-            tp.warnings.len() + rapid_cuts.len() + sim.warnings.len(),
-        ),
-    ] {
-        if n > MAX_LISTED {
-            warnings.push(Diagnostic {
-                line: 0,
-                column: 0,
-                code: "LS-LIST-CAPPED".into(),
-                message: format!(
-                    "{n} {what}: the {MAX_LISTED} first are listed, {} more are not",
-                    n - MAX_LISTED
-                ),
-            });
-        }
-    }
-    Report {
-        program: program_name.to_string(),
-        title: tp.title.clone(),
-        control: format!(
-            "{} — {}",
-            loaded.machine.control.key(),
-            loaded.machine.control.title()
-        ),
-        stock: StockInfo {
-            description: blank.description.clone(),
-            shapes: blank.shapes.iter().map(shape).collect(),
-        },
-        final_part: sim.final_shapes.iter().map(shape).collect(),
-        // filled last by `add_toolpath`, from the segments themselves
-        toolpath: vec![],
-        rapid_cuts,
-        alarms: tp
-            .alarms
-            .iter()
-            .take(MAX_LISTED)
-            .map(|d| diagnostic(loaded, d))
-            .collect(),
-        warnings,
-        // every tool of the moves in order of first use, with its time
-        tools: times
-            .per_tool
-            .iter()
-            .map(|&(t, secs)| {
-                // "T01 · 32.6 s · turning …": the time before the long description
-                let line = tool_line(tools, t);
-                match line.split_once(' ') {
-                    Some((num, rest)) => format!("{num} · {secs:.1} s · {rest}"),
-                    None => format!("{line} · {secs:.1} s"),
-                }
-            })
-            .collect(),
-        removed_area_mm2: sim.removed_area,
-        removed_volume_mm3: sim.removed_volume,
-        segments: tp.segments.len(),
-        rapid_segments: facts.rapid_segments,
-        cycle_time_s: times.total,
-        tolerance_mm: tol,
-        grooves: tp
-            .intended
-            .iter()
-            .filter(|i| i.kind == expander::IntendedKind::Groove)
-            .map(|i| {
-                let ring: Vec<[f64; 2]> = i.points.iter().map(|p| [p.z, p.r]).collect();
-                render::Groove {
-                    line: i.span.line,
-                    deviation_mm: stock::groove_deviation(&ring, &sim.final_shapes),
-                    ring,
-                }
-            })
-            .collect(),
-        variables: tp.variables.clone(),
-        line_counts: tp.line_counts.clone(),
-        ..Report::default()
-    }
-}
-
-/// Most gouges (and leftovers) listed in a report; the count of the rest is a warning.
-pub(crate) const MAX_LISTED: usize = 1_000;
-
 /// The deviation findings: gouges (with the first line whose sweep made them), leftovers
 /// (and where the largest is thickest), the intended shapes drawn dashed, and the summary.
-pub(crate) fn add_deviation(
-    report: &mut Report,
-    loaded: &Loaded,
-    intents: &[stock::Intent],
-    deviation: Option<&stock::Deviation>,
-) {
+fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
     // Closed rings as they are; an open path is drawn out and back.
-    let intended: Vec<stock::Shape> = intents
+    report.intended = findings
+        .intents
         .iter()
         .flat_map(|i| i.outline.iter())
         .map(|(line, closed)| {
@@ -414,18 +327,19 @@ pub(crate) fn add_deviation(
             if !closed {
                 outer.extend(line.iter().rev().skip(1).take(line.len().saturating_sub(2)));
             }
-            stock::Shape {
+            Shape {
                 outer,
                 holes: vec![],
             }
         })
         .collect();
-    report.intended = intended.iter().map(shape).collect();
-    let Some(d) = deviation else { return };
+    let Some(d) = &findings.deviation else {
+        return;
+    };
     let segs = &loaded.toolpath.segments;
     for (what, n) in [("gouges", d.gouges.len()), ("leftovers", d.leftovers.len())] {
         if n > MAX_LISTED {
-            report.warnings.push(render::Diagnostic {
+            report.warnings.push(Diagnostic {
                 line: 0,
                 column: 0,
                 code: "LS-FINDINGS-CAPPED".into(),
@@ -435,24 +349,6 @@ pub(crate) fn add_deviation(
                 ),
             });
         }
-    }
-    for c in d.later_cuts.iter().take(MAX_LISTED) {
-        let Some(seg) = c.made_by.and_then(|i| segs.get(i)) else {
-            continue;
-        };
-        report.warnings.push(render::Diagnostic {
-            line: seg.span.line,
-            column: seg.span.column,
-            code: "LS-LATER-CUT".into(),
-            message: format!(
-                "T{:02} cuts {:.3} mm² ({:.3} mm deep, at Z{:.3} X{:.3}) inside a contour another tool finished before: read as this operation's own cut (a groove, hole or relief), not a gouge (Interpretation; --target judges it against the drawing)",
-                seg.tool,
-                c.area,
-                c.depth,
-                c.at[0],
-                2.0 * c.at[1]
-            ),
-        });
     }
     report.gouges = d
         .gouges
@@ -505,91 +401,32 @@ pub(crate) fn add_deviation(
     });
 }
 
-/// The threads, checked in the final section (`stock::threads`): the diameter reached
-/// against the programmed final X, or against `target`'s surface over the thread when a
-/// `--target` is given (a target draws a thread at its minor diameter, OD, or major, ID).
-/// A thread deeper than expected by more than `--tol` fails the run like a gouge (part
-/// material removed); one too shallow is a warning (like a leftover). Both are warnings
-/// `LS-THREAD-DEPTH` at the thread's line. `before`: the stock each thread cut into, by its
-/// first move, where it was kept: the depth is measured only where that stock came up to
-/// the root (a relief groove cut deeper before is not the thread's depth).
-pub(crate) fn add_threads(
-    report: &mut Report,
-    loaded: &Loaded,
-    sim: &stock::Simulation,
-    target: Option<&[stock::Shape]>,
-    before: &[(usize, Vec<stock::Shape>)],
-    passes: &stock::ThreadPasses,
-) {
-    let shapes = &sim.final_shapes;
-    for t in passes.measure(&loaded.toolpath.segments, shapes) {
-        if t.wrong_side {
-            let (side, toward, other) = match t.surface {
-                stock::Surface::Outer => ("an OD", "outward (an inside thread)", "id"),
-                stock::Surface::Bore => ("an ID", "inward (an outside thread)", "od"),
-            };
-            report.alarms.push(render::Diagnostic {
-                line: t.span.line,
-                column: t.span.column,
-                code: "LS-THREAD-SIDE".into(),
-                message: format!(
-                    "the thread passes go deeper {toward} but the threading tool is {side} insert: its body sweeps through the part; give the tool `side = \"{other}\"` in the tool table"
-                ),
-            });
-        }
-        let cut_into = before
-            .iter()
-            .find(|(k, _)| *k == t.first_move)
-            .map(|(_, s)| s.as_slice());
-        let achieved = t.achieved_x(shapes, cut_into);
-        let form = t.form(shapes);
-        let (z0, z1) = t.z_span();
-        let sign = match t.surface {
-            stock::Surface::Outer => 1.0,
-            stock::Surface::Bore => -1.0,
-        };
-        // the least gap between the section and what it should be (negative: deeper)
-        let (gap, expected) = match target {
-            Some(part) => {
-                let gap =
-                    stock::least_gap(shapes, stock::Reference::Shapes(part), z0, z1, t.surface);
-                (gap, achieved.zip(gap).map(|(a, g)| a - sign * 2.0 * g))
-            }
-            None => (achieved.map(|a| sign * (a - t.x()) / 2.0), Some(t.x())),
-        };
-        let depth_error = gap.map(|g| -g);
-        if let Some(e) = depth_error.filter(|e| e.abs() > report.tolerance_mm) {
-            report.warnings.push(render::Diagnostic {
-                line: t.span.line,
-                column: t.span.column,
-                code: "LS-THREAD-DEPTH".into(),
-                message: format!(
-                    "thread depth error: the thread is cut {:.3} mm too {}{}",
-                    e.abs(),
-                    if e > 0.0 { "deep" } else { "shallow" },
-                    match (achieved, expected) {
-                        (Some(a), Some(x)) => format!(" (X{a:.3} reached, X{x:.3} expected)"),
-                        _ => String::new(),
-                    },
-                ),
-            });
-        }
-        report.threads.push(render::ThreadCheck {
+/// The threads as checked, with their alarms and the part's warnings (later cuts, thread
+/// depths) after the deviation's.
+fn add_threads(report: &mut Report, findings: &Findings) {
+    report
+        .warnings
+        .extend(findings.part_warnings.iter().map(note));
+    report.alarms.extend(findings.alarms.iter().map(note));
+    report.threads = findings
+        .threads
+        .iter()
+        .map(|t| render::ThreadCheck {
             line: t.span.line,
-            inside: t.surface == stock::Surface::Bore,
-            lead_mm: t.lead,
+            inside: t.inside,
+            lead_mm: t.lead_mm,
             starts: t.starts,
-            x_mm: t.x(),
-            expected_x_mm: expected,
-            pass_depths_mm: t.pass_depths.clone(),
-            achieved_x_mm: achieved,
-            depth_error_mm: depth_error,
-            pitch_diameter_mm: form.map(|f| f.pitch_diameter),
-            included_angle_deg: form.and_then(|f| f.included_angle),
-            z_start_mm: z0,
-            z_end_mm: z1,
-        });
-    }
+            x_mm: t.x_mm,
+            expected_x_mm: t.expected_x_mm,
+            pass_depths_mm: t.pass_depths_mm.clone(),
+            achieved_x_mm: t.achieved_x_mm,
+            depth_error_mm: t.depth_error_mm,
+            pitch_diameter_mm: t.pitch_diameter_mm,
+            included_angle_deg: t.included_angle_deg,
+            z_start_mm: t.z_start_mm,
+            z_end_mm: t.z_end_mm,
+        })
+        .collect();
 }
 
 /// How many snapshots (besides the blank and the final part).

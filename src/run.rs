@@ -3,8 +3,10 @@
 use crate::cli::{CheckArgs, ReportKind, RunArgs};
 use crate::diag;
 use crate::input;
+use crate::job::Job;
 use crate::write;
 use crate::{EXIT_CLEAN, EXIT_FINDINGS, EXIT_UNUSABLE};
+use analysis::{Findings, MAX_LISTED};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
@@ -298,249 +300,151 @@ fn guarded(path: &Path, batch: bool, job: impl FnOnce() -> u8) -> u8 {
 /// Simulate one program and write its reports. In a batch, the terminal gets only the
 /// verdict line (diagnostics are in the reports).
 fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: bool) -> u8 {
-    if !(args.tol.is_finite() && args.tol > 0.0) {
-        diag::print_plain(
-            &format!("--tol {} is not a positive length", args.tol),
-            "give the deviation tolerance in mm, e.g. --tol 0.01",
-        );
-        return EXIT_UNUSABLE;
-    }
-    // Read everything before any work, so a bad flag fails fast.
-    let Ok(blank) = input::load_blank(args) else {
+    let Ok(mut job) = Job::load(args, path, batch) else {
         return EXIT_UNUSABLE;
     };
-    let Ok(tools) = input::load_tools(args.tools.as_deref()) else {
-        return EXIT_UNUSABLE;
+    input::print_diagnostics(&job.loaded, args.program.quiet || batch);
+    let targets = outputs(args, stem);
+    let html = targets.iter().any(|(_, kind)| *kind == "html");
+    let moves = job.loaded.toolpath.segments.len();
+    // the HTML player's snapshots cost a second cut of every sweep: only for an HTML report
+    let marks = if html {
+        crate::report::snapshot_marks(moves)
+    } else {
+        vec![]
     };
-    let Ok(mut loaded) = input::load_program(&args.program, path, &tools, args.tool) else {
-        if batch {
-            println!(
-                "{}: UNUSABLE — not simulated (see the message above)",
-                path.display()
-            );
-        }
-        return EXIT_UNUSABLE;
+    let opts = stock::SimOptions {
+        snapshot_after: marks.clone(),
+        ..stock::SimOptions::default()
     };
-    let Ok(workholding) = input::load_workholding(args, &loaded.machine) else {
-        return EXIT_UNUSABLE;
-    };
-    let fixture = match stock::Fixture::new(&workholding, &blank) {
-        Ok(f) => f,
-        Err(e) => {
-            diag::print_plain(
-                &e.to_string(),
-                "the jaws hold the blank from the chuck face (default: the blank's left end) over grip mm: check --stock-z, face and grip",
-            );
-            return EXIT_UNUSABLE;
-        }
-    };
-    let quiet = args.program.quiet || batch;
-    input::print_diagnostics(&loaded, quiet);
-
-    let segments = &loaded.toolpath.segments;
-    let bar = progress_bar(segments.len() as u64, quiet);
+    let bar = progress_bar(moves as u64, args.program.quiet || batch);
     let mut tick = |done: usize| {
         if let Some(b) = &bar {
             b.set_position(done as u64);
         }
     };
-    // the HTML player's snapshots cost a second cut of every sweep: only for an HTML report
-    let targets = outputs(args, stem);
-    let html = targets.iter().any(|(_, kind)| *kind == "html");
-    let pictures = targets.iter().any(|(_, kind)| shows_picture(kind));
-    let marks = if html {
-        crate::report::snapshot_marks(segments.len())
-    } else {
-        vec![]
-    };
-    let stock_marks = crate::analysis::stock_marks(&loaded, &tools);
-    let mut snapshot_after = marks.clone();
-    snapshot_after.extend(&stock_marks);
-    snapshot_after.sort_unstable();
-    snapshot_after.dedup();
-    // what the reports read from the moves alone is worked out beside the removal (the
-    // cores are not both busy all through it)
-    let (mut sim, (facts, fixture_crashes, thread_passes)) = std::thread::scope(|s| {
-        let side = s.spawn(|| {
-            (
-                crate::report::MoveFacts::of(&loaded, &tools),
-                fixture
-                    .as_ref()
-                    .map(|f| {
-                        f.check(
-                            &tools,
-                            segments,
-                            stock::SimOptions::default().chord_tol,
-                            &loaded.toolpath.tailstock,
-                        )
-                    })
-                    .unwrap_or_default(),
-                stock::ThreadPasses::of(segments, &tools),
-            )
-        });
-        let sim = stock::simulate(
-            &blank,
-            &tools,
-            segments,
-            &stock::SimOptions {
-                snapshot_after,
-                ..stock::SimOptions::default()
-            },
-            &mut tick,
-        );
-        // a panic there is a bug in latsim: `guarded` reports it
-        let side = side.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
-        (sim, side)
-    });
+    let settings = job.settings(args.tol);
+    let (mut sim, findings) = analysis::pipeline(
+        &job.loaded.toolpath,
+        &job.intents,
+        &settings,
+        &opts,
+        &mut tick,
+    );
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-
-    let name = path.file_name().map_or_else(
-        || loaded.source.name.clone(),
-        |n| n.to_string_lossy().into_owned(),
-    );
-    // the stock after `k` moves where the run kept it (the blank, a snapshot)
-    let kept_at = |k: usize| -> Option<Vec<stock::Shape>> {
-        if k == 0 {
-            return Some(blank.shapes.clone());
-        }
-        sim.snapshots
-            .iter()
-            .find(|(at, _)| *at == k)
-            .map(|(_, s)| s.clone())
-    };
-    // ... or the final part: at the end, and where no snapshot was taken (a long program,
-    // see analysis::stock_marks)
-    let stock_at = |k: usize| -> Vec<stock::Shape> {
-        (k < segments.len())
-            .then(|| kept_at(k))
-            .flatten()
-            .unwrap_or_else(|| sim.final_shapes.clone())
-    };
-    let Ok(intents) = crate::analysis::intents(args, &loaded, &tools, &stock_at) else {
-        return EXIT_UNUSABLE;
-    };
-    // the stock each thread cuts into, where it was kept (short programs)
-    let thread_stock: Vec<(usize, Vec<stock::Shape>)> = thread_passes
-        .starts()
-        .into_iter()
-        .filter_map(|k| kept_at(k).map(|s| (k, s)))
-        .collect();
-    // the HTML player does not show the stock the intents were read against (the epoch
+    // the player does not show the stock the intents were read against (the epoch
     // snapshots of a long program are labelled with their own counts, not the marks)
+    let stock_marks = analysis::stock_marks(&job.loaded.toolpath, &job.tools);
     sim.snapshots
         .retain(|(k, _)| marks.contains(k) || !stock_marks.contains(k));
-    let deviation = (!intents.is_empty()).then(|| {
-        stock::deviation(
-            &blank.shapes,
-            &sim.final_shapes,
-            &intents,
-            args.tol,
-            segments,
-            &tools,
-            0.001,
-        )
-    });
-    let crashes = crate::report::crash_list(&loaded, &sim, &fixture_crashes);
-    let mut report = crate::report::build(&loaded, &name, &blank, &tools, &sim, args.tol, &facts);
-    crate::report::add_crashes(
-        &mut report,
-        &loaded,
-        &tools,
-        &crashes,
-        fixture.as_ref(),
-        facts,
+    let name = path.file_name().map_or_else(
+        || job.loaded.source.name.clone(),
+        |n| n.to_string_lossy().into_owned(),
     );
-    crate::report::add_deviation(&mut report, &loaded, &intents, deviation.as_ref());
-    let target = args.target.is_some().then(|| intents[0].part.as_slice());
-    crate::report::add_threads(
-        &mut report,
-        &loaded,
-        &sim,
-        target,
-        &thread_stock,
-        &thread_passes,
+    let mut report = crate::report::report(
+        &crate::report::Run {
+            loaded: &job.loaded,
+            name: &name,
+            blank: &job.blank,
+            tools: &job.tools,
+            sim: &sim,
+            fixture: job.fixture.as_ref(),
+            tol: args.tol,
+        },
+        &findings,
     );
     if html {
-        report.snapshots = crate::report::snapshots(&blank, segments.len(), &sim);
+        report.snapshots = crate::report::snapshots(&job.blank, moves, &sim);
     }
-    let findings = (!batch).then(|| {
-        let crash_at: Vec<String> = crashes
-            .iter()
-            .map(|c| loaded.place(segments[c.segment].span))
-            .collect();
-        let gouge_at: Vec<String> = deviation
-            .as_ref()
-            .map(|d| {
-                d.gouges
-                    .iter()
-                    .map(|g| {
-                        g.made_by.and_then(|i| segments.get(i)).map_or_else(
-                            || format!("{}:0", loaded.source.name),
-                            |s| loaded.place(s.span),
-                        )
-                    })
-                    .collect()
-            })
-            .unwrap_or_default();
-        (crash_at, gouge_at)
-    });
-    if pictures {
-        crate::report::add_toolpath(&mut report, std::mem::take(&mut loaded.toolpath.segments));
+    let places = (!batch).then(|| Places::of(&job.loaded, &findings));
+    if targets.iter().any(|(_, kind)| shows_picture(kind)) {
+        let segments = std::mem::take(&mut job.loaded.toolpath.segments);
+        crate::report::add_toolpath(&mut report, segments);
     }
-
-    // Render every report first, then write them all to disk, then make them visible:
-    // a failure anywhere leaves the previous reports as they were.
-    let mut staged = vec![];
-    for ((path, _), bytes) in targets
-        .iter()
-        .zip(render_all(&report, &targets, args.dxf_x))
-    {
-        let bytes = match bytes {
-            Ok(b) => b,
-            Err(e) => {
-                diag::print_plain(&e, "");
-                return EXIT_UNUSABLE;
-            }
-        };
-        match write::stage(path, &bytes, inputs) {
-            Ok(s) => staged.push(s),
-            Err(e) => {
-                diag::print_plain(
-                    &e,
-                    "choose another output path with --out, --svg, --png, --json or --html",
-                );
-                return EXIT_UNUSABLE;
-            }
-        }
-    }
-    if let Err(e) = write::commit(staged) {
-        diag::print_plain(&e, "check the output folder: free space, permissions");
+    if write_reports(&report, &targets, args.dxf_x, inputs).is_err() {
         return EXIT_UNUSABLE;
     }
-
-    if let Some((crash_at, gouge_at)) = findings {
-        print_findings(&loaded.source.name, &crash_at, &gouge_at, &report);
+    if let Some(places) = places {
+        print_findings(&job.loaded.source.name, &places, &report);
     }
-    let verdict = report.verdict();
+    print_verdict(&name, &report, &job.loaded, &findings);
+    if findings.verdict == analysis::Verdict::Clean {
+        EXIT_CLEAN
+    } else {
+        EXIT_FINDINGS
+    }
+}
+
+/// Renders every report first, then writes them all to disk, then makes them visible: a
+/// failure anywhere leaves the previous reports as they were (and is printed).
+fn write_reports(
+    report: &render::Report,
+    targets: &[(PathBuf, &'static str)],
+    dxf_x: crate::cli::DxfXArg,
+    inputs: &[PathBuf],
+) -> Result<(), ()> {
+    let mut staged = vec![];
+    for ((path, _), bytes) in targets.iter().zip(render_all(report, targets, dxf_x)) {
+        let bytes = bytes.map_err(|e| diag::print_plain(&e, ""))?;
+        let s = write::stage(path, &bytes, inputs).map_err(|e| {
+            diag::print_plain(
+                &e,
+                "choose another output path with --out, --svg, --png, --json or --html",
+            );
+        })?;
+        staged.push(s);
+    }
+    write::commit(staged)
+        .map_err(|e| diag::print_plain(&e, "check the output folder: free space, permissions"))
+}
+
+/// The verdict line: program, verdict, moves, removal, cycle time and the counts.
+fn print_verdict(name: &str, report: &render::Report, loaded: &input::Loaded, f: &Findings) {
     println!(
         "{}: {} — {} segments, removed {:.1} mm² / {:.0} mm³, cycle time {:.1} s, {} alarm(s), {} crash(es), {} gouge(s)",
         name,
-        render::verdict_word(verdict).to_uppercase(),
+        render::verdict_word(report.verdict).to_uppercase(),
         report.segments,
         report.removed_area_mm2,
         report.removed_volume_mm3,
         report.cycle_time_s,
         // (the report lists the first alarms only)
-        report.alarms.len() + loaded.toolpath.alarms.len().saturating_sub(crate::report::MAX_LISTED),
+        report.alarms.len() + loaded.toolpath.alarms.len().saturating_sub(MAX_LISTED),
         report.crashes.len(),
-        deviation.as_ref().map_or(0, |d| d.gouges.len())
+        f.deviation.as_ref().map_or(0, |d| d.gouges.len())
     );
-    if verdict == render::Verdict::Clean {
-        EXIT_CLEAN
-    } else {
-        EXIT_FINDINGS
+}
+
+/// Where each crash and gouge is, `file:line` (the file a subprogram came from), for the
+/// terminal.
+struct Places {
+    crashes: Vec<String>,
+    gouges: Vec<String>,
+}
+
+impl Places {
+    fn of(loaded: &input::Loaded, f: &Findings) -> Self {
+        let segments = &loaded.toolpath.segments;
+        Self {
+            crashes: f
+                .crashes
+                .iter()
+                .map(|c| loaded.place(segments[c.segment].span))
+                .collect(),
+            gouges: f
+                .deviation
+                .iter()
+                .flat_map(|d| d.gouges.iter())
+                .map(|g| {
+                    g.made_by.and_then(|i| segments.get(i)).map_or_else(
+                        || format!("{}:0", loaded.source.name),
+                        |s| loaded.place(s.span),
+                    )
+                })
+                .collect(),
+        }
     }
 }
 
@@ -548,12 +452,12 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
 /// their own cap).
 const MAX_PRINTED: usize = 20;
 
-/// Crashes and gouges on the terminal, `file:line` first (the file a subprogram came from:
-/// `crash_at`, `gouge_at`), at most [`MAX_PRINTED`] of each.
-fn print_findings(name: &str, crash_at: &[String], gouge_at: &[String], report: &render::Report) {
-    for (c, at) in report.crashes.iter().zip(crash_at).take(MAX_PRINTED) {
+/// Crashes and gouges on the terminal, `file:line` first (the file a subprogram came from),
+/// at most [`MAX_PRINTED`] of each.
+fn print_findings(name: &str, places: &Places, report: &render::Report) {
+    for (c, at) in report.crashes.iter().zip(&places.crashes).take(MAX_PRINTED) {
         let what = match (&c.obstacle, &c.body) {
-            (Some(o), _) if o == stock::GRIPPED_LENGTH => {
+            (Some(o), _) if o == analysis::GRIPPED_LENGTH => {
                 "the tool cuts the blank inside the chuck jaws (gripped length)".to_string()
             }
             (Some(o), Some(body)) => format!("the tool's {body} meets the {o}"),
@@ -562,7 +466,7 @@ fn print_findings(name: &str, crash_at: &[String], gouge_at: &[String], report: 
             (None, None) => "rapid into stock".to_string(),
         };
         let of = match c.obstacle.as_deref() {
-            None | Some(stock::GRIPPED_LENGTH) => "of stock",
+            None | Some(analysis::GRIPPED_LENGTH) => "of stock",
             Some(_) => "of overlap",
         };
         eprintln!(
@@ -574,7 +478,7 @@ fn print_findings(name: &str, crash_at: &[String], gouge_at: &[String], report: 
             c.area_mm2
         );
     }
-    for (g, at) in report.gouges.iter().zip(gouge_at).take(MAX_PRINTED) {
+    for (g, at) in report.gouges.iter().zip(&places.gouges).take(MAX_PRINTED) {
         eprintln!(
             "{at}: gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
             g.depth_mm,

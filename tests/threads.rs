@@ -98,13 +98,15 @@ fn t10_two_start_g92_q() {
     }
     for k in 0..12 {
         let root = -1.0 - 1.5 * k as f64;
-        let r = stock::surface_radius_at(&sim.final_shapes, root, stock::Surface::Outer).unwrap();
+        let r =
+            analysis::surface_radius_at(&sim.final_shapes, root, analysis::Surface::Outer).unwrap();
         assert!((r - 9.3).abs() < 2e-3, "root Φ{} at Z{root}", 2.0 * r);
         let crest = root + 0.75;
-        let r = stock::surface_radius_at(&sim.final_shapes, crest, stock::Surface::Outer).unwrap();
+        let r = analysis::surface_radius_at(&sim.final_shapes, crest, analysis::Surface::Outer)
+            .unwrap();
         assert!((r - 10.0).abs() < 2e-3, "crest Φ{} at Z{crest}", 2.0 * r);
     }
-    let minor = stock::deepest_radius(&sim.final_shapes, 0.0, -20.0, stock::Surface::Outer);
+    let minor = analysis::deepest_radius(&sim.final_shapes, 0.0, -20.0, analysis::Surface::Outer);
     assert!((minor.unwrap() - 9.3).abs() < 2e-3, "{minor:?}");
 }
 
@@ -132,7 +134,9 @@ fn t10_q_not_modal_warns() {
     for k in 0..6 {
         let first = -1.0 - 3.0 * k as f64;
         let second = -2.5 - 3.0 * k as f64;
-        let at = |z| stock::surface_radius_at(&sim.final_shapes, z, stock::Surface::Outer).unwrap();
+        let at = |z| {
+            analysis::surface_radius_at(&sim.final_shapes, z, analysis::Surface::Outer).unwrap()
+        };
         assert!((at(first) - 9.3).abs() < 2e-3, "Z{first}: r {}", at(first));
         assert!(
             (at(second) - 9.6).abs() < 2e-3,
@@ -380,20 +384,20 @@ fn id_thread_in_a_bore() {
             holes: vec![],
         })
         .collect();
-    let at = |z: f64, s| stock::surface_radius_at(&shapes, z, s).unwrap();
+    let at = |z: f64, s| analysis::surface_radius_at(&shapes, z, s).unwrap();
     for k in 0..40 {
         let z = -0.5 - k as f64;
         assert!(
-            (at(z, stock::Surface::Outer) - 20.0).abs() < 1e-6,
+            (at(z, analysis::Surface::Outer) - 20.0).abs() < 1e-6,
             "wall cut at Z{z}"
         );
     }
-    assert!((at(-30.0, stock::Surface::Bore) - 13.95).abs() < 1e-6);
-    let major = stock::deepest_radius(&shapes, -1.0, -19.0, stock::Surface::Bore).unwrap();
+    assert!((at(-30.0, analysis::Surface::Bore) - 13.95).abs() < 1e-6);
+    let major = analysis::deepest_radius(&shapes, -1.0, -19.0, analysis::Surface::Bore).unwrap();
     assert!((major - 15.0).abs() < 2e-3, "{major}");
     // teeth: between two roots 2 apart a crest of the bore stays (r 13.95)
     let crest = (0..200)
-        .map(|i| at(-3.0 - 0.01 * i as f64, stock::Surface::Bore))
+        .map(|i| at(-3.0 - 0.01 * i as f64, analysis::Surface::Bore))
         .fold(f64::INFINITY, f64::min);
     assert!((crest - 13.95).abs() < 1e-6, "{crest}");
 
@@ -434,8 +438,9 @@ fn tapered_thread_crests_on_the_cone() {
         &tools,
     );
     assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
-    let at =
-        |z: f64| stock::surface_radius_at(&sim.final_shapes, z, stock::Surface::Outer).unwrap();
+    let at = |z: f64| {
+        analysis::surface_radius_at(&sim.final_shapes, z, analysis::Surface::Outer).unwrap()
+    };
     for k in 1..9 {
         let crest = -2.0 * k as f64;
         let cone = 9.0 - 0.05 * crest;
@@ -457,7 +462,7 @@ fn tapered_thread_crests_on_the_cone() {
     // 2h tan 30° / (1 − k² tan² 30°) apart, so half the lead (1.0) is reached at
     // h = 0.866025 (1 − 0.000833) = 0.865304: d2 = 2 (8.9 + 0.865304) = 19.530608; the
     // angle 2 atan(tan 30° / (1 − 0.000833)) = 60.041°.
-    let threads = stock::threads(&tp.segments, &tools, &sim.final_shapes);
+    let threads = analysis::threads(&tp.segments, &tools, &sim.final_shapes);
     let form = threads[0].form(&sim.final_shapes).unwrap();
     assert!((form.pitch_diameter - 19.530608).abs() < 2e-3, "{form:?}");
     assert!(

@@ -32,7 +32,7 @@ pub(crate) fn body(data: &[u8]) {
         return;
     };
     let (blank, tools, segments) = fixtures();
-    if let Ok(Some(fixture)) = stock::Fixture::new(&w, blank) {
+    if let Ok(Some(fixture)) = analysis::Fixture::new(&w, blank) {
         let _ = fixture.check(tools, segments, 0.001, &[(3, false), (5, true)]);
     }
 }

@@ -32,8 +32,8 @@ const MAX_STAMPS: f64 = 300.0;
 /// A Φ30 shaft with a Φ20 neck: the part every program is compared with.
 const TARGET: &[[f64; 2]] = &[[0.0, 0.0], [0.0, 15.0], [-10.0, 15.0], [-10.0, 10.0], [-20.0, 10.0], [-20.0, 15.0], [-30.0, 15.0], [-30.0, 0.0]];
 
-fn fixtures() -> &'static (expander::Machine, stock::Blank, stock::ToolTable, Vec<stock::Intent>) {
-    static F: OnceLock<(expander::Machine, stock::Blank, stock::ToolTable, Vec<stock::Intent>)> =
+fn fixtures() -> &'static (expander::Machine, stock::Blank, stock::ToolTable, Vec<stock::Shape>) {
+    static F: OnceLock<(expander::Machine, stock::Blank, stock::ToolTable, Vec<stock::Shape>)> =
         OnceLock::new();
     F.get_or_init(|| {
         let machine = expander::Machine::from_toml("power_on_feed = 100.0").expect("a valid profile");
@@ -41,17 +41,19 @@ fn fixtures() -> &'static (expander::Machine, stock::Blank, stock::ToolTable, Ve
         let tools = stock::ToolTable::from_toml(TOOLS).expect("a valid tool table");
         let outer: Vec<[f64; 2]> = TARGET.to_vec(); // counter-clockwise in (z, r)
         let part = vec![stock::Shape { outer, holes: vec![] }];
-        (machine, blank, tools, vec![stock::Intent::target(part)])
+        (machine, blank, tools, part)
     })
 }
 
-/// One fuzz input.
+/// One fuzz input: the whole pipeline after reading, as `latsim run` wires it
+/// (`analysis::pipeline`: removal, intents, deviation, workholding, threads, verdict),
+/// against the program's own shapes or, when the input's length is odd, a drawn part.
 pub(crate) fn body(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
     let Ok(program) = gcode::parse(&text) else {
         return;
     };
-    let (machine, blank, tools, intents) = fixtures();
+    let (machine, blank, tools, part) = fixtures();
     let tp = expander::expand(&program, machine, &Default::default());
     // a move budget, like `interpret`'s: long legitimate programs (a G75 with a 0.002 mm
     // step: 58 510 moves, 0.5 s in release) exceed the 10 s timeout only under coverage
@@ -70,7 +72,14 @@ pub(crate) fn body(data: &[u8]) {
     if stamps > MAX_STAMPS {
         return;
     }
-    let sim = stock::simulate(blank, tools, &tp.segments, &Default::default(), &mut |_| {});
+    let intents = if data.len() % 2 == 1 {
+        analysis::Intents::Target(part.clone())
+    } else {
+        analysis::Intents::Program
+    };
+    let settings = analysis::Settings { blank, tools, machine, fixture: None, tol: 0.01 };
+    let (sim, findings) =
+        analysis::pipeline(&tp, &intents, &settings, &Default::default(), &mut |_| {});
     let _ = stock::area(&sim.final_shapes);
-    let _ = stock::deviation(&blank.shapes, &sim.final_shapes, intents, 0.01, &tp.segments, tools, 0.001);
+    let _ = findings.verdict;
 }

@@ -67,21 +67,58 @@ pub fn temp_program(name: &str, text: &[u8]) -> (tempfile::TempDir, PathBuf) {
     (dir, path)
 }
 
-/// Parse, expand (with the tool table's noses and blades, the first entry as start tool,
-/// like the CLI) and simulate in-process; alarms are left to the caller.
-pub fn pipeline(
+/// Parse and expand with the tool table's noses and blades, the first entry as start tool,
+/// like the CLI.
+pub fn expand(
     program: &str,
     machine: &expander::Machine,
-    blank: &stock::Blank,
     tools: &stock::ToolTable,
-) -> (expander::Toolpath, stock::Simulation) {
+) -> expander::Toolpath {
     let p = gcode::parse(program).expect("program parses");
     let opts = expander::Options {
         tools: tools.facts(),
         start_tool: tools.numbers().first().copied(),
         ..Default::default()
     };
-    let tp = expander::expand(&p, machine, &opts);
+    expander::expand(&p, machine, &opts)
+}
+
+/// [`expand`], then the library pipeline `latsim run` calls (`analysis::pipeline`): the
+/// removal and what the run concludes (intents, deviation, crashes, threads, verdict),
+/// against the program's own shapes.
+#[allow(dead_code)]
+pub fn judge(
+    program: &str,
+    machine: &expander::Machine,
+    blank: &stock::Blank,
+    tools: &stock::ToolTable,
+) -> (expander::Toolpath, stock::Simulation, analysis::Findings) {
+    let tp = expand(program, machine, tools);
+    let settings = analysis::Settings {
+        blank,
+        tools,
+        machine,
+        fixture: None,
+        tol: 0.01,
+    };
+    let (sim, findings) = analysis::pipeline(
+        &tp,
+        &analysis::Intents::Program,
+        &settings,
+        &stock::SimOptions::default(),
+        &mut |_| {},
+    );
+    (tp, sim, findings)
+}
+
+/// [`expand`] and the removal alone, in-process; alarms are left to the caller.
+pub fn pipeline(
+    program: &str,
+    machine: &expander::Machine,
+    blank: &stock::Blank,
+    tools: &stock::ToolTable,
+) -> (expander::Toolpath, stock::Simulation) {
+    let tp = expand(program, machine, tools);
     let sim = stock::simulate(
         blank,
         tools,

@@ -58,7 +58,7 @@ pub fn rpm_css(vc: f64, r: f64, max_rpm: f64) -> f64 {
 }
 
 /// A toolpath's cycle time and its share per tool.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Times {
     /// Every move and dwell, s.
     pub total: f64,

@@ -37,7 +37,7 @@ pub(crate) fn verdict_text(report: &Report) -> (String, &'static str) {
             mm(deepest)
         ));
     }
-    match report.verdict() {
+    match report.verdict {
         Verdict::Clean => ("CLEAN — no gouge, no crash".to_string(), colour::OK),
         v => {
             let word = match v {

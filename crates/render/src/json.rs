@@ -195,7 +195,7 @@ pub(crate) fn json(report: &Report) -> String {
         program: &report.program,
         title: &report.title,
         control: &report.control,
-        verdict: verdict_word(report.verdict()),
+        verdict: verdict_word(report.verdict),
         stock: Stock {
             description: report.stock.description.clone(),
             polygons: report.stock.shapes.iter().map(Polygon::from).collect(),

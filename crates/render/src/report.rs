@@ -228,6 +228,8 @@ pub struct Report {
     /// Which outline each move uses: (index of the first move of a run, index into
     /// [`Report::tool_outlines`]), in move order.
     pub tool_runs: Vec<(usize, usize)>,
+    /// The outcome, as the analysis decided it.
+    pub verdict: Verdict,
 }
 
 /// A tool's outline relative to its reference point, `[z, r]`: the cutting outline and the
@@ -314,10 +316,11 @@ pub struct Snapshot {
     pub shapes: Vec<Shape>,
 }
 
-/// The one-word outcome shown in the title block and the JSON.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// The one-word outcome shown in the title block and the JSON (decided by the analysis).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Verdict {
     /// No alarm, crash or gouge.
+    #[default]
     Clean,
     /// A controller alarm stopped or corrupted the run.
     Alarm,
@@ -327,26 +330,6 @@ pub enum Verdict {
     /// Part material removed (a gouge, or a thread cut deeper than expected by more than
     /// the tolerance).
     Gouge,
-}
-
-impl Report {
-    /// Worst finding first: alarm, crash, gouge, else clean.
-    pub fn verdict(&self) -> Verdict {
-        if !self.alarms.is_empty() {
-            Verdict::Alarm
-        } else if !self.crashes.is_empty() {
-            Verdict::Crash
-        } else if !self.gouges.is_empty()
-            || self
-                .threads
-                .iter()
-                .any(|t| t.depth_error_mm.is_some_and(|e| e > self.tolerance_mm))
-        {
-            Verdict::Gouge
-        } else {
-            Verdict::Clean
-        }
-    }
 }
 
 #[cfg(test)]

@@ -45,6 +45,7 @@ fn clean_report_says_clean() {
     r.crashes.clear();
     r.gouges.clear();
     r.gouge_shapes.clear();
+    r.verdict = render::Verdict::Clean;
     let s = render::svg(&r);
     assert!(s.contains("CLEAN — no gouge, no crash"));
     assert!(!s.contains(r#"id="details""#));

@@ -538,7 +538,7 @@ fn to_shapes(raw: Vec<Vec<Vec<P>>>) -> Vec<Shape> {
 }
 
 /// Normalises rings of any orientation (non-zero fill) into valid shapes: outer CCW, holes CW.
-pub(crate) fn clean(rings: &[Vec<P>]) -> Vec<Shape> {
+pub fn clean(rings: &[Vec<P>]) -> Vec<Shape> {
     let rings: Vec<Vec<P>> = rings
         .iter()
         .filter(|r| r.len() >= 3 && r.iter().all(|p| p[0].is_finite() && p[1].is_finite()))
@@ -740,7 +740,7 @@ mod tests {
         assert!(c.max[0] - c.min[0] > 90_000, "{c:?}");
     }
 
-    /// (geom::flat's chain sweep read by the boolean engine.)
+    /// (`geom::flat`'s chain sweep read by the boolean engine.)
     mod chain_sweep {
         use super::super::clean;
         use geom::flat::{convex_hull, pts, sweep_chain, sweep_convex, P};

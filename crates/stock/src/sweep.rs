@@ -44,14 +44,15 @@
 //! programmed point. An arc whose single chord is within `chord_tol − δ` of it joins such
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
+use crate::mounted::{move_path, Mounted, Mounts};
 use crate::outline::Outline;
 use crate::overlay::{inscribed_box, ring_perimeter, Grid, IBox, IPt};
 use crate::pass_group::{Lane, Offer, PassGroups};
+use crate::tools::hint_key;
 use crate::{Shape, ToolTable};
 use expander::{Motion, Segment, ToolHint};
 use geom::flat::{bounds, clip_convex, dist, pts, sweep_chain, sweep_convex, P};
 use geom::Rect;
-use std::collections::HashMap;
 use std::ops::Range;
 use std::sync::atomic::AtomicU32;
 use std::sync::Arc;
@@ -337,33 +338,24 @@ fn angle(u: P, v: P) -> f64 {
     cross.abs().atan2(dot)
 }
 
-/// A tool's outline or body by tool, hint and whether it is mirrored (a rear post).
-type ToolKey = ((u32, u8, u64), bool);
-
 /// Turns segments into sweeps on the grid, in order.
 pub(crate) struct SweepBuilder<'a> {
     grid: &'a Grid,
     clip: Rect,
-    tools: &'a ToolTable,
+    /// Each move's tool as mounted.
+    mounts: Mounts<'a>,
+    /// The tools (and hints) whose defaulted outline was warned of.
+    warned: Vec<(u32, u8, u64)>,
     tol: f64,
     /// Largest deviation of a merged chain of feeds from the programmed points, mm (0: only
     /// exact merging).
     merge_tol: f64,
     /// Sweep consecutive feeds as one path (see [`crate::SimOptions::feed_paths`]).
     feed_paths: bool,
-    /// Shared, not copied: every segment asks for its tool's outline (and body) once or more.
-    outlines: HashMap<ToolKey, Arc<Outline>>,
-    bodies: HashMap<ToolKey, Option<Arc<crate::Body>>>,
-    /// The last lookups: consecutive segments nearly always share their tool, and a hash
-    /// of the key for every segment showed in profiles.
-    last_outline: Option<(ToolKey, Arc<Outline>)>,
-    last_body: Option<(ToolKey, Option<Arc<crate::Body>>)>,
     run: Option<Run>,
     /// Body sweeps of the moves of the open run: emitted after the run's own sweep, so
     /// that they meet the stock as it is after the cut.
     held: Sweeps,
-    /// Tools on a rear post (they work at negative X).
-    rear: Vec<u32>,
     /// The segment being pushed runs below the axis.
     below: bool,
     scratch: Vec<P>,
@@ -398,17 +390,13 @@ impl<'a> SweepBuilder<'a> {
         Self {
             grid,
             clip,
-            tools,
+            mounts: Mounts::new(tools, Vec::new()),
+            warned: Vec::new(),
             tol: chord_tol,
             merge_tol: merge_tol.clamp(0.0, chord_tol),
             feed_paths: true,
-            outlines: HashMap::new(),
-            bodies: HashMap::new(),
-            last_outline: None,
-            last_body: None,
             run: None,
             held: Sweeps::default(),
-            rear: Vec::new(),
             below: false,
             scratch: Vec::new(),
             next_continues: false,
@@ -433,59 +421,26 @@ impl<'a> SweepBuilder<'a> {
 
     /// Tools on a rear post ([`crate::section::rear_tools`]).
     pub(crate) fn set_rear(&mut self, rear: Vec<u32>) {
-        self.rear = rear;
+        self.mounts = Mounts::new(self.mounts.tools(), rear);
     }
 
-    /// The outline of tool `t` under `hint` (mirrored about the axis when `flip`), warning
-    /// once per tool (and hint) when defaulted.
-    fn outline(&mut self, t: u32, hint: ToolHint, flip: bool, idx: usize) -> Arc<Outline> {
-        let key = (crate::tools::hint_key(t, hint), flip);
-        if let Some((k, o)) = &self.last_outline {
-            if *k == key {
-                return Arc::clone(o);
+    /// Tool `t` under `hint` as mounted, for its cutting outline: warns once per tool (and
+    /// hint) when a default stands in, at move `idx`.
+    fn edge(&mut self, t: u32, hint: ToolHint, idx: usize) -> Arc<Mounted> {
+        let m = self.mounts.get(t, hint);
+        if let Some(w) = &m.warning {
+            let key = hint_key(t, hint);
+            if !self.warned.contains(&key) {
+                self.warned.push(key);
+                self.warnings.push((idx, w.clone()));
             }
         }
-        if let Some(o) = self.outlines.get(&key) {
-            self.last_outline = Some((key, Arc::clone(o)));
-            return Arc::clone(o);
-        }
-        let (o, warning) = self.tools.outline_for(t, hint);
-        if let Some(w) = warning {
-            if !self.outlines.keys().any(|k| k.0 == key.0) {
-                self.warnings.push((idx, w));
-            }
-        }
-        let o = Arc::new(if flip { o.mirrored() } else { o });
-        self.outlines.insert(key, Arc::clone(&o));
-        self.last_outline = Some((key, Arc::clone(&o)));
-        o
+        m
     }
 
-    /// The body of tool `t` under `hint`, mirrored about the axis when `flip`.
-    fn body(&mut self, t: u32, hint: ToolHint, flip: bool) -> Option<Arc<crate::Body>> {
-        let key = (crate::tools::hint_key(t, hint), flip);
-        if let Some((k, b)) = &self.last_body {
-            if *k == key {
-                return b.clone();
-            }
-        }
-        let body = self
-            .bodies
-            .entry(key)
-            .or_insert_with(|| {
-                let b = self.tools.body_for(t, hint)?;
-                Some(Arc::new(if flip {
-                    crate::Body {
-                        outline: b.outline.mirrored(),
-                        name: b.name,
-                    }
-                } else {
-                    b
-                }))
-            })
-            .clone();
-        self.last_body = Some((key, body.clone()));
-        body
+    /// Tool `t` under `hint` as mounted, when it has a body.
+    fn with_body(&mut self, t: u32, hint: ToolHint) -> Option<Arc<Mounted>> {
+        Some(self.mounts.get(t, hint)).filter(|m| m.body.is_some())
     }
 
     /// [`SweepBuilder::push`], told the segment after it: a thread move that the next one
@@ -501,24 +456,16 @@ impl<'a> SweepBuilder<'a> {
     /// Adds segment number `idx`: the sweep of its cutting outline, then the probe of its
     /// body (held while a merged run is open: it follows the run's sweep).
     pub(crate) fn push(&mut self, idx: usize, seg: &Segment) {
-        let flip = self.rear.contains(&seg.tool);
-        let body = self.body(seg.tool, seg.hint, flip);
+        let body = self.with_body(seg.tool, seg.hint);
         if body.is_some() {
             // its probes must meet the stock the group's passes cut
             self.close_group();
         }
         if self.push_cut(idx, seg) {
-            let Some(body) = body else {
+            let Some(body) = body.as_ref().and_then(|m| m.body.as_ref()) else {
                 return;
             };
-            let path: Vec<P> = if seg.motion == Motion::Thread {
-                vec![[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]]
-            } else {
-                seg.polyline(self.tol)
-                    .iter()
-                    .map(|pt| [pt.z, pt.r])
-                    .collect()
-            };
+            let path = move_path(seg, self.tol);
             let done = std::mem::take(&mut self.out);
             // swept and measured like a rapid (convex hulls, the crash rule's depth), then
             // marked as the body's probe
@@ -546,7 +493,7 @@ impl<'a> SweepBuilder<'a> {
     /// Adds the cutting sweep of segment number `idx`, swept where it was programmed and
     /// folded about the axis ([`crate::section`]); false when the move was skipped.
     fn push_cut(&mut self, idx: usize, seg: &Segment) -> bool {
-        let flip = self.rear.contains(&seg.tool);
+        let flip = self.mounts.is_rear(seg.tool);
         // a rapid measured in the section: mirrored when it runs below the axis
         self.below = seg.from.r + seg.to.r < 0.0;
         let finite = |v: f64| v.is_finite() && v.abs() < 1e12;
@@ -637,7 +584,7 @@ impl<'a> SweepBuilder<'a> {
                 let starts = seg.motion == Motion::Feed
                     && seg.arc.is_some()
                     && self.feed_paths
-                    && self.body(seg.tool, seg.hint, flip).is_none();
+                    && self.with_body(seg.tool, seg.hint).is_none();
                 starts.then(|| (Vec::new(), 0.0, 0.0, false))
             });
             if let Some((mut path, len, turn, approx)) = path {
@@ -665,11 +612,12 @@ impl<'a> SweepBuilder<'a> {
                 }
             }
         }
-        let outline = self.outline(seg.tool, seg.hint, flip, idx);
+        let mounted = self.edge(seg.tool, seg.hint, idx);
+        let outline = &mounted.edge;
         let rapid = seg.motion == Motion::Rapid;
         if seg.motion == Motion::Thread {
             if let Some(stamps) = self.thread_stamps(idx, seg) {
-                self.emit_stamps(idx, &outline, &stamps, p);
+                self.emit_stamps(idx, outline, &stamps, p);
                 return true;
             }
         }
@@ -678,7 +626,7 @@ impl<'a> SweepBuilder<'a> {
             .iter()
             .map(|pt| [pt.z, pt.r])
             .collect();
-        self.emit_path(idx, rapid, &outline, &path);
+        self.emit_path(idx, rapid, outline, &path);
         true
     }
 
@@ -764,7 +712,7 @@ impl<'a> SweepBuilder<'a> {
         (a, b): (P, P),
         (path, path_len, turn, approx): (Vec<P>, f64, f64, bool),
     ) {
-        let outline = self.outline(seg.tool, seg.hint, flip, idx);
+        let outline = Arc::clone(&self.edge(seg.tool, seg.hint, idx).edge);
         let max_len = outline
             .bbox()
             .map_or(0.0, |(lo, hi)| (hi[0] - lo[0]).max(hi[1] - lo[1]));
@@ -818,7 +766,7 @@ impl<'a> SweepBuilder<'a> {
         {
             return None;
         }
-        if self.body(seg.tool, seg.hint, flip).is_some() {
+        if self.with_body(seg.tool, seg.hint).is_some() {
             return None;
         }
         let run = self.run.take()?;
@@ -842,7 +790,7 @@ impl<'a> SweepBuilder<'a> {
     /// Ends the current merged run, emitting its sweep.
     fn emit_run(&mut self) {
         if let Some(mut run) = self.run.take() {
-            let outline = self.outline(run.tool, run.hint, run.flip, run.last);
+            let outline = Arc::clone(&self.edge(run.tool, run.hint, run.last).edge);
             for v in [run.a, run.b] {
                 if run.path.last() != Some(&v) {
                     run.path.push(v);
@@ -865,7 +813,7 @@ impl<'a> SweepBuilder<'a> {
         if self.groups.is_none() {
             return false;
         }
-        if !exact || self.body(run.tool, run.hint, run.flip).is_some() {
+        if !exact || self.with_body(run.tool, run.hint).is_some() {
             self.close_group();
             return false;
         }

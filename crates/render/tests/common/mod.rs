@@ -89,6 +89,8 @@ pub(crate) fn groove_bar() -> Report {
         tolerance_mm: 0.01,
         snapshots: vec![],
         grooves: vec![],
+        // as the analysis decides it: a crash is worse than the gouge
+        verdict: Verdict::Crash,
         ..Report::default()
     }
 }

@@ -69,7 +69,7 @@ impl ToolTable {
 
     /// Whether `seg` is cut by a grooving blade: the table's tool is one, or a grooving
     /// cycle says so (its hint).
-    pub(crate) fn blade_cuts(&self, seg: &expander::Segment) -> bool {
+    pub fn blade_cuts(&self, seg: &expander::Segment) -> bool {
         seg.hint != expander::ToolHint::Table
             || matches!(self.get(seg.tool), Some(Tool::Grooving(_)))
     }

@@ -1,46 +1,43 @@
-//! The intended part and the deviation of the final part from it.
+//! The intents a program defines for itself (its finishing shapes, grooves and compensated
+//! contours), where the thread moves' own teeth are left out of every intent, and the
+//! stock snapshots reading them needs.
 
-use crate::cli::RunArgs;
-use crate::input::{self, Loaded};
-use expander::IntendedKind;
-use stock::Intent;
+use super::Intent;
+use crate::Intents;
+use expander::{IntendedKind, Motion, Segment, Toolpath};
+use stock::{boolean, BoolOp, Shape, ToolTable};
 
-/// Chord tolerance of a `--target` profile's arcs, mm: as fine as a DXF drawing's arcs are
-/// read (`tooling_iso::dxf_io::ReadOptions`), so the intended part drawn and written back
-/// with `--dxf` stays within 0.0005 mm of the true arcs.
-const TARGET_CHORD_TOL: f64 = 0.0001;
-
-/// The intents: `--target F`, else the shapes the program defines for itself, each read
-/// against the stock when its cycle began (`stock_at(k)`: the stock after `k` moves). What
-/// the thread moves cut between their deepest pass and the top of the tool's flanks is the
-/// thread's own business (spec/simulation.md: "its teeth are cut to this form"): no other
-/// intent speaks there.
-pub(crate) fn intents(
-    args: &RunArgs,
-    loaded: &Loaded,
-    tools: &stock::ToolTable,
-    stock_at: &dyn Fn(usize) -> Vec<stock::Shape>,
-) -> Result<Vec<Intent>, ()> {
-    let mut intents = own_or_target(args, loaded, stock_at)?;
-    let bands = thread_bands(&loaded.toolpath.segments, tools);
+/// The intents the run is judged against: `intents`' drawing, else the shapes the program
+/// defines for itself, each read against the stock when its cycle began (`stock_at(k)`: the
+/// stock after `k` moves). What the thread moves cut between their deepest pass and the
+/// top of the tool's flanks is the thread's own business (spec/simulation.md: "its teeth
+/// are cut to this form"): no other intent speaks there.
+pub(crate) fn read(
+    intents: &Intents,
+    toolpath: &Toolpath,
+    tools: &ToolTable,
+    stock_at: &dyn Fn(usize) -> Vec<Shape>,
+) -> Vec<Intent> {
+    let mut read = match intents {
+        Intents::Target(part) => vec![Intent::target(part.clone())],
+        Intents::Program => own(toolpath, stock_at),
+    };
+    let bands = thread_bands(&toolpath.segments, tools);
     if !bands.is_empty() {
-        for i in &mut intents {
-            i.zone = stock::boolean(&i.zone, &bands, stock::BoolOp::Difference);
+        for i in &mut read {
+            i.zone = boolean(&i.zone, &bands, BoolOp::Difference);
         }
     }
-    Ok(intents)
+    read
 }
 
 /// Where thread moves cut their teeth: above each pass (below, for a tool whose body lies
 /// below its tip) up to the height where the tool's flanks reach their full width, over
 /// the pass's Z span grown by that width. A pass below the axis is seen mirrored.
-fn thread_bands(segments: &[expander::Segment], tools: &stock::ToolTable) -> Vec<stock::Shape> {
+fn thread_bands(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
     const FAR: f64 = 1e5;
     let mut bands = vec![];
-    for s in segments
-        .iter()
-        .filter(|s| s.motion == expander::Motion::Thread)
-    {
+    for s in segments.iter().filter(|s| s.motion == Motion::Thread) {
         let outline = tools.outline_for(s.tool, s.hint).0;
         let Some((lo, hi)) = outline.bbox() else {
             continue;
@@ -66,7 +63,7 @@ fn thread_bands(segments: &[expander::Segment], tools: &stock::ToolTable) -> Vec
         } else {
             (a.r, b.r)
         };
-        bands.push(stock::Shape {
+        bands.push(Shape {
             outer: vec![
                 [a.z - w, ra],
                 [b.z + w, rb],
@@ -79,28 +76,15 @@ fn thread_bands(segments: &[expander::Segment], tools: &stock::ToolTable) -> Vec
     if bands.is_empty() {
         return bands;
     }
-    stock::boolean(&bands, &[], stock::BoolOp::Union)
+    boolean(&bands, &[], BoolOp::Union)
 }
 
-fn own_or_target(
-    args: &RunArgs,
-    loaded: &Loaded,
-    stock_at: &dyn Fn(usize) -> Vec<stock::Shape>,
-) -> Result<Vec<Intent>, ()> {
-    if let Some(path) = &args.target {
-        if crate::cad::is_dxf(path) {
-            let rings = crate::cad::read_rings(path, args.dxf_x, crate::cad::Role::Target)?;
-            let part = stock::Blank::from_rings(&rings, "").shapes;
-            return Ok(vec![Intent::target(part)]);
-        }
-        let text = input::read_text(path, "target")?;
-        let part = stock::profile_from_toml(&text, TARGET_CHORD_TOL)
-            .map_err(|e| input::print_stock_error(path, &text, &e))?;
-        return Ok(vec![Intent::target(part)]);
-    }
-    let intended = &loaded.toolpath.intended;
-    let segments = &loaded.toolpath.segments;
-    Ok(intended
+/// The shapes the program defines for itself, in program order, those a later contour
+/// overcuts left out ([`overcut_later`]).
+fn own(toolpath: &Toolpath, stock_at: &dyn Fn(usize) -> Vec<Shape>) -> Vec<Intent> {
+    let intended = &toolpath.intended;
+    let segments = &toolpath.segments;
+    intended
         .iter()
         .enumerate()
         .filter(|(k, i)| !overcut_later(intended, *k, i))
@@ -129,7 +113,7 @@ fn own_or_target(
                 )),
             }
         })
-        .collect())
+        .collect()
 }
 
 /// A contour cut under G41/G42 is an intent only when it is the last pass over its stretch
@@ -154,16 +138,16 @@ fn overcut_later(all: &[expander::Intended], k: usize, i: &expander::Intended) -
     })
 }
 
-/// The move counts after which [`intents`] wants the stock (to take them in the removal
-/// pass): one per contour that stays an intent, and the first move of every thread (what
-/// it cuts into, `stock::Thread::achieved_x`). A snapshot costs a second removal up to its
-/// count, so only programs of up to [`MAX_MOVES_FOR_MARKS`] moves get them, and at most
-/// [`MAX_STOCK_MARKS`]; other contours are read against the final part (which has at most
-/// less material than the stock of their cycle: a lead-in in front of either is dropped),
-/// and other threads are measured over their whole length.
-pub(crate) fn stock_marks(loaded: &Loaded, tools: &stock::ToolTable) -> Vec<usize> {
-    let intended = &loaded.toolpath.intended;
-    let segments = &loaded.toolpath.segments;
+/// The move counts after which [`read`] wants the stock (to take them in the removal pass,
+/// `stock::SimOptions::snapshot_after`): one per contour that stays an intent, and the
+/// first move of every thread (what it cuts into, `Thread::achieved_x`). A snapshot costs a
+/// second removal up to its count, so only programs of up to [`MAX_MOVES_FOR_MARKS`] moves
+/// get them, and at most [`MAX_STOCK_MARKS`]; other contours are read against the final
+/// part (which has at most less material than the stock of their cycle: a lead-in in front
+/// of either is dropped), and other threads are measured over their whole length.
+pub fn stock_marks(toolpath: &Toolpath, tools: &ToolTable) -> Vec<usize> {
+    let intended = &toolpath.intended;
+    let segments = &toolpath.segments;
     if segments.len() > MAX_MOVES_FOR_MARKS {
         return vec![];
     }
@@ -172,7 +156,7 @@ pub(crate) fn stock_marks(loaded: &Loaded, tools: &stock::ToolTable) -> Vec<usiz
         .enumerate()
         .filter(|(k, i)| i.kind != IntendedKind::Groove && !overcut_later(intended, *k, i))
         .map(|(_, i)| i.after_move)
-        .chain(stock::thread_starts(segments, tools))
+        .chain(crate::measure::thread_starts(segments, tools))
         .collect();
     marks.sort_unstable();
     marks.dedup();

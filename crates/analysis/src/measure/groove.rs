@@ -1,9 +1,9 @@
 //! How far the final part strays from a G75.1 groove the program defines: the number the
 //! groove's detail view shows in its title.
 
-use crate::Shape;
 use geom::distance::point_segment;
 use geom::{ring, Pt, Rect};
+use stock::Shape;
 
 /// Cap on ring samples.
 const MAX_SAMPLES: usize = 2000;

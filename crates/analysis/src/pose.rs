@@ -2,10 +2,9 @@
 //! and body) at the first point of its move where the part that hit reaches the crash's
 //! contact point, so a machinist sees what met what.
 
-use crate::outline::Outline;
-use crate::ToolTable;
-use expander::{Motion, Segment, ToolHint};
-use geom::flat::{convex_hull, sweep_convex, P};
+use expander::{Segment, ToolHint};
+use geom::flat::{convex_hull, P};
+use stock::{chord_sweeps, move_path, Mounted, Outline, ToolTable};
 
 /// Bisection steps along the move (2⁻⁴⁰ of its length).
 const STEPS: usize = 40;
@@ -16,7 +15,7 @@ const NEAR: f64 = 1e-6;
 /// else the body of that name) first reaches `at` (a crash's contact point in the
 /// section, r ≥ 0), as convex parts in the section (mirrored to r ≥ 0 when the tool is
 /// below the axis there): the cutting outline's parts, then the body's. `rear`: the tools
-/// on a rear post ([`crate::rear_tools`]). Empty for a move with no finite coordinates.
+/// on a rear post ([`stock::rear_tools`]). Empty for a move with no finite coordinates.
 pub fn tool_at_crash(
     tools: &ToolTable,
     seg: &Segment,
@@ -25,19 +24,12 @@ pub fn tool_at_crash(
     body: Option<&str>,
     chord_tol: f64,
 ) -> Vec<Vec<[f64; 2]>> {
-    let (edge, holder) = mount(tools, seg.tool, seg.hint, rear.contains(&seg.tool));
-    let path: Vec<P> = if seg.motion == Motion::Thread {
-        vec![[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]]
-    } else {
-        seg.polyline(chord_tol).iter().map(|p| [p.z, p.r]).collect()
-    };
+    let m = Mounted::new(tools, seg.tool, seg.hint, rear.contains(&seg.tool));
+    let path = move_path(seg, chord_tol);
     if path.iter().flatten().any(|v| !v.is_finite()) {
         return Vec::new();
     }
-    let hit = match (body, &holder) {
-        (Some(name), Some((n, o))) if *n == name => o,
-        _ => &edge,
-    };
+    let hit = m.part(body);
     // the sweep up to t reaches the contact point (or its mirror: sweeps are folded)
     let reaches = |t: f64| {
         let sub = prefix(&path, t);
@@ -71,31 +63,18 @@ pub fn tool_at_crash(
             .collect();
         convex_hull(&placed)
     };
-    edge.parts
+    m.edge
+        .parts
         .iter()
-        .chain(holder.iter().flat_map(|(_, o)| o.parts.iter()))
+        .chain(m.body.iter().flat_map(|b| b.outline.parts.iter()))
         .map(place)
         .collect()
-}
-
-/// Tool `t` under `hint` as mounted (mirrored about the axis on a rear post, `flip`): its
-/// cutting outline, and its body with the body's name when the table declares one.
-fn mount(
-    tools: &ToolTable,
-    t: u32,
-    hint: ToolHint,
-    flip: bool,
-) -> (Outline, Option<(&'static str, Outline)>) {
-    let m = |o: Outline| if flip { o.mirrored() } else { o };
-    let edge = m(tools.outline_for(t, hint).0);
-    let body = tools.body_for(t, hint).map(|b| (b.name, m(b.outline)));
-    (edge, body)
 }
 
 /// The outline of each move's tool as mounted, for drawing the tool as it moves: the
 /// distinct outlines (cutting outline's parts, body's parts, relative to the reference
 /// point) and, for each run of moves with the same one, (index of its first move, index
-/// of the outline). `rear`: the tools on a rear post ([`crate::rear_tools`]).
+/// of the outline). `rear`: the tools on a rear post ([`stock::rear_tools`]).
 #[allow(clippy::type_complexity)]
 pub fn tool_outlines(
     tools: &ToolTable,
@@ -113,8 +92,11 @@ pub fn tool_outlines(
             continue;
         }
         last = Some((s.tool, s.hint));
-        let (edge, body) = mount(tools, s.tool, s.hint, rear.contains(&s.tool));
-        let o = (edge.parts, body.map(|(_, b)| b.parts).unwrap_or_default());
+        let m = Mounted::new(tools, s.tool, s.hint, rear.contains(&s.tool));
+        let o = (
+            m.edge.parts.clone(),
+            m.body.map(|b| b.outline.parts).unwrap_or_default(),
+        );
         let k = outlines.iter().position(|x| *x == o).unwrap_or_else(|| {
             outlines.push(o);
             outlines.len() - 1
@@ -153,18 +135,7 @@ fn prefix(path: &[P], t: f64) -> Vec<P> {
 
 /// Whether the sweep of `outline` along `path` comes within [`NEAR`] of `q`.
 fn swept_near(outline: &Outline, path: &[P], q: P) -> bool {
-    let pieces: Vec<[P; 2]> = if path.len() < 2 {
-        vec![[path[0], path[0]]]
-    } else {
-        path.windows(2).map(|w| [w[0], w[1]]).collect()
-    };
-    pieces.iter().any(|&[a, b]| {
-        outline.parts.iter().any(|part| {
-            let placed: Vec<P> = part.iter().map(|v| [v[0] + a[0], v[1] + a[1]]).collect();
-            let hull = convex_hull(&sweep_convex(&placed, [b[0] - a[0], b[1] - a[1]]));
-            inside_convex(&hull, q)
-        })
-    })
+    chord_sweeps(outline, path).any(|hull| inside_convex(&hull, q))
 }
 
 /// `q` inside the counter-clockwise convex polygon or within [`NEAR`] of its edges.
@@ -186,7 +157,7 @@ fn inside_convex(poly: &[P], q: P) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use expander::{FeedId, Pt, Span};
+    use expander::{FeedId, Motion, Pt, Span};
 
     #[test]
     fn a_blade_stops_where_it_first_touches() {
@@ -211,7 +182,7 @@ mod tests {
         };
         let parts = tool_at_crash(&tools, &seg, &[], [0.0, 5.5], None, 0.001);
         assert_eq!(parts.len(), 2, "blade and holder");
-        let (lo, hi) = crate::Outline {
+        let (lo, hi) = Outline {
             parts: vec![parts[0].clone()],
         }
         .bbox()

@@ -16,7 +16,7 @@
 //! - **gripped length**: the blank's section between `face` and `face + grip`.
 //!
 //! **The rules.** A move crashes into an obstacle when the sweep of its tool's cutting
-//! outline or of its body (`crate::Body`), folded into the section like the removal's
+//! outline or of its body (`stock::Body`), folded into the section like the removal's
 //! sweeps, overlaps the chuck face, a jaw or the tailstock centre by more than
 //! [`CRASH_MIN_AREA`] — rapid, feed or thread alike. A feed or thread move whose cutting
 //! outline's sweep overlaps the gripped length (of the blank as it was before the first
@@ -28,12 +28,13 @@
 //! that meets the obstacle the move before it met continues that crash: one crash is
 //! reported, at its first move.
 
-use crate::outline::Outline;
-use crate::{area, Blank, BoolOp, Shape, StockError, ToolTable, CRASH_MIN_AREA};
-use expander::{Motion, Segment, ToolHint, Workholding};
-use geom::flat::{convex_hull, sweep_convex, P};
+use expander::{Motion, Segment, Workholding};
+use geom::flat::P;
 use geom::{Pt, Rect};
-use std::collections::HashMap;
+use stock::{
+    area, boolean, float_sweep, move_path, Blank, BoolOp, Mounts, Shape, StockError, ToolTable,
+    CRASH_MIN_AREA,
+};
 
 /// The chuck body's diameter beyond the jaws' outer diameter when the profile gives none, mm.
 pub(crate) const DEFAULT_OD_MARGIN: f64 = 40.0;
@@ -157,7 +158,7 @@ impl Fixture {
             let face = c.face.unwrap_or(b.min.z);
             let front = face + c.grip;
             let strip = [rect(face, front, -1.0, b.max.r.max(0.0) + 1.0)];
-            let gripped = crate::boolean(&blank.shapes, &strip, BoolOp::Intersection);
+            let gripped = boolean(&blank.shapes, &strip, BoolOp::Intersection);
             if area(&gripped) <= CRASH_MIN_AREA {
                 return Err(StockError::Blank(format!(
                     "the chuck grips nothing: its jaws span Z{face}…Z{front}, the blank Z{}…Z{}",
@@ -168,7 +169,7 @@ impl Fixture {
             let jaws = match &c.soft_jaw {
                 Some(ring) => {
                     let ring: Vec<P> = ring.iter().map(|p| [face + p[0], p[1] / 2.0]).collect();
-                    crate::overlay::clean(&[ring])
+                    stock::clean(&[ring])
                 }
                 None => vec![rect(face, front, r_grip, r_grip + c.jaw)],
             };
@@ -179,7 +180,7 @@ impl Fixture {
                 false,
             ));
             obstacles.push(Obstacle::new("chuck jaw", jaws, false));
-            let skin = crate::boolean(
+            let skin = boolean(
                 &gripped,
                 &[rect(face, front, r_grip - GRIP_SKIN, r_grip + 1.0)],
                 BoolOp::Intersection,
@@ -224,8 +225,7 @@ impl Fixture {
     ) -> Vec<FixtureCrash> {
         let mut changes = tailstock.iter().peekable();
         let mut advanced = true;
-        let rear = crate::section::rear_tools(segments);
-        let mut mounted: HashMap<((u32, u8, u64), bool), Mounted> = HashMap::new();
+        let mut mounts = Mounts::new(tools, stock::rear_tools(segments));
         let mut all = Rect::EMPTY;
         for o in &self.obstacles {
             all = all.union(&o.bbox);
@@ -241,10 +241,8 @@ impl Fixture {
             if !finite {
                 continue;
             }
-            let flip = rear.contains(&seg.tool);
-            let m = mounted
-                .entry((crate::tools::hint_key(seg.tool, seg.hint), flip))
-                .or_insert_with(|| Mounted::new(tools, seg.tool, seg.hint, flip));
+            let m = mounts.of(seg);
+            let bbox = m.bbox();
             // a quick test on boxes: the path's box plus the tool's, folded about the axis
             let mut reach = Rect::of([seg.from, seg.to]);
             if let Some(a) = seg.arc {
@@ -254,7 +252,7 @@ impl Fixture {
                     Pt::new(a.center.z + rad, a.center.r + rad),
                 ));
             }
-            let (lo, hi) = (reach.min.r + m.bbox.min.r, reach.max.r + m.bbox.max.r);
+            let (lo, hi) = (reach.min.r + bbox.min.r, reach.max.r + bbox.max.r);
             let (rlo, rhi) = if lo >= 0.0 {
                 (lo, hi)
             } else if hi <= 0.0 {
@@ -263,22 +261,24 @@ impl Fixture {
                 (0.0, hi.max(-lo))
             };
             let folded = Rect::new(
-                Pt::new(reach.min.z + m.bbox.min.z, rlo),
-                Pt::new(reach.max.z + m.bbox.max.z, rhi),
+                Pt::new(reach.min.z + bbox.min.z, rlo),
+                Pt::new(reach.max.z + bbox.max.z, rhi),
             );
             if !folded.intersects(&all) {
                 continue;
             }
-            let path: Vec<P> = if seg.motion == Motion::Thread {
-                vec![[seg.from.z, seg.from.r], [seg.to.z, seg.to.r]]
-            } else {
-                seg.polyline(chord_tol).iter().map(|p| [p.z, p.r]).collect()
-            };
-            let parts =
-                std::iter::once((None, &m.edge)).chain(m.body.as_ref().map(|(n, o)| (Some(*n), o)));
+            let path = move_path(seg, chord_tol);
+            let parts = std::iter::once((None, &*m.edge))
+                .chain(m.body.as_ref().map(|b| (Some(b.name), &b.outline)));
             let mut hit: Vec<&'static str> = Vec::new();
             for (body, outline) in parts {
-                let sweep = sweep_shapes(outline, &path);
+                let sweep: Vec<Shape> = float_sweep(outline, &path)
+                    .into_iter()
+                    .map(|outer| Shape {
+                        outer,
+                        holes: Vec::new(),
+                    })
+                    .collect();
                 let sb = shapes_box(&sweep);
                 for o in &self.obstacles {
                     let applies = (!o.cut_only || (body.is_none() && seg.motion != Motion::Rapid))
@@ -286,10 +286,10 @@ impl Fixture {
                     if !applies || hit.contains(&o.name) || !o.may_overlap(&sweep, &sb) {
                         continue;
                     }
-                    let overlap = crate::boolean(&sweep, &o.shapes, BoolOp::Intersection);
+                    let overlap = boolean(&sweep, &o.shapes, BoolOp::Intersection);
                     let a = area(&overlap);
                     let reaches_skin = o.skin.as_ref().is_none_or(|skin| {
-                        area(&crate::boolean(&overlap, skin, BoolOp::Intersection)) > CRASH_MIN_AREA
+                        area(&boolean(&overlap, skin, BoolOp::Intersection)) > CRASH_MIN_AREA
                     });
                     if a > CRASH_MIN_AREA && reaches_skin {
                         hit.push(o.name);
@@ -300,58 +300,6 @@ impl Fixture {
         }
         continues(out)
     }
-}
-
-/// A tool as mounted for the checks: its cutting outline, its body, and the box of both
-/// relative to the reference point.
-struct Mounted {
-    edge: Outline,
-    body: Option<(&'static str, Outline)>,
-    bbox: Rect,
-}
-
-impl Mounted {
-    fn new(tools: &ToolTable, t: u32, hint: ToolHint, flip: bool) -> Self {
-        let (edge, _) = tools.outline_for(t, hint);
-        let body = tools.body_for(t, hint).map(|b| (b.name, b.outline));
-        let (edge, body) = if flip {
-            (edge.mirrored(), body.map(|(n, o)| (n, o.mirrored())))
-        } else {
-            (edge, body)
-        };
-        let bbox = Rect::of(
-            edge.parts
-                .iter()
-                .chain(body.iter().flat_map(|(_, o)| o.parts.iter()))
-                .flatten()
-                .map(|&p| Pt::from(p)),
-        );
-        Self { edge, body, bbox }
-    }
-}
-
-/// The sweep of `outline` along `path`, folded into the section: a hull per convex part
-/// and piece of the path.
-fn sweep_shapes(outline: &Outline, path: &[P]) -> Vec<Shape> {
-    let mut out = Vec::new();
-    let pieces: Vec<[P; 2]> = if path.len() < 2 {
-        vec![[path[0], path[0]]]
-    } else {
-        path.windows(2).map(|w| [w[0], w[1]]).collect()
-    };
-    for [a, b] in pieces {
-        for part in &outline.parts {
-            let placed: Vec<P> = part.iter().map(|v| [v[0] + a[0], v[1] + a[1]]).collect();
-            let hull = convex_hull(&sweep_convex(&placed, [b[0] - a[0], b[1] - a[1]]));
-            for piece in crate::section::fold(&hull) {
-                out.push(Shape {
-                    outer: piece,
-                    holes: Vec::new(),
-                });
-            }
-        }
-    }
-    out
 }
 
 /// Whether two convex polygons (either orientation) share interior: no edge normal of

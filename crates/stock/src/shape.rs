@@ -1,22 +1,27 @@
-//! Measures on shape sets: area, volume of revolution, symmetric difference, Hausdorff;
-//! and the measures the reports show of the findings: how far a groove strays
-//! ([`groove`]) and how deep threads were cut ([`thread`]). (Where a leftover is thickest
-//! is the deviation's own deepest point, `Finding::at` and `nearest`.)
+//! Shape sets in the (z, r) half plane: the polygon with holes every stage passes on, the
+//! boolean operations on them, and their measures (area, volume of revolution, symmetric
+//! difference, Hausdorff distance).
 
-mod groove;
-mod thread;
-
-pub use groove::groove_deviation;
-pub use thread::{
-    deepest_radius, least_gap, surface_radius_at, thread_starts, threads, Reference, Surface,
-    Thread, ThreadForm, ThreadPasses,
-};
-
-use crate::overlay::{boolean, BoolOp};
-use crate::Shape;
+use crate::overlay::{self, BoolOp};
 use geom::distance::EdgeIndex;
 use geom::flat::{pts, P};
 use geom::{ring, Pt};
+
+/// A polygon with holes in (z, r): `outer` counter-clockwise, `holes` clockwise; rings are
+/// not closed (the first point is not repeated).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Shape {
+    /// Outer boundary, counter-clockwise.
+    pub outer: Vec<[f64; 2]>,
+    /// Holes, clockwise.
+    pub holes: Vec<Vec<[f64; 2]>>,
+}
+
+/// Boolean operation between two shape sets (non-zero fill), on a grid fitted to both.
+/// Rings holding a non-finite coordinate are ignored.
+pub fn boolean(a: &[Shape], b: &[Shape], op: BoolOp) -> Vec<Shape> {
+    overlay::boolean(a, b, op)
+}
 
 /// Area in mm² of a shape set (outer areas minus hole areas, whatever the ring orientation).
 pub fn area(shapes: &[Shape]) -> f64 {

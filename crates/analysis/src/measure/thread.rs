@@ -2,8 +2,8 @@
 //! (OD) or bore (ID) at a given Z, and its extreme over the thread's length — the achieved
 //! minor diameter of an OD thread, the major diameter of an ID thread.
 
-use crate::{Shape, ToolTable};
 use expander::{Motion, Segment, Span};
+use stock::{Shape, ToolTable};
 
 /// Which surface of the section a thread is cut in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

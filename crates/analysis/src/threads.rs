@@ -1,0 +1,111 @@
+//! The threads, checked in the final section (spec/simulation.md and README, "threads"):
+//! the diameter reached against the programmed final X, or against a `--target`'s surface
+//! over the thread (a target draws a thread at its minor diameter, OD, or major, ID). A
+//! thread deeper than expected by more than `--tol` fails the run like a gouge (part
+//! material removed, [`crate::Findings::judge`]); one too shallow is only a warning (like a
+//! leftover). Both are warnings `LS-THREAD-DEPTH` at the thread's line; a tool that cuts
+//! away from its own side is the alarm `LS-THREAD-SIDE`.
+
+use crate::findings::{Note, ThreadCheck};
+use crate::measure::{least_gap, Reference, Surface, Thread, ThreadPasses};
+use expander::Segment;
+use stock::Shape;
+
+/// The threads' checks, with the notes they raise.
+#[derive(Debug, Default)]
+pub(crate) struct Checked {
+    pub(crate) threads: Vec<ThreadCheck>,
+    pub(crate) alarms: Vec<Note>,
+    pub(crate) warnings: Vec<Note>,
+}
+
+/// Checks every thread of `passes` in `shapes` (the final part). `before`: the stock each
+/// thread cut into, by its first move, where it was kept: the depth is measured only where
+/// that stock came up to the root (a relief groove cut deeper before is not the thread's
+/// depth).
+pub(crate) fn check(
+    passes: &ThreadPasses,
+    segments: &[Segment],
+    shapes: &[Shape],
+    target: Option<&[Shape]>,
+    before: &[(usize, Vec<Shape>)],
+    tol: f64,
+) -> Checked {
+    let mut out = Checked::default();
+    for t in passes.measure(segments, shapes) {
+        if t.wrong_side {
+            out.alarms.push(wrong_side(&t));
+        }
+        let cut_into = before
+            .iter()
+            .find(|(k, _)| *k == t.first_move)
+            .map(|(_, s)| s.as_slice());
+        let achieved = t.achieved_x(shapes, cut_into);
+        let form = t.form(shapes);
+        let (z0, z1) = t.z_span();
+        let sign = match t.surface {
+            Surface::Outer => 1.0,
+            Surface::Bore => -1.0,
+        };
+        // the least gap between the section and what it should be (negative: deeper)
+        let (gap, expected) = match target {
+            Some(part) => {
+                let gap = least_gap(shapes, Reference::Shapes(part), z0, z1, t.surface);
+                (gap, achieved.zip(gap).map(|(a, g)| a - sign * 2.0 * g))
+            }
+            None => (achieved.map(|a| sign * (a - t.x()) / 2.0), Some(t.x())),
+        };
+        let depth_error = gap.map(|g| -g);
+        if let Some(e) = depth_error.filter(|e| e.abs() > tol) {
+            out.warnings.push(depth_note(&t, e, achieved, expected));
+        }
+        out.threads.push(ThreadCheck {
+            span: t.span,
+            inside: t.surface == Surface::Bore,
+            lead_mm: t.lead,
+            starts: t.starts,
+            x_mm: t.x(),
+            expected_x_mm: expected,
+            pass_depths_mm: t.pass_depths.clone(),
+            achieved_x_mm: achieved,
+            depth_error_mm: depth_error,
+            pitch_diameter_mm: form.map(|f| f.pitch_diameter),
+            included_angle_deg: form.and_then(|f| f.included_angle),
+            z_start_mm: z0,
+            z_end_mm: z1,
+        });
+    }
+    out
+}
+
+/// The alarm of a threading tool whose passes go deeper away from its own side.
+fn wrong_side(t: &Thread) -> Note {
+    let (side, toward, other) = match t.surface {
+        Surface::Outer => ("an OD", "outward (an inside thread)", "id"),
+        Surface::Bore => ("an ID", "inward (an outside thread)", "od"),
+    };
+    Note {
+        span: t.span,
+        code: "LS-THREAD-SIDE",
+        message: format!(
+            "the thread passes go deeper {toward} but the threading tool is {side} insert: its body sweeps through the part; give the tool `side = \"{other}\"` in the tool table"
+        ),
+    }
+}
+
+/// The warning of a thread cut `e` mm too deep (positive) or too shallow.
+fn depth_note(t: &Thread, e: f64, achieved: Option<f64>, expected: Option<f64>) -> Note {
+    Note {
+        span: t.span,
+        code: "LS-THREAD-DEPTH",
+        message: format!(
+            "thread depth error: the thread is cut {:.3} mm too {}{}",
+            e.abs(),
+            if e > 0.0 { "deep" } else { "shallow" },
+            match (achieved, expected) {
+                (Some(a), Some(x)) => format!(" (X{a:.3} reached, X{x:.3} expected)"),
+                _ => String::new(),
+            },
+        ),
+    }
+}
