@@ -66,7 +66,7 @@ pub(crate) struct ProgramArgs {
     /// which a warning (LS-ENCODING) names.
     #[arg(long, value_name = "LABEL")]
     pub(crate) encoding: Option<String>,
-    /// What X is: `diameter` (the usual) or `radius` (FANUC parameter DIA off, LinuxCNC G8,
+    /// What X is: `diameter` (the usual) or `radius` (FANUC parameter DIA off, Linux CNC G8,
     /// CNC trainers); overrides the machine profile's `x_mode`. Reports stay in diameters.
     #[arg(long, value_enum, value_name = "MODE")]
     pub(crate) x_mode: Option<XModeArg>,

@@ -95,7 +95,7 @@ pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
 }
 
 /// Read a program file and decode it: UTF-8, the `--encoding` given, or the encoding
-/// detected (gcode::encoding). A file no encoding reads is an error at its first bad byte.
+/// detected (`gcode::encoding`). A file no encoding reads is an error at its first bad byte.
 fn read_program(path: &Path, args: &ProgramArgs) -> Result<gcode::Decoded, ()> {
     let forced = match &args.encoding {
         None => None,

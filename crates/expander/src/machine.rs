@@ -175,7 +175,7 @@ pub enum XMode {
     /// X is the diameter.
     #[default]
     Diameter,
-    /// X is the radius (FANUC parameter DIA off, LinuxCNC G8, CNC trainers).
+    /// X is the radius (FANUC parameter DIA off, Linux CNC G8, CNC trainers).
     Radius,
 }
 

@@ -1,9 +1,9 @@
 //! Constructs of controls latsim does not read, named where the reader stops (issue 31):
-//! the field test met LinuxCNC lathe programs, whose o-word subroutines (`O100 SUB`,
+//! the field test met Linux CNC lathe programs, whose o-word subroutines (`O100 SUB`,
 //! `O<turning> sub`) and named parameters (`#<wear>`) otherwise stop the reader with
 //! "address S has no value" or "unexpected character '<'", which names nothing.
 
-/// The LinuxCNC construct on this line, if any: what the error names instead.
+/// The Linux CNC construct on this line, if any: what the error names instead.
 pub(crate) fn linuxcnc(line: &str) -> Option<&'static str> {
     let l = line.trim_start().to_ascii_lowercase();
     if l.contains("#<") {

@@ -58,7 +58,7 @@ pub struct ReadOptions {
     /// Custom macro B (spec/dialects.md §5) with this control's rules: `#` variables,
     /// `[ ]` expressions as word values and macro statements. `None`: a `#` is an error.
     pub macros: Option<Dialect>,
-    /// X is programmed as a radius (FANUC parameter DIA off, LinuxCNC G8, trainers): X-axis
+    /// X is programmed as a radius (FANUC parameter DIA off, Linux CNC G8, trainers): X-axis
     /// values are doubled as they are read (`crate::radius`).
     pub x_radius: bool,
 }
@@ -1053,7 +1053,7 @@ impl<'a> Reader<'a> {
             })
     }
 
-    /// The error naming a LinuxCNC construct on the line of `at`, if the line holds one.
+    /// The error naming a Linux CNC construct on the line of `at`, if the line holds one.
     fn foreign(&self, at: Span) -> Option<ParseError> {
         let at = (at.offset as usize).min(self.src.len());
         let start = self.src[..at].rfind('\n').map_or(0, |i| i + 1);
@@ -1971,8 +1971,8 @@ mod tests {
         let p = parse_with(
             texts[3],
             ReadOptions {
-                decimal_comma: false,
                 macros: Some(Dialect::Fanuc),
+                ..ReadOptions::default()
             },
         )
         .unwrap();
@@ -2021,10 +2021,11 @@ mod tests {
     fn read_as_held(text: &str) -> Vec<Program> {
         let mut programs = vec![];
         for macros in [None, Some(Dialect::Fanuc), Some(Dialect::Haas)] {
-            for decimal_comma in [false, true] {
+            for (decimal_comma, x_radius) in [(false, false), (true, false), (false, true)] {
                 let options = ReadOptions {
                     decimal_comma,
                     macros,
+                    x_radius,
                 };
                 let read = parse_with(text, options);
                 assert_eq!(read, parse_held(text, options), "{text:?} {options:?}");

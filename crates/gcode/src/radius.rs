@@ -1,5 +1,5 @@
 //! Radius programming (issue 31): CNC trainers, FANUC controls with parameter DIA (No.
-//! 1006#3) off and LinuxCNC's G8 write X as a radius. latsim works in diameters, so under
+//! 1006#3) off and Linux CNC's G8 write X as a radius. latsim works in diameters, so under
 //! `ReadOptions::x_radius` the reader doubles every X-axis value as it reads the block:
 //! X and U, the end points, G50/G53/G28 positions and the cycles' X, and U as the
 //! finishing allowance of a G71–G73 P/Q block (FANUC: Δu follows the X axis's programming).
