@@ -107,6 +107,21 @@ fn read_program(path: &Path, args: &ProgramArgs) -> Result<gcode::Decoded, ()> {
         })?),
     };
     let bytes = read_bytes(path, "program")?;
+    let binary = |b: &u8| *b < 0x20 && !matches!(b, b'\n' | b'\r' | b'\t' | 0x11..=0x14 | 0x1a);
+    if forced.is_none() && std::str::from_utf8(&bytes).is_err() {
+        // a text in another encoding holds no NUL or other binary control bytes
+        if let Some(at) = bytes.iter().position(binary) {
+            diag::print_plain(
+                &format!(
+                    "{}: the program is not UTF-8 text and byte {at} is binary (0x{:02X}): this is not a program text",
+                    path.display(),
+                    bytes[at]
+                ),
+                "give the NC program file, or its encoding with --encoding",
+            );
+            return Err(());
+        }
+    }
     gcode::decode(&bytes, forced).map_err(|e| {
         let src = Source {
             name: path.display().to_string(),

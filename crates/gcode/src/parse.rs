@@ -1696,7 +1696,7 @@ mod tests {
         // issue 31: `%O1200(TOKARKA)` on line 1 was read as the closing % — no blocks
         let p = parse("%O1200(TOKARKA)\nG0 X10 Z2\nG1 Z-5 F.1\nM30\n%\n").unwrap();
         assert_eq!(p.programs[0].number, Some(1200));
-        assert_eq!(p.programs[0].blocks.len(), 4, "{:?}", notes(&p));
+        assert_eq!(p.programs[0].blocks.len(), 3, "{:?}", notes(&p));
         assert!(notes(&p)[0].contains("share a line"), "{:?}", notes(&p));
         // the same after a leader line and with a BOM
         let p = parse("\u{feff}  %O12\nG0 X1\nG0 X2\n%").unwrap();
