@@ -398,7 +398,14 @@ impl<'m> Interp<'m> {
             Some((G50, _)) => self.g50(&mut used)?,
             Some((G50_3, w)) => self.preset(w, &mut used)?,
             Some((G52, _)) => self.g52(b, &mut used)?,
-            Some((G53, w)) => self.g53(b, &mut used, w)?,
+            Some((G53, w)) => {
+                if let Some((m, _)) = g.motion {
+                    // G00/G01 with G53 sets the mode for the blocks after it too
+                    self.motion = m;
+                    self.retained.drill = None;
+                }
+                self.g53(b, &mut used, w)?
+            }
             Some((G27, w)) => self.g27(b, &mut used, w)?,
             Some((G10, w)) => self.g10(&mut used, w)?,
             Some((t, w)) => {
