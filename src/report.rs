@@ -180,6 +180,7 @@ fn summary(run: &Run, findings: &Findings) -> Report {
             loaded.machine.control.key(),
             loaded.machine.control.title()
         ),
+        encoding: loaded.encoding.to_string(),
         stock: StockInfo {
             description: run.blank.description.clone(),
             shapes: run.blank.shapes.iter().map(shape).collect(),

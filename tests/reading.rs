@@ -43,6 +43,8 @@ fn gbk_program_names_its_encoding_and_keeps_columns() {
     let w = &report["warnings"][0];
     assert_eq!(w["code"], "LS-ENCODING");
     assert!(w["message"].as_str().unwrap().ends_with("GBK"), "{w}");
+    // and the report says which it was read in
+    assert_eq!(report["encoding"], "GBK");
 }
 
 /// GBK bytes of a text (the test's own encoder: the reverse of what latsim decodes).
