@@ -16,6 +16,7 @@ mod dialect_words;
 mod flow;
 mod frame;
 mod g10;
+mod loop_guard;
 mod macros;
 mod modal;
 mod motion;
@@ -36,7 +37,8 @@ pub(crate) use modal::MotionMode;
 pub struct Options {
     /// Skip blocks that start with `/`.
     pub block_delete: bool,
-    /// Stop with an alarm when the program expands to more segments than this.
+    /// The move budget: stop with an alarm when the program expands to more segments than
+    /// this (`--max-moves`).
     pub max_segments: usize,
     /// Stop with an alarm after executing this many blocks (endless loops).
     pub max_blocks: usize,
@@ -58,7 +60,7 @@ impl Default for Options {
     fn default() -> Self {
         Self {
             block_delete: false,
-            max_segments: 5_000_000,
+            max_segments: 10_000_000,
             max_blocks: macro_b::DEFAULT_MAX_BLOCKS as usize,
             tools: toolfacts::ToolFacts::default(),
             start_tool: None,
