@@ -130,6 +130,7 @@ fn crash(segments: &[Segment], c: &analysis::Crash) -> Crash {
         body: c.body.map(str::to_string),
         obstacle: c.obstacle.map(str::to_string),
         tool: c.tool.clone(),
+        assumed: c.assumed,
     }
 }
 
@@ -387,6 +388,7 @@ fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
             r: g.at[1],
             area_mm2: g.area,
             depth_mm: g.depth,
+            assumed: g.assumed,
         })
         .collect();
     report.gouge_shapes = d

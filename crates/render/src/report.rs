@@ -91,6 +91,8 @@ pub struct Crash {
     /// convex parts in `[z, r]`), drawn at the crash; empty when unknown (the CLI fills
     /// the first 20 crashes).
     pub tool: Vec<Vec<[f64; 2]>>,
+    /// A possible crash: its tool's outline is assumed (not in the verdict); drawn hollow.
+    pub assumed: bool,
 }
 
 /// A piece of workholding drawn in the picture (light grey, labelled).
@@ -115,6 +117,9 @@ pub struct Gouge {
     pub area_mm2: f64,
     /// Largest distance from the intended boundary, mm.
     pub depth_mm: f64,
+    /// A possible gouge: the tool that made it has an assumed outline (not in the
+    /// verdict); drawn hatched instead of filled red.
+    pub assumed: bool,
 }
 
 /// Summary of final part versus intended shape.
@@ -187,7 +192,8 @@ pub struct Report {
     /// The largest leftover's thickest place (measured by the simulator), where its
     /// detail view looks; `None`: no leftover view.
     pub leftover_spot: Option<LeftoverSpot>,
-    /// Gouge areas, drawn red with a darker 2 px outline.
+    /// Gouge areas, drawn red with a darker 2 px outline (hatched for the gouges of
+    /// [`Report::gouges`] at the same place that are `assumed`).
     pub gouge_shapes: Vec<Shape>,
     /// `None` when there is no intended shape.
     pub deviation: Option<Deviation>,

@@ -48,6 +48,26 @@ pub(super) fn blame(
     }
 }
 
+/// Whether the stated core of a guessed tool (`stock::Mounted::core`: an insert's nose)
+/// sweeps over `region` on some move: then the gouge does not depend on the extent the
+/// table leaves out (spec/simulation.md, "Findings from assumed tools").
+pub(crate) fn core_sweeps_over(
+    region: &Shape,
+    segments: &[Segment],
+    mounts: &mut Mounts,
+    chord_tol: f64,
+) -> bool {
+    let bb = Rect::of(pts(&region.outer));
+    segments.iter().any(|seg| {
+        let m = mounts.of(seg);
+        let Some(core) = m.core.as_deref() else {
+            return false;
+        };
+        may_sweep_over(&bb, seg, core)
+            && overlaps(region, &bb, &float_sweep(core, &move_path(seg, chord_tol)))
+    })
+}
+
 /// Whether the sweep of `seg` may reach the box `bb` (false only when it surely does not).
 fn may_sweep_over(bb: &Rect, seg: &Segment, outline: &Outline) -> bool {
     let Some((lo, hi)) = outline.bbox() else {

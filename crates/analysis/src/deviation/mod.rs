@@ -30,6 +30,10 @@ pub struct Finding {
     /// The first segment whose tool sweep overlaps the region (gouges only): the move that
     /// made it, named in the report.
     pub made_by: Option<usize>,
+    /// A possible finding (spec/simulation.md, "Findings from assumed tools"): the move
+    /// that made it cuts with an outline the table does not state, and the tool's
+    /// reference point alone does not enter the region. No effect on the verdict.
+    pub assumed: bool,
 }
 
 /// Gouges and leftovers beyond the tolerance.
@@ -125,6 +129,13 @@ pub fn deviation(
         .partition(|g| cut_later(g, intents, segments, tools, &world_box));
     out.gouges = gouges;
     out.later_cuts = later;
+    for g in &mut out.gouges {
+        g.assumed = g.made_by.is_some_and(|i| {
+            crate::assumed::guessed(tools, &segments[i])
+                && !blame::core_sweeps_over(&g.shape, segments, &mut mounts, chord_tol)
+                && !crate::assumed::enters_region(&g.shape, segments, tools, chord_tol)
+        });
+    }
     out
 }
 
@@ -234,6 +245,7 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
                 at,
                 nearest,
                 made_by: None,
+                assumed: false,
             })
         })
         .collect()

@@ -61,6 +61,10 @@ impl ToolTable {
     }
 }
 
+/// The shortest edge of an insert's stated core ([`ToolTable::stated_core`]), mm: a sharp
+/// insert's core is its tip.
+const CORE_EDGE: f64 = 0.2;
+
 /// A cache key for the outline of tool `t` under `hint`.
 pub(crate) fn hint_key(t: u32, hint: ToolHint) -> (u32, u8, u64) {
     match hint {
@@ -106,6 +110,39 @@ impl ToolTable {
             _ => self.resolve(t, hint).1.is_none(),
         };
         ok && !self.assumed.contains(&entry)
+    }
+
+    /// The part of a guessed outline the table does state ([`ToolTable::size_stated`] is
+    /// false): for a turning insert whose nose radius is given but not its size, the nose
+    /// with edges as short as the nose allows — a part of the insert whatever its size;
+    /// `None` when nothing of the outline is stated (then only its reference point is).
+    pub fn stated_core(&self, t: u32, hint: ToolHint) -> Option<Outline> {
+        if hint != ToolHint::Table || self.size_stated(t, hint) {
+            return None;
+        }
+        let n = if t == 0 { *self.numbers().first()? } else { t };
+        if !self.noses.contains(&n) {
+            return None;
+        }
+        match self.get(n)?.clone() {
+            Tool::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                ..
+            } => Some(
+                Tool::Turning {
+                    insert,
+                    nose_radius,
+                    tip,
+                    entering_angle,
+                    edge: (2.0 * nose_radius).max(CORE_EDGE),
+                }
+                .outline(),
+            ),
+            _ => None,
+        }
     }
 
     /// The warning for an entry whose outline's size is assumed, once per tool.
