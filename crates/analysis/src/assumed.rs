@@ -11,7 +11,7 @@
 use crate::findings::Note;
 use expander::{Motion, Segment};
 use geom::flat::P;
-use stock::{float_sweep, move_path, Mounts, Shape, Tool, ToolTable};
+use stock::{float_sweep, move_path, Mounts, Outline, Shape, ToolTable};
 
 /// Shorter stretches of the path inside a region do not count as entering it, mm.
 const ENTERS: f64 = 1e-3;
@@ -210,6 +210,56 @@ pub(crate) fn enters_uncut(
     false
 }
 
+/// Whether the stated core of move `i`'s tool (`core`: an insert's nose, a blade's tip) cuts
+/// uncut stock on that move: its sweep less the blank's outside and the earlier moves'
+/// sweeps (those whose boxes meet it) has more than [`CORE_AREA`] left.
+pub(crate) fn core_enters_uncut(
+    i: usize,
+    core: &Outline,
+    segments: &[Segment],
+    blank: &[Shape],
+    mounts: &mut Mounts,
+    chord_tol: f64,
+) -> bool {
+    let as_shapes = |polys: Vec<Vec<P>>| -> Vec<Shape> {
+        polys
+            .into_iter()
+            .map(|outer| Shape {
+                outer,
+                holes: vec![],
+            })
+            .collect()
+    };
+    let swept = as_shapes(float_sweep(core, &move_path(&segments[i], chord_tol)));
+    let bb = geom::Rect::of(
+        swept
+            .iter()
+            .flat_map(|s| s.outer.iter().map(|&p| geom::Pt::from(p))),
+    );
+    let mut earlier = Vec::new();
+    for seg in &segments[..i] {
+        if seg.motion == Motion::Thread {
+            continue;
+        }
+        let m = mounts.of(seg);
+        let path = move_path(seg, chord_tol);
+        for part in [Some(&*m.edge), m.body.as_ref().map(|b| &b.outline)]
+            .into_iter()
+            .flatten()
+        {
+            earlier.extend(float_sweep(part, &path).into_iter().filter(|poly| {
+                geom::Rect::of(poly.iter().map(|&p| geom::Pt::from(p))).intersects(&bb)
+            }));
+        }
+    }
+    let inside = stock::boolean(&swept, blank, stock::BoolOp::Intersection);
+    let uncut = stock::boolean(&inside, &as_shapes(earlier), stock::BoolOp::Difference);
+    stock::area(&uncut) > CORE_AREA
+}
+
+/// Less of a stated core's sweep in uncut stock is no crash of its own, mm².
+const CORE_AREA: f64 = 1e-4;
+
 /// Whether the reference path of any move of a guessed tool enters `region` (a gouge: part
 /// material the intended part keeps) by more than [`ENTERS`].
 pub(crate) fn enters_region(
@@ -261,8 +311,8 @@ pub(crate) fn note(what: &str, depth: f64, seg: &Segment, tools: &ToolTable) -> 
         seg.tool
     };
     let tool = match tools.get(t) {
-        None => format!("the default {}", Tool::DEFAULT.describe()),
-        Some(_) => format!("the tool as assumed ({})", tools.describe(t)),
+        None => format!("the default {}", tools.describe_for(seg.tool, seg.hint)),
+        Some(_) => format!("as assumed ({})", tools.describe_for(seg.tool, seg.hint)),
     };
     Note {
         span: seg.span,

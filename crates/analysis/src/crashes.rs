@@ -104,14 +104,26 @@ pub(crate) fn mark_assumed(
         if !crate::assumed::guessed(s.tools, seg) {
             continue;
         }
+        let core = mounts.of(seg).core.clone();
         let certain = match c.obstacle {
-            None => crate::assumed::enters_uncut(
-                c.segment,
-                segments,
-                &s.blank.shapes,
-                &mut mounts,
-                chord_tol,
-            ),
+            None => {
+                crate::assumed::enters_uncut(
+                    c.segment,
+                    segments,
+                    &s.blank.shapes,
+                    &mut mounts,
+                    chord_tol,
+                ) || core.is_some_and(|core| {
+                    crate::assumed::core_enters_uncut(
+                        c.segment,
+                        &core,
+                        segments,
+                        &s.blank.shapes,
+                        &mut mounts,
+                        chord_tol,
+                    )
+                })
+            }
             Some(name) => s.fixture.is_some_and(|f| {
                 f.obstacles
                     .iter()

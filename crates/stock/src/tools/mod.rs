@@ -28,6 +28,8 @@ pub struct ToolTable {
     assumed: Vec<u32>,
     /// The turning entries whose nose radius the table states.
     noses: Vec<u32>,
+    /// The grooving entries whose width the table states.
+    widths: Vec<u32>,
 }
 
 impl ToolTable {
@@ -40,6 +42,7 @@ impl ToolTable {
     pub fn from_tools(tools: Vec<(u32, Tool)>) -> Self {
         Self {
             noses: tools.iter().map(|(t, _)| *t).collect(),
+            widths: tools.iter().map(|(t, _)| *t).collect(),
             tools,
             designations: Vec::new(),
             sizes: Vec::new(),
@@ -60,6 +63,11 @@ impl ToolTable {
             noses: entries
                 .iter()
                 .filter(|e| e.nose_stated)
+                .map(|e| e.t)
+                .collect(),
+            widths: entries
+                .iter()
+                .filter(|e| e.width_stated)
                 .map(|e| e.t)
                 .collect(),
             tools: entries.into_iter().map(|e| (e.t, e.tool)).collect(),

@@ -65,6 +65,15 @@ impl ToolTable {
 /// insert's core is its tip.
 const CORE_EDGE: f64 = 0.2;
 
+/// The tip of a blade whose width is known but not its reach: as deep as it is wide.
+fn blade_stub(b: GroovingBlade) -> Outline {
+    Tool::Grooving(GroovingBlade {
+        reach: b.reach.min(b.width),
+        ..b
+    })
+    .outline()
+}
+
 /// A cache key for the outline of tool `t` under `hint`.
 pub(crate) fn hint_key(t: u32, hint: ToolHint) -> (u32, u8, u64) {
     match hint {
@@ -117,10 +126,26 @@ impl ToolTable {
     /// with edges as short as the nose allows — a part of the insert whatever its size;
     /// `None` when nothing of the outline is stated (then only its reference point is).
     pub fn stated_core(&self, t: u32, hint: ToolHint) -> Option<Outline> {
-        if hint != ToolHint::Table || self.size_stated(t, hint) {
+        if self.size_stated(t, hint) {
             return None;
         }
+        if let ToolHint::Blade { .. } = hint {
+            // the program gives the blade's width (G75.1 I): its tip is stated
+            return match self.resolve(t, hint).0 {
+                Tool::Grooving(b) => Some(blade_stub(b)),
+                _ => None,
+            };
+        }
         let n = if t == 0 { *self.numbers().first()? } else { t };
+        if hint != ToolHint::Table {
+            return None;
+        }
+        if self.widths.contains(&n) {
+            return match self.get(n)?.clone() {
+                Tool::Grooving(b) => Some(blade_stub(b)),
+                _ => None,
+            };
+        }
         if !self.noses.contains(&n) {
             return None;
         }
@@ -143,6 +168,12 @@ impl ToolTable {
             ),
             _ => None,
         }
+    }
+
+    /// The tool that cuts for tool `t` under `hint`, described (a default's or a cycle's
+    /// blade's own description).
+    pub fn describe_for(&self, t: u32, hint: ToolHint) -> String {
+        self.resolve(t, hint).0.describe()
     }
 
     /// The warning for an entry whose outline's size is assumed, once per tool.
