@@ -13,6 +13,11 @@ use expander::{Motion, Segment};
 use geom::flat::P;
 use stock::{float_sweep, move_path, Mounts, Outline, Shape, ToolTable};
 
+/// Most findings of guessed tools tested for certainty in one run: each test is a pass over
+/// the moves before it; the findings after these stay possible (a program with that many is
+/// broken anyway, and the first ones say where).
+pub(crate) const MAX_TESTED: usize = 64;
+
 /// Shorter stretches of the path inside a region do not count as entering it, mm.
 const ENTERS: f64 = 1e-3;
 /// How far outside an earlier move's sweep a point still counts as swept, mm (float noise
@@ -35,27 +40,95 @@ fn section_chords(seg: &Segment, chord_tol: f64) -> Vec<[P; 2]> {
     path.windows(2).map(|w| [w[0], w[1]]).collect()
 }
 
-/// The parameter intervals (0 at `a`, 1 at `b`) of the chord inside `shapes` (non-zero for
-/// each shape's outer ring less its holes; shapes do not overlap).
-fn inside(a: P, b: P, shapes: &[Shape]) -> Vec<(f64, f64)> {
-    let mut ts = vec![0.0, 1.0];
-    for ring in shapes
-        .iter()
-        .flat_map(|s| std::iter::once(&s.outer).chain(&s.holes))
-    {
-        for k in 0..ring.len() {
-            if let Some(t) = crossing(a, b, ring[k], ring[(k + 1) % ring.len()]) {
-                ts.push(t);
+/// The edges of a shape set, binned along Z: a chord meets only the edges of the bins its
+/// Z span covers, and a point's vertical ray only those of its own bin (a gouge along a
+/// G73's contour has thousands of edges, and every pass's chords ask).
+pub(crate) struct Region {
+    edges: Vec<[P; 2]>,
+    z0: f64,
+    dz: f64,
+    bins: Vec<Vec<u32>>,
+}
+
+impl Region {
+    pub(crate) fn new(shapes: &[Shape]) -> Self {
+        let edges: Vec<[P; 2]> = shapes
+            .iter()
+            .flat_map(|s| std::iter::once(&s.outer).chain(&s.holes))
+            .flat_map(|ring| (0..ring.len()).map(move |k| [ring[k], ring[(k + 1) % ring.len()]]))
+            .collect();
+        let (z0, z1) = edges
+            .iter()
+            .flatten()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p[0]), hi.max(p[0]))
+            });
+        let n = (edges.len() / 4).clamp(1, 4096);
+        let dz = ((z1 - z0) / n as f64).max(1e-9);
+        let mut r = Self {
+            edges,
+            z0,
+            dz,
+            bins: vec![Vec::new(); n],
+        };
+        for (k, [u, v]) in r.edges.iter().enumerate() {
+            for b in r.bin_range(u[0].min(v[0]), u[0].max(v[0])) {
+                r.bins[b].push(k as u32);
             }
         }
+        r
     }
-    ts.sort_by(f64::total_cmp);
-    ts.dedup();
-    let at = |t: f64| [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
-    ts.windows(2)
-        .filter(|w| w[1] > w[0] && shapes.iter().any(|s| contains(s, at((w[0] + w[1]) / 2.0))))
-        .map(|w| (w[0], w[1]))
-        .collect()
+
+    /// The bins a Z span covers (empty outside the set's Z extent).
+    fn bin_range(&self, lo: f64, hi: f64) -> std::ops::Range<usize> {
+        let n = self.bins.len();
+        if !(hi >= self.z0 && lo <= self.z0 + self.dz * n as f64) {
+            return 0..0;
+        }
+        let at = |z: f64| (((z - self.z0) / self.dz).floor().max(0.0) as usize).min(n - 1);
+        at(lo)..at(hi) + 1
+    }
+
+    /// Even-odd containment: the crossings of the ray from `p` toward +r.
+    fn contains(&self, p: P) -> bool {
+        let mut c = false;
+        for b in self.bin_range(p[0], p[0]) {
+            for &k in &self.bins[b] {
+                let [u, v] = self.edges[k as usize];
+                if (u[0] > p[0]) != (v[0] > p[0])
+                    && p[1] < u[1] + (p[0] - u[0]) * (v[1] - u[1]) / (v[0] - u[0])
+                {
+                    c = !c;
+                }
+            }
+        }
+        c
+    }
+
+    /// The parameter intervals (0 at `a`, 1 at `b`) of the chord inside the set.
+    fn inside(&self, a: P, b: P) -> Vec<(f64, f64)> {
+        let mut ts = vec![0.0, 1.0];
+        let mut seen = Vec::new();
+        for bin in self.bin_range(a[0].min(b[0]), a[0].max(b[0])) {
+            for &k in &self.bins[bin] {
+                if seen.contains(&k) {
+                    continue;
+                }
+                seen.push(k);
+                let [p, q] = self.edges[k as usize];
+                if let Some(t) = crossing(a, b, p, q) {
+                    ts.push(t);
+                }
+            }
+        }
+        ts.sort_by(f64::total_cmp);
+        ts.dedup();
+        let at = |t: f64| [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
+        ts.windows(2)
+            .filter(|w| w[1] > w[0] && self.contains(at((w[0] + w[1]) / 2.0)))
+            .map(|w| (w[0], w[1]))
+            .collect()
+    }
 }
 
 /// Where the chord `a → b` crosses the edge `p → q`, as a parameter of the chord.
@@ -70,23 +143,6 @@ fn crossing(a: P, b: P, p: P, q: P) -> Option<f64> {
     let t = (w[0] * e[1] - w[1] * e[0]) / den;
     let u = (w[0] * d[1] - w[1] * d[0]) / den;
     ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u)).then_some(t)
-}
-
-/// Even-odd containment in a shape (its outer ring, none of its holes).
-fn contains(s: &Shape, p: P) -> bool {
-    let inside = |ring: &[P]| {
-        let mut c = false;
-        for k in 0..ring.len() {
-            let (u, v) = (ring[k], ring[(k + 1) % ring.len()]);
-            if (u[1] > p[1]) != (v[1] > p[1])
-                && p[0] < u[0] + (p[1] - u[1]) * (v[0] - u[0]) / (v[1] - u[1])
-            {
-                c = !c;
-            }
-        }
-        c
-    };
-    inside(&s.outer) && !s.holes.iter().any(|h| inside(h))
 }
 
 /// The parameter interval of the chord `a → b` inside the convex polygon `poly` (either
@@ -165,8 +221,9 @@ pub(crate) fn enters_uncut(
     mounts: &mut Mounts,
     chord_tol: f64,
 ) -> bool {
+    let blank = Region::new(blank);
     for [a, b] in section_chords(&segments[i], chord_tol) {
-        let spans = inside(a, b, blank);
+        let spans = blank.inside(a, b);
         if spans.is_empty() {
             continue;
         }
@@ -260,40 +317,24 @@ pub(crate) fn core_enters_uncut(
 /// Less of a stated core's sweep in uncut stock is no crash of its own, mm².
 const CORE_AREA: f64 = 1e-4;
 
-/// Whether the reference path of any move of a guessed tool enters `region` (a gouge: part
-/// material the intended part keeps) by more than [`ENTERS`].
-pub(crate) fn enters_region(
-    region: &Shape,
-    segments: &[Segment],
-    tools: &ToolTable,
-    chord_tol: f64,
-) -> bool {
-    let bb = geom::Rect::of(region.outer.iter().map(|&p| geom::Pt::from(p)));
-    segments.iter().filter(|s| guessed(tools, s)).any(|s| {
-        let path_box = geom::Rect::of([s.from, s.to]);
-        let bulge = s.arc.map_or(0.0, |c| c.center.dist(s.from));
-        let folded = geom::Rect::new(
-            geom::Pt::new(path_box.min.z - bulge, 0.0),
-            geom::Pt::new(
-                path_box.max.z + bulge,
-                path_box.max.r.abs().max(path_box.min.r.abs()) + bulge,
-            ),
-        );
-        folded.intersects(&bb)
-            && section_chords(s, chord_tol).into_iter().any(|[a, b]| {
-                let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
-                let spans = inside(a, b, std::slice::from_ref(region));
-                spans.iter().map(|(t0, t1)| t1 - t0).sum::<f64>() * len > ENTERS
-            })
-    })
+/// The box of `seg`'s reference path as the section sees it (folded, arcs' bulge
+/// included).
+pub(crate) fn path_box(s: &Segment) -> geom::Rect {
+    let b = geom::Rect::of([s.from, s.to]);
+    let bulge = s.arc.map_or(0.0, |c| c.center.dist(s.from));
+    geom::Rect::new(
+        geom::Pt::new(b.min.z - bulge, 0.0),
+        geom::Pt::new(b.max.z + bulge, b.max.r.abs().max(b.min.r.abs()) + bulge),
+    )
 }
 
-/// Whether `seg`'s reference path enters `shapes` (a piece of workholding) by more than
-/// [`ENTERS`].
-pub(crate) fn enters_shapes(seg: &Segment, shapes: &[Shape], chord_tol: f64) -> bool {
+/// Whether `seg`'s reference path enters `region` (a gouge: part material the intended part
+/// keeps; a piece of workholding) by more than [`ENTERS`].
+pub(crate) fn path_enters(seg: &Segment, region: &Region, chord_tol: f64) -> bool {
     section_chords(seg, chord_tol).into_iter().any(|[a, b]| {
         let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
-        inside(a, b, shapes)
+        region
+            .inside(a, b)
             .iter()
             .map(|(t0, t1)| t1 - t0)
             .sum::<f64>()
@@ -342,7 +383,7 @@ mod tests {
         let mut s = square(0.0, 0.0, 10.0);
         s.holes
             .push(vec![[4.0, 4.0], [4.0, 6.0], [6.0, 6.0], [6.0, 4.0]]);
-        let spans = inside([-5.0, 5.0], [15.0, 5.0], &[s]);
+        let spans = Region::new(&[s]).inside([-5.0, 5.0], [15.0, 5.0]);
         let total: f64 = spans.iter().map(|(a, b)| b - a).sum::<f64>() * 20.0;
         assert!((total - 8.0).abs() < 1e-12, "{spans:?}");
         let (lo, hi) =

@@ -99,9 +99,16 @@ pub(crate) fn mark_assumed(
 ) -> Vec<Note> {
     let mut mounts = stock::Mounts::new(s.tools, rear.to_vec());
     let mut notes = Vec::new();
+    let mut tested = 0;
     for c in crashes.iter_mut() {
         let seg = &segments[c.segment];
         if !crate::assumed::guessed(s.tools, seg) {
+            continue;
+        }
+        tested += 1;
+        if tested > crate::assumed::MAX_TESTED {
+            c.assumed = true;
+            notes.push(crate::assumed::note("crash", c.depth, seg, s.tools));
             continue;
         }
         let core = mounts.of(seg).core.clone();
@@ -125,10 +132,10 @@ pub(crate) fn mark_assumed(
                 })
             }
             Some(name) => s.fixture.is_some_and(|f| {
-                f.obstacles
-                    .iter()
-                    .filter(|o| o.name == name)
-                    .any(|o| crate::assumed::enters_shapes(seg, &o.shapes, chord_tol))
+                f.obstacles.iter().filter(|o| o.name == name).any(|o| {
+                    let region = crate::assumed::Region::new(&o.shapes);
+                    crate::assumed::path_enters(seg, &region, chord_tol)
+                })
             }),
         };
         if !certain {

@@ -129,14 +129,31 @@ pub fn deviation(
         .partition(|g| cut_later(g, intents, segments, tools, &world_box));
     out.gouges = gouges;
     out.later_cuts = later;
-    for g in &mut out.gouges {
-        g.assumed = g.made_by.is_some_and(|i| {
-            crate::assumed::guessed(tools, &segments[i])
-                && !blame::core_sweeps_over(&g.shape, segments, &mut mounts, chord_tol)
-                && !crate::assumed::enters_region(&g.shape, segments, tools, chord_tol)
-        });
-    }
+    mark_assumed(&mut out.gouges, segments, &mut mounts, chord_tol);
     out
+}
+
+/// Marks the gouges made by a guessed tool that only its assumed extent explains as
+/// possible (the first [`crate::assumed::MAX_TESTED`] of them are tested, the rest stay
+/// possible).
+fn mark_assumed(gouges: &mut [Finding], segments: &[Segment], mounts: &mut Mounts, chord_tol: f64) {
+    let guessed: Vec<usize> = (0..gouges.len())
+        .filter(|&g| {
+            gouges[g]
+                .made_by
+                .is_some_and(|i| crate::assumed::guessed(mounts.tools(), &segments[i]))
+        })
+        .collect();
+    let tested = &guessed[..guessed.len().min(crate::assumed::MAX_TESTED)];
+    let regions: Vec<&Shape> = tested.iter().map(|&g| &gouges[g].shape).collect();
+    let from: Vec<usize> = tested
+        .iter()
+        .map(|&g| gouges[g].made_by.unwrap_or(0))
+        .collect();
+    let certain = blame::certain(&regions, &from, segments, mounts, chord_tol);
+    for (k, &g) in guessed.iter().enumerate() {
+        gouges[g].assumed = !certain.get(k).copied().unwrap_or(false);
+    }
 }
 
 /// Whether the gouge `g` was made by a feed move of a blade, drill or threading tool other
