@@ -74,6 +74,29 @@ fn tool_line(tools: &stock::ToolTable, t: u32) -> String {
     }
 }
 
+/// The setup sheet's tools: each tool of the moves in order of first use, with its offsets,
+/// what it is, its ISO designation and its times.
+fn tool_list(
+    tools: &stock::ToolTable,
+    times: &expander::timing::Times,
+    offsets: &[(u32, u32)],
+) -> Vec<render::ToolEntry> {
+    let cut = |t: u32| times.cutting.iter().find(|c| c.0 == t).map_or(0.0, |c| c.1);
+    times
+        .per_tool
+        .iter()
+        .map(|&(t, secs)| render::ToolEntry {
+            number: t,
+            offsets: offsets.iter().filter(|o| o.0 == t).map(|o| o.1).collect(),
+            description: tools.get(t).unwrap_or(&stock::Tool::DEFAULT).describe(),
+            designation: tools.designation(t).map(str::to_string),
+            assumed: tools.get(t).is_none(),
+            time_s: secs,
+            cut_time_s: cut(t),
+        })
+        .collect()
+}
+
 /// A removal crash as the report shows it.
 fn stock_crash(loaded: &Loaded, c: &stock::Crash) -> Crash {
     crash_at(loaded, c.segment, c.at, c.area, c.depth, c.body)
@@ -210,6 +233,7 @@ pub(crate) fn add_crashes(
         .map(|(edge, body)| render::ToolOutline { edge, body })
         .collect();
     report.tool_runs = runs;
+    report.stick_out_mm = fixture.and_then(|f| f.stick_out);
     if let Some(so) = fixture.and_then(|f| f.stick_out) {
         // "stick-out 15 mm", "stick-out 69.5 mm": three decimals, trailing zeros cut
         let n = format!("{so:.3}");
@@ -390,6 +414,7 @@ pub(crate) fn build(
             .collect(),
         variables: tp.variables.clone(),
         line_counts: tp.line_counts.clone(),
+        tool_list: tool_list(tools, times, &tp.tool_offsets),
         ..Report::default()
     }
 }
