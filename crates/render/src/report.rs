@@ -239,6 +239,32 @@ pub struct Report {
     pub tool_runs: Vec<(usize, usize)>,
     /// The outcome, as the analysis decided it.
     pub verdict: Verdict,
+    /// The tools for the HTML page's setup sheet, in order of first use; empty: the sheet
+    /// lists [`Report::tools`] instead (the CLI fills it). Not in the JSON.
+    pub tool_list: Vec<ToolEntry>,
+    /// The blank's stick-out from the chuck jaws' front, mm; `None`: no chuck given.
+    /// Not in the JSON (its stock description says it).
+    pub stick_out_mm: Option<f64>,
+}
+
+/// One tool as the setup sheet lists it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ToolEntry {
+    /// T number; 0: the tool that cuts before the program's first T word.
+    pub number: u32,
+    /// The offset numbers the program called it with (`T0101` → 1), in order of first use.
+    pub offsets: Vec<u32>,
+    /// What it is, e.g. `turning C 80°, r0.8, tip 3, κr 95°`.
+    pub description: String,
+    /// The ISO designations the tool table gave it by, e.g. `CNMG 120408 in PCLNR 2525M12`.
+    pub designation: Option<String>,
+    /// The tool table does not state its size (no entry: the default tool; an insert with
+    /// no edge nor ISO designation): its outline is assumed.
+    pub assumed: bool,
+    /// The time of all its moves, s.
+    pub time_s: f64,
+    /// The time of its cutting (feed and thread) moves, s.
+    pub cut_time_s: f64,
 }
 
 /// A tool's outline relative to its reference point, `[z, r]`: the cutting outline and the

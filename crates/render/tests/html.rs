@@ -62,7 +62,7 @@ fn page_is_self_contained_with_slider_and_picture() {
     assert!(page.contains(r#"<canvas id="ls-canvas""#));
     assert!(page.contains(r#"id="ls-label""#));
     // Exactly two scripts: the data and the player (inline).
-    assert_eq!(page.matches("<script").count(), 2);
+    assert_eq!(page.matches("<script").count(), 3);
     assert!(page.contains("<script>\n"));
     assert!(page.contains("keydown"));
     assert!(page.contains("move="));
@@ -118,9 +118,9 @@ fn text_is_escaped() {
         message: "</script><script>alert(2)</script>".into(),
     });
     let page = render::html(&r);
-    // Only our own two script elements.
-    assert_eq!(page.matches("<script").count(), 2);
-    assert_eq!(page.matches("</script>").count(), 2);
+    // Only our own three script elements (data, player, 3D view).
+    assert_eq!(page.matches("<script").count(), 3);
+    assert_eq!(page.matches("</script>").count(), 3);
     assert!(page.contains("&lt;script&gt;alert(1)&lt;/script&gt;.nc"));
     assert!(page.contains("bar &amp; &lt;b&gt;bold&lt;/b&gt;"));
     assert!(page.contains("<code>W-&lt;x&gt;</code>"));

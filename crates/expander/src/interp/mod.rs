@@ -104,6 +104,9 @@ pub struct Toolpath {
     pub variables: Vec<(String, Option<f64>)>,
     /// Custom macro B: the source lines executed more than once, with how many times.
     pub line_counts: Vec<(u32, u64)>,
+    /// The tool offsets the T words called, `(tool, offset)` in order of first use
+    /// (`T0101` → `(1, 1)`; offset 00, a cancel, left out): the setup sheet's offsets.
+    pub tool_offsets: Vec<(u32, u32)>,
 }
 
 /// Expand a parsed program into segments.
