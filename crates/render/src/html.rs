@@ -520,6 +520,11 @@ fn crash_table(out: &mut String, id: &str, title: &str, list: &[Crash]) {
             None if c.body.is_some() => format!("{part} in stock"),
             None => "rapid in stock".to_string(),
         };
+        let what = if c.assumed {
+            format!("possible: {what} (tool size assumed)")
+        } else {
+            what
+        };
         let _ = writeln!(
             out,
             "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
@@ -549,18 +554,24 @@ fn gouge_table(out: &mut String, list: &[Gouge]) {
         out.push_str("<p class=\"none\">none</p>\n");
         return;
     }
-    out.push_str("<table class=\"list gouge\"><thead><tr><th>line</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th></tr></thead><tbody>\n");
+    out.push_str("<table class=\"list gouge\"><thead><tr><th>line</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>certainty</th></tr></thead><tbody>\n");
     for (i, g) in list.iter().take(MAX_ROWS).enumerate() {
+        let certainty = if g.assumed {
+            "possible: tool size assumed, not in the verdict"
+        } else {
+            "certain"
+        };
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
+            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
             g.line,
             extra(i),
             g.line,
             pos(g.z),
             pos(2.0 * g.r),
             esc(&quantity(g.area_mm2)),
-            pos(g.depth_mm)
+            pos(g.depth_mm),
+            certainty
         );
     }
     out.push_str("</tbody></table>\n");

@@ -29,10 +29,12 @@ pub(super) const SCRIPT: &str = include_str!("solid.js");
 /// merge distance, the finest the section is kept at.
 pub(super) fn data(out: &mut String, report: &Report, md: f64) {
     out.push_str("\"solid\":{");
+    // a possible gouge (an assumed tool's) is not coloured on the solid
+    let (_, certain) = crate::plot::gouges_by_certainty(report);
     let layers = [
         ("part", &report.final_part, PART_POINTS),
         ("blank", &report.stock.shapes, BLANK_POINTS),
-        ("gouges", &report.gouge_shapes, FINDING_POINTS),
+        ("gouges", &certain, FINDING_POINTS),
         ("leftovers", &report.leftovers, FINDING_POINTS),
     ];
     for (i, (key, shapes, cap)) in layers.into_iter().enumerate() {
@@ -60,8 +62,16 @@ pub(super) fn section(out: &mut String, report: &Report) {
     out.push_str("<p class=\"legend\">");
     key(out, "background:#9eadc2", "final part");
     key(out, "background:#ccc2a8", "cut face");
-    if !report.gouge_shapes.is_empty() {
+    let (possible, certain) = crate::plot::gouges_by_certainty(report);
+    if !certain.is_empty() {
         key(out, &format!("background:{}", colour::GOUGE), "gouge");
+    }
+    if !possible.is_empty() {
+        key(
+            out,
+            "background:#ffffff;border:1px dashed #a31515",
+            "possible gouge (tool size assumed): not coloured",
+        );
     }
     if !report.leftovers.is_empty() {
         key(out, &format!("background:{}", colour::LEFTOVER), "leftover");
