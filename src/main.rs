@@ -13,6 +13,7 @@ mod input;
 mod job;
 mod library;
 mod report;
+mod rerun;
 mod run;
 mod write;
 

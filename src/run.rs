@@ -324,7 +324,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         }
     };
     let settings = job.settings(args.tol);
-    let (mut sim, findings) = analysis::pipeline(
+    let (mut sim, mut findings) = analysis::pipeline(
         &job.loaded.toolpath,
         &job.intents,
         &settings,
@@ -334,6 +334,11 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
+    let rerun = crate::rerun::Rerunner {
+        job: &job,
+        tol: args.tol,
+    };
+    analysis::diagnose::diagnose(&mut findings, &job.loaded.toolpath, &settings, &rerun);
     // the player does not show the stock the intents were read against (the epoch
     // snapshots of a long program are labelled with their own counts, not the marks)
     let stock_marks = analysis::stock_marks(&job.loaded.toolpath, &job.tools);
@@ -484,6 +489,7 @@ fn print_findings(name: &str, places: &Places, report: &render::Report) {
             c.depth_mm,
             c.area_mm2
         );
+        print_why(c.cause.as_ref(), c.remedy.as_ref());
     }
     for (g, at) in report.gouges.iter().zip(&places.gouges).take(MAX_PRINTED) {
         let kind = if g.assumed {
@@ -498,6 +504,7 @@ fn print_findings(name: &str, places: &Places, report: &render::Report) {
             g.z,
             2.0 * g.r
         );
+        print_why(g.cause.as_ref(), g.remedy.as_ref());
     }
     for (what, n) in [
         ("crash(es)", report.crashes.len()),
@@ -509,6 +516,16 @@ fn print_findings(name: &str, places: &Places, report: &render::Report) {
                 n - MAX_PRINTED
             );
         }
+    }
+}
+
+/// The cause and the checked remedy of a finding, indented under its line.
+fn print_why(cause: Option<&render::Cause>, remedy: Option<&render::Remedy>) {
+    if let Some(c) = cause {
+        eprintln!("    why: {}", c.text);
+    }
+    if let Some(r) = remedy {
+        eprintln!("    fix (checked by re-running): {}", r.text);
     }
 }
 

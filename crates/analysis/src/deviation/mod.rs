@@ -34,6 +34,10 @@ pub struct Finding {
     /// that made it cuts with an outline the table does not state, and the tool's
     /// reference point alone does not enter the region. No effect on the verdict.
     pub assumed: bool,
+    /// Why it happened ([`crate::diagnose`]); `None` before the diagnosis.
+    pub cause: Option<crate::Cause>,
+    /// How to fix it, checked by simulating the fix; `None` when none was found.
+    pub remedy: Option<crate::Remedy>,
 }
 
 /// Gouges and leftovers beyond the tolerance.
@@ -263,6 +267,8 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
                 nearest,
                 made_by: None,
                 assumed: false,
+                cause: None,
+                remedy: None,
             })
         })
         .collect()
