@@ -356,6 +356,37 @@ pub(crate) fn path_enters(seg: &Segment, region: &Region, chord_tol: f64) -> boo
     })
 }
 
+/// How near a gouge a point of the reference path that enters the intended part must lie
+/// to have made it, mm: an imaginary tip stands off its nose's cut by r(√2 − 1), 0.25 mm
+/// for a nose up to r0.6.
+const NEAR_GOUGE: f64 = 0.25;
+
+/// Whether `seg`'s reference path enters the intended `part` (deeper than [`ENTER_DEPTH`])
+/// where it touches the gouge `region` (within [`NEAR_GOUGE`]): the programmed point itself
+/// goes into the part there, whatever the tool. The path runs on the edge of what its tool
+/// removed (a tip on a straight cut bounds the cut), so entering the gouge region itself
+/// is not the test. Each stretch inside the part is looked at in up to 64 points.
+pub(crate) fn path_enters_part_at(
+    seg: &Segment,
+    part: &Region,
+    region: &Region,
+    chord_tol: f64,
+) -> bool {
+    section_chords(seg, chord_tol).into_iter().any(|[a, b]| {
+        let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
+        part.inside(a, b).into_iter().any(|(t0, t1)| {
+            let n = (((t1 - t0) * len / 0.05).ceil() as usize).clamp(1, 64);
+            (t1 - t0) * len > ENTERS
+                && (0..=n).any(|k| {
+                    let t = t0 + (t1 - t0) * k as f64 / n as f64;
+                    let p = [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
+                    part.depth_at(p, ENTER_DEPTH) >= ENTER_DEPTH
+                        && (region.contains(p) || region.depth_at(p, NEAR_GOUGE) < NEAR_GOUGE)
+                })
+        })
+    })
+}
+
 /// The places where `seg`'s reference path runs inside `region` (stretches longer than
 /// [`ENTERS`]), each with its depth there (the distance to the region's edges, up to
 /// `cap`): (midpoint, depth).

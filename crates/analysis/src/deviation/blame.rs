@@ -51,17 +51,19 @@ pub(super) fn blame(
 /// Which of `regions` (gouges of guessed tools) do not depend on what the table leaves out
 /// (spec/simulation.md, "Findings from assumed tools"): those the stated core of a guessed
 /// tool (`stock::Mounted::core`: an insert's nose, a blade's tip) sweeps over on some move,
-/// or whose reference path enters them ([`crate::assumed`]). One pass over the moves for
-/// all of them; each move's path and core sweep made once, where a region's box is near.
-/// `from[g]`: the move that made region `g` (the first whose sweep overlaps it): no move
-/// before it can have entered it.
+/// or where the reference path enters the intended `part` ([`crate::assumed`]). One pass
+/// over the moves for all of them; each move's path and core sweep made once, where a
+/// region's box is near. `from[g]`: the move that made region `g` (the first whose sweep
+/// overlaps it): no move before it can have entered it.
 pub(crate) fn certain(
     regions: &[&Shape],
     from: &[usize],
+    part: &[Shape],
     segments: &[Segment],
     mounts: &mut Mounts,
     chord_tol: f64,
 ) -> Vec<bool> {
+    let part = crate::assumed::Region::new(part);
     let boxes: Vec<Rect> = regions.iter().map(|r| Rect::of(pts(&r.outer))).collect();
     let indexes: Vec<crate::assumed::Region> = regions
         .iter()
@@ -99,7 +101,7 @@ pub(crate) fn certain(
             let by_core = core
                 .as_ref()
                 .is_some_and(|sweep| overlaps(regions[g], &boxes[g], sweep));
-            if by_core || crate::assumed::path_enters(seg, &indexes[g], chord_tol) {
+            if by_core || crate::assumed::path_enters_part_at(seg, &part, &indexes[g], chord_tol) {
                 certain[g] = true;
                 open.retain(|&o| o != g);
             }

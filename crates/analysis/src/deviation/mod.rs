@@ -133,14 +133,20 @@ pub fn deviation(
         .partition(|g| cut_later(g, intents, segments, tools, &world_box));
     out.gouges = gouges;
     out.later_cuts = later;
-    mark_assumed(&mut out.gouges, segments, &mut mounts, chord_tol);
+    mark_assumed(&mut out.gouges, &part, segments, &mut mounts, chord_tol);
     out
 }
 
 /// Marks the gouges made by a guessed tool that only its assumed extent explains as
 /// possible (the first [`crate::assumed::MAX_TESTED`] of them are tested, the rest stay
 /// possible).
-fn mark_assumed(gouges: &mut [Finding], segments: &[Segment], mounts: &mut Mounts, chord_tol: f64) {
+fn mark_assumed(
+    gouges: &mut [Finding],
+    part: &[Shape],
+    segments: &[Segment],
+    mounts: &mut Mounts,
+    chord_tol: f64,
+) {
     let guessed: Vec<usize> = (0..gouges.len())
         .filter(|&g| {
             gouges[g]
@@ -154,7 +160,7 @@ fn mark_assumed(gouges: &mut [Finding], segments: &[Segment], mounts: &mut Mount
         .iter()
         .map(|&g| gouges[g].made_by.unwrap_or(0))
         .collect();
-    let certain = blame::certain(&regions, &from, segments, mounts, chord_tol);
+    let certain = blame::certain(&regions, &from, part, segments, mounts, chord_tol);
     for (k, &g) in guessed.iter().enumerate() {
         gouges[g].assumed = !certain.get(k).copied().unwrap_or(false);
     }
