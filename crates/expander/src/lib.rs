@@ -8,7 +8,7 @@
 //! assert_eq!(tp.segments.last().unwrap().to, expander::Pt::new(-20.0, 20.0));
 //! ```
 mod alarm;
-pub mod arc;
+mod arc;
 mod codes;
 mod corner;
 mod cycles;
@@ -18,14 +18,12 @@ mod library;
 mod machine;
 mod mcodes;
 pub mod timing;
-pub mod tnrc;
-pub mod toolpath;
+mod tnrc;
+mod toolpath;
 mod words;
-pub mod workholding;
+mod workholding;
 
 pub use alarm::Diagnostic;
-pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
-pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
 pub use library::{Library, LibraryRef};
 pub use machine::{

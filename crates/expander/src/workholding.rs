@@ -20,13 +20,13 @@
 use toml::Spanned;
 
 /// Default radial height of hard jaws above the gripped diameter, mm.
-pub const DEFAULT_JAW: f64 = 25.0;
+pub(crate) const DEFAULT_JAW: f64 = 25.0;
 /// Default chuck body length behind the face, mm.
-pub const DEFAULT_DEPTH: f64 = 100.0;
+pub(crate) const DEFAULT_DEPTH: f64 = 100.0;
 /// Default quill diameter of the tailstock, mm.
-pub const DEFAULT_QUILL: f64 = 40.0;
+pub(crate) const DEFAULT_QUILL: f64 = 40.0;
 /// Default quill length behind the centre's cone, mm.
-pub const DEFAULT_QUILL_LENGTH: f64 = 150.0;
+pub(crate) const DEFAULT_QUILL_LENGTH: f64 = 150.0;
 /// Largest length or coordinate accepted, mm (no lathe travels 10 m).
 const MAX_MM: f64 = 10_000.0;
 

@@ -34,6 +34,7 @@
 
 use super::contour::{self, FinishingShape};
 use super::{passes, Cycle, Move, Output};
+use crate::codes::G72;
 use crate::{Control, Diagnostic, Pt, Span};
 
 /// Most layers one cycle may cut (a microscopic Δd is an error, not a hang).
@@ -60,7 +61,7 @@ struct Removal {
 
 /// Expand one G71 or G72 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
-    let g72 = c.code == 720;
+    let g72 = c.code == G72;
     let haas = c.machine.control == Control::Haas;
     if !c.words.has('P') && !c.words.has('Q') {
         if haas || c.words.has('D') {
@@ -163,7 +164,7 @@ fn code_name(g72: bool) -> &'static str {
 
 /// The alarm for a first block (`G71 U R`) under a control that has only the one-block form.
 fn one_block_only(c: &Cycle) -> Diagnostic {
-    let g72 = c.code == 720;
+    let g72 = c.code == G72;
     c.alarm(
         "LS-ONE-BLOCK-FORM",
         format!(

@@ -22,7 +22,7 @@ mod section;
 
 /// Which side of the contour the tool keeps, looking along the direction of travel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Side {
+pub(crate) enum Side {
     /// G41.
     Left,
     /// G42.
@@ -31,7 +31,7 @@ pub enum Side {
 
 /// The nose of a tool offset: radius and imaginary tip number (FANUC numbering).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Nose {
+pub(crate) struct Nose {
     /// Nose radius, mm.
     pub radius: f64,
     /// Imaginary tip number 0–9.
@@ -40,7 +40,7 @@ pub struct Nose {
 
 impl Nose {
     /// The vector from the nose centre to the imaginary tip, (z, r) (spec/tnrc.md table).
-    pub fn tip_vector(&self) -> Pt {
+    pub(crate) fn tip_vector(&self) -> Pt {
         let r = self.radius;
         match self.tip {
             1 => Pt::new(r, r),

@@ -7,7 +7,7 @@ use geom::arc::Arc;
 
 /// How one corner of the groove is broken.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub enum Corner {
+pub(crate) enum Corner {
     /// A sharp corner.
     #[default]
     Sharp,
@@ -19,7 +19,7 @@ pub enum Corner {
 /// The G75.1 groove as drawn: mouth corner P1, depth, floor width, flank angles, mouth
 /// slope and the four corners (mouth start, mouth far, floor start, floor far).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Trapezoid {
+pub(crate) struct Trapezoid {
     /// P1, the mouth corner on the start side, G54 frame (z, r).
     pub start: Pt,
     /// H: depth mouth to floor, diameter, signed (sign = X infeed direction).
@@ -306,18 +306,12 @@ impl Trapezoid {
 
     /// The groove as a closed ring in (z, r): the finishing contour with its chamfers and
     /// rounds (arcs chorded within `chord_tol` mm), closed along the mouth line.
-    pub fn ring(&self, chord_tol: f64) -> Result<Vec<Pt>, String> {
+    pub(crate) fn ring(&self, chord_tol: f64) -> Result<Vec<Pt>, String> {
         let k = self.contour()?;
         let mut ring = vec![k.first];
         chord(k.first, &k.els, chord_tol, &mut ring);
         Ok(ring.into_iter().map(|q| self.to_pt(q)).collect())
     }
-}
-
-/// The G75.1 groove's intended shape as a closed ring in (z, r) (arcs chorded within
-/// `chord_tol` mm), or why the words do not make a groove.
-pub fn groove_shape(t: &Trapezoid, chord_tol: f64) -> Result<Vec<Pt>, String> {
-    t.ring(chord_tol)
 }
 
 pub(super) fn tan_deg(a: f64) -> f64 {
