@@ -339,16 +339,7 @@ pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
                 .map_err(|e| e.diagnostic(g_span))?
         }
         Form::OneBlock if !c.machine.one_block_cycles() => {
-            let w = block.get('K').or_else(|| block.get('D'));
-            return Err(Diagnostic::new(
-                w.map_or(g_span, |w| w.span),
-                "LS-ONE-BLOCK-FORM",
-                format!(
-                    "G76 with K and D in one block is the Haas/FS15 form: run with --control haas (this control is {})",
-                    c.machine.control.key()
-                ),
-                "write the two-block form G76 P(m)(r)(a) Q R / G76 X Z R P Q F, or run with --control haas (FANUC with the FS15 format: fs15_format = true)",
-            ));
+            return Err(one_block_refused(c, g_span));
         }
         Form::OneBlock => {
             let h = c.machine.haas;
@@ -376,16 +367,36 @@ pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
         ..super::Output::default()
     };
     if first_depth_exceeds_height(&params) {
-        out.warnings.push(c.alarm(
-            "LS-G76-DEPTH",
-            format!(
-                "the first depth {:.4} mm is larger than the thread height {:.4} mm: one rough pass at the height less d",
-                params.dd, params.k
-            ),
-            "check the first depth and the height (swapped?)",
-        ));
+        out.warnings.push(first_depth_warning(c, &params));
     }
     Ok(out)
+}
+
+/// The one-block G76 under a control that reads only the two-block form.
+fn one_block_refused(c: &super::Cycle, g_span: Span) -> Diagnostic {
+    let block = c.words.block;
+    let w = block.get('K').or_else(|| block.get('D'));
+    Diagnostic::new(
+        w.map_or(g_span, |w| w.span),
+        "LS-ONE-BLOCK-FORM",
+        format!(
+            "G76 with K and D in one block is the Haas/FS15 form: run with --control haas (this control is {})",
+            c.machine.control.key()
+        ),
+        "write the two-block form G76 P(m)(r)(a) Q R / G76 X Z R P Q F, or run with --control haas (FANUC with the FS15 format: fs15_format = true)",
+    )
+}
+
+/// A first depth larger than the thread height cuts one rough pass at the height less d.
+fn first_depth_warning(c: &super::Cycle, params: &G76Params) -> Diagnostic {
+    c.alarm(
+        "LS-G76-DEPTH",
+        format!(
+            "the first depth {:.4} mm is larger than the thread height {:.4} mm: one rough pass at the height less d",
+            params.dd, params.k
+        ),
+        "check the first depth and the height (swapped?)",
+    )
 }
 
 #[cfg(test)]

@@ -233,67 +233,20 @@ pub(crate) fn read_one_block<'w>(
     };
     let kw = get('K');
     let dw = get('D');
-    let k = length('K', kw)?.ok_or_else(|| {
-        G76Error::new(
-            G76ErrorKind::Missing {
-                what: "the thread height, radius",
-            },
-            At::letter('K'),
-        )
-    })?;
-    let dd = length('D', dw)?.ok_or_else(|| {
-        G76Error::new(
-            G76ErrorKind::Missing {
-                what: "the first depth of cut, radius",
-            },
-            At::letter('D'),
-        )
-    })?;
+    let required = |letter: char, w: Option<&Word>, what: &'static str| {
+        length(letter, w)?
+            .ok_or_else(|| G76Error::new(G76ErrorKind::Missing { what }, At::letter(letter)))
+    };
+    let k = required('K', kw, "the thread height, radius")?;
+    let dd = required('D', dw, "the first depth of cut, radius")?;
     let iw = get('I');
     let i = iw.map_or(0.0, |w| w.value * unit);
     let aw = get('A');
-    let a = match aw {
-        None => cfg.a,
-        Some(w) if w.value.fract() == 0.0 && (0.0..=120.0).contains(&w.value) => w.value,
-        Some(w) => {
-            return Err(G76Error::new(
-                G76ErrorKind::ToolAngle {
-                    a: w.value,
-                    one_block: true,
-                },
-                At::word('A', Some(w)),
-            ))
-        }
-    };
+    let a = tool_angle(aw, cfg)?;
     let pw = get('P');
-    let (law, edges) = match pw.map(|w| (w.value, w.has_point)) {
-        None => (DepthLaw::ConstantAmount, Edges::One),
-        Some((1.0, false)) => (DepthLaw::ConstantAmount, Edges::One),
-        Some((2.0, false)) => (DepthLaw::ConstantAmount, Edges::Alternating),
-        Some((3.0, false)) => (DepthLaw::ConstantDepth, Edges::One),
-        Some((4.0, false)) => (DepthLaw::ConstantDepth, Edges::Alternating),
-        Some((value, _)) => {
-            return Err(G76Error::new(
-                G76ErrorKind::InfeedType { value },
-                At::word('P', pw),
-            ))
-        }
-    };
+    let (law, edges) = infeed(pw)?;
     let qw = get('Q');
-    let start_angle = match qw {
-        None => 0.0,
-        Some(w)
-            if !w.has_point && w.value.fract() == 0.0 && (0.0..=360_000.0).contains(&w.value) =>
-        {
-            w.value / 1000.0
-        }
-        Some(w) => {
-            return Err(G76Error::new(
-                G76ErrorKind::StartAngle { value: w.value },
-                At::word('Q', Some(w)),
-            ))
-        }
-    };
+    let start_angle = start_angle(qw)?;
     let e = if cfg.flavor == Flavor::Haas {
         get('E')
     } else {
@@ -330,4 +283,50 @@ pub(crate) fn read_one_block<'w>(
         start_angle,
         at,
     })
+}
+
+/// The one-block A: the tool angle 0–120 (whole degrees), or the configured one.
+fn tool_angle(aw: Option<&Word>, cfg: &OneBlockConfig) -> Result<f64, G76Error> {
+    match aw {
+        None => Ok(cfg.a),
+        Some(w) if w.value.fract() == 0.0 && (0.0..=120.0).contains(&w.value) => Ok(w.value),
+        Some(w) => Err(G76Error::new(
+            G76ErrorKind::ToolAngle {
+                a: w.value,
+                one_block: true,
+            },
+            At::word('A', Some(w)),
+        )),
+    }
+}
+
+/// The one-block P: the infeed, P1 (the default) to P4.
+fn infeed(pw: Option<&Word>) -> Result<(DepthLaw, Edges), G76Error> {
+    match pw.map(|w| (w.value, w.has_point)) {
+        None => Ok((DepthLaw::ConstantAmount, Edges::One)),
+        Some((1.0, false)) => Ok((DepthLaw::ConstantAmount, Edges::One)),
+        Some((2.0, false)) => Ok((DepthLaw::ConstantAmount, Edges::Alternating)),
+        Some((3.0, false)) => Ok((DepthLaw::ConstantDepth, Edges::One)),
+        Some((4.0, false)) => Ok((DepthLaw::ConstantDepth, Edges::Alternating)),
+        Some((value, _)) => Err(G76Error::new(
+            G76ErrorKind::InfeedType { value },
+            At::word('P', pw),
+        )),
+    }
+}
+
+/// The one-block Q: the start angle in 0.001° (whole, no point), 0 without Q.
+fn start_angle(qw: Option<&Word>) -> Result<f64, G76Error> {
+    match qw {
+        None => Ok(0.0),
+        Some(w)
+            if !w.has_point && w.value.fract() == 0.0 && (0.0..=360_000.0).contains(&w.value) =>
+        {
+            Ok(w.value / 1000.0)
+        }
+        Some(w) => Err(G76Error::new(
+            G76ErrorKind::StartAngle { value: w.value },
+            At::word('Q', Some(w)),
+        )),
+    }
 }
