@@ -17,6 +17,7 @@ mod interp;
 mod library;
 mod machine;
 mod mcodes;
+mod text_place;
 pub mod timing;
 mod tnrc;
 mod toolpath;

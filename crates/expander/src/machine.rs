@@ -410,6 +410,7 @@ impl Machine {
     }
 }
 
+use crate::text_place::line_col;
 use toml::Spanned;
 
 #[derive(serde::Deserialize)]
@@ -696,14 +697,6 @@ impl Machine {
             PqUnits::Mm => 1.0,
         }
     }
-}
-
-/// 1-based line and column (in characters) of a byte offset.
-pub(crate) fn line_col(text: &str, offset: usize) -> (u32, u32) {
-    let before = &text[..offset.min(text.len())];
-    let line = before.matches('\n').count() as u32 + 1;
-    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) as u32 + 1;
-    (line, col)
 }
 
 #[cfg(test)]

@@ -249,7 +249,7 @@ impl Workholding {
     /// profile's keys (see the module documentation).
     pub fn from_toml(text: &str) -> Result<Self, WorkholdingError> {
         let at = |span: std::ops::Range<usize>, message: String| {
-            let (line, column) = crate::machine::line_col(text, span.start);
+            let (line, column) = crate::text_place::line_col(text, span.start);
             WorkholdingError {
                 line,
                 column,
@@ -259,7 +259,7 @@ impl Workholding {
         let f: WorkholdingFile = toml::from_str(text).map_err(|e| {
             let (line, column) = e
                 .span()
-                .map(|s| crate::machine::line_col(text, s.start))
+                .map(|s| crate::text_place::line_col(text, s.start))
                 .unwrap_or((0, 0));
             WorkholdingError {
                 line,
