@@ -88,13 +88,9 @@ pub(crate) enum G76ErrorKind {
         /// |Za − Z|, mm.
         travel: f64,
     },
-    /// The radial travel |U/2| from A to the end point is not larger than the pull-out.
-    RadialTravel {
-        /// |U/2|, mm.
-        half_u: f64,
-        /// The pull-out's radial size γ·tanθ, mm.
-        pull_out: f64,
-    },
+    /// No radial travel: the start point is on the end point's diameter, so the cycle
+    /// cannot tell an OD thread from an ID one, nor retract.
+    NoRadialTravel,
     /// |i| > |U/2| with i and U/2 of opposite signs.
     Taper {
         /// i, mm.
@@ -138,7 +134,7 @@ impl G76Error {
             K::DecimalPoint { .. } => "LS-INCREMENT",
             K::ChamferAngle { .. } => "LS-G76-CHAMFER-ANGLE",
             K::NoZTravel | K::ChamferTooLong { .. } => "LS-G76-CHAMFER",
-            K::RadialTravel { .. } => "LS-G76-TRAVEL",
+            K::NoRadialTravel => "LS-G76-TRAVEL",
             K::Taper { .. } => "LS-G76-TAPER",
             K::TooManyPasses { .. } => "LS-G76-PASSES",
             K::PDigits { .. }
@@ -199,9 +195,9 @@ impl G76Error {
             K::ChamferTooLong { gamma, travel } => format!(
                 "G76 pull-out chamfer γ = {gamma:.3} mm is not shorter than the thread's Z travel {travel:.3} mm"
             ),
-            K::RadialTravel { half_u, pull_out } => format!(
-                "G76 radial travel |U/2| = {half_u:.3} mm is not larger than the pull-out {pull_out:.3} mm"
-            ),
+            K::NoRadialTravel => {
+                "G76 starts on the thread's end diameter: no radial travel, so neither the side (OD or ID) nor the retract is defined".into()
+            }
             K::Taper { i, half_u } => format!(
                 "G76 taper {l}{i} is larger than the X travel U/2 = {half_u:.3} with the opposite sign"
             ),
@@ -238,7 +234,7 @@ impl G76Error {
             K::ChamferAngle { .. } => "set the chamfer angle (parameter 5131 / Haas setting 96) between 0° and 90°, 45° usually".into(),
             K::NoZTravel => "give the thread end Z away from the start point's Z".into(),
             K::ChamferTooLong { .. } => "reduce the chamfer (r digits of P, Haas setting 95 or M24) or start the thread further away".into(),
-            K::RadialTravel { .. } => "start the cycle further outside the thread (OD) or inside the bore (ID), beyond the pull-out".into(),
+            K::NoRadialTravel => "start the cycle outside the thread (OD) or inside the bore (ID)".into(),
             K::Taper { .. } => "when the taper and U have different signs, |taper| must not exceed |U/2|; check the sign of the taper".into(),
             K::TooManyPasses { .. } => "give a larger first depth Δd or a minimum depth Δdmin".into(),
         }

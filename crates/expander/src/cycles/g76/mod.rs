@@ -914,19 +914,29 @@ mod tests {
         assert!(e.message().contains("passes"));
     }
 
-    /// Start inside the pull-out, no radial travel at all, and a taper against U.
+    /// No radial travel at all, and a taper against U, are alarms; a start inside the
+    /// pull-out is not (the HUST rule [S19] is no FANUC, GSK or Haas alarm): the pull-out
+    /// climbs past the start X and the pass rapids back to it.
     #[test]
     fn alarm_travel_and_taper() {
         let p = G76Params {
             chamfer_leads: 1.0,
             ..sample()
         };
-        // |U/2| = 9.5 − 8.9175 = 0.5825 < γ·tan45 = 1.5.
-        let e = moves(Pt::new(5.0, 9.5), &p).unwrap_err();
-        assert!(matches!(e.kind, G76ErrorKind::RadialTravel { .. }), "{e}");
-        assert_eq!(e.at.unwrap().letter, 'X');
+        // |U/2| = 9.5 − 8.9175 = 0.5825 < γ·tan45 = 1.5: runs.
+        let mv = moves(Pt::new(5.0, 9.5), &p).unwrap();
+        let last = p.end.r + 1.5; // the final pass's pull-out ends at root + γ·tan45
+        assert!(mv
+            .iter()
+            .any(|m| close(m.to.r, last, 1e-9) && close(m.to.z, p.end.z, 1e-9)));
+        assert!(
+            close(mv[mv.len() - 2].to.r, 9.5, 1e-12)
+                && close(mv[mv.len() - 2].to.z, p.end.z, 1e-12)
+        );
         let e = moves(Pt::new(5.0, p.end.r), &sample()).unwrap_err();
-        assert!(matches!(e.kind, G76ErrorKind::RadialTravel { .. }), "{e}");
+        assert_eq!(e.kind, G76ErrorKind::NoRadialTravel, "{e}");
+        assert_eq!(e.at.unwrap().letter, 'X');
+        assert_eq!(e.code(), "LS-G76-TRAVEL");
         // OD: U/2 = 8.9175 − 11 = −2.0825; i = +2.5 opposite and larger.
         let p = G76Params { i: 2.5, ..sample() };
         let e = moves(Pt::new(5.0, 11.0), &p).unwrap_err();

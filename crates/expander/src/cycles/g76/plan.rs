@@ -105,18 +105,13 @@ pub(crate) fn moves(start: Pt, p: &G76Params) -> Result<Vec<Move>, G76Error> {
             at.chamfer,
         ));
     }
-    // Radial travel: larger than the pull-out's radial size (§4.4). With no chamfer it must
-    // still be non-zero, or OD and ID cannot be told apart.
+    // Radial travel: non-zero, or OD and ID cannot be told apart. HUST also requires it to
+    // be larger than the pull-out's radial size [S19]; FANUC, GSK and Haas run a pull-out
+    // that climbs past the start X, then rapid back to it (docs/field-rules.md §9).
     let half_u = p.end.r - start.r;
     let pull_out = gamma * theta.to_radians().tan();
-    if half_u.abs() <= pull_out + EPS {
-        return Err(G76Error::new(
-            K::RadialTravel {
-                half_u: half_u.abs(),
-                pull_out,
-            },
-            at.x,
-        ));
+    if half_u.abs() <= EPS {
+        return Err(G76Error::new(K::NoRadialTravel, at.x));
     }
     if p.i != 0.0 && p.i.signum() != half_u.signum() && p.i.abs() > half_u.abs() + EPS {
         return Err(G76Error::new(K::Taper { i: p.i, half_u }, at.i));
