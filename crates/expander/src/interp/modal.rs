@@ -143,7 +143,7 @@ impl Interp<'_> {
                         w.span,
                         "PS010",
                         format!("{} is not a G code this lathe knows", g_name(w)),
-                        "see spec/language.md and spec/dialects.md §6.1 for the supported codes",
+                        unknown_code_help(t),
                     ))
                 }
             }
@@ -427,5 +427,15 @@ impl Interp<'_> {
         if let Some(t) = m.tool {
             self.select_tool(t / 100);
         }
+    }
+}
+
+/// What to do about a G code no supported control knows; G07 is `LinuxCNC`'s diameter mode
+/// (issue 31: generated `LinuxCNC` lathe programs start `G18 G7 G90`).
+fn unknown_code_help(t: i32) -> &'static str {
+    if t == G07 {
+        "G7 selects diameter mode in LinuxCNC (rs274ngc): LinuxCNC programs are not supported (latsim reads X as a diameter by default; --x-mode radius for radii)"
+    } else {
+        "see spec/language.md and spec/dialects.md §6.1 for the supported codes"
     }
 }

@@ -226,12 +226,13 @@ impl Reader<'_> {
         ParseError::new(span, what, help)
     }
 
-    /// The error naming a Linux CNC construct on the line of `at`, if the line holds one.
+    /// The error naming the construct of a control latsim does not read (`LinuxCNC`, Okuma,
+    /// …) on the line of `at`, if the line holds one.
     pub(super) fn foreign(&self, at: Span) -> Option<ParseError> {
         let at = (at.offset as usize).min(self.src.len());
         let start = self.src[..at].rfind('\n').map_or(0, |i| i + 1);
         let end = self.src[at..].find('\n').map_or(self.src.len(), |i| at + i);
-        let what = foreign::linuxcnc(&self.src[start..end])?;
+        let found = foreign::construct(&self.src[start..end])?;
         Some(ParseError::new(
             Span {
                 line: self.line,
@@ -239,8 +240,14 @@ impl Reader<'_> {
                 offset: start as u32,
                 len: (end - start).min(u32::MAX as usize) as u32,
             },
-            format!("{what} is LinuxCNC (rs274ngc) syntax, not FANUC, GSK or Haas"),
-            "latsim reads FANUC, GSK and Haas lathe programs; LinuxCNC programs are not supported",
+            format!(
+                "{} is {} syntax, not FANUC, GSK or Haas",
+                found.what, found.whose
+            ),
+            format!(
+                "latsim reads FANUC, GSK and Haas lathe programs; {} programs are not supported",
+                found.whose
+            ),
         ))
     }
 }

@@ -24,7 +24,8 @@ impl Reader<'_> {
             Some(Dialect::Haas) => macro_b::Options::haas(),
             _ => macro_b::Options::fanuc(),
         };
-        let stmt = macro_b::parse_stmt(text, start, &options)?;
+        let stmt =
+            macro_b::parse_stmt(text, start, &options).map_err(|e| self.macro_error(e, start))?;
         // Haas `IF [cond] THEN <NC block>`: the block's words are read as words
         let end = match &stmt.kind {
             macro_b::StmtKind::IfThenBlock { text_span, .. } => text_span.offset as usize,
@@ -51,7 +52,8 @@ impl Reader<'_> {
         }
         let base = self.next_span();
         let text = block_text(self.src, base.offset as usize);
-        let (expr, used) = macro_b::parse_operand(text, base)?;
+        let (expr, used) =
+            macro_b::parse_operand(text, base).map_err(|e| self.macro_error(e, at))?;
         let end = self.consume_to(base.offset as usize + used).unwrap_or(at);
         self.push_word(Word {
             letter,
@@ -60,6 +62,12 @@ impl Reader<'_> {
             span: at.to(end),
             expr: Some(Box::new(expr)),
         })
+    }
+
+    /// A macro statement or expression that does not read: the construct of another
+    /// control on its line when it holds one (`LinuxCNC`'s `#<name> = …`), else the error.
+    fn macro_error(&self, e: macro_b::MacroError, at: Span) -> ParseError {
+        self.foreign(at).unwrap_or_else(|| e.into())
     }
 
     /// Consume the characters up to byte `end`, extending the block; the last span.
