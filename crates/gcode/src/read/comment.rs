@@ -12,6 +12,7 @@ const KEYWORDS: [&str; 37] = [
 /// Whether the text after a `;` is prose (a comment in another control's style) rather
 /// than blocks: it holds a non-ASCII character, or a run of two or more letters that is
 /// not a macro keyword (in a program every letter is followed by its number).
+#[inline]
 pub(super) fn is_prose(rest: &str) -> bool {
     let mut depth = 0;
     // the run of letters (a comment inside does not break it); only its first

@@ -95,11 +95,15 @@ const POW10: [f64; 23] = [
 /// aside), ended by anything but a digit, point or sign, with a value on
 /// [`parse_number`]'s fast path. Its length, value (the one `parse_number` gives) and
 /// whether a point was written; `None` for anything else, which the character loop reads.
+#[inline]
 pub(super) fn plain_number(bytes: &[u8]) -> Option<(usize, f64, bool)> {
     let mut i = usize::from(matches!(bytes.first(), Some(b'+' | b'-')));
     let (mut mantissa, mut digits, mut decimals, mut point, mut whole) =
         (0u64, 0usize, 0usize, false, 0usize);
-    while let Some(&b) = bytes.get(i) {
+    // a number that reaches MAX_NUMBER_CHARS characters is the character loop's
+    let limit = bytes.len().min(MAX_NUMBER_CHARS);
+    while i < limit {
+        let b = bytes[i];
         match b {
             b'0'..=b'9' => {
                 if !point && (whole > 0 || b != b'0') {
@@ -115,9 +119,9 @@ pub(super) fn plain_number(bytes: &[u8]) -> Option<(usize, f64, bool)> {
             _ => break,
         }
         i += 1;
-        if i >= MAX_NUMBER_CHARS {
-            return None;
-        }
+    }
+    if i >= MAX_NUMBER_CHARS {
+        return None;
     }
     if digits == 0 || whole > MAX_WHOLE_DIGITS || mantissa >= 1 << 53 {
         return None;

@@ -19,6 +19,7 @@ pub(super) struct Plain {
 /// Read the plain block that starts at byte `base` (on `line`, after column `base_column`)
 /// into `words`; `None` where the block is not plain (`words` then holds a part: clear it).
 /// `macros`: custom macro B is on, so a block starting with a statement is not plain.
+#[inline]
 pub(super) fn read(
     src: &str,
     base: usize,

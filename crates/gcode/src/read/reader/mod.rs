@@ -208,7 +208,7 @@ impl<'a> Reader<'a> {
     }
 
     /// One character (not a dropped control byte), handed to the stage it belongs to.
-    #[inline]
+    #[inline(always)]
     fn character(&mut self, span: Span, c: char) -> Result<Step, ParseError> {
         match c {
             '\n' => self.end_block()?,
