@@ -10,6 +10,7 @@
 
 mod crashes;
 mod deviation;
+pub mod diff;
 mod findings;
 mod fixture;
 mod intent;
