@@ -240,7 +240,7 @@ pub(crate) struct RunArgs {
     /// TOML file with those tables. A tool entering them, or cutting inside the jaws, crashes.
     #[arg(long, value_name = "SPEC|F", allow_hyphen_values = true)]
     pub(crate) chuck: Option<String>,
-    /// Write a JUnit XML report of the run here: one test case per program (a gouge, crash
+    /// Write a `JUnit` XML report of the run here: one test case per program (a gouge, crash
     /// or alarm fails it), for the CI's test reporter.
     #[arg(long, value_name = "F")]
     pub(crate) junit: Option<PathBuf>,

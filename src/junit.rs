@@ -1,4 +1,4 @@
-//! `run --junit F`: the run as JUnit XML, the format Jenkins (JUnit plugin), GitLab
+//! `run --junit F`: the run as `JUnit` XML, the format Jenkins (its `JUnit` plugin), GitLab
 //! (`artifacts:reports:junit`) and GitHub test-report actions read: one `<testsuite>`, one
 //! `<testcase>` per program (`classname` its folder, `name` its file, `time` its run), a
 //! `<failure>` when its run failed (a gouge, crash or alarm, or a part that differs from its

@@ -137,7 +137,7 @@ fn rule(code: &str, kind: Kind) -> Value {
 fn artifact(file: &Path, cwd: &Path) -> Value {
     match relative(file, cwd) {
         Some(rel) => json!({"uri": encode(&rel), "uriBaseId": "SRCROOT"}),
-        None => json!({"uri": format!("file://{}", encode(&absolute(file, cwd)))}),
+        None => json!({"uri": format!("file://{}", encode(absolute(file, cwd)))}),
     }
 }
 
@@ -145,7 +145,7 @@ fn artifact(file: &Path, cwd: &Path) -> Value {
 /// lies outside.
 fn relative(file: &Path, cwd: &Path) -> Option<String> {
     let full = absolute(file, cwd);
-    let rest = full.strip_prefix(&normal(cwd)).ok()?;
+    let rest = full.strip_prefix(normal(cwd)).ok()?;
     let parts: Vec<String> = rest
         .components()
         .map(|c| c.as_os_str().to_string_lossy().into_owned())
@@ -174,7 +174,7 @@ fn normal(p: &Path) -> PathBuf {
 
 /// The working folder as a `file:` URI ending in `/`.
 fn folder_uri(cwd: &Path) -> String {
-    let mut s = format!("file://{}", encode(&normal(cwd)));
+    let mut s = format!("file://{}", encode(normal(cwd)));
     if !s.ends_with('/') {
         s.push('/');
     }

@@ -1,6 +1,6 @@
 //! `run --junit F --sarif F` (issue 34): a batch of a clean program (its name holding a
 //! space), a rapid crash, a gouge, a controller alarm and a file that does not read. The
-//! JUnit file is read back by a strict XML parser (roxmltree) as a CI test reporter reads
+//! `JUnit` file is read back by a strict XML parser (`roxmltree`) as a CI test reporter reads
 //! it; the SARIF file is validated against the published SARIF 2.1.0 schema
 //! (`tests/fixtures/sarif/`, OASIS) and its results are checked at their lines.
 
