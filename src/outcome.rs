@@ -137,8 +137,25 @@ pub(crate) fn items(
     tol: f64,
     against: Option<&Against>,
 ) -> Vec<Item> {
-    let at = |span: expander::Span, kind: Kind, code: &str, message: String| {
-        let (src, _) = loaded.source_at(span.offset as usize);
+    let at = At { loaded, f, tol };
+    let mut out = at.failing();
+    if let Some(d) = against.and_then(|a| a.diff.as_ref()) {
+        out.extend(baseline_items(loaded, d));
+    }
+    out.extend(at.notes(sim));
+    out
+}
+
+/// Puts a run's findings at their file, line and column.
+struct At<'a> {
+    loaded: &'a Loaded,
+    f: &'a Findings,
+    tol: f64,
+}
+
+impl At<'_> {
+    fn item(&self, span: expander::Span, kind: Kind, code: &str, message: String) -> Item {
+        let (src, _) = self.loaded.source_at(span.offset as usize);
         Item {
             kind,
             code: code.to_string(),
@@ -147,87 +164,93 @@ pub(crate) fn items(
             line: span.line,
             column: span.column,
         }
-    };
-    let tp = &loaded.toolpath;
-    let seg_span = |i: usize| tp.segments.get(i).map(|s| s.span).unwrap_or_default();
-    let mut out: Vec<Item> = vec![];
-    for d in tp.alarms.iter().take(MAX_LISTED) {
-        out.push(at(d.span, Kind::Alarm, d.code, d.message.clone()));
     }
-    for n in f.alarms.iter().take(MAX_LISTED) {
-        out.push(at(n.span, Kind::Alarm, n.code, n.message.clone()));
+
+    /// The span of move `i`.
+    fn move_span(&self, i: usize) -> expander::Span {
+        let segments = &self.loaded.toolpath.segments;
+        segments.get(i).map(|s| s.span).unwrap_or_default()
     }
-    for c in f.crashes.iter().take(MAX_LISTED) {
-        let (what, of) = crash_words(c.body, c.obstacle);
-        let message = format!(
-            "crash: {what} at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² {of}",
-            c.at[0],
-            2.0 * c.at[1],
-            c.depth,
-            c.area
-        );
-        out.push(at(seg_span(c.segment), Kind::Crash, CRASH, message));
-    }
-    let deviation = f.deviation.as_ref();
-    for g in deviation
-        .iter()
-        .flat_map(|d| d.gouges.iter())
-        .take(MAX_LISTED)
-    {
-        let message = format!(
-            "gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
-            g.depth,
-            g.area,
-            g.at[0],
-            2.0 * g.at[1]
-        );
-        let span = g.made_by.map(seg_span).unwrap_or_default();
-        out.push(at(span, Kind::Gouge, GOUGE, message));
-    }
-    let too_deep = |n: &analysis::Note| {
+
+    /// Whether a note is a thread cut deeper than the tolerance: a gouge.
+    fn too_deep(&self, n: &analysis::Note) -> bool {
         n.code == "LS-THREAD-DEPTH"
-            && f.threads
+            && self
+                .f
+                .threads
                 .iter()
-                .any(|t| t.span == n.span && t.depth_error_mm.is_some_and(|e| e > tol))
-    };
-    for n in f.part_warnings.iter().filter(|n| too_deep(n)) {
-        out.push(at(n.span, Kind::Gouge, n.code, n.message.clone()));
+                .any(|t| t.span == n.span && t.depth_error_mm.is_some_and(|e| e > self.tol))
     }
-    if let Some(d) = against.and_then(|a| a.diff.as_ref()) {
-        out.extend(baseline_items(loaded, d));
+
+    /// The findings that fail the run: alarms, crashes, gouges, threads too deep.
+    fn failing(&self) -> Vec<Item> {
+        let (f, tp) = (self.f, &self.loaded.toolpath);
+        let mut out: Vec<Item> = vec![];
+        for d in tp.alarms.iter().take(MAX_LISTED) {
+            out.push(self.item(d.span, Kind::Alarm, d.code, d.message.clone()));
+        }
+        for n in f.alarms.iter().take(MAX_LISTED) {
+            out.push(self.item(n.span, Kind::Alarm, n.code, n.message.clone()));
+        }
+        for c in f.crashes.iter().take(MAX_LISTED) {
+            let (what, of) = crash_words(c.body, c.obstacle);
+            let message = format!(
+                "crash: {what} at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² {of}",
+                c.at[0],
+                2.0 * c.at[1],
+                c.depth,
+                c.area
+            );
+            out.push(self.item(self.move_span(c.segment), Kind::Crash, CRASH, message));
+        }
+        let gouges = f.deviation.iter().flat_map(|d| d.gouges.iter());
+        for g in gouges.take(MAX_LISTED) {
+            let message = format!(
+                "gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
+                g.depth,
+                g.area,
+                g.at[0],
+                2.0 * g.at[1]
+            );
+            let span = g.made_by.map(|i| self.move_span(i)).unwrap_or_default();
+            out.push(self.item(span, Kind::Gouge, GOUGE, message));
+        }
+        for n in f.part_warnings.iter().filter(|n| self.too_deep(n)) {
+            out.push(self.item(n.span, Kind::Gouge, n.code, n.message.clone()));
+        }
+        out
     }
-    for l in deviation
-        .iter()
-        .flat_map(|d| d.leftovers.iter())
-        .take(MAX_LISTED)
-    {
-        let message = format!(
-            "leftover: {:.4} mm thick, {:.4} mm² at Z{:.3} X{:.3}: material the intended part does not have (no move is named: no move removed it)",
-            l.depth,
-            l.area,
-            l.at[0],
-            2.0 * l.at[1]
-        );
-        out.push(at(
-            expander::Span::default(),
-            Kind::Leftover,
-            LEFTOVER,
-            message,
-        ));
+
+    /// Leftovers (tied to no line: no move removed them) and warnings.
+    fn notes(&self, sim: &stock::Simulation) -> Vec<Item> {
+        let (f, tp) = (self.f, &self.loaded.toolpath);
+        let mut out: Vec<Item> = vec![];
+        let leftovers = f.deviation.iter().flat_map(|d| d.leftovers.iter());
+        for l in leftovers.take(MAX_LISTED) {
+            let message = format!(
+                "leftover: {:.4} mm thick, {:.4} mm² at Z{:.3} X{:.3}: material the intended part does not have (no move is named: no move removed it)",
+                l.depth,
+                l.area,
+                l.at[0],
+                2.0 * l.at[1]
+            );
+            let nowhere = expander::Span::default();
+            out.push(self.item(nowhere, Kind::Leftover, LEFTOVER, message));
+        }
+        let warnings = tp.warnings.iter().map(|d| (d.span, d.code, &d.message));
+        let notes = f.warnings.iter().chain(&f.part_warnings);
+        let notes = notes
+            .filter(|n| !self.too_deep(n))
+            .map(|n| (n.span, n.code, &n.message));
+        let stock = sim
+            .warnings
+            .iter()
+            .map(|(seg, m)| (self.move_span(*seg), "LS-STOCK", m));
+        for (span, code, message) in warnings.chain(notes).chain(stock).take(MAX_LISTED) {
+            out.push(self.item(span, Kind::Warning, code, message.clone()));
+        }
+        out
     }
-    let warnings = tp.warnings.iter().map(|d| (d.span, d.code, &d.message));
-    let notes = f.warnings.iter().chain(&f.part_warnings);
-    let notes = notes
-        .filter(|n| !too_deep(n))
-        .map(|n| (n.span, n.code, &n.message));
-    let stock = sim
-        .warnings
-        .iter()
-        .map(|(seg, m)| (seg_span(*seg), "LS-STOCK", m));
-    for (span, code, message) in warnings.chain(notes).chain(stock).take(MAX_LISTED) {
-        out.push(at(span, Kind::Warning, code, message.clone()));
-    }
-    out
 }
 
 /// The baseline's differences as findings at the line of this program whose move was the

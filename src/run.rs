@@ -200,23 +200,7 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         return EXIT_UNUSABLE;
     }
     let stems = output_stems(&files);
-    let mut inputs = files.clone();
-    // a baseline is read, never written over (--out naming its folder is refused)
-    inputs.extend(
-        stems
-            .iter()
-            .filter_map(|s| crate::baseline::path_for(args, s)),
-    );
-    inputs.extend(args.tools.clone());
-    inputs.extend(args.stock_file.clone());
-    inputs.extend(args.program.machine.clone());
-    inputs.extend(args.target.clone());
-    inputs.extend(
-        args.chuck
-            .as_ref()
-            .filter(|c| !c.contains('='))
-            .map(PathBuf::from),
-    );
+    let inputs = inputs_of(args, &files, &stems);
     let started = std::time::Instant::now();
     let job = |i: usize| {
         let t = std::time::Instant::now();
@@ -243,31 +227,58 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         );
         return EXIT_UNUSABLE;
     }
+    let outcomes = in_parallel(files.len(), job);
+    let worst = outcomes.iter().map(|o| o.code).max().unwrap_or(EXIT_CLEAN);
+    crate::ci::write(args, &outcomes, worst, started, &inputs)
+}
+
+/// The files a run reads, which no report may replace: the programs, the tables and
+/// profiles, and the baselines (`--out` naming the baseline folder is refused).
+fn inputs_of(args: &RunArgs, files: &[PathBuf], stems: &[String]) -> Vec<PathBuf> {
+    let mut inputs = files.to_vec();
+    inputs.extend(
+        stems
+            .iter()
+            .filter_map(|s| crate::baseline::path_for(args, s)),
+    );
+    inputs.extend(args.tools.clone());
+    inputs.extend(args.stock_file.clone());
+    inputs.extend(args.program.machine.clone());
+    inputs.extend(args.target.clone());
+    inputs.extend(
+        args.chuck
+            .as_ref()
+            .filter(|c| !c.contains('='))
+            .map(PathBuf::from),
+    );
+    inputs
+}
+
+/// `job(0)`, …, `job(n - 1)` on as many threads as there are cores, their outcomes in
+/// program order.
+fn in_parallel(n: usize, job: impl Fn(usize) -> Outcome + Sync) -> Vec<Outcome> {
     let next = std::sync::atomic::AtomicUsize::new(0);
-    let worst = std::sync::atomic::AtomicU8::new(EXIT_CLEAN);
-    let outcomes = std::sync::Mutex::new(Vec::with_capacity(files.len()));
+    let outcomes = std::sync::Mutex::new(Vec::with_capacity(n));
     let workers = std::thread::available_parallelism()
-        .map_or(2, |n| n.get())
-        .min(files.len());
+        .map_or(2, |c| c.get())
+        .min(n);
     std::thread::scope(|scope| {
         for _ in 0..workers {
             scope.spawn(|| loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                if i >= files.len() {
+                if i >= n {
                     break;
                 }
                 let outcome = job(i);
-                worst.fetch_max(outcome.code, std::sync::atomic::Ordering::Relaxed);
-                if let Ok(mut all) = outcomes.lock() {
-                    all.push((i, outcome));
-                }
+                // (a job's panic is caught inside it: the lock is never poisoned)
+                let mut all = outcomes.lock().unwrap_or_else(|e| e.into_inner());
+                all.push((i, outcome));
             });
         }
     });
-    let mut outcomes = outcomes.into_inner().unwrap_or_default();
+    let mut outcomes = outcomes.into_inner().unwrap_or_else(|e| e.into_inner());
     outcomes.sort_by_key(|(i, _)| *i);
-    let outcomes: Vec<Outcome> = outcomes.into_iter().map(|(_, o)| o).collect();
-    crate::ci::write(args, &outcomes, worst.into_inner(), started, &inputs)
+    outcomes.into_iter().map(|(_, o)| o).collect()
 }
 
 /// The name each program's reports take: its file stem, or its whole file name where two

@@ -68,7 +68,7 @@ pub(super) fn svg(d: &DiffReport) -> String {
     );
     legend(&mut doc, d);
     let top = verdict(&mut doc, d);
-    let top = insets(&mut doc, d, top);
+    let top = insets(&mut doc, d, &v, top);
     summary(&mut doc, d, top);
     doc.finish()
 }
@@ -241,9 +241,13 @@ fn regions(n: usize) -> String {
     }
 }
 
-/// Zoomed insets of the largest regions, each titled with its numbers and lines.
-fn insets(doc: &mut Doc, d: &DiffReport, mut top: f64) -> f64 {
-    let mut list: Vec<(String, &DiffRegion, bool)> = numbered(d).collect();
+/// Zoomed insets of the largest regions, each titled with its numbers and lines; a region
+/// wider or taller than a sixth of the main view shows there as it is (no inset).
+fn insets(doc: &mut Doc, d: &DiffReport, main: &View, mut top: f64) -> f64 {
+    let big = main.mm.w().max(main.mm.h()) / 6.0;
+    let mut list: Vec<(String, &DiffRegion, bool)> = numbered(d)
+        .filter(|(_, r, _)| (r.hi[0] - r.lo[0]).max(r.hi[1] - r.lo[1]) < big)
+        .collect();
     list.sort_by(|a, b| b.1.area_mm2.total_cmp(&a.1.area_mm2));
     let max = chars_fitting(layout::RIGHT_W, FS_SMALL);
     for (i, (label, r, lost)) in list.into_iter().take(MAX_INSETS).enumerate() {
