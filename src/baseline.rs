@@ -43,6 +43,9 @@ struct CrashJ {
     body: Option<String>,
     #[serde(default)]
     obstacle: Option<String>,
+    /// A possible crash (its tool's size assumed): written only when true.
+    #[serde(default)]
+    assumed_tool: bool,
 }
 
 #[derive(Deserialize)]
@@ -52,6 +55,8 @@ struct GougeJ {
     x: Option<f64>,
     area_mm2: Option<f64>,
     depth_mm: Option<f64>,
+    #[serde(default)]
+    assumed_tool: bool,
 }
 
 /// The fields of the report a diff reads; the others are let be.
@@ -145,6 +150,7 @@ fn report(doc: Doc) -> Result<Report, String> {
         body: c.body.clone(),
         obstacle: c.obstacle.clone(),
         tool: vec![],
+        assumed: c.assumed_tool,
     };
     Ok(Report {
         program: doc.program,
@@ -165,6 +171,7 @@ fn report(doc: Doc) -> Result<Report, String> {
                 r: f(g.x) / 2.0,
                 area_mm2: f(g.area_mm2),
                 depth_mm: f(g.depth_mm),
+                assumed: g.assumed_tool,
             })
             .collect(),
         ..Report::default()

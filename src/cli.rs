@@ -59,6 +59,15 @@ pub(crate) struct ProgramArgs {
     /// with an alarm naming the loop.
     #[arg(long, value_name = "N", default_value_t = 10_000_000)]
     pub(crate) max_steps: usize,
+    /// The move budget: a run that makes more moves (segments) ends with an alarm at the
+    /// block that exceeded it; what was simulated until then is reported.
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 10_000_000,
+        alias = "max-segments"
+    )]
+    pub(crate) max_moves: usize,
     /// Least input increment, overriding the machine profile.
     #[arg(long, value_enum, value_name = "SYSTEM")]
     pub(crate) increment: Option<IncrementArg>,

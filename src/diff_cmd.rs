@@ -71,19 +71,29 @@ impl Facts {
                 ),
             }
         };
-        findings.extend(
-            r.crashes
-                .iter()
-                .map(|c| crash("crash", crate::outcome::CRASH, c)),
-        );
+        findings.extend(r.crashes.iter().map(|c| {
+            let code = if c.assumed {
+                crate::outcome::POSSIBLE_CRASH
+            } else {
+                crate::outcome::CRASH
+            };
+            crash("crash", code, c)
+        }));
         let scrape = |c| crash("rapid_scrape", "LS-RAPID-SCRAPE", c);
         findings.extend(r.rapid_cuts.iter().map(scrape));
-        findings.extend(r.gouges.iter().map(|g| DiffFinding {
-            kind: "gouge".into(),
-            code: crate::outcome::GOUGE.into(),
-            line: g.line,
-            at: Some([g.z, g.r]),
-            message: format!("{:.4} mm deep, {:.4} mm²", g.depth_mm, g.area_mm2),
+        findings.extend(r.gouges.iter().map(|g| {
+            DiffFinding {
+                kind: "gouge".into(),
+                code: if g.assumed {
+                    crate::outcome::POSSIBLE_GOUGE
+                } else {
+                    crate::outcome::GOUGE
+                }
+                .into(),
+                line: g.line,
+                at: Some([g.z, g.r]),
+                message: format!("{:.4} mm deep, {:.4} mm²", g.depth_mm, g.area_mm2),
+            }
         }));
         Self {
             name: name.to_string(),

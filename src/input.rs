@@ -284,6 +284,7 @@ pub(crate) fn load_program(
             .map(|l| expander::LibraryRef(l as Arc<dyn expander::Library>)),
         start_tool: start_tool.or_else(|| tools.numbers().first().copied()),
         max_blocks: args.max_steps,
+        max_segments: args.max_moves,
         vars,
         macros: macros.map(|d| {
             let mut o = match d {
@@ -293,7 +294,6 @@ pub(crate) fn load_program(
             o.limits.max_blocks = args.max_steps as u64;
             o
         }),
-        ..Options::default()
     };
     let mut toolpath = expander::expand(&program, &machine, &opts);
     if toolpath.segments.is_empty() {

@@ -53,6 +53,9 @@ pub(crate) enum Kind {
     Crash,
     /// A gouge, or a thread cut too deep.
     Gouge,
+    /// A crash or gouge made by a tool whose size latsim assumed: possible, not in the
+    /// verdict (the warning `LS-ASSUMED-TOOL` names what to state).
+    Possible,
     /// Material the part lost against the baseline.
     BaselineLost,
     /// Material the part gained against the baseline.
@@ -66,7 +69,7 @@ pub(crate) enum Kind {
 impl Kind {
     /// Whether it fails the run (exit 1).
     pub(crate) fn fails(self) -> bool {
-        !matches!(self, Self::Leftover | Self::Warning)
+        !matches!(self, Self::Possible | Self::Leftover | Self::Warning)
     }
 
     /// The word for it.
@@ -75,6 +78,7 @@ impl Kind {
             Self::Alarm => "alarm",
             Self::Crash => "crash",
             Self::Gouge => "gouge",
+            Self::Possible => "possible",
             Self::BaselineLost | Self::BaselineGained => "baseline",
             Self::Leftover => "leftover",
             Self::Warning => "warning",
@@ -88,6 +92,10 @@ pub(crate) const CRASH: &str = "LS-CRASH";
 pub(crate) const GOUGE: &str = "LS-GOUGE";
 /// See [`CRASH`].
 pub(crate) const LEFTOVER: &str = "LS-LEFTOVER";
+/// See [`CRASH`].
+pub(crate) const POSSIBLE_CRASH: &str = "LS-POSSIBLE-CRASH";
+/// See [`CRASH`].
+pub(crate) const POSSIBLE_GOUGE: &str = "LS-POSSIBLE-GOUGE";
 /// See [`CRASH`].
 pub(crate) const BASELINE_LOST: &str = "LS-BASELINE-LOST";
 /// See [`CRASH`].
@@ -182,7 +190,8 @@ impl At<'_> {
                 .any(|t| t.span == n.span && t.depth_error_mm.is_some_and(|e| e > self.tol))
     }
 
-    /// The findings that fail the run: alarms, crashes, gouges, threads too deep.
+    /// The findings that fail the run (alarms, crashes, gouges, threads too deep), and the
+    /// possible crashes and gouges of assumed tools with them.
     fn failing(&self) -> Vec<Item> {
         let (f, tp) = (self.f, &self.loaded.toolpath);
         let mut out: Vec<Item> = vec![];
@@ -201,7 +210,12 @@ impl At<'_> {
                 c.depth,
                 c.area
             );
-            out.push(self.item(self.move_span(c.segment), Kind::Crash, CRASH, message));
+            let (kind, code) = if c.assumed {
+                (Kind::Possible, POSSIBLE_CRASH)
+            } else {
+                (Kind::Crash, CRASH)
+            };
+            out.push(self.item(self.move_span(c.segment), kind, code, message));
         }
         let gouges = f.deviation.iter().flat_map(|d| d.gouges.iter());
         for g in gouges.take(MAX_LISTED) {
@@ -213,7 +227,12 @@ impl At<'_> {
                 2.0 * g.at[1]
             );
             let span = g.made_by.map(|i| self.move_span(i)).unwrap_or_default();
-            out.push(self.item(span, Kind::Gouge, GOUGE, message));
+            let (kind, code) = if g.assumed {
+                (Kind::Possible, POSSIBLE_GOUGE)
+            } else {
+                (Kind::Gouge, GOUGE)
+            };
+            out.push(self.item(span, kind, code, message));
         }
         for n in f.part_warnings.iter().filter(|n| self.too_deep(n)) {
             out.push(self.item(n.span, Kind::Gouge, n.code, n.message.clone()));

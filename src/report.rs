@@ -87,6 +87,29 @@ pub(crate) struct Run<'a> {
     pub(crate) tol: f64,
 }
 
+/// The setup sheet's tools: each tool of the moves in order of first use, with its offsets,
+/// what it is, its ISO designation and its times.
+fn tool_list(
+    tools: &stock::ToolTable,
+    times: &expander::timing::Times,
+    offsets: &[(u32, u32)],
+) -> Vec<render::ToolEntry> {
+    let cut = |t: u32| times.cutting.iter().find(|c| c.0 == t).map_or(0.0, |c| c.1);
+    times
+        .per_tool
+        .iter()
+        .map(|&(t, secs)| render::ToolEntry {
+            number: t,
+            offsets: offsets.iter().filter(|o| o.0 == t).map(|o| o.1).collect(),
+            description: tools.get(t).unwrap_or(&stock::Tool::DEFAULT).describe(),
+            designation: tools.designation(t).map(str::to_string),
+            assumed: !tools.size_stated(t, expander::ToolHint::Table),
+            time_s: secs,
+            cut_time_s: cut(t),
+        })
+        .collect()
+}
+
 /// Everything a finished run shows, but the toolpath ([`add_toolpath`]) and the player's
 /// snapshots ([`snapshots`]).
 pub(crate) fn report(run: &Run, findings: &Findings) -> Report {
@@ -130,6 +153,7 @@ fn crash(segments: &[Segment], c: &analysis::Crash) -> Crash {
         body: c.body.map(str::to_string),
         obstacle: c.obstacle.map(str::to_string),
         tool: c.tool.clone(),
+        assumed: c.assumed,
     }
 }
 
@@ -230,6 +254,7 @@ fn summary(run: &Run, findings: &Findings) -> Report {
             .collect(),
         variables: tp.variables.clone(),
         line_counts: tp.line_counts.clone(),
+        tool_list: tool_list(run.tools, times, &tp.tool_offsets),
         ..Report::default()
     }
 }
@@ -255,6 +280,7 @@ fn add_crashes(report: &mut Report, run: &Run, findings: &Findings) {
         .collect();
     report.tool_runs = findings.facts.runs.clone();
     let fixture = run.fixture;
+    report.stick_out_mm = fixture.and_then(|f| f.stick_out);
     if let Some(so) = fixture.and_then(|f| f.stick_out) {
         // "stick-out 15 mm", "stick-out 69.5 mm": three decimals, trailing zeros cut
         let n = format!("{so:.3}");
@@ -387,6 +413,7 @@ fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
             r: g.at[1],
             area_mm2: g.area,
             depth_mm: g.depth,
+            assumed: g.assumed,
         })
         .collect();
     report.gouge_shapes = d

@@ -452,8 +452,10 @@ fn verdict_line(
         report.cycle_time_s,
         // (the report lists the first alarms only)
         report.alarms.len() + loaded.toolpath.alarms.len().saturating_sub(MAX_LISTED),
-        report.crashes.len(),
-        f.deviation.as_ref().map_or(0, |d| d.gouges.len())
+        f.crashes.iter().filter(|c| !c.assumed).count(),
+        f.deviation
+            .as_ref()
+            .map_or(0, |d| d.gouges.iter().filter(|g| !g.assumed).count())
     )
 }
 
@@ -497,8 +499,13 @@ const MAX_PRINTED: usize = 20;
 fn print_findings(name: &str, places: &Places, report: &render::Report) {
     for (c, at) in report.crashes.iter().zip(&places.crashes).take(MAX_PRINTED) {
         let (what, of) = crate::outcome::crash_words(c.body.as_deref(), c.obstacle.as_deref());
+        let kind = if c.assumed {
+            "possible crash (tool size assumed, not in the verdict)"
+        } else {
+            "crash"
+        };
         eprintln!(
-            "{at}:{}: crash: {what} at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² {of}",
+            "{at}:{}: {kind}: {what} at Z{:.3} X{:.3}, {:.3} mm deep, {:.3} mm² {of}",
             c.column,
             c.z,
             2.0 * c.r,
@@ -507,8 +514,13 @@ fn print_findings(name: &str, places: &Places, report: &render::Report) {
         );
     }
     for (g, at) in report.gouges.iter().zip(&places.gouges).take(MAX_PRINTED) {
+        let kind = if g.assumed {
+            "possible gouge (tool size assumed, not in the verdict)"
+        } else {
+            "gouge"
+        };
         eprintln!(
-            "{at}: gouge: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
+            "{at}: {kind}: {:.4} mm deep, {:.4} mm² at Z{:.3} X{:.3}",
             g.depth_mm,
             g.area_mm2,
             g.z,

@@ -103,7 +103,7 @@ fn notification(o: &Outcome, cwd: &Path) -> Value {
 fn level(kind: Kind) -> &'static str {
     match kind {
         Kind::Alarm | Kind::Crash | Kind::Gouge => "error",
-        Kind::BaselineLost | Kind::BaselineGained => "warning",
+        Kind::Possible | Kind::BaselineLost | Kind::BaselineGained => "warning",
         Kind::Leftover | Kind::Warning => "note",
     }
 }
@@ -116,6 +116,8 @@ fn rule(code: &str, kind: Kind) -> Value {
         outcome::CRASH => ("Crash", "A rapid ran into stock, a tool's body met stock, or a tool entered the chuck, its jaws or the tailstock (or cut inside the jaws)"),
         outcome::GOUGE => ("Gouge", "Part material cut away: the final part lacks material the intended part has, deeper than the tolerance"),
         outcome::LEFTOVER => ("Leftover", "Material left that the intended part does not have, thicker than the tolerance"),
+        outcome::POSSIBLE_CRASH => ("PossibleCrash", "A crash made by a tool whose size latsim assumed (no table entry states it): possible, not in the verdict; state the tool"),
+        outcome::POSSIBLE_GOUGE => ("PossibleGouge", "A gouge made by a tool whose size latsim assumed (no table entry states it): possible, not in the verdict; state the tool"),
         outcome::BASELINE_LOST => ("BaselineLost", "The part lost material against the baseline report"),
         outcome::BASELINE_GAINED => ("BaselineGained", "The part gained material against the baseline report"),
         "LS-THREAD-DEPTH" => ("ThreadDepth", "A thread cut deeper or shallower than expected"),

@@ -313,3 +313,56 @@ fn a_clean_program_passes_and_inputs_are_never_overwritten() {
     );
     assert_eq!(std::fs::read(&prog).unwrap(), before);
 }
+
+/// A gouge made by a tool latsim had to assume (issue 38: T03 is not in the table) is
+/// possible, not in the verdict: the test case passes (exit 0), and the SARIF log has it as
+/// a `warning` (`LS-POSSIBLE-GOUGE`) at its line, with the `LS-ASSUMED-TOOL` note.
+#[test]
+fn a_possible_gouge_of_an_assumed_tool_does_not_fail() {
+    let dir = tempfile::tempdir().unwrap();
+    let prog = dir.path().join("partoff.nc");
+    std::fs::write(&prog, "G99 M03 S600\nT0101\nG00 X42 Z2\nG71 U1 R0.5\nG71 P10 Q20 U0 W0 F0.2\nN10 G00 X30\nG01 Z-30\nN20 X42\nG70 P10 Q20\nG00 X100 Z100\nT0303\nG00 X42 Z-33\nG01 X2 F0.05\nG00 X50\nM30\n").unwrap();
+    let tools = dir.path().join("t01.toml");
+    std::fs::write(
+        &tools,
+        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n",
+    )
+    .unwrap();
+    let (junit, sarif) = (dir.path().join("j.xml"), dir.path().join("s.sarif"));
+    let p = |p: &Path| p.to_str().unwrap().to_string();
+    let args = [
+        "run",
+        &p(&prog),
+        "--stock",
+        "40x60",
+        "--tools",
+        &p(&tools),
+        "--reports",
+        "none",
+        "--junit",
+        &p(&junit),
+        "--sarif",
+        &p(&sarif),
+    ];
+    let out = common::latsim(&args);
+    assert_eq!(out.code, 0, "{}\n{}", out.stdout, out.stderr);
+    let text = std::fs::read_to_string(&junit).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    assert_eq!(attr(doc.root_element(), "failures"), "0");
+    let log: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&sarif).unwrap()).unwrap();
+    assert!(sarif_validator().is_valid(&log));
+    let results = log["runs"][0]["results"].as_array().unwrap();
+    let possible: Vec<_> = results
+        .iter()
+        .filter(|r| r["ruleId"] == "LS-POSSIBLE-GOUGE")
+        .collect();
+    assert_eq!(possible.len(), 1, "{results:?}");
+    assert_eq!(possible[0]["level"], "warning");
+    assert_eq!(region_of(possible[0]).1, 13);
+    assert!(results.iter().any(|r| r["ruleId"] == "LS-ASSUMED-TOOL"));
+    assert!(
+        !results.iter().any(|r| r["level"] == "error"),
+        "{results:?}"
+    );
+}

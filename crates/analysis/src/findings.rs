@@ -55,6 +55,10 @@ pub struct Crash {
     /// The tool (cutting outline and body, convex parts in `[z, r]`) where it met it, for
     /// the first crashes of a run ([`crate::MAX_TOOL_POSES`]); empty for the others.
     pub tool: Vec<Vec<[f64; 2]>>,
+    /// A possible crash (spec/simulation.md, "Findings from assumed tools"): the tool's
+    /// outline is a guess and its reference point alone meets nothing. No effect on the
+    /// verdict.
+    pub assumed: bool,
 }
 
 /// A thread, checked in the final section.
@@ -136,14 +140,14 @@ impl Findings {
         let gouged = self
             .deviation
             .as_ref()
-            .is_some_and(|d| !d.gouges.is_empty());
+            .is_some_and(|d| d.gouges.iter().any(|g| !g.assumed));
         let too_deep = self
             .threads
             .iter()
             .any(|t| t.depth_error_mm.is_some_and(|e| e > tol));
         if toolpath_alarms > 0 || !self.alarms.is_empty() {
             Verdict::Alarm
-        } else if !self.crashes.is_empty() {
+        } else if self.crashes.iter().any(|c| !c.assumed) {
             Verdict::Crash
         } else if gouged || too_deep {
             Verdict::Gouge
@@ -166,6 +170,7 @@ mod tests {
             at: [0.0, 0.0],
             nearest: [0.0, 0.0],
             made_by: None,
+            assumed: false,
         }
     }
 
@@ -193,6 +198,16 @@ mod tests {
             ..Deviation::default()
         });
         assert_eq!(f.judge(0, 0.01), Verdict::Gouge);
+        // possible findings (an assumed tool's) do not count
+        f.crashes.push(Crash {
+            assumed: true,
+            ..Crash::default()
+        });
+        assert_eq!(f.judge(0, 0.01), Verdict::Gouge);
+        if let Some(d) = &mut f.deviation {
+            d.gouges[0].assumed = true;
+        }
+        assert_eq!(f.judge(0, 0.01), Verdict::Clean);
         f.crashes.push(Crash::default());
         assert_eq!(f.judge(0, 0.01), Verdict::Crash);
         assert_eq!(f.judge(1, 0.01), Verdict::Alarm);

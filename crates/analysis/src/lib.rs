@@ -8,6 +8,7 @@
 //! &str ─gcode─▶ Program ─expander─▶ Toolpath ─stock─▶ Simulation ─analysis─▶ Findings ─▶ Report
 //! ```
 
+mod assumed;
 mod crashes;
 mod deviation;
 pub mod diff;
@@ -175,11 +176,28 @@ fn conclude(
     let (removal, scrapes) = crashes::split(sim, cut_tol, segments, s.tools, rear);
     let mut crashes = crashes::crashes(removal, &beside.fixture_crashes);
     crashes::place_tools(&mut crashes, segments, s.tools, rear, CHORD_TOL);
-    let warnings = crashes::scrape_notes(&scrapes, segments, s.tools, rear, cut_tol);
+    let mut warnings = crashes::scrape_notes(&scrapes, segments, s.tools, rear, cut_tol);
+    warnings.extend(crashes::mark_assumed(
+        &mut crashes,
+        segments,
+        s,
+        rear,
+        CHORD_TOL,
+    ));
     let mut part_warnings = deviation
         .as_ref()
         .map(|d| deviation::later_cut_notes(d, segments))
         .unwrap_or_default();
+    part_warnings.extend(
+        deviation
+            .iter()
+            .flat_map(|d| &d.gouges)
+            .filter(|g| g.assumed)
+            .filter_map(|g| {
+                let seg = &segments[g.made_by?];
+                Some(assumed::note("gouge", g.depth, seg, s.tools))
+            }),
+    );
     // the stock each thread cuts into, where it was kept (short programs)
     let thread_stock: Vec<(usize, Vec<Shape>)> = beside
         .thread_passes

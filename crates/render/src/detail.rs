@@ -123,7 +123,11 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     let mut out = Vec::new();
     for c in &report.crashes {
         out.push(Finding {
-            title: format!("crash, {}", place(c.line, c.z, c.r)),
+            title: format!(
+                "{}, {}",
+                if c.assumed { "possible crash" } else { "crash" },
+                place(c.line, c.z, c.r)
+            ),
             z: c.z,
             r: c.r,
             half: clampf(2.5 * c.area_mm2.abs().sqrt(), 1.0),
@@ -133,7 +137,8 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     for g in &report.gouges {
         out.push(Finding {
             title: format!(
-                "gouge, {}, depth {} mm",
+                "{}, {}, depth {} mm",
+                if g.assumed { "possible gouge" } else { "gouge" },
                 place(g.line, g.z, g.r),
                 num(g.depth_mm, 3)
             ),

@@ -74,6 +74,9 @@ struct CrashJ {
     /// The workholding entered (additive field, only when there is one).
     #[serde(skip_serializing_if = "Option::is_none")]
     obstacle: Option<String>,
+    /// A possible crash of a tool the table does not state (additive, only when true).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    assumed_tool: bool,
 }
 
 impl From<&crate::Crash> for CrashJ {
@@ -87,6 +90,7 @@ impl From<&crate::Crash> for CrashJ {
             depth_mm: r6(c.depth_mm),
             body: c.body.clone(),
             obstacle: c.obstacle.clone(),
+            assumed_tool: c.assumed,
         }
     }
 }
@@ -98,6 +102,9 @@ struct GougeJ {
     x: Option<f64>,
     area_mm2: Option<f64>,
     depth_mm: Option<f64>,
+    /// A possible gouge of a tool the table does not state (additive, only when true).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    assumed_tool: bool,
 }
 
 #[derive(Serialize)]
@@ -223,6 +230,7 @@ pub(crate) fn json(report: &Report) -> String {
                 x: r6(2.0 * g.r),
                 area_mm2: r6(g.area_mm2),
                 depth_mm: r6(g.depth_mm),
+                assumed_tool: g.assumed,
             })
             .collect(),
         deviation: report.deviation.as_ref().map(|d| DeviationJ {

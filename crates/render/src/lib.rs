@@ -25,6 +25,7 @@ mod detail;
 mod diff;
 mod doc;
 mod fixture;
+mod fonts;
 mod groove;
 mod html;
 mod json;
@@ -67,7 +68,7 @@ pub fn svg(report: &Report) -> String {
     svg::svg(report)
 }
 
-/// The same picture rasterised (anti-aliased, embedded `DejaVu Sans`), as PNG bytes of
+/// The same picture rasterised (anti-aliased, embedded `DejaVu Sans` and a CJK subset), as PNG bytes of
 /// 1600 × 1000 px. Deterministic: the same report gives the same bytes.
 pub fn png(report: &Report) -> Result<Vec<u8>, RenderError> {
     Picture::draw(report).png()

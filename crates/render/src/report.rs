@@ -91,6 +91,8 @@ pub struct Crash {
     /// convex parts in `[z, r]`), drawn at the crash; empty when unknown (the CLI fills
     /// the first 20 crashes).
     pub tool: Vec<Vec<[f64; 2]>>,
+    /// A possible crash: its tool's outline is assumed (not in the verdict); drawn hollow.
+    pub assumed: bool,
 }
 
 /// A piece of workholding drawn in the picture (light grey, labelled).
@@ -115,6 +117,9 @@ pub struct Gouge {
     pub area_mm2: f64,
     /// Largest distance from the intended boundary, mm.
     pub depth_mm: f64,
+    /// A possible gouge: the tool that made it has an assumed outline (not in the
+    /// verdict); drawn hatched instead of filled red.
+    pub assumed: bool,
 }
 
 /// Summary of final part versus intended shape.
@@ -187,7 +192,8 @@ pub struct Report {
     /// The largest leftover's thickest place (measured by the simulator), where its
     /// detail view looks; `None`: no leftover view.
     pub leftover_spot: Option<LeftoverSpot>,
-    /// Gouge areas, drawn red with a darker 2 px outline.
+    /// Gouge areas, drawn red with a darker 2 px outline (hatched for the gouges of
+    /// [`Report::gouges`] at the same place that are `assumed`).
     pub gouge_shapes: Vec<Shape>,
     /// `None` when there is no intended shape.
     pub deviation: Option<Deviation>,
@@ -233,6 +239,32 @@ pub struct Report {
     pub tool_runs: Vec<(usize, usize)>,
     /// The outcome, as the analysis decided it.
     pub verdict: Verdict,
+    /// The tools for the HTML page's setup sheet, in order of first use; empty: the sheet
+    /// lists [`Report::tools`] instead (the CLI fills it). Not in the JSON.
+    pub tool_list: Vec<ToolEntry>,
+    /// The blank's stick-out from the chuck jaws' front, mm; `None`: no chuck given.
+    /// Not in the JSON (its stock description says it).
+    pub stick_out_mm: Option<f64>,
+}
+
+/// One tool as the setup sheet lists it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ToolEntry {
+    /// T number; 0: the tool that cuts before the program's first T word.
+    pub number: u32,
+    /// The offset numbers the program called it with (`T0101` → 1), in order of first use.
+    pub offsets: Vec<u32>,
+    /// What it is, e.g. `turning C 80°, r0.8, tip 3, κr 95°`.
+    pub description: String,
+    /// The ISO designations the tool table gave it by, e.g. `CNMG 120408 in PCLNR 2525M12`.
+    pub designation: Option<String>,
+    /// The tool table does not state its size (no entry: the default tool; an insert with
+    /// no edge nor ISO designation): its outline is assumed.
+    pub assumed: bool,
+    /// The time of all its moves, s.
+    pub time_s: f64,
+    /// The time of its cutting (feed and thread) moves, s.
+    pub cut_time_s: f64,
 }
 
 /// A tool's outline relative to its reference point, `[z, r]`: the cutting outline and the

@@ -48,6 +48,66 @@ pub(super) fn blame(
     }
 }
 
+/// Which of `regions` (gouges of guessed tools) do not depend on what the table leaves out
+/// (spec/simulation.md, "Findings from assumed tools"): those the stated core of a guessed
+/// tool (`stock::Mounted::core`: an insert's nose, a blade's tip) sweeps over on some move,
+/// or whose reference path enters them ([`crate::assumed`]). One pass over the moves for
+/// all of them; each move's path and core sweep made once, where a region's box is near.
+/// `from[g]`: the move that made region `g` (the first whose sweep overlaps it): no move
+/// before it can have entered it.
+pub(crate) fn certain(
+    regions: &[&Shape],
+    from: &[usize],
+    segments: &[Segment],
+    mounts: &mut Mounts,
+    chord_tol: f64,
+) -> Vec<bool> {
+    let boxes: Vec<Rect> = regions.iter().map(|r| Rect::of(pts(&r.outer))).collect();
+    let indexes: Vec<crate::assumed::Region> = regions
+        .iter()
+        .map(|r| crate::assumed::Region::new(std::slice::from_ref(*r)))
+        .collect();
+    let mut certain = vec![false; regions.len()];
+    let mut open: Vec<usize> = (0..regions.len()).collect();
+    let first = from.iter().copied().min().unwrap_or(0);
+    for (i, seg) in segments.iter().enumerate().skip(first) {
+        if open.is_empty() {
+            break;
+        }
+        if !crate::assumed::guessed(mounts.tools(), seg) {
+            continue;
+        }
+        let m = mounts.of(seg);
+        let reach = crate::assumed::path_box(seg);
+        let near: Vec<usize> = open
+            .iter()
+            .copied()
+            .filter(|&g| {
+                i >= from[g]
+                    && (reach.intersects(&boxes[g])
+                        || m.core
+                            .as_deref()
+                            .is_some_and(|c| may_sweep_over(&boxes[g], seg, c)))
+            })
+            .collect();
+        if near.is_empty() {
+            continue;
+        }
+        let path = move_path(seg, chord_tol);
+        let core = m.core.as_deref().map(|c| float_sweep(c, &path));
+        for g in near {
+            let by_core = core
+                .as_ref()
+                .is_some_and(|sweep| overlaps(regions[g], &boxes[g], sweep));
+            if by_core || crate::assumed::path_enters(seg, &indexes[g], chord_tol) {
+                certain[g] = true;
+                open.retain(|&o| o != g);
+            }
+        }
+    }
+    certain
+}
+
 /// Whether the sweep of `seg` may reach the box `bb` (false only when it surely does not).
 fn may_sweep_over(bb: &Rect, seg: &Segment, outline: &Outline) -> bool {
     let Some((lo, hi)) = outline.bbox() else {

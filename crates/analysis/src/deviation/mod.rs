@@ -31,6 +31,10 @@ pub struct Finding {
     /// The first segment whose tool sweep overlaps the region (gouges only): the move that
     /// made it, named in the report.
     pub made_by: Option<usize>,
+    /// A possible finding (spec/simulation.md, "Findings from assumed tools"): the move
+    /// that made it cuts with an outline the table does not state, and the tool's
+    /// reference point alone does not enter the region. No effect on the verdict.
+    pub assumed: bool,
 }
 
 /// Gouges and leftovers beyond the tolerance.
@@ -126,7 +130,31 @@ pub fn deviation(
         .partition(|g| cut_later(g, intents, segments, tools, &world_box));
     out.gouges = gouges;
     out.later_cuts = later;
+    mark_assumed(&mut out.gouges, segments, &mut mounts, chord_tol);
     out
+}
+
+/// Marks the gouges made by a guessed tool that only its assumed extent explains as
+/// possible (the first [`crate::assumed::MAX_TESTED`] of them are tested, the rest stay
+/// possible).
+fn mark_assumed(gouges: &mut [Finding], segments: &[Segment], mounts: &mut Mounts, chord_tol: f64) {
+    let guessed: Vec<usize> = (0..gouges.len())
+        .filter(|&g| {
+            gouges[g]
+                .made_by
+                .is_some_and(|i| crate::assumed::guessed(mounts.tools(), &segments[i]))
+        })
+        .collect();
+    let tested = &guessed[..guessed.len().min(crate::assumed::MAX_TESTED)];
+    let regions: Vec<&Shape> = tested.iter().map(|&g| &gouges[g].shape).collect();
+    let from: Vec<usize> = tested
+        .iter()
+        .map(|&g| gouges[g].made_by.unwrap_or(0))
+        .collect();
+    let certain = blame::certain(&regions, &from, segments, mounts, chord_tol);
+    for (k, &g) in guessed.iter().enumerate() {
+        gouges[g].assumed = !certain.get(k).copied().unwrap_or(false);
+    }
 }
 
 /// Whether the gouge `g` was made by a feed move of a blade, drill or threading tool other
@@ -235,6 +263,7 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
                 at,
                 nearest,
                 made_by: None,
+                assumed: false,
             })
         })
         .collect()

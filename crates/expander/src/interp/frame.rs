@@ -13,6 +13,7 @@ use gcode::{Block, Word};
 use std::collections::BTreeMap;
 
 /// The work frames as the program leaves them.
+#[derive(Clone, PartialEq)]
 pub(crate) struct Frames {
     /// The work system in force.
     work: Work,

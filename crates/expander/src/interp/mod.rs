@@ -16,6 +16,7 @@ mod dialect_words;
 mod flow;
 mod frame;
 mod g10;
+mod loop_guard;
 mod macros;
 mod modal;
 mod motion;
@@ -36,7 +37,8 @@ pub(crate) use modal::MotionMode;
 pub struct Options {
     /// Skip blocks that start with `/`.
     pub block_delete: bool,
-    /// Stop with an alarm when the program expands to more segments than this.
+    /// The move budget: stop with an alarm when the program expands to more segments than
+    /// this (`--max-moves`).
     pub max_segments: usize,
     /// Stop with an alarm after executing this many blocks (endless loops).
     pub max_blocks: usize,
@@ -58,7 +60,7 @@ impl Default for Options {
     fn default() -> Self {
         Self {
             block_delete: false,
-            max_segments: 5_000_000,
+            max_segments: 10_000_000,
             max_blocks: macro_b::DEFAULT_MAX_BLOCKS as usize,
             tools: toolfacts::ToolFacts::default(),
             start_tool: None,
@@ -102,6 +104,9 @@ pub struct Toolpath {
     pub variables: Vec<(String, Option<f64>)>,
     /// Custom macro B: the source lines executed more than once, with how many times.
     pub line_counts: Vec<(u32, u64)>,
+    /// The tool offsets the T words called, `(tool, offset)` in order of first use
+    /// (`T0101` → `(1, 1)`; offset 00, a cancel, left out): the setup sheet's offsets.
+    pub tool_offsets: Vec<(u32, u32)>,
 }
 
 /// Expand a parsed program into segments.

@@ -246,6 +246,10 @@ impl Interp<'_> {
                 self.offset = offset;
             }
             self.select_tool(tool);
+            let called = (self.tool, offset);
+            if offset != 0 && !self.out.tool_offsets.contains(&called) {
+                self.out.tool_offsets.push(called);
+            }
         }
         Ok(deferred)
     }

@@ -26,6 +26,10 @@ pub struct ToolTable {
     /// The entries whose cutting outline's size the table does not state (an insert with
     /// no `edge` nor ISO designation, a blade without `width` or `reach`).
     assumed: Vec<u32>,
+    /// The turning entries whose nose radius the table states.
+    noses: Vec<u32>,
+    /// The grooving entries whose width the table states.
+    widths: Vec<u32>,
 }
 
 impl ToolTable {
@@ -37,6 +41,8 @@ impl ToolTable {
     /// A table from explicit entries (T number, tool).
     pub fn from_tools(tools: Vec<(u32, Tool)>) -> Self {
         Self {
+            noses: tools.iter().map(|(t, _)| *t).collect(),
+            widths: tools.iter().map(|(t, _)| *t).collect(),
             tools,
             designations: Vec::new(),
             sizes: Vec::new(),
@@ -54,6 +60,16 @@ impl ToolTable {
                 .collect(),
             sizes: entries.iter().map(|e| (e.t, e.size)).collect(),
             assumed: entries.iter().filter(|e| !e.stated).map(|e| e.t).collect(),
+            noses: entries
+                .iter()
+                .filter(|e| e.nose_stated)
+                .map(|e| e.t)
+                .collect(),
+            widths: entries
+                .iter()
+                .filter(|e| e.width_stated)
+                .map(|e| e.t)
+                .collect(),
             tools: entries.into_iter().map(|e| (e.t, e.tool)).collect(),
         })
     }
