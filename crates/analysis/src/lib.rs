@@ -12,6 +12,7 @@ mod assumed;
 mod crashes;
 mod deviation;
 pub mod diagnose;
+pub mod diff;
 mod findings;
 mod fixture;
 mod intent;

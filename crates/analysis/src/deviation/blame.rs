@@ -193,3 +193,59 @@ fn holds_all(hull: &[P], ring: &[P]) -> bool {
         })
     })
 }
+
+/// For each of `regions`, every move whose tool sweep overlaps it by more than a sliver, in
+/// move order: the moves that made a region of `crate::diff` (the blame above stops at the
+/// first). With `margin` > 0 each sweep is grown by it first (its Minkowski sum with a
+/// square): the moves that ran within `margin` of a region, which left its edge where it
+/// is. One pass over the moves; a move's sweep is built only when its box may reach one.
+pub(crate) fn moves_over(
+    regions: &[Shape],
+    segments: &[Segment],
+    mounts: &mut Mounts,
+    chord_tol: f64,
+    margin: f64,
+) -> Vec<Vec<usize>> {
+    let margin = margin.max(0.0);
+    let boxes: Vec<Rect> = regions
+        .iter()
+        .map(|g| Rect::of(pts(&g.outer)).grown(margin))
+        .collect();
+    let mut out = vec![vec![]; regions.len()];
+    for (i, seg) in segments.iter().enumerate() {
+        let mounted = mounts.of(seg);
+        let near: Vec<usize> = (0..regions.len())
+            .filter(|&g| may_sweep_over(&boxes[g], seg, &mounted.edge))
+            .collect();
+        if near.is_empty() {
+            continue;
+        }
+        let mut sweep = float_sweep(&mounted.edge, &move_path(seg, chord_tol));
+        if margin > 0.0 {
+            sweep = sweep.iter().map(|part| grown(part, margin)).collect();
+        }
+        for g in near {
+            if overlaps(&regions[g], &boxes[g], &sweep) {
+                out[g].push(i);
+            }
+        }
+    }
+    out
+}
+
+/// The convex `part` grown by `m` along both axes (its Minkowski sum with a square of side
+/// 2·`m`): convex again.
+fn grown(part: &[P], m: f64) -> Vec<P> {
+    let corners: Vec<P> = part
+        .iter()
+        .flat_map(|p| {
+            [
+                [p[0] - m, p[1] - m],
+                [p[0] + m, p[1] - m],
+                [p[0] + m, p[1] + m],
+                [p[0] - m, p[1] + m],
+            ]
+        })
+        .collect();
+    geom::flat::convex_hull(&corners)
+}
