@@ -114,7 +114,7 @@ impl Facts {
 
     /// The facts of a JSON report written by `latsim run`.
     pub(crate) fn of_json(path: &Path) -> Result<Self, ()> {
-        let report = crate::baseline::read(path, MAX_REPORT_BYTES)?;
+        let report = crate::saved::read(path, MAX_REPORT_BYTES)?;
         Ok(Self::of_report(&path.display().to_string(), &report))
     }
 }

@@ -21,6 +21,7 @@ mod report;
 mod rerun;
 mod run;
 mod sarif;
+mod saved;
 mod write;
 
 use clap::Parser;

@@ -1,7 +1,6 @@
 //! What one program's run gives the run's CI reports (`--junit`, `--sarif`) besides its
 //! exit status: the verdict line and every finding at its file, line and column.
 
-use crate::baseline::Against;
 use crate::input::Loaded;
 use analysis::{Findings, MAX_LISTED};
 use std::path::PathBuf;
@@ -321,8 +320,8 @@ pub(crate) fn finish(
     let differs = against.as_ref().is_some_and(Against::differs);
     if let Some(a) = &against {
         line.push_str(&a.suffix);
-        if let (Some(d), false, true) = (&a.diff, batch, differs) {
-            for l in crate::diff_cmd::summary_lines(d).iter().skip(1) {
+        if !batch && differs {
+            for l in &a.details {
                 eprintln!("{l}");
             }
         }
@@ -339,5 +338,23 @@ pub(crate) fn finish(
         record: Some(Record { line, items }),
         error: None,
         seconds: 0.0,
+    }
+}
+
+/// A run compared with its baseline: what the verdict line adds, and the diff when there
+/// was a baseline to compare with.
+pub(crate) struct Against {
+    /// `; against base/part.json: same part, …`, or the note that there is no baseline.
+    pub(crate) suffix: String,
+    /// The diff; `None`: the baseline folder holds no report of this program.
+    pub(crate) diff: Option<render::DiffReport>,
+    /// The diff's lines after its first, printed under the verdict of a single run.
+    pub(crate) details: Vec<String>,
+}
+
+impl Against {
+    /// Whether the part differs from the baseline's (a failed run).
+    pub(crate) fn differs(&self) -> bool {
+        self.diff.as_ref().is_some_and(render::DiffReport::differs)
     }
 }

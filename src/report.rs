@@ -190,38 +190,6 @@ fn summary(run: &Run, findings: &Findings) -> Report {
     let tp = &loaded.toolpath;
     let times = &findings.facts.times;
     let sim = run.sim;
-    let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(|d| diagnostic(loaded, d)).collect();
-    warnings.extend(findings.warnings.iter().map(note));
-    for (seg, message) in &sim.warnings {
-        let span = tp.segments.get(*seg).map(|s| s.span).unwrap_or_default();
-        warnings.push(Diagnostic {
-            line: span.line,
-            column: span.column,
-            code: "LS-STOCK".into(),
-            message: message.clone(),
-        });
-    }
-    // alarms and warnings listed up to a cap; the count of the rest is the last warning
-    warnings.truncate(MAX_LISTED);
-    for (what, n) in [
-        ("alarms", tp.alarms.len()),
-        (
-            "warnings",
-            tp.warnings.len() + findings.warnings.len() + sim.warnings.len(),
-        ),
-    ] {
-        if n > MAX_LISTED {
-            warnings.push(Diagnostic {
-                line: 0,
-                column: 0,
-                code: "LS-LIST-CAPPED".into(),
-                message: format!(
-                    "{n} {what}: the {MAX_LISTED} first are listed, {} more are not",
-                    n - MAX_LISTED
-                ),
-            });
-        }
-    }
     Report {
         program: run.name.to_string(),
         title: tp.title.clone(),
@@ -249,20 +217,8 @@ fn summary(run: &Run, findings: &Findings) -> Report {
             .take(MAX_LISTED)
             .map(|d| diagnostic(loaded, d))
             .collect(),
-        warnings,
-        // every tool of the moves in order of first use, with its time
-        tools: times
-            .per_tool
-            .iter()
-            .map(|&(t, secs)| {
-                // "T01 · 32.6 s · turning …": the time before the long description
-                let line = tool_line(run.tools, t);
-                match line.split_once(' ') {
-                    Some((num, rest)) => format!("{num} · {secs:.1} s · {rest}"),
-                    None => format!("{line} · {secs:.1} s"),
-                }
-            })
-            .collect(),
+        warnings: warnings(run, findings),
+        tools: tool_times(run.tools, times),
         removed_area_mm2: sim.removed_area,
         removed_volume_mm3: sim.removed_volume,
         segments: tp.segments.len(),
@@ -283,6 +239,62 @@ fn summary(run: &Run, findings: &Findings) -> Report {
         tool_list: tool_list(run.tools, times, &tp.tool_offsets),
         ..Report::default()
     }
+}
+
+/// The warnings of the toolpath, of the analysis and of the removal, listed up to a cap;
+/// the count of what is not listed (alarms too) is the last warning.
+fn warnings(run: &Run, findings: &Findings) -> Vec<Diagnostic> {
+    let loaded = run.loaded;
+    let tp = &loaded.toolpath;
+    let sim = run.sim;
+    let mut warnings: Vec<Diagnostic> = tp.warnings.iter().map(|d| diagnostic(loaded, d)).collect();
+    warnings.extend(findings.warnings.iter().map(note));
+    for (seg, message) in &sim.warnings {
+        let span = tp.segments.get(*seg).map(|s| s.span).unwrap_or_default();
+        warnings.push(Diagnostic {
+            line: span.line,
+            column: span.column,
+            code: "LS-STOCK".into(),
+            message: message.clone(),
+        });
+    }
+    warnings.truncate(MAX_LISTED);
+    for (what, n) in [
+        ("alarms", tp.alarms.len()),
+        (
+            "warnings",
+            tp.warnings.len() + findings.warnings.len() + sim.warnings.len(),
+        ),
+    ] {
+        if n > MAX_LISTED {
+            warnings.push(Diagnostic {
+                line: 0,
+                column: 0,
+                code: "LS-LIST-CAPPED".into(),
+                message: format!(
+                    "{n} {what}: the {MAX_LISTED} first are listed, {} more are not",
+                    n - MAX_LISTED
+                ),
+            });
+        }
+    }
+    warnings
+}
+
+/// Every tool of the moves in order of first use, with its time: "T01 · 32.6 s · turning
+/// …", the time before the long description.
+fn tool_times(tools: &stock::ToolTable, times: &expander::timing::Times) -> Vec<String> {
+    times
+        .per_tool
+        .iter()
+        .map(|&(t, secs)| {
+            let line = tool_line(tools, t);
+            match line.split_once(' ') {
+                Some((num, rest)) => format!("{num} · {secs:.1} s · {rest}"),
+                None => format!("{line} · {secs:.1} s"),
+            }
+        })
+        .collect()
 }
 
 /// The crashes (the first with the tool drawn where it hit), the workholding drawn, and
@@ -393,22 +405,7 @@ fn tailstock_moves(loaded: &Loaded) -> Option<String> {
 /// The deviation findings: gouges (with the first line whose sweep made them), leftovers
 /// (and where the largest is thickest), the intended shapes drawn dashed, and the summary.
 fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
-    // Closed rings as they are; an open path is drawn out and back.
-    report.intended = findings
-        .intents
-        .iter()
-        .flat_map(|i| i.outline.iter())
-        .map(|(line, closed)| {
-            let mut outer = line.clone();
-            if !closed {
-                outer.extend(line.iter().rev().skip(1).take(line.len().saturating_sub(2)));
-            }
-            Shape {
-                outer,
-                holes: vec![],
-            }
-        })
-        .collect();
+    report.intended = intended(findings);
     let Some(d) = &findings.deviation else {
         return;
     };
@@ -450,7 +447,36 @@ fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
         .take(MAX_LISTED)
         .map(|g| shape(&g.shape))
         .collect();
-    let leftovers = &d.leftovers[..d.leftovers.len().min(MAX_LISTED)];
+    add_leftovers(report, &d.leftovers[..d.leftovers.len().min(MAX_LISTED)]);
+    report.deviation = Some(render::Deviation {
+        overcut_area_mm2: d.overcut_area(),
+        undercut_area_mm2: d.undercut_area(),
+        max_overcut_mm: d.max_overcut(),
+        max_undercut_mm: d.max_undercut(),
+    });
+}
+
+/// The intended outlines as drawn: closed rings as they are, an open path out and back.
+fn intended(findings: &Findings) -> Vec<Shape> {
+    findings
+        .intents
+        .iter()
+        .flat_map(|i| i.outline.iter())
+        .map(|(line, closed)| {
+            let mut outer = line.clone();
+            if !closed {
+                outer.extend(line.iter().rev().skip(1).take(line.len().saturating_sub(2)));
+            }
+            Shape {
+                outer,
+                holes: vec![],
+            }
+        })
+        .collect()
+}
+
+/// The leftovers listed (their shapes, causes and the detail view's spot).
+fn add_leftovers(report: &mut Report, leftovers: &[analysis::Finding]) {
     // the detail view looks where the largest leftover is deepest: the depth the summary
     // gives, measured to the same boundary (the intended part's, walls a profile drops
     // included)
@@ -482,12 +508,6 @@ fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
             cause: l.cause.as_ref().map(cause),
         })
         .collect();
-    report.deviation = Some(render::Deviation {
-        overcut_area_mm2: d.overcut_area(),
-        undercut_area_mm2: d.undercut_area(),
-        max_overcut_mm: d.max_overcut(),
-        max_undercut_mm: d.max_undercut(),
-    });
 }
 
 /// The threads as checked, with their alarms and the part's warnings (later cuts, thread

@@ -8,7 +8,7 @@
 //! The reference point's path is tested exactly against the regions: the parameters where
 //! it crosses their edges cut it into pieces, each wholly inside or outside.
 
-use crate::findings::Note;
+use crate::note::Note;
 use expander::{Motion, Segment};
 use geom::flat::P;
 use stock::{float_sweep, move_path, Mounts, Outline, Shape, ToolTable};
@@ -96,7 +96,7 @@ impl Region {
         for b in self.bin_range(p[0] - within, p[0] + within) {
             for &k in &self.bins[b] {
                 let [u, v] = self.edges[k as usize];
-                best = best.min(crate::diagnose::segment_distance(p, u, v));
+                best = best.min(geom::flat::segment_distance(p, u, v));
             }
         }
         best

@@ -23,16 +23,7 @@ pub enum Verdict {
     Gouge,
 }
 
-/// A warning or alarm the analysis raises, at the line of the move it concerns.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Note {
-    /// Where in the program.
-    pub span: Span,
-    /// Short stable code, e.g. `LS-RAPID-SCRAPE`.
-    pub code: &'static str,
-    /// What happened and what to change.
-    pub message: String,
-}
+pub use crate::note::Note;
 
 /// A crash, or a rapid scrape: a move whose tool met stock, or whose tool entered the
 /// workholding.

@@ -17,6 +17,7 @@ mod findings;
 mod fixture;
 mod intent;
 mod measure;
+mod note;
 mod pose;
 mod retract;
 mod threads;

@@ -20,7 +20,7 @@ pub(crate) fn draw_fixture(doc: &mut Doc, report: &Report, v: &View, mirror: boo
     if report.fixture.is_empty() {
         return;
     }
-    let md = crate::plot::MIN_PX / v.s;
+    let md = crate::path::MIN_PX / v.s;
     let all: Vec<Shape> = report
         .fixture
         .iter()

@@ -8,6 +8,9 @@ use crate::report::{PathKind, PathLine, Shape};
 use crate::scale::Bbox;
 use crate::text::num;
 
+/// Points closer than this (px) to the previous kept point are dropped.
+pub(crate) const MIN_PX: f64 = 0.3;
+
 /// Decimals for shape coordinates (mm): 1 nm.
 const SHAPE_DECIMALS: usize = 6;
 /// Decimals for toolpath coordinates (mm): 0.1 µm, sub-micron and compact.

@@ -4,13 +4,10 @@
 
 use crate::doc::Doc;
 use crate::layout::{self, colour, FS_TICK};
-use crate::path::{deviation_d, shapes_d, toolpath_d};
+use crate::path::{deviation_d, shapes_d, toolpath_d, MIN_PX};
 use crate::report::{Report, Shape};
 use crate::scale::{nice_step, step_decimals, ticks, View};
 use crate::text::{tick_label, width};
-
-/// Points closer than this (px) to the previous kept point are dropped.
-pub(crate) const MIN_PX: f64 = 0.3;
 
 /// Width of the outline drawn around every gouge and leftover, px: it keeps a deviation
 /// thinner than a pixel visible (a 0.25 mm band at 3 px/mm is otherwise lost under the

@@ -38,8 +38,26 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
         0.001
     };
     let raw: RawProfile = toml::from_str(text).map_err(|e| from_toml("profile", text, &e, HELP))?;
-    let at = |span: std::ops::Range<usize>, message: String, help: &str| {
-        let (line, column) = line_col(text, span.start);
+    let r = Reading { text };
+    let start = r.point(*raw.start.get_ref(), raw.start.span())?;
+    let mut ring = vec![[start.z, start.r]];
+    let mut cur = start;
+    for step in &raw.path {
+        cur = r.step(step, cur, tol, &mut ring)?;
+    }
+    r.closed(ring, raw.start.span())
+}
+
+type Span = std::ops::Range<usize>;
+
+/// The profile's text, for the line and column of an error.
+struct Reading<'a> {
+    text: &'a str,
+}
+
+impl Reading<'_> {
+    fn at(&self, span: Span, message: String, help: &str) -> StockError {
+        let (line, column) = line_col(self.text, span.start);
         StockError::Toml {
             file: "profile",
             line,
@@ -47,10 +65,12 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
             message,
             help: help.to_string(),
         }
-    };
-    let check = |p: [f64; 2], span: std::ops::Range<usize>| -> Result<Pt, StockError> {
+    }
+
+    /// A point `[z, x]` a lathe can hold, x a diameter, as (z, r).
+    fn point(&self, p: [f64; 2], span: Span) -> Result<Pt, StockError> {
         if !(p[0].is_finite() && p[1].is_finite() && p[0].abs() <= 1e4 && p[1].abs() <= 2e4) {
-            return Err(at(
+            return Err(self.at(
                 span,
                 format!(
                     "point [{}, {}] is not a coordinate a lathe can hold (|z| ≤ 10 m, x ≤ 20 m)",
@@ -60,105 +80,100 @@ pub fn profile_from_toml(text: &str, chord_tol: f64) -> Result<Vec<Shape>, Stock
             ));
         }
         if p[1] < 0.0 {
-            return Err(at(
+            return Err(self.at(
                 span,
                 format!("x = {} is below the axis", p[1]),
                 "x is a diameter: it cannot be negative",
             ));
         }
         Ok(Pt::new(p[0], p[1] / 2.0))
-    };
-    let start = check(*raw.start.get_ref(), raw.start.span())?;
-    let mut ring = vec![[start.z, start.r]];
-    let mut cur = start;
-    for step in &raw.path {
+    }
+
+    /// One entry of `path` from `cur`: its points pushed onto `ring` (an arc's chords
+    /// within `tol`); where it ends.
+    fn step(
+        &self,
+        step: &Spanned<RawStep>,
+        cur: Pt,
+        tol: f64,
+        ring: &mut Vec<[f64; 2]>,
+    ) -> Result<Pt, StockError> {
         let span = step.span();
         let s = step.get_ref();
-        let to = check(s.to, span.clone())?;
-        match (s.r, s.dir.as_deref()) {
-            (None, None) => ring.push([to.z, to.r]),
-            (Some(r), Some(dir)) => {
-                let ccw = match dir {
-                    "ccw" | "CCW" => true,
-                    "cw" | "CW" => false,
-                    other => {
-                        return Err(at(
-                            span,
-                            format!("dir = \"{other}\" is neither \"cw\" nor \"ccw\""),
-                            HELP,
-                        ))
-                    }
-                };
-                let center = arc_center(cur, to, r, ccw).ok_or_else(|| {
-                    at(
-                        span.clone(),
-                        format!(
-                            "no arc of radius {r} joins the two points (they are {:.4} mm apart)",
-                            cur.dist(to)
-                        ),
-                        "the radius must be at least half the distance between the end points",
-                    )
-                })?;
-                let g = |p: Pt| geom::Pt::new(p.z, p.r);
-                let arc = geom::arc::Arc::between(g(cur), g(to), g(center), ccw);
-                let pts = arc.flatten(tol.max(1e-6)); // the floor G-code arcs are chorded with
-                                                      // the chords' inner points, then the programmed end point exactly
-                ring.extend(pts[1..pts.len() - 1].iter().map(|p| p.to_array()));
+        let to = self.point(s.to, span.clone())?;
+        let ccw = match (s.r, s.dir.as_deref()) {
+            (None, None) => {
                 ring.push([to.z, to.r]);
+                return Ok(to);
+            }
+            (Some(_), Some("ccw" | "CCW")) => true,
+            (Some(_), Some("cw" | "CW")) => false,
+            (Some(_), Some(other)) => {
+                let message = format!("dir = \"{other}\" is neither \"cw\" nor \"ccw\"");
+                return Err(self.at(span, message, HELP));
             }
             (Some(_), None) => {
-                return Err(at(
-                    span,
-                    "an arc needs `dir` (\"cw\" or \"ccw\")".into(),
-                    HELP,
-                ))
+                let message = "an arc needs `dir` (\"cw\" or \"ccw\")".into();
+                return Err(self.at(span, message, HELP));
             }
             (None, Some(_)) => {
-                return Err(at(
-                    span,
-                    "`dir` without `r`: an arc needs its radius".into(),
-                    HELP,
-                ))
+                let message = "`dir` without `r`: an arc needs its radius".into();
+                return Err(self.at(span, message, HELP));
             }
-        }
-        cur = to;
+        };
+        let r = s.r.unwrap_or_default();
+        let center = arc_center(cur, to, r, ccw).ok_or_else(|| {
+            self.at(
+                span.clone(),
+                format!(
+                    "no arc of radius {r} joins the two points (they are {:.4} mm apart)",
+                    cur.dist(to)
+                ),
+                "the radius must be at least half the distance between the end points",
+            )
+        })?;
+        let g = |p: Pt| geom::Pt::new(p.z, p.r);
+        let arc = geom::arc::Arc::between(g(cur), g(to), g(center), ccw);
+        // the floor G-code arcs are chorded with
+        let pts = arc.flatten(tol.max(1e-6));
+        // the chords' inner points, then the programmed end point exactly
+        ring.extend(pts[1..pts.len() - 1].iter().map(|p| p.to_array()));
+        ring.push([to.z, to.r]);
+        Ok(to)
     }
-    // A crossing found by the kernel's sweep first: a tangled outline of 10⁵ points would
-    // make the boolean engine split every one of its crossings before the test below.
-    let outline = geom::flat::pts(&ring);
-    if let Some(x) = geom::ring::self_intersection(&outline) {
-        return Err(at(
-            raw.start.span(),
-            format!(
+
+    /// The region the closed `ring` encloses; an error at `start` when it crosses itself
+    /// or encloses nothing.
+    fn closed(&self, ring: Vec<[f64; 2]>, start: Span) -> Result<Vec<Shape>, StockError> {
+        const UNCROSS: &str = "list the points once around the outline, without crossing an edge";
+        // A crossing found by the kernel's sweep first: a tangled outline of 10⁵ points
+        // would make the boolean engine split every one of its crossings before the test
+        // below.
+        let outline = geom::flat::pts(&ring);
+        if let Some(x) = geom::ring::self_intersection(&outline) {
+            let message = format!(
                 "the outline crosses itself near Z{:.4} X{:.4}",
                 x.z,
                 2.0 * x.r
-            ),
-            "list the points once around the outline, without crossing an edge",
-        ));
-    }
-    let signed = geom::ring::signed_area(&outline).abs();
-    let shapes = overlay::clean(&[ring]);
-    let area = crate::area(&shapes);
-    // A simple outline encloses what its signed area says; one that crosses itself (a
-    // bowtie) has lobes that cancel in the signed area but not in the region.
-    if (area - signed).abs() > 1e-6 * area.max(1.0) + 1e-6 {
-        return Err(at(
-            raw.start.span(),
-            format!(
+            );
+            return Err(self.at(start, message, UNCROSS));
+        }
+        let signed = geom::ring::signed_area(&outline).abs();
+        let shapes = overlay::clean(&[ring]);
+        let area = crate::area(&shapes);
+        // A simple outline encloses what its signed area says; one that crosses itself (a
+        // bowtie) has lobes that cancel in the signed area but not in the region.
+        if (area - signed).abs() > 1e-6 * area.max(1.0) + 1e-6 {
+            let message = format!(
                 "the outline crosses itself: its lobes enclose {area:.4} mm² but wind to {signed:.4} mm²"
-            ),
-            "list the points once around the outline, without crossing an edge",
-        ));
+            );
+            return Err(self.at(start, message, UNCROSS));
+        }
+        if area <= 0.0 {
+            return Err(self.at(start, "the profile encloses no area".into(), HELP));
+        }
+        Ok(shapes)
     }
-    if area <= 0.0 {
-        return Err(at(
-            raw.start.span(),
-            "the profile encloses no area".into(),
-            HELP,
-        ));
-    }
-    Ok(shapes)
 }
 
 /// Centre of the arc of radius |r| from `a` to `b`, counter-clockwise when `ccw`; the short

@@ -219,7 +219,7 @@ fn flank_deg(intents: &[Intent], p: P) -> Option<f64> {
             let edges = if *closed { n } else { n.saturating_sub(1) };
             for k in 0..edges {
                 let (a, b) = (line[k], line[(k + 1) % n]);
-                let d = super::insert::segment_distance(p, a, b);
+                let d = geom::flat::segment_distance(p, a, b);
                 let dz = (b[0] - a[0]).abs();
                 let dr = (b[1] - a[1]).abs();
                 if dz + dr > 0.0 && best.is_none_or(|(bd, _)| d < bd) {

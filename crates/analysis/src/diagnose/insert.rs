@@ -85,7 +85,7 @@ impl Facts {
             let n = dir(normal);
             let t = [c[0] + r * n[0], c[1] + r * n[1]];
             let u = dir(a);
-            segment_distance(q, t, [t[0] + u[0] * self.edge, t[1] + u[1] * self.edge])
+            geom::flat::segment_distance(q, t, [t[0] + u[0] * self.edge, t[1] + u[1] * self.edge])
         };
         let leading = edge(a1, a1 + 90.0);
         let trailing = edge(a2, a2 - 90.0);
@@ -110,18 +110,6 @@ impl Facts {
             Part::Leading
         }
     }
-}
-
-/// Distance from `q` to the segment `a b`.
-pub(crate) fn segment_distance(q: P, a: P, b: P) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let len2 = d[0] * d[0] + d[1] * d[1];
-    let t = if len2 > 0.0 {
-        (((q[0] - a[0]) * d[0] + (q[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (q[0] - a[0] - t * d[0]).hypot(q[1] - a[1] - t * d[1])
 }
 
 #[cfg(test)]

@@ -10,7 +10,6 @@ mod remedy;
 use crate::{Findings, Intent, Settings};
 use expander::Toolpath;
 
-pub(crate) use insert::segment_distance;
 pub use remedy::{Change, Rerun, Rerunning};
 
 /// Most re-runs tried for one program: each is a whole simulation.

@@ -25,6 +25,18 @@ pub fn dist(a: P, b: P) -> f64 {
     (b[0] - a[0]).hypot(b[1] - a[1])
 }
 
+/// Distance from `q` to the segment `a b`.
+pub fn segment_distance(q: P, a: P, b: P) -> f64 {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let len2 = d[0] * d[0] + d[1] * d[1];
+    let t = if len2 > 0.0 {
+        (((q[0] - a[0]) * d[0] + (q[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (q[0] - a[0] - t * d[0]).hypot(q[1] - a[1] - t * d[1])
+}
+
 /// The point a fraction `t` of the way from `a` to `b`.
 pub fn lerp(a: P, b: P, t: f64) -> P {
     [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t]

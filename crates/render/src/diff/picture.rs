@@ -7,8 +7,9 @@
 use super::{DiffRegion, DiffReport};
 use crate::doc::Doc;
 use crate::layout::{self, colour, FS_SMALL, FS_TEXT, FS_TITLE, FS_VERDICT, MAIN};
+use crate::path::MIN_PX;
 use crate::path::{deviation_d, shapes_d};
-use crate::plot::{axes, centre_line, DEVIATION_EDGE_PX, MIN_PX};
+use crate::plot::{axes, centre_line, DEVIATION_EDGE_PX};
 use crate::scale::{Bbox, View};
 use crate::text::{chars_fitting, duration, num, quantity, truncate, width, wrap};
 

@@ -185,44 +185,92 @@ fn designated(raw: &RawTool) -> Result<Option<Designated>, (&'static str, String
     Ok(Some(d))
 }
 
+/// The checks of one `[[tool]]` record: errors name its number, the field and the line.
+struct Check {
+    t: u32,
+    line: usize,
+}
+
+impl Check {
+    fn err(&self, field: &'static str, message: String) -> StockError {
+        StockError::Tool {
+            t: self.t,
+            field,
+            message,
+            line: self.line,
+        }
+    }
+
+    /// A finite length or angle in `(min, max]` (`[min, max]` when `zero_ok`), or its
+    /// default when not given (required when there is none).
+    fn num(
+        &self,
+        field: &'static str,
+        v: Option<f64>,
+        default: Option<f64>,
+        min: f64,
+        max: f64,
+        zero_ok: bool,
+    ) -> Result<f64, StockError> {
+        let v = match (v, default) {
+            (Some(v), _) => v,
+            (None, Some(d)) => return Ok(d),
+            (None, None) => return Err(self.err(field, "is required for this kind of tool".into())),
+        };
+        let ok = v.is_finite() && v <= max && if zero_ok { v >= min } else { v > min };
+        if ok {
+            return Ok(v);
+        }
+        let bound = if zero_ok {
+            format!("at least {min}")
+        } else {
+            format!("greater than {min}")
+        };
+        Err(self.err(field, format!("= {v} must be {bound} and at most {max}")))
+    }
+
+    /// A stated bar or shank size.
+    fn shank(&self, v: Option<f64>) -> Result<Option<f64>, StockError> {
+        v.map(|v| self.num("shank", Some(v), None, 0.0, 1000.0, false))
+            .transpose()
+    }
+}
+
 fn parse_tool(
     raw: &RawTool,
     line: usize,
 ) -> Result<(Tool, Option<String>, HolderSize), StockError> {
-    let t = raw.t;
-    let err = |field: &'static str, message: String| StockError::Tool {
-        t,
-        field,
-        message,
-        line,
-    };
-    // a positive (or non-negative) finite length or angle, with its default
-    let num = |field: &'static str,
-               v: Option<f64>,
-               default: Option<f64>,
-               min: f64,
-               max: f64,
-               zero_ok: bool| {
-        let v = match (v, default) {
-            (Some(v), _) => v,
-            (None, Some(d)) => return Ok(d),
-            (None, None) => return Err(err(field, "is required for this kind of tool".into())),
-        };
-        let ok = v.is_finite() && v <= max && if zero_ok { v >= min } else { v > min };
-        if ok {
-            Ok(v)
-        } else {
-            let bound = if zero_ok {
-                format!("at least {min}")
-            } else {
-                format!("greater than {min}")
-            };
-            Err(err(
-                field,
-                format!("= {v} must be {bound} and at most {max}"),
-            ))
+    let c = Check { t: raw.t, line };
+    check_fields(raw, &c)?;
+    let mut size = carried_size(raw, &c)?;
+    let mut designation = None;
+    let tool = match raw.kind.as_str() {
+        "turning" => {
+            let (tool, text, turning_size) = turning(raw, &c)?;
+            designation = text;
+            size = turning_size;
+            tool
         }
+        "grooving" => grooving(raw, &c)?,
+        "drill" => Tool::Drill {
+            diameter: c.num("diameter", raw.diameter, None, 0.0, 10000.0, false)?,
+            point_angle: c.num(
+                "point_angle",
+                raw.point_angle,
+                Some(118.0),
+                0.0,
+                180.0,
+                false,
+            )?,
+            reach: c.num("reach", raw.reach, Some(60.0), 0.0, 10000.0, false)?,
+        },
+        _ => threading(raw, &c)?,
     };
+    Ok((tool, designation, size))
+}
+
+/// The kind is known and only its own fields are given.
+fn check_fields(raw: &RawTool, c: &Check) -> Result<(), StockError> {
     let fields: [(&'static str, bool); 17] = [
         ("insert", raw.insert.is_some()),
         ("holder", raw.holder.is_some()),
@@ -263,181 +311,173 @@ fn parse_tool(
         "drill" => &["diameter", "point_angle", "reach"],
         "threading" => &["angle", "tip_flat", "side", "shank"],
         other => {
-            return Err(err(
+            return Err(c.err(
                 "kind",
                 format!("= \"{other}\" is not one of turning, grooving, drill, threading"),
             ));
         }
     };
-    if let Some((field, _)) = fields.iter().find(|(f, set)| *set && !allowed.contains(f)) {
-        return Err(err(field, format!("does not apply to a {} tool", raw.kind)));
+    match fields.iter().find(|(f, set)| *set && !allowed.contains(f)) {
+        Some((field, _)) => Err(c.err(field, format!("does not apply to a {} tool", raw.kind))),
+        None => Ok(()),
     }
-    let mut designation = None;
+}
+
+/// What a blade, drill or threading insert says of its holder: a blade's or a drill's
+/// holder starts where its stated reach ends; the bar an ID blade or insert sits on
+/// (spec/simulation.md, "ID tools are carried along Z"), an ID threading insert's stated
+/// by its `shank`.
+fn carried_size(raw: &RawTool, c: &Check) -> Result<HolderSize, StockError> {
     let mut size = HolderSize::default();
     if matches!(raw.kind.as_str(), "grooving" | "drill") {
-        // a blade's or a drill's holder starts where its stated reach ends
         size.declared = raw.reach.is_some();
     }
     if matches!(raw.kind.as_str(), "grooving" | "threading") {
-        // the bar an ID blade or insert sits on (spec/simulation.md, "ID tools are
-        // carried along Z"); an ID threading insert's bar is stated by its `shank`
-        size.shank = raw
-            .shank
-            .map(|v| num("shank", Some(v), None, 0.0, 1000.0, false))
-            .transpose()?;
+        size.shank = c.shank(raw.shank)?;
         if raw.kind == "threading" {
             size.declared = size.shank.is_some();
         }
     }
-    let tool = match raw.kind.as_str() {
-        "turning" => {
-            let iso = designated(raw).map_err(|(field, message)| err(field, message))?;
-            let insert = match &raw.insert {
-                _ if iso.is_some() => iso.as_ref().map_or(Insert::D, |d| d.insert),
-                None => Insert::D,
-                Some(s) => Insert::from_letter(s).ok_or_else(|| {
-                    err(
-                        "insert",
-                        format!("= \"{s}\" is not an ISO shape letter (C, D, T, V, W, S, R)"),
-                    )
-                })?,
-            };
-            let tip = match raw.tip {
-                // a holder's usual tip for its hand (an explicit `tip` wins: a rear post)
-                None => iso.as_ref().and_then(|d| d.holder).map_or(3, |h| h.1),
-                Some(v @ 0..=9) => v as u8,
-                Some(v) => {
-                    return Err(err(
-                        "tip",
-                        format!("= {v} is not an imaginary tip number (0-9)"),
-                    ))
-                }
-            };
-            let nose_radius = num(
-                "nose_radius",
-                raw.nose_radius,
-                Some(iso.as_ref().map_or(0.4, |d| d.nose_radius)),
-                0.0,
-                100.0,
-                insert != Insert::R,
-            )?;
-            let entering_angle = num(
-                "entering_angle",
-                raw.entering_angle,
-                Some(iso.as_ref().and_then(|d| d.holder).map_or(93.0, |h| h.0)),
-                0.0,
-                180.0,
-                false,
-            )?;
-            let edge = num(
-                "edge",
-                raw.edge,
-                Some(iso.as_ref().map_or(11.0, |d| d.edge)),
-                0.0,
-                1000.0,
-                false,
-            )?;
-            size = HolderSize {
-                shank: match iso.as_ref().and_then(|d| d.size.shank) {
-                    Some(s) => Some(s),
-                    None => raw
-                        .shank
-                        .map(|v| num("shank", Some(v), None, 0.0, 1000.0, false))
-                        .transpose()?,
-                },
-                length: iso.as_ref().and_then(|d| d.size.length),
-                declared: false,
-            };
-            size.declared = size.shank.is_some();
-            designation = iso.map(|d| d.text);
-            if insert != Insert::R && entering_angle + insert.included_angle() >= 180.0 {
-                return Err(err("entering_angle", format!("= {entering_angle}: with a {}° insert the trailing edge would point into the part", insert.included_angle())));
-            }
-            Tool::Turning {
-                insert,
-                nose_radius,
-                tip,
-                entering_angle,
-                edge,
-            }
-        }
-        "grooving" => {
-            let dir = |field: &'static str, v: &Option<String>, d: AxisDir| match v {
-                None => Ok(d),
-                Some(s) => AxisDir::parse(s).ok_or_else(|| {
-                    err(
-                        field,
-                        format!("= \"{s}\" is not one of \"+z\", \"-z\", \"+x\", \"-x\""),
-                    )
-                }),
-            };
-            let width = num("width", raw.width, Some(3.0), 0.0, 1000.0, false)?;
-            let width_dir = dir("width_dir", &raw.width_dir, AxisDir::PlusZ)?;
-            let default_shank = if width_dir.is_z() {
-                AxisDir::PlusX
-            } else {
-                AxisDir::PlusZ
-            };
-            let shank_dir = dir("shank_dir", &raw.shank_dir, default_shank)?;
-            if width_dir.is_z() == shank_dir.is_z() {
-                return Err(err(
-                    "shank_dir",
-                    format!(
-                        "= \"{}\" must be across the width direction \"{}\"",
-                        shank_dir.text(),
-                        width_dir.text()
-                    ),
-                ));
-            }
-            let reach = num("reach", raw.reach, Some(20.0), 0.0, 10000.0, false)?;
-            let corner_radius = num(
-                "corner_radius",
-                raw.corner_radius,
-                Some(0.0),
-                0.0,
-                width / 2.0,
-                true,
-            )?;
-            Tool::Grooving(GroovingBlade {
-                width,
-                width_dir,
-                shank_dir,
-                reach,
-                corner_radius,
-            })
-        }
-        "drill" => Tool::Drill {
-            diameter: num("diameter", raw.diameter, None, 0.0, 10000.0, false)?,
-            point_angle: num(
-                "point_angle",
-                raw.point_angle,
-                Some(118.0),
-                0.0,
-                180.0,
-                false,
-            )?,
-            reach: num("reach", raw.reach, Some(60.0), 0.0, 10000.0, false)?,
-        },
-        _ => {
-            let angle = num("angle", raw.angle, Some(60.0), 0.0, 170.0, false)?;
-            let side = match raw.side.as_deref() {
-                None | Some("od") => ThreadSide::Od,
-                Some("id") => ThreadSide::Id,
-                Some(other) => {
-                    return Err(err(
-                        "side",
-                        format!("= \"{other}\" is not one of od, id (an OD insert cuts inward, an ID insert outward from the bore)"),
-                    ))
-                }
-            };
-            Tool::Threading {
-                angle,
-                tip_flat: num("tip_flat", raw.tip_flat, Some(0.0), 0.0, 100.0, true)?,
-                side,
-            }
+    Ok(size)
+}
+
+/// A turning tool: its ISO designations first, then the fields that give or repeat them.
+fn turning(raw: &RawTool, c: &Check) -> Result<(Tool, Option<String>, HolderSize), StockError> {
+    let iso = designated(raw).map_err(|(field, message)| c.err(field, message))?;
+    let insert = match &raw.insert {
+        _ if iso.is_some() => iso.as_ref().map_or(Insert::D, |d| d.insert),
+        None => Insert::D,
+        Some(s) => Insert::from_letter(s).ok_or_else(|| {
+            c.err(
+                "insert",
+                format!("= \"{s}\" is not an ISO shape letter (C, D, T, V, W, S, R)"),
+            )
+        })?,
+    };
+    let tip = match raw.tip {
+        // a holder's usual tip for its hand (an explicit `tip` wins: a rear post)
+        None => iso.as_ref().and_then(|d| d.holder).map_or(3, |h| h.1),
+        Some(v @ 0..=9) => v as u8,
+        Some(v) => return Err(c.err("tip", format!("= {v} is not an imaginary tip number (0-9)"))),
+    };
+    let nose_radius = c.num(
+        "nose_radius",
+        raw.nose_radius,
+        Some(iso.as_ref().map_or(0.4, |d| d.nose_radius)),
+        0.0,
+        100.0,
+        insert != Insert::R,
+    )?;
+    let entering_angle = c.num(
+        "entering_angle",
+        raw.entering_angle,
+        Some(iso.as_ref().and_then(|d| d.holder).map_or(93.0, |h| h.0)),
+        0.0,
+        180.0,
+        false,
+    )?;
+    let edge = c.num(
+        "edge",
+        raw.edge,
+        Some(iso.as_ref().map_or(11.0, |d| d.edge)),
+        0.0,
+        1000.0,
+        false,
+    )?;
+    let shank = match iso.as_ref().and_then(|d| d.size.shank) {
+        Some(s) => Some(s),
+        None => c.shank(raw.shank)?,
+    };
+    let size = HolderSize {
+        shank,
+        length: iso.as_ref().and_then(|d| d.size.length),
+        declared: shank.is_some(),
+    };
+    if insert != Insert::R && entering_angle + insert.included_angle() >= 180.0 {
+        return Err(c.err(
+            "entering_angle",
+            format!(
+                "= {entering_angle}: with a {}° insert the trailing edge would point into the part",
+                insert.included_angle()
+            ),
+        ));
+    }
+    let tool = Tool::Turning {
+        insert,
+        nose_radius,
+        tip,
+        entering_angle,
+        edge,
+    };
+    Ok((tool, iso.map(|d| d.text), size))
+}
+
+/// A grooving blade: width, the directions of its width and shank (across each other),
+/// reach and corner radius.
+fn grooving(raw: &RawTool, c: &Check) -> Result<Tool, StockError> {
+    let dir = |field: &'static str, v: &Option<String>, d: AxisDir| match v {
+        None => Ok(d),
+        Some(s) => AxisDir::parse(s).ok_or_else(|| {
+            c.err(
+                field,
+                format!("= \"{s}\" is not one of \"+z\", \"-z\", \"+x\", \"-x\""),
+            )
+        }),
+    };
+    let width = c.num("width", raw.width, Some(3.0), 0.0, 1000.0, false)?;
+    let width_dir = dir("width_dir", &raw.width_dir, AxisDir::PlusZ)?;
+    let default_shank = if width_dir.is_z() {
+        AxisDir::PlusX
+    } else {
+        AxisDir::PlusZ
+    };
+    let shank_dir = dir("shank_dir", &raw.shank_dir, default_shank)?;
+    if width_dir.is_z() == shank_dir.is_z() {
+        return Err(c.err(
+            "shank_dir",
+            format!(
+                "= \"{}\" must be across the width direction \"{}\"",
+                shank_dir.text(),
+                width_dir.text()
+            ),
+        ));
+    }
+    let reach = c.num("reach", raw.reach, Some(20.0), 0.0, 10000.0, false)?;
+    let corner_radius = c.num(
+        "corner_radius",
+        raw.corner_radius,
+        Some(0.0),
+        0.0,
+        width / 2.0,
+        true,
+    )?;
+    Ok(Tool::Grooving(GroovingBlade {
+        width,
+        width_dir,
+        shank_dir,
+        reach,
+        corner_radius,
+    }))
+}
+
+/// A threading insert: its included angle, tip flat and side.
+fn threading(raw: &RawTool, c: &Check) -> Result<Tool, StockError> {
+    let angle = c.num("angle", raw.angle, Some(60.0), 0.0, 170.0, false)?;
+    let side = match raw.side.as_deref() {
+        None | Some("od") => ThreadSide::Od,
+        Some("id") => ThreadSide::Id,
+        Some(other) => {
+            return Err(c.err(
+                "side",
+                format!("= \"{other}\" is not one of od, id (an OD insert cuts inward, an ID insert outward from the bore)"),
+            ))
         }
     };
-    Ok((tool, designation, size))
+    Ok(Tool::Threading {
+        angle,
+        tip_flat: c.num("tip_flat", raw.tip_flat, Some(0.0), 0.0, 100.0, true)?,
+        side,
+    })
 }
 
 #[cfg(test)]
