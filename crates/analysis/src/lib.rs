@@ -36,7 +36,7 @@ pub use measure::{
 };
 pub use pose::{tool_at_crash, tool_outlines};
 
-use expander::{IntendedKind, Machine, Motion, Toolpath};
+use expander::{IntendedKind, Machine, Motion, Segment, Toolpath};
 use stock::{Blank, Shape, SimOptions, Simulation, ToolTable};
 
 /// Most findings of one kind a report lists, and most notes of later cuts.
@@ -158,7 +158,6 @@ fn conclude(
     beside: Beside,
 ) -> Findings {
     let segments = &toolpath.segments;
-    let cut_tol = s.machine.rapid_cut_tol;
     let stocks = Stocks {
         s,
         sim,
@@ -176,49 +175,15 @@ fn conclude(
             CHORD_TOL,
         )
     });
-    let rear = &beside.facts.rear;
-    let (removal, scrapes) = crashes::split(sim, cut_tol, segments, s.tools, rear);
-    let mut crashes = crashes::crashes(removal, &beside.fixture_crashes);
-    crashes::place_tools(&mut crashes, segments, s.tools, rear, CHORD_TOL);
-    let mut warnings = crashes::scrape_notes(&scrapes, segments, s.tools, rear, cut_tol);
-    warnings.extend(crashes::mark_assumed(
-        &mut crashes,
-        segments,
-        s,
-        rear,
-        CHORD_TOL,
-    ));
-    let mut part_warnings = deviation
-        .as_ref()
-        .map(|d| deviation::later_cut_notes(d, segments))
-        .unwrap_or_default();
-    part_warnings.extend(
-        deviation
-            .iter()
-            .flat_map(|d| &d.gouges)
-            .filter(|g| g.assumed)
-            .filter_map(|g| {
-                let seg = &segments[g.made_by?];
-                Some(assumed::note("gouge", g.depth, seg, s.tools))
-            }),
-    );
-    // the stock each thread cuts into, where it was kept (short programs)
-    let thread_stock: Vec<(usize, Vec<Shape>)> = beside
-        .thread_passes
-        .starts()
-        .into_iter()
-        .filter_map(|k| stocks.kept_at(k).map(|st| (k, st)))
-        .collect();
-    let target = match intents {
-        Intents::Target(_) => intents_read.first().map(|i| i.part.as_slice()),
-        Intents::Program => None,
-    };
-    let checked = threads::check(
-        &beside.thread_passes,
-        segments,
-        &sim.final_shapes,
-        target,
-        &thread_stock,
+    let (crashes, scrapes, warnings) = crash_findings(sim, segments, s, &beside);
+    let mut part_warnings = part_notes(deviation.as_ref(), segments, s.tools);
+    let checked = check_threads(
+        toolpath,
+        sim,
+        &stocks,
+        intents,
+        &intents_read,
+        &beside,
         s.tol,
     );
     part_warnings.extend(checked.warnings);
@@ -237,6 +202,79 @@ fn conclude(
     };
     findings.verdict = findings.judge(toolpath.alarms.len(), s.tol);
     findings
+}
+
+/// The crashes (workholding ones merged in move order, each with its tool placed, possible
+/// ones marked), the scrapes, and their warnings.
+fn crash_findings(
+    sim: &Simulation,
+    segments: &[Segment],
+    s: &Settings,
+    beside: &Beside,
+) -> (Vec<Crash>, Vec<Crash>, Vec<Note>) {
+    let cut_tol = s.machine.rapid_cut_tol;
+    let rear = &beside.facts.rear;
+    let (removal, scrapes) = crashes::split(sim, cut_tol, segments, s.tools, rear);
+    let mut crashes = crashes::crashes(removal, &beside.fixture_crashes);
+    crashes::place_tools(&mut crashes, segments, s.tools, rear, CHORD_TOL);
+    let mut warnings = crashes::scrape_notes(&scrapes, segments, s.tools, rear, cut_tol);
+    warnings.extend(crashes::mark_assumed(
+        &mut crashes,
+        segments,
+        s,
+        rear,
+        CHORD_TOL,
+    ));
+    (crashes, scrapes, warnings)
+}
+
+/// The part's warnings from the deviation: later operations' own cuts, possible gouges.
+fn part_notes(deviation: Option<&Deviation>, segments: &[Segment], tools: &ToolTable) -> Vec<Note> {
+    let mut notes = deviation
+        .map(|d| deviation::later_cut_notes(d, segments))
+        .unwrap_or_default();
+    notes.extend(
+        deviation
+            .iter()
+            .flat_map(|d| &d.gouges)
+            .filter(|g| g.assumed)
+            .filter_map(|g| {
+                let seg = &segments[g.made_by?];
+                Some(assumed::note("gouge", g.depth, seg, tools))
+            }),
+    );
+    notes
+}
+
+/// The threads checked against the final part (and `--target`), each against the stock it
+/// cut into where the run kept it (short programs).
+fn check_threads(
+    toolpath: &Toolpath,
+    sim: &Simulation,
+    stocks: &Stocks,
+    intents: &Intents,
+    intents_read: &[Intent],
+    beside: &Beside,
+    tol: f64,
+) -> threads::Checked {
+    let thread_stock: Vec<(usize, Vec<Shape>)> = beside
+        .thread_passes
+        .starts()
+        .into_iter()
+        .filter_map(|k| stocks.kept_at(k).map(|st| (k, st)))
+        .collect();
+    let target = match intents {
+        Intents::Target(_) => intents_read.first().map(|i| i.part.as_slice()),
+        Intents::Program => None,
+    };
+    threads::check(
+        &beside.thread_passes,
+        &toolpath.segments,
+        &sim.final_shapes,
+        target,
+        &thread_stock,
+        tol,
+    )
 }
 
 /// The stock part-way through the run, where the removal kept it.

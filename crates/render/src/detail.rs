@@ -123,6 +123,38 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
             lo
         }
     };
+    let mut out = crash_and_gouge_views(report, &clampf);
+    out.retain(|f| f.z.is_finite() && f.r.is_finite());
+    out.extend(report.grooves.iter().filter_map(groove_view));
+    if out.len() < MAX_DETAILS {
+        if let Some(f) = leftover_finding(report, &clampf) {
+            out.push(f);
+        }
+    }
+    for t in &report.threads {
+        if out.len() >= MAX_DETAILS {
+            break;
+        }
+        if let Some(window) = thread_window(t) {
+            out.push(Finding {
+                why: Vec::new(),
+                title: thread_title(t),
+                z: 0.0,
+                r: 0.0,
+                half: 0.0,
+                kind: Kind::Thread(t, window),
+            });
+        }
+    }
+    out.truncate(MAX_DETAILS);
+    out
+}
+
+/// A detail view for each crash and gouge, sized by `clampf` from its area and depth.
+fn crash_and_gouge_views<'a>(
+    report: &'a Report,
+    clampf: &dyn Fn(f64, f64) -> f64,
+) -> Vec<Finding<'a>> {
     let mut out = Vec::new();
     for c in &report.crashes {
         out.push(Finding {
@@ -156,50 +188,28 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
             kind: Kind::Gouge,
         });
     }
-    out.retain(|f| f.z.is_finite() && f.r.is_finite());
-    for g in &report.grooves {
-        let Some(ring) = groove::clean_ring(&g.ring) else {
-            continue;
-        };
-        let title = match g.deviation_mm.filter(|d| d.is_finite()) {
-            Some(d) => format!(
-                "groove line {} (deviation ≤ {} mm)",
-                g.line,
-                num(groove::shown_deviation(d), 3)
-            ),
-            None => format!("groove line {}", g.line),
-        };
-        out.push(Finding {
-            why: Vec::new(),
-            title,
-            z: 0.0,
-            r: 0.0,
-            half: 0.0,
-            kind: Kind::Groove(g, ring),
-        });
-    }
-    if out.len() < MAX_DETAILS {
-        if let Some(f) = leftover_finding(report, &clampf) {
-            out.push(f);
-        }
-    }
-    for t in &report.threads {
-        if out.len() >= MAX_DETAILS {
-            break;
-        }
-        if let Some(window) = thread_window(t) {
-            out.push(Finding {
-                why: Vec::new(),
-                title: thread_title(t),
-                z: 0.0,
-                r: 0.0,
-                half: 0.0,
-                kind: Kind::Thread(t, window),
-            });
-        }
-    }
-    out.truncate(MAX_DETAILS);
     out
+}
+
+/// A groove's detail view, titled with its deviation.
+fn groove_view(g: &Groove) -> Option<Finding<'_>> {
+    let ring = groove::clean_ring(&g.ring)?;
+    let title = match g.deviation_mm.filter(|d| d.is_finite()) {
+        Some(d) => format!(
+            "groove line {} (deviation ≤ {} mm)",
+            g.line,
+            num(groove::shown_deviation(d), 3)
+        ),
+        None => format!("groove line {}", g.line),
+    };
+    Some(Finding {
+        why: Vec::new(),
+        title,
+        z: 0.0,
+        r: 0.0,
+        half: 0.0,
+        kind: Kind::Groove(g, ring),
+    })
 }
 
 /// The radial depth the thread's teeth are drawn for: the passes' infeeds added up, else

@@ -706,6 +706,26 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
     solid::section(&mut out, report);
 
     // 4. The move slider.
+    player_section(&mut out, report, n, moves.stride);
+
+    // 5. Tables.
+    tables_section(&mut out, report);
+
+    let _ = writeln!(
+        out,
+        "<script type=\"application/json\" id=\"ls-data\">{data}</script>"
+    );
+    // the 3D view in a script of its own: neither stops the other
+    let _ = writeln!(
+        out,
+        "<script>\n{TOOLS_SCRIPT}{SCRIPT}</script>\n<script>\n{}</script>\n</body>\n</html>",
+        solid::SCRIPT
+    );
+    out
+}
+
+/// The move slider's section: its buttons, legend and canvas, and notes on what it shows.
+fn player_section(out: &mut String, report: &Report, n: usize, stride: usize) {
     out.push_str("<section id=\"ls-player\"><h2>Step through the moves</h2>\n");
     out.push_str("<noscript><p class=\"note\">The move slider needs JavaScript.</p></noscript>\n");
     let _ = writeln!(
@@ -714,16 +734,16 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
 <input type=\"range\" id=\"ls-slider\" min=\"0\" max=\"{n}\" step=\"1\" value=\"{n}\" aria-label=\"move\">\
 <output id=\"ls-label\" for=\"ls-slider\">move {n} / {n}</output></div>"
     );
-    player_legend(&mut out, report);
+    player_legend(out, report);
     out.push_str("<div class=\"canvasbox\"><canvas id=\"ls-canvas\" width=\"1200\" height=\"600\"></canvas></div>\n");
     let mut notes = vec![
         "The ← and → keys step one move (with the slider focused, also Page Up/Down and Home/End); a link ending in #move=20 opens at move 20; click a row of the findings tables to jump to the first move of its line.".to_string(),
     ];
-    if moves.stride > 1 {
+    if stride > 1 {
         notes.push(format!(
             "Toolpath thinned for this page: {} moves, only every {} is drawn (at most about {} points); the slider still counts every move and names the nearest drawn one.",
             grouped(n as f64, 0),
-            ordinal(moves.stride),
+            ordinal(stride),
             grouped(PATH_POINT_CAP as f64, 0)
         ));
     }
@@ -737,33 +757,29 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
         let _ = writeln!(out, "<p class=\"note\">{}</p>", esc(&note));
     }
     out.push_str("</section>\n");
+}
 
-    // 5. Tables.
+/// The summary and the findings tables.
+fn tables_section(out: &mut String, report: &Report) {
     out.push_str("<section id=\"ls-tables\"><h2>Summary</h2>\n");
-    summary_table(&mut out, report);
+    summary_table(out, report);
     out.push_str("</section>\n<section id=\"ls-findings\"><h2>Findings</h2>\n");
-    diag_table(&mut out, "ls-alarms", "Alarms", &report.alarms, "alarm");
+    diag_table(out, "ls-alarms", "Alarms", &report.alarms, "alarm");
     crash_table(
-        &mut out,
+        out,
         "ls-crashes",
         "Crashes (rapids into stock, tool bodies, chuck and tailstock)",
         &report.crashes,
     );
     crash_table(
-        &mut out,
+        out,
         "ls-scrapes",
         "Rapid scrapes (rapids that re-cut no deeper than rapid_cut_tol: warnings)",
         &report.rapid_cuts,
     );
-    gouge_table(&mut out, &report.gouges);
-    threads::threads_table(&mut out, &report.threads);
-    diag_table(
-        &mut out,
-        "ls-warnings",
-        "Warnings",
-        &report.warnings,
-        "warning",
-    );
+    gouge_table(out, &report.gouges);
+    threads::threads_table(out, &report.threads);
+    diag_table(out, "ls-warnings", "Warnings", &report.warnings, "warning");
     let quiet = report.alarms.is_empty()
         && report.crashes.is_empty()
         && report.rapid_cuts.is_empty()
@@ -775,18 +791,6 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
         out.push_str("<p class=\"print-only\">No alarm, crash, rapid scrape, gouge, thread or warning.</p>\n");
     }
     out.push_str("</section>\n");
-
-    let _ = writeln!(
-        out,
-        "<script type=\"application/json\" id=\"ls-data\">{data}</script>"
-    );
-    // the 3D view in a script of its own: neither stops the other
-    let _ = writeln!(
-        out,
-        "<script>\n{TOOLS_SCRIPT}{SCRIPT}</script>\n<script>\n{}</script>\n</body>\n</html>",
-        solid::SCRIPT
-    );
-    out
 }
 
 #[cfg(test)]

@@ -194,6 +194,55 @@ struct ThreadJ {
     z_end: Option<f64>,
 }
 
+impl From<&crate::Gouge> for GougeJ {
+    fn from(g: &crate::Gouge) -> Self {
+        Self {
+            line: g.line,
+            z: r6(g.z),
+            x: r6(2.0 * g.r),
+            area_mm2: r6(g.area_mm2),
+            depth_mm: r6(g.depth_mm),
+            assumed_tool: g.assumed,
+            cause: g.cause.as_ref().map(CauseJ::from),
+            remedy: g.remedy.as_ref().map(RemedyJ::from),
+        }
+    }
+}
+
+impl From<&crate::Leftover> for LeftoverJ {
+    fn from(l: &crate::Leftover) -> Self {
+        Self {
+            z: r6(l.z),
+            x: r6(2.0 * l.r),
+            area_mm2: r6(l.area_mm2),
+            depth_mm: r6(l.depth_mm),
+            cause: l.cause.as_ref().map(CauseJ::from),
+            remedy: None,
+        }
+    }
+}
+
+impl From<&crate::report::ThreadCheck> for ThreadJ {
+    fn from(t: &crate::report::ThreadCheck) -> Self {
+        Self {
+            line: t.line,
+            side: if t.inside { "id" } else { "od" },
+            lead_mm: r6(t.lead_mm),
+            starts: t.starts.max(1),
+            x: r6(t.x_mm),
+            expected_x: t.expected_x_mm.and_then(r6),
+            passes: t.pass_depths_mm.len(),
+            pass_depths_mm: t.pass_depths_mm.iter().map(|&d| r6(d)).collect(),
+            achieved_x: t.achieved_x_mm.and_then(r6),
+            depth_error_mm: t.depth_error_mm.and_then(r6),
+            pitch_diameter: t.pitch_diameter_mm.and_then(r6),
+            included_angle_deg: t.included_angle_deg.and_then(r6),
+            z_start: r6(t.z_start_mm),
+            z_end: r6(t.z_end_mm),
+        }
+    }
+}
+
 #[derive(Serialize)]
 struct DeviationJ {
     overcut_area_mm2: Option<f64>,
@@ -282,32 +331,8 @@ pub(crate) fn json(report: &Report) -> String {
         warnings: report.warnings.iter().map(Diag::from).collect(),
         crashes: report.crashes.iter().map(CrashJ::from).collect(),
         rapid_cuts: report.rapid_cuts.iter().map(CrashJ::from).collect(),
-        gouges: report
-            .gouges
-            .iter()
-            .map(|g| GougeJ {
-                line: g.line,
-                z: r6(g.z),
-                x: r6(2.0 * g.r),
-                area_mm2: r6(g.area_mm2),
-                depth_mm: r6(g.depth_mm),
-                assumed_tool: g.assumed,
-                cause: g.cause.as_ref().map(CauseJ::from),
-                remedy: g.remedy.as_ref().map(RemedyJ::from),
-            })
-            .collect(),
-        leftovers: report
-            .leftover_list
-            .iter()
-            .map(|l| LeftoverJ {
-                z: r6(l.z),
-                x: r6(2.0 * l.r),
-                area_mm2: r6(l.area_mm2),
-                depth_mm: r6(l.depth_mm),
-                cause: l.cause.as_ref().map(CauseJ::from),
-                remedy: None,
-            })
-            .collect(),
+        gouges: report.gouges.iter().map(GougeJ::from).collect(),
+        leftovers: report.leftover_list.iter().map(LeftoverJ::from).collect(),
         deviation: report.deviation.as_ref().map(|d| DeviationJ {
             overcut_area_mm2: r6(d.overcut_area_mm2),
             undercut_area_mm2: r6(d.undercut_area_mm2),
@@ -335,26 +360,7 @@ pub(crate) fn json(report: &Report) -> String {
             .iter()
             .map(|&(line, count)| LineCountJ { line, count })
             .collect(),
-        threads: report
-            .threads
-            .iter()
-            .map(|t| ThreadJ {
-                line: t.line,
-                side: if t.inside { "id" } else { "od" },
-                lead_mm: r6(t.lead_mm),
-                starts: t.starts.max(1),
-                x: r6(t.x_mm),
-                expected_x: t.expected_x_mm.and_then(r6),
-                passes: t.pass_depths_mm.len(),
-                pass_depths_mm: t.pass_depths_mm.iter().map(|&d| r6(d)).collect(),
-                achieved_x: t.achieved_x_mm.and_then(r6),
-                depth_error_mm: t.depth_error_mm.and_then(r6),
-                pitch_diameter: t.pitch_diameter_mm.and_then(r6),
-                included_angle_deg: t.included_angle_deg.and_then(r6),
-                z_start: r6(t.z_start_mm),
-                z_end: r6(t.z_end_mm),
-            })
-            .collect(),
+        threads: report.threads.iter().map(ThreadJ::from).collect(),
     };
     // Serialising plain structs of strings, integers and Option<f64> cannot fail.
     serde_json::to_string_pretty(&doc).unwrap_or_else(|_| "{}".to_string())

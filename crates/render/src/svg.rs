@@ -104,15 +104,60 @@ pub(crate) fn svg(report: &Report) -> String {
 /// The legend row(s) under the main plot; only kinds present are listed, except the
 /// always-present part, blank and toolpath basics.
 fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
-    enum Sw {
-        Fill(&'static str, &'static str),
-        Line(&'static str, &'static str),
-        Marker,
-        Scrape,
-        Hatch,
+    let items = legend_items(report);
+    let note = thinned.then_some("toolpath thinned (not every move drawn)");
+    let (x_start, x_end) = (40.0, MAIN[0] + MAIN[2]);
+    let mut x = x_start;
+    let mut y = layout::LEGEND_Y;
+    doc.open("g", &[("id", "legend".into())]);
+    for (sw, label) in items {
+        let w = 30.0 + width(label, FS_TEXT) + 22.0;
+        if x + w > x_end && x > x_start {
+            x = x_start;
+            y += 26.0;
+        }
+        match sw {
+            Sw::Fill(f, s) => doc.rect([x, y - 12.0, 22.0, 14.0], f, s, 1.0),
+            Sw::Line(c, dash) => doc.line([x, y - 5.0], [x + 22.0, y - 5.0], c, 2.2, dash),
+            Sw::Marker => marker(doc, x + 11.0, y - 5.0, colour::CRASH),
+            Sw::Scrape => crate::marks::scrape_marker(doc, x + 11.0, y - 5.0),
+            Sw::Hatch => {
+                crate::plot::hatch_defs(doc, "possible-hatch-legend", 1.0);
+                doc.rect(
+                    [x, y - 12.0, 22.0, 14.0],
+                    "url(#possible-hatch-legend)",
+                    colour::GOUGE_EDGE,
+                    1.0,
+                );
+            }
+        }
+        doc.text(x + 30.0, y, FS_TEXT, "start", colour::INK, label);
+        x += w;
     }
+    if let Some(n) = note {
+        let w = width(n, FS_TEXT);
+        if x + w > x_end && x > x_start {
+            x = x_start;
+            y += 26.0;
+        }
+        doc.text(x, y, FS_TEXT, "start", colour::BAD, n);
+    }
+    doc.close();
+}
+
+/// A legend entry's swatch.
+enum Sw {
+    Fill(&'static str, &'static str),
+    Line(&'static str, &'static str),
+    Marker,
+    Scrape,
+    Hatch,
+}
+
+/// The legend's entries: what this picture shows.
+fn legend_items(report: &Report) -> Vec<(Sw, &'static str)> {
     let has = |k: PathKind| report.toolpath.iter().any(|l| l.kind == k);
-    let mut items: Vec<(Sw, &str)> = vec![
+    let mut items: Vec<(Sw, &'static str)> = vec![
         (Sw::Fill(colour::PART, colour::PART_EDGE), "final part"),
         (
             Sw::Fill(colour::BLANK, colour::BLANK_EDGE),
@@ -159,42 +204,5 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
     if !report.rapid_cuts.is_empty() {
         items.push((Sw::Scrape, "rapid scrape"));
     }
-    let note = thinned.then_some("toolpath thinned (not every move drawn)");
-    let (x_start, x_end) = (40.0, MAIN[0] + MAIN[2]);
-    let mut x = x_start;
-    let mut y = layout::LEGEND_Y;
-    doc.open("g", &[("id", "legend".into())]);
-    for (sw, label) in items {
-        let w = 30.0 + width(label, FS_TEXT) + 22.0;
-        if x + w > x_end && x > x_start {
-            x = x_start;
-            y += 26.0;
-        }
-        match sw {
-            Sw::Fill(f, s) => doc.rect([x, y - 12.0, 22.0, 14.0], f, s, 1.0),
-            Sw::Line(c, dash) => doc.line([x, y - 5.0], [x + 22.0, y - 5.0], c, 2.2, dash),
-            Sw::Marker => marker(doc, x + 11.0, y - 5.0, colour::CRASH),
-            Sw::Scrape => crate::marks::scrape_marker(doc, x + 11.0, y - 5.0),
-            Sw::Hatch => {
-                crate::plot::hatch_defs(doc, "possible-hatch-legend", 1.0);
-                doc.rect(
-                    [x, y - 12.0, 22.0, 14.0],
-                    "url(#possible-hatch-legend)",
-                    colour::GOUGE_EDGE,
-                    1.0,
-                );
-            }
-        }
-        doc.text(x + 30.0, y, FS_TEXT, "start", colour::INK, label);
-        x += w;
-    }
-    if let Some(n) = note {
-        let w = width(n, FS_TEXT);
-        if x + w > x_end && x > x_start {
-            x = x_start;
-            y += 26.0;
-        }
-        doc.text(x, y, FS_TEXT, "start", colour::BAD, n);
-    }
-    doc.close();
+    items
 }
