@@ -225,6 +225,22 @@ fn the_programmed_point_into_the_part_is_the_program() {
     assert_eq!(c.kind, CauseKind::Program, "{}", c.text);
 }
 
+/// The program, though shallower than the nose: the same X19 pass cut with an r0.8 insert
+/// (CNMG 120408) goes 0.5 mm into the part, less than its radius; on a straight cut the
+/// nose, compensated or not, reaches no deeper than its reference point, so no G41/G42
+/// explains it: the programmed path goes as deep as the gouge.
+#[test]
+fn a_path_as_deep_as_the_gouge_is_the_program_not_compensation() {
+    let text = "G99 M03 S600 T0101\nG00 X42 Z2\nG71 U1.5 R0.5\nG71 P10 Q20 U0 W0 F0.25\nN10 G00 X20\nG01 Z0 F0.12\nZ-20\nX30\nZ-35\nN20 X41\nG00 X19 Z2\nG01 Z-19.8 F0.1\nG00 X42\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n";
+    let (_, f) = Job::new(text, tools, bar(40.0, 60.0)).diagnosed();
+    let g = &f.deviation.as_ref().unwrap().gouges[0];
+    assert!((g.depth - 0.5).abs() < 0.01, "{}", g.depth);
+    let c = g.cause.as_ref().expect("a cause");
+    assert_eq!(c.kind, CauseKind::Program, "{}", c.text);
+    assert!(c.text.contains("line 12"), "{}", c.text);
+}
+
 /// Another tool cut it: T01 finishes Φ30 to Z-30, then T02 (a stated turning tool) feeds
 /// to X28 over Z-5 … -10: a gouge of T01's contour by another tool.
 #[test]

@@ -164,7 +164,8 @@ pub(crate) fn gouge(
 /// The first move of the gouge's tool (from the one that made it) whose reference point goes
 /// into the intended part near the gouge deeper than the nose radius `nose` (under
 /// compensation the imaginary tip lies up to about the nose radius inside a wall it
-/// follows: that is no programming error).
+/// follows: that is no programming error), or, on a move along Z or X, as deep as the
+/// gouge itself.
 fn program_enters(
     g: &Finding,
     intents: &[Intent],
@@ -175,6 +176,9 @@ fn program_enters(
     let near = geom::Rect::of(g.shape.outer.iter().map(|&p| geom::Pt::from(p)))
         .grown(g.depth + nose + 1.0);
     let deeper = nose + 0.005;
+    // along Z or X the imaginary tip runs on the surface its nose cuts, compensated or not:
+    // a path there as deep as the gouge made all of it
+    let straight_deeper = deeper.min(g.depth - 0.005).max(0.005);
     let parts: Vec<(crate::assumed::Region, crate::assumed::Region)> = intents
         .iter()
         .map(|it| {
@@ -189,8 +193,12 @@ fn program_enters(
         .take(MAX_LOOKED_AT)
         .take_while(|&j| segments[j].tool == tool)
         .find(|&j| {
+            let seg = &segments[j];
+            let along_axis = seg.arc.is_none()
+                && ((seg.to.z - seg.from.z).abs() < 1e-9 || (seg.to.r - seg.from.r).abs() < 1e-9);
+            let deeper = if along_axis { straight_deeper } else { deeper };
             parts.iter().any(|(part, zone)| {
-                crate::assumed::inside_depths(&segments[j], part, deeper, crate::CHORD_TOL)
+                crate::assumed::inside_depths(seg, part, deeper, crate::CHORD_TOL)
                     .into_iter()
                     .any(|(p, d)| {
                         d >= deeper && zone.contains(p) && near.contains(geom::Pt::from(p))
