@@ -14,6 +14,10 @@ pub use remedy::{Change, Rerun, Rerunning};
 
 /// Most re-runs tried for one program: each is a whole simulation.
 const MAX_RERUNS: usize = 12;
+/// Most moves re-simulated for one program's remedies, all re-runs together: the checks
+/// cost at most about four runs of a 10⁵-move program (a program of 33 000 moves or fewer
+/// gets all [`MAX_RERUNS`]).
+const MAX_RERUN_MOVES: usize = 400_000;
 /// Programs with more moves get causes only: a re-run costs as much as the run.
 const MAX_MOVES_FOR_REMEDIES: usize = 200_000;
 
@@ -45,7 +49,7 @@ pub fn diagnose(findings: &mut Findings, toolpath: &Toolpath, s: &Settings, reru
         return;
     }
     let original = findings.clone();
-    let mut budget = MAX_RERUNS;
+    let mut budget = (MAX_RERUN_MOVES / segments.len().max(1)).clamp(1, MAX_RERUNS);
     let mut tries = remedy::Tries {
         original: &original,
         alarms: toolpath.alarms.len(),
