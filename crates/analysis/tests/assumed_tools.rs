@@ -2,35 +2,17 @@
 //! (spec/simulation.md, "Findings from assumed tools"). The library pipeline on hand-made
 //! cases.
 
-use analysis::{Findings, Intents, Settings, Verdict};
-use expander::{Machine, Toolpath};
-use stock::{Blank, SimOptions, ToolTable};
+mod common;
 
+use analysis::{Findings, Verdict};
+use expander::Toolpath;
+use stock::{Blank, ToolTable};
+
+/// The pipeline on a Φ40 × 60 bar with the tool table `tools`.
 fn judge(text: &str, tools: &str) -> (Toolpath, Findings) {
     let tools = ToolTable::from_toml(tools).expect("tool table");
-    let program = gcode::parse(text).expect("program parses");
-    let machine = Machine::default();
-    let opts = expander::Options {
-        tools: tools.facts(),
-        start_tool: tools.numbers().first().copied(),
-        ..Default::default()
-    };
-    let tp = expander::expand(&program, &machine, &opts);
     let blank = Blank::bar(40.0, 60.0, 0.0, None).unwrap();
-    let settings = Settings {
-        blank: &blank,
-        tools: &tools,
-        machine: &machine,
-        fixture: None,
-        tol: 0.01,
-    };
-    let (_, f) = analysis::pipeline(
-        &tp,
-        &Intents::Program,
-        &settings,
-        &SimOptions::default(),
-        &mut |_| {},
-    );
+    let (tp, _, f) = common::judge(text, &blank, &tools);
     (tp, f)
 }
 

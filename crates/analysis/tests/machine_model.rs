@@ -2,40 +2,19 @@
 //! scrapes, only stated sizes past the axis — and the real crashes kept. Each case runs the
 //! library pipeline (`analysis::pipeline`) with hand-computed expectations.
 
-use analysis::{Findings, Intents, Settings, Verdict};
-use expander::{Machine, Toolpath};
-use stock::{Blank, SimOptions, ToolTable};
+mod common;
 
+use analysis::{Findings, Verdict};
+use common::line;
+use expander::Toolpath;
+use stock::{Blank, ToolTable};
+
+/// The pipeline with the tool table `tools`; the program must run without an alarm.
 fn judge(text: &str, blank: &Blank, tools: &str) -> (Toolpath, Findings) {
     let tools = ToolTable::from_toml(tools).expect("tool table");
-    let program = gcode::parse(text).expect("program parses");
-    let machine = Machine::default();
-    let opts = expander::Options {
-        tools: tools.facts(),
-        start_tool: tools.numbers().first().copied(),
-        ..Default::default()
-    };
-    let tp = expander::expand(&program, &machine, &opts);
+    let (tp, _, f) = common::judge(text, blank, &tools);
     assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
-    let settings = Settings {
-        blank,
-        tools: &tools,
-        machine: &machine,
-        fixture: None,
-        tol: 0.01,
-    };
-    let (_, f) = analysis::pipeline(
-        &tp,
-        &Intents::Program,
-        &settings,
-        &SimOptions::default(),
-        &mut |_| {},
-    );
     (tp, f)
-}
-
-fn line(tp: &Toolpath, segment: usize) -> u32 {
-    tp.segments[segment].span.line
 }
 
 fn tube(d: f64, l: f64, bore: f64) -> Blank {

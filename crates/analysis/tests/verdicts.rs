@@ -1,41 +1,11 @@
 //! Verdicts decided by the library, without the binary: the removal and the analysis as
 //! `latsim run` wires them (`analysis::pipeline`), on hand-computed cases.
 
-use analysis::{Findings, Intents, Settings, Verdict};
-use expander::{Machine, Toolpath};
-use stock::{Blank, SimOptions, Simulation, ToolTable};
+mod common;
 
-/// Parse, expand (the table's noses and blades, its first entry as the start tool, like the
-/// CLI) and run the pipeline against the program's own shapes at `--tol 0.01`.
-fn judge(text: &str, blank: &Blank, tools: &ToolTable) -> (Toolpath, Simulation, Findings) {
-    let program = gcode::parse(text).expect("program parses");
-    let machine = Machine::default();
-    let opts = expander::Options {
-        tools: tools.facts(),
-        start_tool: tools.numbers().first().copied(),
-        ..Default::default()
-    };
-    let tp = expander::expand(&program, &machine, &opts);
-    let settings = Settings {
-        blank,
-        tools,
-        machine: &machine,
-        fixture: None,
-        tol: 0.01,
-    };
-    let (sim, findings) = analysis::pipeline(
-        &tp,
-        &Intents::Program,
-        &settings,
-        &SimOptions::default(),
-        &mut |_| {},
-    );
-    (tp, sim, findings)
-}
-
-fn line(tp: &Toolpath, segment: usize) -> u32 {
-    tp.segments[segment].span.line
-}
+use analysis::Verdict;
+use common::{judge, line};
+use stock::{Blank, ToolTable};
 
 /// A rapid that scrapes is not a crash. `G01 X48 / Z-38.1 / G00 X52` on a Φ50.8 bar with
 /// the default 55° insert on a 93° holder: the leading edge re-touches the wedge its 3°

@@ -6,7 +6,7 @@ use serde::Serialize;
 use crate::report::{Diagnostic, Report, Shape, Verdict};
 
 /// Round to 6 decimals; non-finite values become `null` (JSON has no NaN).
-fn r6(v: f64) -> Option<f64> {
+pub(crate) fn r6(v: f64) -> Option<f64> {
     if !v.is_finite() {
         return None;
     }
@@ -22,13 +22,13 @@ fn zx(p: &[f64; 2]) -> [Option<f64>; 2] {
 }
 
 #[derive(Serialize)]
-struct Polygon {
+pub(crate) struct Polygon {
     outer: Vec<[Option<f64>; 2]>,
     holes: Vec<Vec<[Option<f64>; 2]>>,
 }
 
 impl Polygon {
-    fn from(s: &Shape) -> Self {
+    pub(crate) fn from(s: &Shape) -> Self {
         Self {
             outer: s.outer.iter().map(zx).collect(),
             holes: s.holes.iter().map(|h| h.iter().map(zx).collect()).collect(),

@@ -6,34 +6,10 @@ use serde::Serialize;
 use super::{DiffFinding, DiffRegion, DiffReport};
 use crate::report::Shape;
 
-/// Round to 6 decimals; non-finite values become `null` (as the run's report does).
-fn r6(v: f64) -> Option<f64> {
-    if !v.is_finite() {
-        return None;
-    }
-    let r = (v * 1e6).round() / 1e6;
-    let r = if r.is_finite() { r } else { v };
-    Some(if r == 0.0 { 0.0 } else { r })
-}
-
-fn zx(p: &[f64; 2]) -> [Option<f64>; 2] {
-    [r6(p[0]), r6(2.0 * p[1])]
-}
-
-#[derive(Serialize)]
-struct Polygon {
-    outer: Vec<[Option<f64>; 2]>,
-    holes: Vec<Vec<[Option<f64>; 2]>>,
-}
+use crate::json::{r6, Polygon};
 
 fn polygons(shapes: &[Shape]) -> Vec<Polygon> {
-    shapes
-        .iter()
-        .map(|s| Polygon {
-            outer: s.outer.iter().map(zx).collect(),
-            holes: s.holes.iter().map(|h| h.iter().map(zx).collect()).collect(),
-        })
-        .collect()
+    shapes.iter().map(Polygon::from).collect()
 }
 
 #[derive(Serialize)]
