@@ -161,6 +161,7 @@ fn remedy(r: &analysis::Remedy) -> render::Remedy {
         line: r.line,
         edit: r.edit.clone(),
         verified: r.verified,
+        ghost: r.ghost.clone(),
     }
 }
 

@@ -122,6 +122,9 @@ pub struct Remedy {
     pub edit: Option<String>,
     /// Whether the re-run confirmed it (only confirmed remedies are given).
     pub verified: bool,
+    /// A tool change's tool as mounted, its cutting outline relative to the reference
+    /// point (`[dz, dr]` rings), for the player to draw on the move; empty otherwise.
+    pub ghost: Vec<Vec<[f64; 2]>>,
 }
 
 /// A thread, checked in the final section.

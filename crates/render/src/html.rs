@@ -645,6 +645,17 @@ fn player_legend(out: &mut String, report: &Report) {
             "tool (insert; holder grey)",
         );
     }
+    let ghosted = report
+        .gouges
+        .iter()
+        .any(|g| g.remedy.as_ref().is_some_and(|r| !r.ghost.is_empty()));
+    if ghosted {
+        sw(
+            out,
+            "border-top:2px dashed #1a7f37",
+            "the checked fix's tool, on the gouge's line",
+        );
+    }
     if !report.fixture.is_empty() {
         sw(
             out,

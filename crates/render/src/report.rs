@@ -124,6 +124,10 @@ pub struct Remedy {
     pub edit: Option<String>,
     /// Whether the re-run confirmed it.
     pub verified: bool,
+    /// A tool change's tool as mounted: its cutting outline relative to the reference
+    /// point (`[dz, dr]` rings), drawn dashed by the HTML player on the finding's line;
+    /// empty for a program change.
+    pub ghost: Vec<Vec<[f64; 2]>>,
 }
 
 /// Material left that should be gone, with why.

@@ -125,6 +125,7 @@ impl Tries<'_> {
         for (name, entry, clearance) in candidates(self.tools, seg.tool, &f, flank) {
             let change = Change::Tool { t: seg.tool, entry };
             if self.fixes(&change, false, g.at) {
+                let ghost = self.ghost(&change, seg);
                 return Some(Remedy {
                     text: format!(
                         "use {name} for T{:02}: {clearance:.0}° trailing clearance for this {flank:.0}° flank",
@@ -134,10 +135,23 @@ impl Tries<'_> {
                     line: None,
                     edit: None,
                     verified: true,
+                    ghost,
                 });
             }
         }
         None
+    }
+
+    /// The cutting outline of the tool a `Change::Tool` puts on `seg`, as mounted.
+    fn ghost(&self, change: &Change, seg: &Segment) -> Vec<Vec<P>> {
+        let Change::Tool { t, entry } = change else {
+            return vec![];
+        };
+        let Ok(table) = self.tools.replaced(*t, entry) else {
+            return vec![];
+        };
+        let rear = stock::rear_tools(self.segments).contains(&seg.tool);
+        stock::Mounted::new(&table, seg.tool, seg.hint, rear).edge.parts.clone()
     }
 
     /// A checked remedy for a rapid crash: the rapid split in two (X first, Z first, or
@@ -177,6 +191,7 @@ impl Tries<'_> {
                     line: Some(line),
                     edit: Some(block),
                     verified: true,
+                    ghost: vec![],
                 });
             }
         }
@@ -187,6 +202,7 @@ impl Tries<'_> {
                 line: Some(line),
                 edit: Some("G01".into()),
                 verified: true,
+                ghost: vec![],
             });
         }
         None

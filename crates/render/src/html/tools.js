@@ -1,6 +1,6 @@
 // The tool (insert and holder outline) at the current move, the tool where a crash at
 // the current line happened, and the chuck, jaws and tailstock, for the move slider.
-// Data: the fields `fixture`, `tools`, `tool_runs`, `crash_tools` of #ls-data (see the
+// Data: the fields `fixture`, `tools`, `tool_runs`, `crash_tools`, `remedy_tools` of #ls-data (see the
 // render crate's html/tools.rs). The player calls lsTools.under before the stock and
 // lsTools.over after the toolpath.
 var lsTools = (function () {
@@ -68,6 +68,15 @@ var lsTools = (function () {
         ctx.fill(e, 'nonzero');
         ctx.stroke(e);
       }
+      // a gouge's checked remedy: its tool dashed where the tool that gouged stands
+      var rt = data.remedy_tools || [];
+      ctx.strokeStyle = '#1a7f37';
+      ctx.lineWidth = 1.6;
+      ctx.setLineDash([5, 3]);
+      for (var g = 0; g < rt.length; g++) {
+        if (rt[g][0] === m[2]) { ctx.stroke(rings(ctx, rt[g][1], X, Y, z, x, x < 0)); }
+      }
+      ctx.setLineDash([]);
       var ct = data.crash_tools || [];
       ctx.strokeStyle = (data.style && data.style.crash) || '#7b3fe4';
       ctx.lineWidth = 2.2;
