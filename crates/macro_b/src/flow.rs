@@ -8,6 +8,7 @@
 
 use crate::span::Span;
 
+use crate::arguments::ARGUMENTS;
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::eval::MacroState;
 use crate::expr::{Expr, Stmt, StmtKind};
@@ -712,37 +713,6 @@ impl<'p, B> Flow<'p, B> {
     }
 }
 
-/// The `G65` argument letters and the local variables they set (assignment I, spec §5.5).
-pub const ARGUMENTS: [(char, u8); 21] = [
-    ('A', 1),
-    ('B', 2),
-    ('C', 3),
-    ('I', 4),
-    ('J', 5),
-    ('K', 6),
-    ('D', 7),
-    ('E', 8),
-    ('F', 9),
-    ('H', 11),
-    ('M', 13),
-    ('Q', 17),
-    ('R', 18),
-    ('S', 19),
-    ('T', 20),
-    ('U', 21),
-    ('V', 22),
-    ('W', 23),
-    ('X', 24),
-    ('Y', 25),
-    ('Z', 26),
-];
-
-/// The argument letter of local `#n` under assignment I (`24` → `X`); also the letter of
-/// `#4100 + n`.
-pub fn letter_of_argument(n: u8) -> Option<char> {
-    ARGUMENTS.iter().find(|(_, k)| *k == n).map(|(c, _)| *c)
-}
-
 /// One argument word of a `G65` block, as written.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Argument {
@@ -1235,8 +1205,8 @@ mod tests {
         for n in [10, 12, 14, 15, 16] {
             assert!(l[n - 1].is_vacant(), "#{n}");
         }
-        assert_eq!(letter_of_argument(24), Some('X'));
-        assert_eq!(letter_of_argument(10), None);
+        assert_eq!(crate::arguments::letter_of_argument(24), Some('X'));
+        assert_eq!(crate::arguments::letter_of_argument(10), None);
         // a vacant argument is not given
         let l = g65_locals(&[Argument {
             letter: 'X',

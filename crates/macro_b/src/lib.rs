@@ -43,6 +43,7 @@
 //! assert_eq!(state.address_value(&x, 0.001, &mut NoMachine).unwrap(), Some(3.0));
 //! assert!(flow.next(&mut state, &mut NoMachine).unwrap().is_none());
 //! ```
+mod arguments;
 mod error;
 mod eval;
 mod expr;
@@ -56,6 +57,7 @@ mod vars;
 #[cfg(test)]
 mod spec_tests;
 
+pub use arguments::{letter_of_argument, ARGUMENTS};
 pub use error::{ErrorKind, MacroError, Result};
 pub use eval::MacroState;
 pub use expr::{
@@ -64,8 +66,8 @@ pub use expr::{
 };
 pub use fingerprint::Snapshot;
 pub use flow::{
-    g65_argument_value, g65_locals, letter_of_argument, Argument, At, Body, CallKind, Flow, Line,
-    MacroProgram, Step, Warning, ARGUMENTS,
+    g65_argument_value, g65_locals, Argument, At, Body, CallKind, Flow, Line, MacroProgram, Step,
+    Warning,
 };
 pub use options::{Dialect, Limits, Options, DEFAULT_MAX_BLOCKS, MAX_BRACKET_DEPTH};
 pub use span::Span;

@@ -3,9 +3,9 @@
 
 use crate::span::Span;
 
+use crate::arguments::letter_of_argument;
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::fingerprint::{common_slot, local_slot, share, Snapshot};
-use crate::flow::letter_of_argument;
 use crate::options::Options;
 use crate::value::{round_half_away, Value};
 

@@ -151,7 +151,10 @@ impl Tries<'_> {
             return vec![];
         };
         let rear = stock::rear_tools(self.segments).contains(&seg.tool);
-        stock::Mounted::new(&table, seg.tool, seg.hint, rear).edge.parts.clone()
+        stock::Mounted::new(&table, seg.tool, seg.hint, rear)
+            .edge
+            .parts
+            .clone()
     }
 
     /// A checked remedy for a rapid crash: the rapid split in two (X first, Z first, or

@@ -32,7 +32,7 @@
 //! length compare equal, and no G code tells them apart.
 
 use super::frame::Frames;
-use super::macros::Calls;
+use super::modal_call::Calls;
 use super::{alarm, Interp, MotionMode};
 use crate::cycles::Retained;
 use crate::tnrc::{Nose, Side};

@@ -9,6 +9,7 @@
 //! At the end the run's variables and the lines run more than once go into the toolpath.
 
 use super::flow::{Callee, Flow};
+use super::modal_call::{Calls, ModalCall};
 use super::{alarm, Interp, MotionMode};
 use crate::{Diagnostic, Pt, Span};
 use gcode::{Block, Program, Subprogram, Word};
@@ -41,23 +42,6 @@ pub(crate) struct Macros {
     modal: Option<ModalCall>,
     /// Calls made by the modal call that are running: their blocks (and the blocks of what
     /// they call) do not trigger it again, as on FANUC.
-    in_modal: u32,
-}
-
-/// A `G66 P… [L…] args` in force: its arguments were evaluated at the `G66` block.
-#[derive(Clone, PartialEq)]
-struct ModalCall {
-    number: u32,
-    times: u32,
-    locals: Box<Locals>,
-    /// The `G66` block.
-    span: Span,
-}
-
-/// The macro side of a loop's state besides the variables (for the loop guard): the
-/// modal call in force and how many calls it made are running.
-pub(super) struct Calls {
-    modal: Option<ModalCall>,
     in_modal: u32,
 }
 

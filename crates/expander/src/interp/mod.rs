@@ -19,6 +19,7 @@ mod g10;
 mod loop_guard;
 mod macros;
 mod modal;
+mod modal_call;
 mod motion;
 mod reach;
 mod tool_facts;
