@@ -183,6 +183,47 @@ impl IBox {
             && self.min[1] <= o.max[1]
             && o.min[1] <= self.max[1]
     }
+
+    /// The box of some shapes' outer rings (EMPTY for none).
+    pub(crate) fn of_shapes(shapes: &IShapes) -> Self {
+        Self::of(shapes.iter().filter_map(|s| s.first()).flatten().copied())
+    }
+
+    /// `self ∩ b` (empty when they miss each other: min above max).
+    pub(crate) fn intersection(&self, b: &Self) -> Self {
+        Self {
+            min: [self.min[0].max(b.min[0]), self.min[1].max(b.min[1])],
+            max: [self.max[0].min(b.max[0]), self.max[1].min(b.max[1])],
+        }
+    }
+
+    /// True when this box contains `inner`.
+    pub(crate) fn contains(&self, inner: &Self) -> bool {
+        self.min[0] <= inner.min[0]
+            && self.min[1] <= inner.min[1]
+            && self.max[0] >= inner.max[0]
+            && self.max[1] >= inner.max[1]
+    }
+
+    /// A box that holds this one less the box `core` (this box itself unless `core` spans
+    /// it across one axis and reaches past one end along the other).
+    pub(crate) fn outside(self, core: &Self) -> Self {
+        let b = self;
+        let mut out = b;
+        for axis in 0..2 {
+            let other = 1 - axis;
+            if core.is_empty() || core.min[other] > b.min[other] || core.max[other] < b.max[other] {
+                continue;
+            }
+            if core.max[axis] >= b.max[axis] {
+                out.max[axis] = out.max[axis].min(core.min[axis].max(b.min[axis]));
+            }
+            if core.min[axis] <= b.min[axis] {
+                out.min[axis] = out.min[axis].max(core.max[axis].min(b.max[axis]));
+            }
+        }
+        out
+    }
 }
 
 /// Twice the signed area of a grid ring, exact. This stays next to `i_overlay` rather than
@@ -216,6 +257,23 @@ pub(crate) fn orient(a: IPt, b: IPt, c: IPt) -> i64 {
     let d = |p: i32, q: i32| i128::from(i64::from(p) - i64::from(q));
     let v = d(b.x, a.x) * d(c.y, a.y) - d(b.y, a.y) * d(c.x, a.x);
     v.signum() as i64
+}
+
+/// True when `c` lies strictly right of the directed line `p → q`, exactly: the
+/// determinant in f64 (differences of i32 are exact, the products round by at most
+/// 2⁻⁵³ of their size), the exact [`orient`] only when it is too close to zero to tell.
+pub(crate) fn right_of(p: IPt, q: IPt, c: IPt) -> bool {
+    let d = |a: i32, b: i32| f64::from(a) - f64::from(b);
+    let (l, r) = (d(q.x, p.x) * d(c.y, p.y), d(q.y, p.y) * d(c.x, p.x));
+    let det = l - r;
+    let bound = (l.abs() + r.abs()) * 1e-15;
+    if det < -bound {
+        true
+    } else if det > bound {
+        false
+    } else {
+        orient(p, q, c) < 0
+    }
 }
 
 /// True when every point of `inner` is inside or on the convex counter-clockwise `outer`.
@@ -423,16 +481,12 @@ pub(crate) struct Engine {
     frag: Overlay<i32>,
 }
 
-/// Calls with at least this many points use the fragment splitter. `i_overlay`'s automatic
-/// choice splits edges pair by pair (its list solver) below 2 000 edges; when a batch's
-/// sweeps run nearly along the stock's edges (a 665-pass G73 over an R6 arc, passes
-/// 0.009 mm apart, an insert in a PCLNR holder: 1 332 moves) that took 2.2 s in release,
-/// the fragment splitter 0.38 s. Measured neutral elsewhere (stock bench at 10⁴ and 10⁵,
-/// the 10⁵ zig-zag, O0006 r9999; same results bit for bit); 200 points was slower on the
-/// zig-zag, 1 500 kept half the gain. From 2 000 to 32 000 edges the automatic choice is
-/// its tree splitter, which took 513 ms to join the 274 tiles (20 691 points) of a
-/// 2·10⁴-move cutting zig-zag; the fragment splitter 8 ms. Hence every call, the unions
-/// and the float booleans of the measures included, chooses by [`solver_for`].
+/// Calls with at least this many points use the fragment splitter: below 2 000 edges
+/// `i_overlay`'s automatic choice splits edges pair by pair, which is slow when a batch's
+/// sweeps run nearly along the stock's edges, and from 2 000 to 32 000 its tree splitter was
+/// slow to join tiles (figures in PERFORMANCE.md, "The splitter's threshold"). Hence every
+/// call, the unions and the float booleans of the measures included, chooses by
+/// [`solver_for`].
 const FRAG_FROM: usize = 600;
 
 /// The edge splitter for a call of `points` points (see [`FRAG_FROM`]). The fragment
@@ -833,5 +887,33 @@ mod tests {
             }
             w
         }
+    }
+
+    /// What a box keeps when a core is cut out of it holds every unit cell of the box the
+    /// core does not cover (what a cut leaves is the closure of such cells), and it shrinks
+    /// when the core spans the box.
+    #[test]
+    fn the_box_outside_a_core_holds_what_the_cut_leaves() {
+        let mut rng = Rng(0x0b0c_5eed_0042);
+        let mut shrunk = 0;
+        for _ in 0..20_000 {
+            let (b, core) = (box_within(&mut rng, 5), box_within(&mut rng, 7));
+            let out = b.outside(&core);
+            // every unit cell of the box the core does not cover lies in what is kept
+            for x in b.min[0]..b.max[0] {
+                for y in b.min[1]..b.max[1] {
+                    let cut =
+                        core.min[0] <= x && x < core.max[0] && core.min[1] <= y && y < core.max[1];
+                    let kept =
+                        out.min[0] <= x && x < out.max[0] && out.min[1] <= y && y < out.max[1];
+                    assert!(
+                        cut || kept,
+                        "{b:?} less {core:?} gave {out:?}: cell ({x}, {y})"
+                    );
+                }
+            }
+            shrunk += usize::from(out != b);
+        }
+        assert!(shrunk > 2_000, "{shrunk}");
     }
 }
