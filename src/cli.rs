@@ -47,6 +47,15 @@ pub(crate) struct ProgramArgs {
     /// with an alarm naming the loop.
     #[arg(long, value_name = "N", default_value_t = 10_000_000)]
     pub(crate) max_steps: usize,
+    /// The move budget: a run that makes more moves (segments) ends with an alarm at the
+    /// block that exceeded it; what was simulated until then is reported.
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 10_000_000,
+        alias = "max-segments"
+    )]
+    pub(crate) max_moves: usize,
     /// Least input increment, overriding the machine profile.
     #[arg(long, value_enum, value_name = "SYSTEM")]
     pub(crate) increment: Option<IncrementArg>,
@@ -61,6 +70,15 @@ pub(crate) struct ProgramArgs {
     /// posts); without it a decimal comma is an error at its place.
     #[arg(long)]
     pub(crate) decimal_comma: bool,
+    /// The program files' text encoding (`gbk`, `windows-1252`, `shift_jis`, `utf-8`, … any
+    /// WHATWG label). Without it a file that is not UTF-8 is read in the encoding detected,
+    /// which a warning (LS-ENCODING) names.
+    #[arg(long, value_name = "LABEL")]
+    pub(crate) encoding: Option<String>,
+    /// What X is: `diameter` (the usual) or `radius` (FANUC parameter DIA off, Linux CNC G8,
+    /// CNC trainers); overrides the machine profile's `x_mode`. Reports stay in diameters.
+    #[arg(long, value_enum, value_name = "MODE")]
+    pub(crate) x_mode: Option<XModeArg>,
     /// No progress bar and no warnings on the terminal.
     #[arg(long, short)]
     pub(crate) quiet: bool,
@@ -131,6 +149,15 @@ impl ProgramArgs {
             macro_b::Dialect::Fanuc
         })
     }
+}
+
+/// `--x-mode`: the spellings of the profile's `x_mode`.
+#[derive(Debug, Clone, Copy, ValueEnum, PartialEq, Eq)]
+pub(crate) enum XModeArg {
+    /// X is the diameter
+    Diameter,
+    /// X is the radius
+    Radius,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

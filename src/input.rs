@@ -1,7 +1,7 @@
 //! Reading the user's files: program, machine profile, tool table, blank. Each failure is
 //! printed here with its place and a help line; the caller only sees `Err(())`.
 
-use crate::cli::{IncrementArg, ProgramArgs, RunArgs};
+use crate::cli::{IncrementArg, ProgramArgs, RunArgs, XModeArg};
 use crate::diag::{self, Source};
 use crate::library::Folders;
 use expander::{Increment, Machine, Options, Toolpath};
@@ -25,10 +25,14 @@ pub(crate) struct Loaded {
     pub(crate) machine: Machine,
     pub(crate) toolpath: Toolpath,
     pub(crate) blocks: usize,
+    /// The encoding the program was read in (`UTF-8`, `GBK`, …; WHATWG names): for the
+    /// report (its warning LS-ENCODING says it when it is not UTF-8).
+    #[allow(dead_code)] // read by the report once it has the field (coordinator)
+    pub(crate) encoding: &'static str,
 }
 
-/// Read a text file whole, with a clear message when it is missing, too big or not text.
-pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
+/// Read a file whole, with a clear message when it is missing or too big.
+fn read_bytes(path: &Path, what: &str) -> Result<Vec<u8>, ()> {
     let meta = std::fs::metadata(path).map_err(|e| {
         diag::print_plain(
             &format!("cannot read {what} {}: {e}", path.display()),
@@ -58,12 +62,18 @@ pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
         );
         return Err(());
     }
-    let bytes = std::fs::read(path).map_err(|e| {
+    std::fs::read(path).map_err(|e| {
         diag::print_plain(
             &format!("cannot read {what} {}: {e}", path.display()),
             "check the path and its permissions",
         )
-    })?;
+    })
+}
+
+/// Read a UTF-8 text file whole (a TOML table), with a clear message when it is missing,
+/// too big or not text.
+pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
+    let bytes = read_bytes(path, what)?;
     String::from_utf8(bytes).map_err(|e| {
         // Show the bad byte in its line: the text before it is valid, so its offset holds
         // in the lossy copy too.
@@ -78,7 +88,58 @@ pub(crate) fn read_text(path: &Path, what: &str) -> Result<String, ()> {
             char::REPLACEMENT_CHARACTER.len_utf8(),
             "encoding",
             &format!("{what} is not UTF-8 text: this byte is not a character"),
-            "save the file as UTF-8 (programs from a controller in GBK can be converted with iconv -f GBK -t UTF-8)",
+            "save the file as UTF-8",
+            false,
+        );
+    })
+}
+
+/// Read a program file and decode it: UTF-8, the `--encoding` given, or the encoding
+/// detected (`gcode::encoding`). A file no encoding reads is an error at its first bad byte.
+fn read_program(path: &Path, args: &ProgramArgs) -> Result<gcode::Decoded, ()> {
+    let forced = match &args.encoding {
+        None => None,
+        Some(label) => Some(gcode::encoding::encoding_for_label(label).ok_or_else(|| {
+            diag::print_plain(
+                &format!("--encoding {label}: no such encoding"),
+                "give a WHATWG label: utf-8, gbk, gb18030, big5, shift_jis, euc-kr, windows-1252, iso-8859-2, …",
+            )
+        })?),
+    };
+    let bytes = read_bytes(path, "program")?;
+    let binary = |b: &u8| *b < 0x20 && !matches!(b, b'\n' | b'\r' | b'\t' | 0x11..=0x14 | 0x1a);
+    if forced.is_none() && std::str::from_utf8(&bytes).is_err() {
+        // a text in another encoding holds no NUL or other binary control bytes
+        if let Some(at) = bytes.iter().position(binary) {
+            diag::print_plain(
+                &format!(
+                    "{}: the program is not UTF-8 text and byte {at} is binary (0x{:02X}): this is not a program text",
+                    path.display(),
+                    bytes[at]
+                ),
+                "give the NC program file, or its encoding with --encoding",
+            );
+            return Err(());
+        }
+    }
+    gcode::decode(&bytes, forced).map_err(|e| {
+        let src = Source {
+            name: path.display().to_string(),
+            text: String::from_utf8_lossy(&bytes).into(),
+        };
+        // the lossy copy keeps the offset of the first bad byte when the text before it is
+        // ASCII; elsewhere the caret may sit a little off, the byte offset is in the message
+        diag::print_at(
+            &src,
+            e.offset.min(src.text.len()),
+            0,
+            "encoding",
+            &format!(
+                "the program is not {} text: byte {} is not a character",
+                e.encoding.name(),
+                e.offset
+            ),
+            "give the file's encoding with --encoding (gbk, windows-1252, shift_jis, …)",
             false,
         );
     })
@@ -154,10 +215,10 @@ pub(crate) fn load_program(
     start_tool: Option<u32>,
 ) -> Result<Loaded, ()> {
     let machine = load_machine(args)?;
-    let text = read_text(path, "program")?;
+    let decoded = read_program(path, args)?;
     let source = Source {
         name: path.display().to_string(),
-        text: text.into(),
+        text: decoded.text.as_str().into(),
     };
     let macros = args.macros(machine.control);
     let vars = match &args.vars {
@@ -171,9 +232,14 @@ pub(crate) fn load_program(
         }
         None => vec![],
     };
+    let x_radius = match args.x_mode {
+        Some(m) => m == XModeArg::Radius,
+        None => machine.x_mode == expander::XMode::Radius,
+    };
     let read = gcode::ReadOptions {
         decimal_comma: args.decimal_comma,
         macros,
+        x_radius,
     };
     let program = gcode::parse_shared(Arc::clone(&source.text), read).map_err(|e| {
         diag::print_at(
@@ -218,6 +284,7 @@ pub(crate) fn load_program(
             .map(|l| expander::LibraryRef(l as Arc<dyn expander::Library>)),
         start_tool: start_tool.or_else(|| tools.numbers().first().copied()),
         max_blocks: args.max_steps,
+        max_segments: args.max_moves,
         vars,
         macros: macros.map(|d| {
             let mut o = match d {
@@ -227,16 +294,78 @@ pub(crate) fn load_program(
             o.limits.max_blocks = args.max_steps as u64;
             o
         }),
-        ..Options::default()
     };
-    let toolpath = expander::expand(&program, &machine, &opts);
+    let mut toolpath = expander::expand(&program, &machine, &opts);
+    if toolpath.segments.is_empty() {
+        not_a_program(&source)?;
+    }
+    let reading = reading_notes(&decoded, x_radius);
+    toolpath.warnings.splice(0..0, reading);
     Ok(Loaded {
         source,
         library,
         machine,
         toolpath,
         blocks,
+        encoding: decoded.encoding.name(),
     })
+}
+
+/// Warnings that say how the file was read when it is not the usual: its encoding when
+/// not UTF-8, X as a radius. They open the report's warnings (JSON `warnings`).
+fn reading_notes(decoded: &gcode::Decoded, x_radius: bool) -> Vec<expander::Diagnostic> {
+    let top = expander::Span {
+        line: 1,
+        column: 1,
+        offset: 0,
+        len: 0,
+    };
+    let mut notes = vec![];
+    if decoded.encoding != gcode::encoding::Encoding::for_label(b"utf-8").expect("utf-8") {
+        let how = if decoded.guessed {
+            "the file is not UTF-8: read as"
+        } else {
+            "read as"
+        };
+        notes.push(expander::Diagnostic::new(
+            top,
+            "LS-ENCODING",
+            format!("{how} {}", decoded.encoding.name()),
+            "if comments read wrong, give the file's encoding with --encoding",
+        ));
+    }
+    if x_radius {
+        notes.push(expander::Diagnostic::new(
+            top,
+            "LS-X-RADIUS",
+            "X is read as a radius (x_mode = radius); the report gives diameters",
+            "",
+        ));
+    }
+    notes
+}
+
+/// A file with no motion that holds binary bytes (NUL and other control bytes beyond the
+/// tape's flow control) is no program: exit 2, like an empty file (issue 31).
+fn not_a_program(source: &Source) -> Result<(), ()> {
+    let binary = source
+        .text
+        .chars()
+        .filter(|&c| {
+            c.is_control() && !matches!(c, '\n' | '\r' | '\t' | '\u{11}'..='\u{14}' | '\u{1a}')
+        })
+        .count();
+    if binary == 0 {
+        return Ok(());
+    }
+    diag::print_plain(
+        &format!(
+            "{}: nothing to simulate: no motion, and {binary} binary (control) bytes — this is not a program text",
+            source.name
+        ),
+        "give the NC program file (a text of blocks such as G0 X50 Z2)",
+    );
+    Err(())
 }
 
 impl Loaded {

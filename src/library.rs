@@ -277,7 +277,7 @@ fn number_in_name(p: &Path) -> Option<u32> {
     digits.parse().ok().filter(|&n| n > 0)
 }
 
-/// A library file's text (size-bounded, UTF-8).
+/// A library file's text (size-bounded, decoded like the main program).
 fn read(path: &Path) -> Result<String, String> {
     let len = std::fs::metadata(path)
         .map_err(|e| format!("cannot read {}: {e}", path.display()))?
@@ -290,7 +290,15 @@ fn read(path: &Path) -> Result<String, String> {
         ));
     }
     let bytes = std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-    String::from_utf8(bytes).map_err(|_| format!("{} is not a text NC file", path.display()))
+    // decoded as the main program is (UTF-8, else the encoding detected)
+    gcode::decode(&bytes, None).map(|d| d.text).map_err(|e| {
+        format!(
+            "{} is not a text NC file (byte {} is no {} character)",
+            path.display(),
+            e.offset,
+            e.encoding.name()
+        )
+    })
 }
 
 #[cfg(test)]

@@ -180,6 +180,7 @@ fn summary(run: &Run, findings: &Findings) -> Report {
             loaded.machine.control.key(),
             loaded.machine.control.title()
         ),
+        encoding: loaded.encoding.to_string(),
         stock: StockInfo {
             description: run.blank.description.clone(),
             shapes: run.blank.shapes.iter().map(shape).collect(),
@@ -270,21 +271,44 @@ fn add_crashes(report: &mut Report, run: &Run, findings: &Findings) {
         }
     }
     // the picture shows the part at the end: a centre the program leaves retracted is drawn
-    // where it stood, and its label says so
+    // retracted, and its label says so
     let retracted = loaded.toolpath.tailstock.last().is_some_and(|c| !c.1);
     report.fixture = fixture
         .iter()
         .flat_map(|f| f.obstacles.iter())
         .filter(|o| !o.cut_only)
-        .map(|o| render::Fixture {
-            name: if retracted && o.name == analysis::TAILSTOCK_CENTRE {
-                format!("{} (retracted)", analysis::TAILSTOCK_CENTRE)
+        .map(|o| {
+            if retracted && o.name == analysis::TAILSTOCK_CENTRE {
+                render::Fixture {
+                    name: format!("{} (retracted)", analysis::TAILSTOCK_CENTRE),
+                    shapes: o
+                        .shapes
+                        .iter()
+                        .map(|s| shape(&shifted(s, RETRACT_DRAWN)))
+                        .collect(),
+                }
             } else {
-                o.name.to_string()
-            },
-            shapes: o.shapes.iter().map(shape).collect(),
+                render::Fixture {
+                    name: o.name.to_string(),
+                    shapes: o.shapes.iter().map(shape).collect(),
+                }
+            }
         })
         .collect();
+}
+
+/// How far back along +Z a retracted tailstock centre is drawn, mm (the picture shows the
+/// end of the run): a gap that shows it clear of the part, small enough that the centre and
+/// its label stay in a view fitted to the part.
+const RETRACT_DRAWN: f64 = 5.0;
+
+/// `s` moved `dz` along Z.
+fn shifted(s: &stock::Shape, dz: f64) -> stock::Shape {
+    let mv = |ring: &Vec<[f64; 2]>| ring.iter().map(|p| [p[0] + dz, p[1]]).collect();
+    stock::Shape {
+        outer: mv(&s.outer),
+        holes: s.holes.iter().map(mv).collect(),
+    }
 }
 
 /// Where the program moves the tailstock (M21/M22, M10/M11), for the stock's description:

@@ -44,8 +44,11 @@ fn deeply_nested_parentheses_do_not_panic() {
 
 #[test]
 fn non_utf8_input_names_its_line_and_column() {
+    // issue 31: a GBK file is decoded (tests/reading.rs); forced to UTF-8 it is refused at
+    // its first bad byte
     let (_d, prog) = temp_program("gbk.nc", b"G0 X50 Z5\nG1 X40 (\xb5\xb6) F100\n");
-    let out = latsim(&["check", prog.to_str().unwrap()]);
+    assert_eq!(latsim(&["check", prog.to_str().unwrap()]).code, 0);
+    let out = latsim(&["check", prog.to_str().unwrap(), "--encoding", "utf-8"]);
     assert_eq!(out.code, 2);
     assert!(out.stderr.contains("gbk.nc:2:9"), "{}", out.stderr);
     assert!(out.stderr.contains("UTF-8"), "{}", out.stderr);

@@ -390,7 +390,7 @@ fn run_with_centre(program: &str, extra: &[&str], name: &str) -> (i32, String) {
 }
 
 /// The picture shows the part at the end of the program: a tailstock centre the program
-/// leaves retracted is labelled so (it is drawn where it stood advanced); one advanced again
+/// leaves retracted is labelled so (and drawn back); one advanced again
 /// keeps its plain label.
 #[test]
 fn a_centre_left_retracted_is_labelled_retracted() {
@@ -454,4 +454,35 @@ fn boring_a_tube_through_its_gripped_length_leaves_what_the_jaws_hold() {
         c.iter().any(|r| r.0 == 3 && r.1 == "gripped length"),
         "{c:?}"
     );
+}
+
+/// The numbers of the path inside the `<g class="fixture">` group of an SVG.
+fn fixture_path_numbers(svg: &str) -> Vec<f64> {
+    let g = &svg[svg.find(r#"class="fixture""#).expect("a fixture group")..];
+    let d = &g[g.find(" d=\"").expect("a path") + 4..];
+    let d = &d[..d.find('"').unwrap()];
+    d.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+        .filter_map(|t| t.parse().ok())
+        .collect()
+}
+
+/// Issue 30: a centre the program leaves retracted is drawn retracted, 5 mm back along +Z
+/// (it was drawn where it stood advanced); advanced again, it is drawn in place.
+#[test]
+fn a_centre_left_retracted_is_drawn_retracted() {
+    let program = |m: &str| {
+        facing(-0.5, 0.0).replacen("G00 X44. Z5.;\n", &format!("{m}\nG00 X44. Z5.;\n"), 1)
+    };
+    let far = |m: &str| {
+        let (_, text) = run_with_centre(&program(m), &[], "r.svg");
+        fixture_path_numbers(&text)
+            .into_iter()
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let (advanced, retracted, again) = (far(""), far("M11;"), far("M11;\nM10;"));
+    assert!(
+        (retracted - advanced - 5.0).abs() < 1e-6,
+        "{advanced} {retracted}"
+    );
+    assert_eq!(again, advanced);
 }

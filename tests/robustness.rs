@@ -135,8 +135,9 @@ fn hostile_files_through_the_cli() {
 }
 
 /// Haas forms on hostile input: a local subprogram calling itself, a microscopic peck, a
-/// branch to itself, microscopic layers and steps: an alarm (exit 1), fast; a library
-/// folder that is a file: exit 2.
+/// branch to itself (the loop guard ends it at once), microscopic layers and steps: an
+/// alarm (exit 1); a library folder that is a file: exit 2. (No timed assertion: speed is
+/// measured in benchmarks.)
 #[test]
 fn hostile_haas_files_through_the_cli() {
     let cases: &[&[u8]] = &[
@@ -170,7 +171,6 @@ M30
     ];
     for (k, bytes) in cases.iter().enumerate() {
         let (dir, prog) = common::temp_program(&format!("haas{k}.nc"), bytes);
-        let t = std::time::Instant::now();
         let out = common::latsim(&[
             "run",
             prog.to_str().unwrap(),
@@ -184,7 +184,6 @@ M30
         ]);
         assert_eq!(out.code, 1, "case {k}: {}", out.stderr);
         assert!(!out.stderr.contains("panicked"), "case {k}: {}", out.stderr);
-        assert!(t.elapsed().as_secs() < 20, "case {k}: {:?}", t.elapsed());
     }
     let (_dir, prog) = common::temp_program(
         "lib.nc",

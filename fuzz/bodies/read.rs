@@ -7,7 +7,7 @@ pub(crate) fn body(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
     for decimal_comma in [false, true] {
         for macros in [None, Some(macro_b::Dialect::Fanuc), Some(macro_b::Dialect::Haas)] {
-            let options = gcode::ReadOptions { decimal_comma, macros };
+            let options = gcode::ReadOptions { decimal_comma, macros, ..Default::default() };
             let read = gcode::parse_with(&text, options);
             let held = gcode::parse_held(&text, options);
             assert_eq!(read, held, "blocks read again differ from the blocks read");

@@ -1,6 +1,6 @@
 //! Crash or scrape: the removal's rapid cuts split by the machine's `rapid_cut_tol`
-//! (spec/simulation.md, "Rapids that cut"), merged with the workholding's crashes, and the
-//! tool drawn where the first of them hit.
+//! (spec/simulation.md, "Rapids that cut") and the retract-scrape rule ([`crate::retract`]),
+//! merged with the workholding's crashes, and the tool drawn where the first of them hit.
 
 use crate::findings::{Crash, Note};
 use crate::fixture::FixtureCrash;
@@ -23,16 +23,26 @@ fn of_removal(c: &stock::Crash) -> Crash {
     }
 }
 
-/// The crashes of a run in program order: the removal's deeper than `cut_tol` (a body
-/// touching stock always) and the workholding's (always); at one move, the stock's crash
-/// before the workholding's.
-pub(crate) fn crashes(sim: &Simulation, fixture: &[FixtureCrash], cut_tol: f64) -> Vec<Crash> {
-    let mut out: Vec<Crash> = sim
-        .crashes
-        .iter()
-        .filter(|c| c.body.is_some() || c.depth > cut_tol)
-        .map(of_removal)
-        .collect();
+/// The removal's rapid cuts told apart: (crashes, scrapes). A body touching stock is a
+/// crash; a cut of the cutting outline is a scrape when no deeper than `cut_tol` or when it
+/// is a retract scrape, else a crash.
+pub(crate) fn split(
+    sim: &Simulation,
+    cut_tol: f64,
+    segments: &[Segment],
+    tools: &ToolTable,
+    rear: &[u32],
+) -> (Vec<Crash>, Vec<Crash>) {
+    sim.crashes.iter().map(of_removal).partition(|c| {
+        c.body.is_some()
+            || (c.depth > cut_tol && !crate::retract::is_retract(c, segments, tools, rear))
+    })
+}
+
+/// The crashes of a run in program order: the removal's (`removal`, [`split`]) and the
+/// workholding's (always); at one move, the stock's crash before the workholding's.
+pub(crate) fn crashes(removal: Vec<Crash>, fixture: &[FixtureCrash]) -> Vec<Crash> {
+    let mut out = removal;
     out.extend(fixture.iter().map(|f| Crash {
         segment: f.segment,
         at: f.at,
@@ -47,20 +57,21 @@ pub(crate) fn crashes(sim: &Simulation, fixture: &[FixtureCrash], cut_tol: f64) 
     out
 }
 
-/// The rapids that cut no deeper than `cut_tol`: scrapes, not crashes.
-pub(crate) fn scrapes(sim: &Simulation, cut_tol: f64) -> Vec<Crash> {
-    sim.crashes
-        .iter()
-        .filter(|c| c.body.is_none() && c.depth <= cut_tol)
-        .map(of_removal)
-        .collect()
-}
-
-/// The warning of each scrape, at its move's line.
-pub(crate) fn scrape_notes(scrapes: &[Crash], segments: &[Segment], cut_tol: f64) -> Vec<Note> {
+/// The warning of each scrape, at its move's line: a retract scrape's with its fix.
+pub(crate) fn scrape_notes(
+    scrapes: &[Crash],
+    segments: &[Segment],
+    tools: &ToolTable,
+    rear: &[u32],
+    cut_tol: f64,
+) -> Vec<Note> {
     scrapes
         .iter()
-        .map(|c| Note {
+        .map(|c| {
+            if crate::retract::is_retract(c, segments, tools, rear) {
+                return crate::retract::note(c, segments, tools);
+            }
+            Note {
             span: segments[c.segment].span,
             code: "LS-RAPID-SCRAPE",
             message: format!(
@@ -70,6 +81,7 @@ pub(crate) fn scrape_notes(scrapes: &[Crash], segments: &[Segment], cut_tol: f64
                 c.at[0],
                 2.0 * c.at[1]
             ),
+        }
         })
         .collect()
 }

@@ -15,6 +15,7 @@ mod fixture;
 mod intent;
 mod measure;
 mod pose;
+mod retract;
 mod threads;
 
 pub use crashes::MAX_TOOL_POSES;
@@ -169,16 +170,11 @@ fn conclude(
             CHORD_TOL,
         )
     });
-    let mut crashes = crashes::crashes(sim, &beside.fixture_crashes, cut_tol);
-    crashes::place_tools(
-        &mut crashes,
-        segments,
-        s.tools,
-        &beside.facts.rear,
-        CHORD_TOL,
-    );
-    let scrapes = crashes::scrapes(sim, cut_tol);
-    let warnings = crashes::scrape_notes(&scrapes, segments, cut_tol);
+    let rear = &beside.facts.rear;
+    let (removal, scrapes) = crashes::split(sim, cut_tol, segments, s.tools, rear);
+    let mut crashes = crashes::crashes(removal, &beside.fixture_crashes);
+    crashes::place_tools(&mut crashes, segments, s.tools, rear, CHORD_TOL);
+    let warnings = crashes::scrape_notes(&scrapes, segments, s.tools, rear, cut_tol);
     let mut part_warnings = deviation
         .as_ref()
         .map(|d| deviation::later_cut_notes(d, segments))

@@ -184,6 +184,7 @@ mod tests {
         assert_eq!(parts.len(), 2, "blade and holder");
         let (lo, hi) = Outline {
             parts: vec![parts[0].clone()],
+            ..Outline::default()
         }
         .bbox()
         .unwrap();

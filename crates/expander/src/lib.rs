@@ -30,7 +30,7 @@ pub use interp::{expand, Options, Toolpath};
 pub use library::{Library, LibraryRef};
 pub use machine::{
     Control, DrillReturn, FeedMode, G01Cr, GCodeSystem, HaasSettings, Increment, Machine, PqUnits,
-    ProfileError, RapidPath, ShortT, Units,
+    ProfileError, RapidPath, ShortT, Units, XMode,
 };
 pub use toolpath::{
     Arc, Feed, FeedId, Feeds, Intended, IntendedKind, Motion, Pt, Segment, Span, Spindle, ToolHint,

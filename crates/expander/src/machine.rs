@@ -7,6 +7,7 @@
 //! pq_units = "increment"    # G74/G75/G75.1/G76 P and Q: "increment" | "mm" (GSK NO182.7)
 //! feed_mode = "g98"         # power-on feed mode: "g98" mm/min | "g99" mm/rev
 //! power_on_units = "mm"     # power-on input units: "mm" | "inch" (G20/G21 in the program win)
+//! x_mode = "diameter"       # X (and U) written as a "diameter" or a "radius" (FANUC DIA off, trainers)
 //! rapid_x = 6000.0          # rapid traverse, mm/min of tool travel along X (radial)
 //! rapid_z = 8000.0          # rapid traverse, mm/min along Z
 //! rapid_path = "straight"   # "straight" | "per-axis" (each axis at its own rate: a dog-leg)
@@ -167,6 +168,17 @@ pub enum Units {
     Inch,
 }
 
+/// What an X value is: a diameter (lathes' usual programming) or a radius.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum XMode {
+    /// X is the diameter.
+    #[default]
+    Diameter,
+    /// X is the radius (FANUC parameter DIA off, Linux CNC G8, CNC trainers).
+    Radius,
+}
+
 /// Least input increment system.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
 pub enum Increment {
@@ -276,6 +288,9 @@ pub struct Machine {
     pub control: Control,
     /// Input units at power-on.
     pub power_on_units: Units,
+    /// X programmed as a diameter or a radius (the reader doubles radii: gcode's
+    /// `ReadOptions::x_radius`).
+    pub x_mode: XMode,
     /// IS-B or IS-C.
     pub increment: Increment,
     /// P/Q units of the grooving and threading cycles.
@@ -349,6 +364,7 @@ impl Machine {
         Self {
             control,
             power_on_units: Units::Mm,
+            x_mode: XMode::Diameter,
             increment: Increment::IsB,
             pq_units: PqUnits::Increment,
             feed_mode: control.power_on_feed_mode(),
@@ -401,6 +417,7 @@ use toml::Spanned;
 struct File {
     control: Option<Control>,
     power_on_units: Option<Units>,
+    x_mode: Option<XMode>,
     increment: Option<Increment>,
     pq_units: Option<PqUnits>,
     feed_mode: Option<FeedMode>,
@@ -477,6 +494,9 @@ impl Machine {
         let mut m = Self::for_control(control.or(file.control).unwrap_or_default());
         if let Some(v) = file.power_on_units {
             m.power_on_units = v;
+        }
+        if let Some(v) = file.x_mode {
+            m.x_mode = v;
         }
         let bad = |span: std::ops::Range<usize>, message: String| {
             let (line, column) = line_col(text, span.start);
@@ -718,6 +738,9 @@ mod tests {
             (m.control, m.feed_mode, m.power_on_units),
             (Control::Haas, FeedMode::G99, Units::Inch)
         );
+        let m = Machine::from_toml("x_mode = \"radius\"").unwrap();
+        assert_eq!(m.x_mode, XMode::Radius);
+        assert!(Machine::from_toml("x_mode = \"radial\"").is_err());
         let m = Machine::from_toml("control = \"haas\"\nfeed_mode = \"g98\"").unwrap();
         assert_eq!(
             m.feed_mode,

@@ -20,6 +20,7 @@ fn main() {
             ReadOptions {
                 decimal_comma: true,
                 macros: None,
+                x_radius: false,
             },
         ),
         (
@@ -27,6 +28,7 @@ fn main() {
             ReadOptions {
                 decimal_comma: false,
                 macros: Some(Dialect::Fanuc),
+                x_radius: false,
             },
         ),
         (
@@ -34,6 +36,7 @@ fn main() {
             ReadOptions {
                 decimal_comma: true,
                 macros: Some(Dialect::Haas),
+                x_radius: false,
             },
         ),
     ];

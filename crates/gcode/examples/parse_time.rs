@@ -14,8 +14,8 @@ fn main() {
     let text = std::fs::read_to_string(&path).expect("a UTF-8 program file");
     for (name, macros) in [("plain", None), ("macro", Some(macro_b::Dialect::Fanuc))] {
         let options = ReadOptions {
-            decimal_comma: false,
             macros,
+            ..ReadOptions::default()
         };
         let mut times: Vec<f64> = (0..runs.max(1))
             .map(|_| {

@@ -33,7 +33,7 @@ pub struct ParseError {
 }
 
 impl ParseError {
-    fn new(span: Span, message: impl Into<String>, help: impl Into<String>) -> Self {
+    pub(crate) fn new(span: Span, message: impl Into<String>, help: impl Into<String>) -> Self {
         Self {
             span,
             message: message.into(),
@@ -58,6 +58,9 @@ pub struct ReadOptions {
     /// Custom macro B (spec/dialects.md §5) with this control's rules: `#` variables,
     /// `[ ]` expressions as word values and macro statements. `None`: a `#` is an error.
     pub macros: Option<Dialect>,
+    /// X is programmed as a radius (FANUC parameter DIA off, Linux CNC G8, trainers): X-axis
+    /// values are doubled as they are read (`crate::radius`).
+    pub x_radius: bool,
 }
 
 impl From<MacroError> for ParseError {
@@ -201,9 +204,20 @@ fn has_address(line: &str) -> bool {
 
 /// Where the leader ends: if a `%` comes before the first line holding a program number or
 /// an address word, everything up to the end of that `%`'s line (spec/dialects.md §1).
+/// A line that starts with `%` and goes on with the first block (`%O1200(TOKARKA)`, as CAM
+/// systems write it) ends the leader right after that `%`: its words are the program's.
 fn leader_end(src: &str) -> Option<usize> {
     let mut offset = 0;
     for line in src.split_inclusive('\n') {
+        let lead = line.len()
+            - line
+                .trim_start_matches(|c: char| {
+                    c.is_whitespace() || c.is_control() || c == '\u{feff}'
+                })
+                .len();
+        if line[lead..].starts_with('%') && has_address(&line[lead + 1..]) {
+            return Some(offset + lead + 1);
+        }
         if has_address(line) {
             return None;
         }
@@ -380,6 +394,12 @@ impl<'a> Reader<'a> {
         while self.offset() < end {
             let Some((span, _)) = self.next() else { break };
             first.get_or_insert(span);
+        }
+        if !self.src[..end].ends_with('\n') && !self.src[..end].ends_with('\r') {
+            self.note(
+                first.unwrap_or_default(),
+                "'%' and the first block share a line: read as the tape start, then the block (a FANUC reading a memory card skips the rest of this line)",
+            );
         }
         let text = text.trim();
         if !text.is_empty() {
@@ -735,6 +755,9 @@ impl<'a> Reader<'a> {
                     });
                 }
                 c => {
+                    if let Some(e) = self.foreign(span) {
+                        return Err(e);
+                    }
                     let (what, help) = if c.is_control() {
                         (
                             format!("unexpected control character U+{:04X}", c as u32),
@@ -1030,14 +1053,35 @@ impl<'a> Reader<'a> {
             })
     }
 
+    /// The error naming a Linux CNC construct on the line of `at`, if the line holds one.
+    fn foreign(&self, at: Span) -> Option<ParseError> {
+        let at = (at.offset as usize).min(self.src.len());
+        let start = self.src[..at].rfind('\n').map_or(0, |i| i + 1);
+        let end = self.src[at..].find('\n').map_or(self.src.len(), |i| at + i);
+        let what = crate::foreign::linuxcnc(&self.src[start..end])?;
+        Some(ParseError::new(
+            Span {
+                line: self.line,
+                column: 1,
+                offset: start as u32,
+                len: (end - start).min(u32::MAX as usize) as u32,
+            },
+            format!("{what} is LinuxCNC (rs274ngc) syntax, not FANUC, GSK or Haas"),
+            "latsim reads FANUC, GSK and Haas lathe programs; LinuxCNC programs are not supported",
+        ))
+    }
+
     fn finish_word(&mut self) -> Result<(), ParseError> {
         let Some(p) = self.pending.take() else {
             return Ok(());
         };
         let span = p.start.to(p.end);
         let text = self.number_text(&p);
+        let foreign = self.foreign(span);
         let (value, has_point) = parse_number(text).ok_or_else(|| {
-            if text.is_empty() {
+            if let Some(e) = foreign {
+                e
+            } else if text.is_empty() {
                 ParseError::new(
                     span,
                     format!("address {} has no value", address(p.letter)),
@@ -1152,6 +1196,9 @@ impl<'a> Reader<'a> {
 
     fn end_block(&mut self) -> Result<(), ParseError> {
         self.finish_word()?;
+        if self.options.x_radius {
+            crate::radius::to_diameter(&mut self.words)?;
+        }
         if let Some(start) = self.block_start.take() {
             let seq = self.seq.take();
             let block_delete = std::mem::replace(&mut self.block_delete, false);
@@ -1645,6 +1692,18 @@ mod tests {
     }
 
     #[test]
+    fn percent_glued_to_the_program_number_starts_the_tape() {
+        // issue 31: `%O1200(TOKARKA)` on line 1 was read as the closing % — no blocks
+        let p = parse("%O1200(TOKARKA)\nG0 X10 Z2\nG1 Z-5 F.1\nM30\n%\n").unwrap();
+        assert_eq!(p.programs[0].number, Some(1200));
+        assert_eq!(p.programs[0].blocks.len(), 3, "{:?}", notes(&p));
+        assert!(notes(&p)[0].contains("share a line"), "{:?}", notes(&p));
+        // the same after a leader line and with a BOM
+        let p = parse("\u{feff}  %O12\nG0 X1\nG0 X2\n%").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 2);
+    }
+
+    #[test]
     fn line_ends_and_control_bytes() {
         let p = parse("G0 X1\rG0 X2\r\nG0 X3\n\r\rG0 X4\u{1a}").unwrap();
         assert_eq!(p.programs[0].blocks.len(), 4);
@@ -1912,8 +1971,8 @@ mod tests {
         let p = parse_with(
             texts[3],
             ReadOptions {
-                decimal_comma: false,
                 macros: Some(Dialect::Fanuc),
+                ..ReadOptions::default()
             },
         )
         .unwrap();
@@ -1962,10 +2021,11 @@ mod tests {
     fn read_as_held(text: &str) -> Vec<Program> {
         let mut programs = vec![];
         for macros in [None, Some(Dialect::Fanuc), Some(Dialect::Haas)] {
-            for decimal_comma in [false, true] {
+            for (decimal_comma, x_radius) in [(false, false), (true, false), (false, true)] {
                 let options = ReadOptions {
                     decimal_comma,
                     macros,
+                    x_radius,
                 };
                 let read = parse_with(text, options);
                 assert_eq!(read, parse_held(text, options), "{text:?} {options:?}");

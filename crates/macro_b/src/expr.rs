@@ -249,6 +249,34 @@ impl Expr {
             ExprKind::Call(_, args) => args.iter_mut().for_each(|a| a.shift_spans(by)),
         }
     }
+
+    /// The variables it names (`#n`, also in the index of a `#[ … ]`), in the order
+    /// written, each once: what a condition depends on, for messages.
+    pub fn variables(&self) -> Vec<u32> {
+        let mut found = Vec::new();
+        self.collect_variables(&mut found);
+        found
+    }
+
+    fn collect_variables(&self, found: &mut Vec<u32>) {
+        match &self.kind {
+            ExprKind::Num(_) => {}
+            ExprKind::Var(VarRef::Direct(n)) => {
+                if !found.contains(n) {
+                    found.push(*n);
+                }
+            }
+            ExprKind::Var(VarRef::Indirect(e))
+            | ExprKind::Group(e)
+            | ExprKind::Neg(e)
+            | ExprKind::Pos(e) => e.collect_variables(found),
+            ExprKind::Binary(_, a, b) => {
+                a.collect_variables(found);
+                b.collect_variables(found);
+            }
+            ExprKind::Call(_, args) => args.iter().for_each(|a| a.collect_variables(found)),
+        }
+    }
 }
 
 impl fmt::Display for VarRef {
@@ -372,6 +400,18 @@ pub struct Stmt {
 }
 
 impl Stmt {
+    /// The condition it tests (`IF`, `WHILE`), if any.
+    pub fn condition(&self) -> Option<&Expr> {
+        match &self.kind {
+            StmtKind::IfGoto { cond, .. }
+            | StmtKind::IfThen { cond, .. }
+            | StmtKind::IfThenBlock { cond, .. }
+            | StmtKind::IfBlock { cond }
+            | StmtKind::While { cond, .. } => Some(cond),
+            _ => None,
+        }
+    }
+
     /// Add `by` to the byte offset of every span in it (a file placed after another).
     pub fn shift_spans(&mut self, by: u32) {
         self.span.offset += by;

@@ -46,6 +46,7 @@
 mod error;
 mod eval;
 mod expr;
+mod fingerprint;
 mod flow;
 mod options;
 mod span;
@@ -61,6 +62,7 @@ pub use expr::{
     parse_expr, parse_operand, parse_stmt, starts_statement, BinOp, Expr, ExprKind, Func, Stmt,
     StmtKind, VarRef,
 };
+pub use fingerprint::Snapshot;
 pub use flow::{
     g65_argument_value, g65_locals, letter_of_argument, Argument, At, Body, CallKind, Flow, Line,
     MacroProgram, Step, Warning, ARGUMENTS,

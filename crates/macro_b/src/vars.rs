@@ -4,6 +4,7 @@
 use crate::span::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
+use crate::fingerprint::{common_slot, local_slot, share, Snapshot};
 use crate::flow::letter_of_argument;
 use crate::options::Options;
 use crate::value::{round_half_away, Value};
@@ -197,6 +198,9 @@ pub struct Variables {
     common: Vec<Value>,
     /// Per variable number below 1000: bit 0 read, bit 1 set (main level and commons).
     touched: Vec<u8>,
+    /// The sum of every value's [`share`] (vacant adds nothing), kept as values change: a
+    /// loop's state is compared in O(1) before it is compared value by value.
+    fingerprint: u64,
 }
 
 impl Default for Variables {
@@ -212,6 +216,7 @@ impl Variables {
             levels: vec![[Value::VACANT; 33]],
             common: vec![Value::VACANT; 1000],
             touched: vec![0; 1000],
+            fingerprint: 0,
         }
     }
 
@@ -222,12 +227,24 @@ impl Variables {
 
     /// A new local set for a `G65`/`G66` call: vacant except the arguments.
     pub fn push_level(&mut self, args: Locals) {
+        let level = self.levels.len();
+        for (i, &v) in args.iter().enumerate() {
+            self.fingerprint = self
+                .fingerprint
+                .wrapping_add(share(local_slot(level, i), v));
+        }
         self.levels.push(args);
     }
 
     /// Leave a `G65` level (`M99`): its locals are gone. The main level stays.
     pub fn pop_level(&mut self) {
         if self.levels.len() > 1 {
+            let level = self.levels.len() - 1;
+            for (i, &v) in self.levels[level].iter().enumerate() {
+                self.fingerprint = self
+                    .fingerprint
+                    .wrapping_sub(share(local_slot(level, i), v));
+            }
             self.levels.pop();
         }
     }
@@ -239,7 +256,28 @@ impl Variables {
 
     /// Set local `#n` (1–33) of the current level (e.g. from a G65 argument on a repeat).
     pub fn set_local(&mut self, n: usize, v: Value) {
-        self.levels.last_mut().expect("main level")[n - 1] = v;
+        self.put_local(n - 1, v);
+    }
+
+    /// Local index `i` (0–32) of the current level = `v`, the fingerprint kept.
+    fn put_local(&mut self, i: usize, v: Value) {
+        let level = self.levels.len() - 1;
+        let slot = &mut self.levels[level][i];
+        let old = std::mem::replace(slot, v);
+        self.refingerprint(local_slot(level, i), old, v);
+    }
+
+    /// Common `#n` = `v`, the fingerprint kept.
+    fn put_common(&mut self, n: usize, v: Value) {
+        let old = std::mem::replace(&mut self.common[n], v);
+        self.refingerprint(common_slot(n), old, v);
+    }
+
+    fn refingerprint(&mut self, slot: usize, old: Value, new: Value) {
+        self.fingerprint = self
+            .fingerprint
+            .wrapping_sub(share(slot, old))
+            .wrapping_add(share(slot, new));
     }
 
     /// A common variable (`#100`–`#199`, `#500`–`#999`); `None` for other numbers.
@@ -258,8 +296,59 @@ impl Variables {
                 "--vars sets #100–#199 and #500–#999",
             ));
         }
-        self.common[n as usize] = Value::num(v);
+        self.put_common(n as usize, Value::num(v));
         Ok(())
+    }
+
+    /// A fingerprint of every value (the locals of all levels and the common variables):
+    /// different fingerprints are different values; equal ones are checked with
+    /// [`Variables::same_as`].
+    pub fn fingerprint(&self) -> u64 {
+        self.fingerprint
+    }
+
+    /// The present values, to compare later ones with ([`Variables::same_as`]).
+    pub fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            fingerprint: self.fingerprint,
+            levels: self.levels.len(),
+            values: self.held().collect(),
+        }
+    }
+
+    /// Whether every variable holds, bit for bit, what it held at `then` (vacant as
+    /// vacant, -0.0 not 0.0). O(1) when the fingerprints differ.
+    pub fn same_as(&self, then: &Snapshot) -> bool {
+        then.fingerprint == self.fingerprint
+            && then.levels == self.levels.len()
+            && then.values.iter().copied().eq(self.held())
+    }
+
+    /// (slot, bits) of every variable that holds a value, in slot order.
+    fn held(&self) -> impl Iterator<Item = (u32, u64)> + '_ {
+        let commons = self
+            .common
+            .iter()
+            .enumerate()
+            .map(|(n, v)| (common_slot(n), v));
+        let locals = self.levels.iter().enumerate().flat_map(|(level, locals)| {
+            locals
+                .iter()
+                .enumerate()
+                .map(move |(i, v)| (local_slot(level, i), v))
+        });
+        commons
+            .chain(locals)
+            .filter_map(|(slot, v)| v.get().map(|x| (slot as u32, x.to_bits())))
+    }
+
+    /// Local `#1`–`#33` of the current level or a common variable, without noting it as
+    /// read (for messages); `None` for other numbers.
+    pub fn peek(&self, n: u32) -> Option<Value> {
+        match n {
+            1..=33 => Some(self.local(n as usize)),
+            _ => self.common(n),
+        }
     }
 
     /// The retained variables `#500`–`#999` that hold a value, to save after a run.
@@ -362,11 +451,11 @@ impl Variables {
         match classify(n, options) {
             Class::Local(i) => {
                 self.note(i as u32 + 1, true);
-                self.levels.last_mut().expect("main level")[i] = v;
+                self.put_local(i, v);
             }
             Class::Common(i) => {
                 self.note(i as u32, true);
-                self.common[i] = v;
+                self.put_common(i, v);
             }
             Class::Alarm => {
                 let k = round_half_away(v.or_zero());
@@ -536,6 +625,54 @@ mod tests {
                 .unwrap_err();
             assert_eq!(e.kind, ErrorKind::ReadOnly, "#{n}");
         }
+    }
+
+    /// The fingerprint follows every write, call level and load; a snapshot compares
+    /// bit for bit: vacant is not 0, -0.0 is not 0.0, a level's locals count.
+    #[test]
+    fn fingerprint_and_snapshot_follow_the_values() {
+        let o = Options::fanuc();
+        let sys = &mut NoMachine;
+        let mut v = Variables::new();
+        assert_eq!(v.fingerprint(), 0);
+        let empty = v.snapshot();
+        v.write(1, Value::num(0.0), None, S, &o, sys).unwrap();
+        assert_ne!(v.fingerprint(), 0, "0 is not vacant");
+        assert!(!v.same_as(&empty));
+        v.write(1, Value::VACANT, None, S, &o, sys).unwrap();
+        assert_eq!(v.fingerprint(), 0);
+        assert!(v.same_as(&empty));
+        v.write(1, Value::num(-0.0), None, S, &o, sys).unwrap();
+        let minus = v.snapshot();
+        v.write(1, Value::num(0.0), None, S, &o, sys).unwrap();
+        assert!(!v.same_as(&minus), "-0.0 is not 0.0 bit for bit");
+        // the same value in another variable is another state
+        let one = v.snapshot();
+        v.write(1, Value::VACANT, None, S, &o, sys).unwrap();
+        v.write(2, Value::num(0.0), None, S, &o, sys).unwrap();
+        assert!(!v.same_as(&one));
+        // commons, loads, levels: back to the same values, back to the same fingerprint
+        let before = (v.fingerprint(), v.snapshot());
+        v.write(500, Value::num(3.0), None, S, &o, sys).unwrap();
+        v.load(501, 4.0, S).unwrap();
+        let mut args = [Value::VACANT; 33];
+        args[0] = Value::num(7.0);
+        v.push_level(args);
+        let inside = v.snapshot();
+        v.set_local(2, Value::num(1.0));
+        assert!(!v.same_as(&inside));
+        v.set_local(2, Value::VACANT);
+        assert!(v.same_as(&inside));
+        v.pop_level();
+        assert!(!v.same_as(&inside), "a level less");
+        v.write(500, Value::VACANT, None, S, &o, sys).unwrap();
+        v.write(501, Value::VACANT, None, S, &o, sys).unwrap();
+        assert_eq!(v.fingerprint(), before.0);
+        assert!(v.same_as(&before.1));
+        // peek does not mark a variable read
+        assert_eq!(v.peek(2), Some(Value::num(0.0)));
+        assert_eq!(v.peek(5001), None);
+        assert!(v.report().iter().all(|e| !e.read));
     }
 
     #[test]

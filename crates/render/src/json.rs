@@ -142,6 +142,8 @@ struct Doc<'a> {
     title: &'a str,
     /// `--control` key the program was read for (additive field).
     control: &'a str,
+    /// The text encoding the program was read in (additive field).
+    encoding: &'a str,
     verdict: &'static str,
     stock: Stock,
     #[serde(rename = "final")]
@@ -195,6 +197,7 @@ pub(crate) fn json(report: &Report) -> String {
         program: &report.program,
         title: &report.title,
         control: &report.control,
+        encoding: &report.encoding,
         verdict: verdict_word(report.verdict),
         stock: Stock {
             description: report.stock.description.clone(),

@@ -162,6 +162,9 @@ pub struct Report {
     /// The control the program was read for (`--control`), e.g. `haas`; empty in reports
     /// made without one.
     pub control: String,
+    /// The text encoding the program was read in (`UTF-8`, `GBK`, …; WHATWG names);
+    /// empty when unknown.
+    pub encoding: String,
     /// The blank.
     pub stock: StockInfo,
     /// The final half section after all removal.

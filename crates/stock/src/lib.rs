@@ -32,7 +32,7 @@ mod tools;
 pub use blank::Blank;
 pub use error::StockError;
 pub use mounted::{chord_sweeps, float_sweep, move_path, Mounted, Mounts};
-pub use outline::Outline;
+pub use outline::{Outline, PastAxis};
 pub use overlay::{clean, BoolOp};
 pub use profile::profile_from_toml;
 pub use removal::{simulate, Crash, SimOptions, Simulation, CRASH_MIN_AREA};

@@ -7,7 +7,7 @@
 //! body as the table describes them, mirrored about the axis on a rear post
 //! ([`crate::section`]: a rear-post tool's tip number reads the same on both posts).
 
-use crate::outline::Outline;
+use crate::outline::{Outline, PastAxis};
 use crate::tools::hint_key;
 use crate::{Body, ToolTable};
 use expander::{Motion, Segment, ToolHint};
@@ -32,8 +32,19 @@ pub struct Mounted {
 impl Mounted {
     /// Tool `t` under `hint`, mirrored about the axis when `rear` (a rear post).
     pub fn new(tools: &ToolTable, t: u32, hint: ToolHint, rear: bool) -> Self {
-        let (edge, warning) = tools.outline_for(t, hint);
-        let body = tools.body_for(t, hint);
+        let (mut edge, warning) = tools.outline_for(t, hint);
+        let mut body = tools.body_for(t, hint);
+        // only stated geometry past the axis (spec/simulation.md)
+        let past = match (tools.size_stated(t, hint), rear) {
+            (true, _) => PastAxis::Fold,
+            (false, false) => PastAxis::DropBelow,
+            (false, true) => PastAxis::DropAbove,
+        };
+        edge.past_axis = past;
+        if let Some(b) = &mut body {
+            b.outline.past_axis = past;
+        }
+        let warning = warning.or_else(|| tools.size_warning(t, hint));
         if !rear {
             return Self {
                 edge: Arc::new(edge),
@@ -166,11 +177,11 @@ pub fn chord_sweeps<'o>(outline: &'o Outline, path: &'o [P]) -> impl Iterator<It
 }
 
 /// The sweep of `outline` along `path` in the section: [`chord_sweeps`] folded about the
-/// axis (each hull's part below it mirrored, [`crate::section`]), as convex
-/// counter-clockwise polygons.
+/// axis (each hull's part below it mirrored, or left out when the outline's size is
+/// assumed: [`crate::PastAxis`]), as convex counter-clockwise polygons.
 pub fn float_sweep(outline: &Outline, path: &[P]) -> Vec<Vec<P>> {
     chord_sweeps(outline, path)
-        .flat_map(|hull| crate::section::fold(&hull))
+        .flat_map(|hull| crate::section::fold(&hull, outline.past_axis))
         .collect()
 }
 
@@ -214,8 +225,9 @@ mod tests {
     /// from (0, -0.5) across the axis it folds into two pieces.
     #[test]
     fn a_sweep_is_one_hull_a_chord_folded_at_the_axis() {
-        let square = Outline {
+        let mut square = Outline {
             parts: vec![vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]],
+            past_axis: PastAxis::Fold,
         };
         let area = |r: &[P]| geom::ring::signed_area(&geom::flat::pts(r));
         let s = float_sweep(&square, &[[0.0, 1.0], [3.0, 1.0]]);
@@ -225,5 +237,9 @@ mod tests {
         assert_eq!(s.len(), 2);
         assert!((s.iter().map(|r| area(r)).sum::<f64>() - 4.0).abs() < 1e-12);
         assert!(s.iter().flatten().all(|p| p[1] >= 0.0));
+        // a guessed size stops at the axis: only the 3 × 0.5 above it
+        square.past_axis = PastAxis::DropBelow;
+        let s = float_sweep(&square, &[[0.0, -0.5], [3.0, -0.5]]);
+        assert!((s.iter().map(|r| area(r)).sum::<f64>() - 1.5).abs() < 1e-12);
     }
 }

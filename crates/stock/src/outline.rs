@@ -13,10 +13,30 @@ pub(crate) const NOSE_CHORD_TOL: f64 = 0.001;
 
 /// A tool outline as convex parts, each counter-clockwise, relative to the reference point
 /// (the point the program moves).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Outline {
     /// Convex parts, counter-clockwise, relative to the reference point.
     pub parts: Vec<Vec<[f64; 2]>>,
+    /// What becomes of the outline's part that reaches past the axis.
+    pub past_axis: PastAxis,
+}
+
+/// What becomes of a tool outline's part beyond the axis (spec/simulation.md, "Tools past
+/// the axis" and "Only stated geometry past the axis").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PastAxis {
+    /// Folded into the section (mirrored): the part is a solid of revolution, so a tool
+    /// point at distance d behind the axis meets the part where its radius exceeds d. For
+    /// tools whose size the table states.
+    #[default]
+    Fold,
+    /// Left out of the cut and of every crash test: the outline's size is a guess (a
+    /// default insert or blade, an insert whose edge is not given), and a guess must not
+    /// make a crash. A front-post tool keeps its part above the axis.
+    DropBelow,
+    /// The same for a rear-post tool (it works at negative X): its part below the axis is
+    /// kept (mirrored into the section), the part above it left out.
+    DropAbove,
 }
 
 impl Outline {
@@ -27,6 +47,7 @@ impl Outline {
                 .into_iter()
                 .filter(|p| p.len() >= 3)
                 .collect(),
+            past_axis: PastAxis::Fold,
         }
     }
 
@@ -57,6 +78,7 @@ impl Outline {
                 .iter()
                 .map(|part| convex_hull(&part.iter().map(|&p| f(p)).collect::<Vec<_>>()))
                 .collect(),
+            past_axis: self.past_axis,
         }
     }
 }
@@ -143,6 +165,7 @@ pub(crate) fn turning(
         let pts = arc_points(c, r.max(1e-3), 0.0, std::f64::consts::TAU);
         return Outline {
             parts: vec![convex_hull(&pts)],
+            past_axis: PastAxis::Fold,
         };
     }
     // (direction of the leading edge, of the trailing edge) from the cutting corner
@@ -186,6 +209,7 @@ pub(crate) fn turning(
                 .map(|p| [p[0] - reference[0], p[1] - reference[1]])
                 .collect::<Vec<_>>(),
         )],
+        past_axis: PastAxis::Fold,
     };
     match tip {
         2 => tip3.map(|p| [p[0], -p[1]]),
@@ -232,6 +256,7 @@ pub(crate) fn grooving(
         .collect();
     Outline {
         parts: vec![convex_hull(&pts)],
+        past_axis: PastAxis::Fold,
     }
 }
 
@@ -249,6 +274,7 @@ pub(crate) fn drill(diameter: f64, point_angle: f64, reach: f64) -> Outline {
             [len, -rad],
             [h, -rad],
         ])],
+        past_axis: PastAxis::Fold,
     }
 }
 
@@ -276,6 +302,7 @@ pub(crate) fn threading(angle: f64, tip_flat: f64, inside: bool) -> Outline {
     .map(|[z, r]| if inside { [z, -r] } else { [z, r] });
     Outline {
         parts: vec![convex_hull(&pts)],
+        past_axis: PastAxis::Fold,
     }
 }
 

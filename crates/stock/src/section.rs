@@ -8,21 +8,32 @@
 //! tool is tip 3 on either), so a rear-post tool — one that works at negative X — is mounted
 //! as the mirror of the table's picture.
 
+use crate::outline::PastAxis;
 use expander::{Motion, Segment};
 use geom::flat::{clip_convex, P};
 use geom::{Pt, Rect};
 
 /// A convex polygon of a sweep folded into the section: its part at r ≥ 0 as it is, its part
-/// at r ≤ 0 mirrored (each convex; empty parts left out).
-pub(crate) fn fold(poly: &[P]) -> Vec<Vec<P>> {
+/// at r ≤ 0 mirrored — or, for an outline whose size is assumed, only the part on its
+/// tool's side of the axis (`past`, [`PastAxis`]) — each convex; empty parts left out.
+pub(crate) fn fold(poly: &[P], past: PastAxis) -> Vec<Vec<P>> {
     if poly.iter().all(|p| p[1] >= 0.0) {
-        return vec![poly.to_vec()];
+        return match past {
+            PastAxis::DropAbove => Vec::new(),
+            _ => vec![poly.to_vec()],
+        };
     }
     const FAR: f64 = 1e12;
     let upper = Rect::new(Pt::new(-FAR, 0.0), Pt::new(FAR, FAR));
     let lower = Rect::new(Pt::new(-FAR, -FAR), Pt::new(FAR, 0.0));
-    let above = clip_convex(poly, &upper);
-    let mut below = clip_convex(poly, &lower);
+    let above = match past {
+        PastAxis::DropAbove => Vec::new(),
+        _ => clip_convex(poly, &upper),
+    };
+    let mut below = match past {
+        PastAxis::DropBelow => Vec::new(),
+        _ => clip_convex(poly, &lower),
+    };
     for p in &mut below {
         p[1] = -p[1];
     }
@@ -88,7 +99,7 @@ mod tests {
     #[test]
     fn a_polygon_across_the_axis_folds_into_two() {
         let square = [[0.0, -1.0], [2.0, -1.0], [2.0, 3.0], [0.0, 3.0]];
-        let f = fold(&square);
+        let f = fold(&square, PastAxis::Fold);
         assert_eq!(f.len(), 2);
         // 2 × 3 above, 2 × 1 mirrored, both counter-clockwise
         let areas: Vec<f64> = f
@@ -101,12 +112,21 @@ mod tests {
         );
         assert!(f[1].iter().all(|p| p[1] >= 0.0 && p[1] <= 1.0));
         let above = [[0.0, 1.0], [1.0, 1.0], [1.0, 2.0]];
-        assert_eq!(fold(&above), vec![above.to_vec()]);
+        assert_eq!(fold(&above, PastAxis::Fold), vec![above.to_vec()]);
         // wholly below, touching the axis: only its mirror (no zero-area part on the axis)
         let below = [[0.0, -1.0], [1.0, -1.0], [1.0, 0.0], [0.0, 0.0]];
-        let f = fold(&below);
+        let f = fold(&below, PastAxis::Fold);
         assert_eq!(f.len(), 1);
         assert!((::geom::ring::signed_area(&pts(&f[0])) - 1.0).abs() < 1e-12);
+        // an outline whose size is assumed keeps only its part on its tool's side
+        let f = fold(&square, PastAxis::DropBelow);
+        assert_eq!(f.len(), 1);
+        assert!((::geom::ring::signed_area(&pts(&f[0])) - 6.0).abs() < 1e-12);
+        assert!(fold(&below, PastAxis::DropBelow).is_empty());
+        let f = fold(&square, PastAxis::DropAbove);
+        assert_eq!(f.len(), 1);
+        assert!((::geom::ring::signed_area(&pts(&f[0])) - 2.0).abs() < 1e-12);
+        assert!(fold(&above, PastAxis::DropAbove).is_empty());
     }
 
     #[test]

@@ -45,7 +45,7 @@
 //! chains as that chord, so the total deviation stays within `chord_tol`.
 
 use crate::mounted::{move_path, Mounted, Mounts};
-use crate::outline::Outline;
+use crate::outline::{Outline, PastAxis};
 use crate::overlay::{inscribed_box, ring_perimeter, Grid, IBox, IPt};
 use crate::pass_group::{Lane, Offer, PassGroups};
 use crate::tools::hint_key;
@@ -847,7 +847,7 @@ impl<'a> SweepBuilder<'a> {
             seg = seg.max(lane.seg);
             let (polys, convex) = lane.sweep();
             for p in &polys {
-                self.add(p, convex);
+                self.add(p, convex, lane.outline.past_axis);
             }
         }
         self.end(item, seg, false, start, [0.0, 0.0]);
@@ -899,12 +899,12 @@ impl<'a> SweepBuilder<'a> {
         let item = self.begin();
         self.coreless = true;
         for p in &whole {
-            self.add_poly(p);
+            self.add_poly(p, outline.past_axis);
         }
         self.coreless = false;
         let cut = self.out.polys.len() as u32;
         for p in &pieces {
-            self.add_poly(p);
+            self.add_poly(p, outline.past_axis);
         }
         let len = d[0].hypot(d[1]);
         let dir = if len > 0.0 {
@@ -964,7 +964,7 @@ impl<'a> SweepBuilder<'a> {
             // instead of a hull per chord
             for part in &outline.parts {
                 let ring = sweep_chain(part, path);
-                self.add_ring(&ring);
+                self.add_ring(&ring, outline.past_axis);
             }
         } else {
             self.emit_hulls(outline, path);
@@ -989,7 +989,7 @@ impl<'a> SweepBuilder<'a> {
                 self.scratch
                     .extend(part.iter().map(|v| [v[0] + w[0][0], v[1] + w[0][1]]));
                 let poly = sweep_convex(&self.scratch, d);
-                self.add_poly(&poly);
+                self.add_poly(&poly, outline.past_axis);
             }
         }
     }
@@ -1000,7 +1000,7 @@ impl<'a> SweepBuilder<'a> {
         for p in at {
             for part in &outline.parts {
                 let poly: Vec<P> = part.iter().map(|v| [v[0] + p[0], v[1] + p[1]]).collect();
-                self.add_poly(&poly);
+                self.add_poly(&poly, outline.past_axis);
             }
         }
         self.end(item, idx, false, start, [0.0, 0.0]);
@@ -1011,21 +1011,22 @@ impl<'a> SweepBuilder<'a> {
     }
 
     /// Adds a convex polygon.
-    fn add_poly(&mut self, poly: &[P]) {
-        self.add(poly, true);
+    fn add_poly(&mut self, poly: &[P], past: PastAxis) {
+        self.add(poly, true, past);
     }
 
     /// Adds a chain sweep's ring (not convex; clipping keeps the winding number of every
     /// point inside the clip box, which is all the non-zero fill reads).
-    fn add_ring(&mut self, ring: &[P]) {
-        self.add(ring, false);
+    fn add_ring(&mut self, ring: &[P], past: PastAxis) {
+        self.add(ring, false, past);
     }
 
-    /// Adds a polygon folded into the section (its part below the axis mirrored; the
-    /// clipping keeps a ring's winding numbers, so chain rings fold like hulls).
-    fn add(&mut self, poly: &[P], convex: bool) {
+    /// Adds a polygon folded into the section (its part below the axis mirrored, or left
+    /// out for an outline whose size is assumed: `past`; the clipping keeps a ring's
+    /// winding numbers, so chain rings fold like hulls).
+    fn add(&mut self, poly: &[P], convex: bool, past: PastAxis) {
         if poly.iter().any(|p| p[1] < 0.0) {
-            for part in crate::section::fold(poly) {
+            for part in crate::section::fold(poly, past) {
                 self.add_section_poly(&part, convex);
             }
         } else {
@@ -1125,7 +1126,7 @@ impl<'a> SweepBuilder<'a> {
             if geom::ring::signed_area(&pts(&ring)) < 0.0 {
                 ring.reverse();
             }
-            self.add_ring(&ring);
+            self.add_ring(&ring, PastAxis::Fold);
         }
         let start = pieces
             .first()

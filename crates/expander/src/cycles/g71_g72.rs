@@ -96,6 +96,11 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         two_block(c, g72)?
     };
     let shape = contour::read(c)?;
+    let (shape, returns) = if haas {
+        super::shape_return::trim(shape, g72)
+    } else {
+        (shape, None)
+    };
     let frame = Frame::new(c, &shape, g72, removal.force_type2)?;
     let poly = Poly::new(&shape, &frame, removal.layers_off)?;
     let levels = poly.v_max / removal.dd;
@@ -140,6 +145,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     if let Some(note) = removal.note {
         out.warnings.push(c.alarm("LS-HAAS-IK", note, ""));
     }
+    out.warnings.extend(returns);
     out.intended.push((
         crate::IntendedKind::FinishingContour,
         shape.intended_path(0.001),

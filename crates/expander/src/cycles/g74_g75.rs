@@ -170,18 +170,23 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
             ));
         }
     }
-    // ④ the retract larger than the peck.
-    if e > in_step + tiny {
+    // ④ the retract larger than the peck: an error in R(e) the program wrote; on a Haas
+    // the retract is the machine's setting, and a peck smaller than it runs (issue 31:
+    // `G75 X0 I0.005` in inch): each retract then stops at the start of the infeed.
+    let mut warnings = vec![];
+    if e > in_step + tiny && haas {
+        warnings.push(c.alarm(
+            "LS-G75-E",
+            format!("{name}: the retract haas.peck_retract = {e} mm is larger than the peck {in_word} = {in_step} mm: each peck retracts further than it cut"),
+            "set haas.peck_retract in the machine profile to this machine's setting",
+        ));
+    } else if e > in_step + tiny {
         return Err(c.alarm(
             "LS-G75-E",
             format!(
                 "{name}: the retract e = {e} mm is larger than the peck {in_word} = {in_step} mm"
             ),
-            if haas {
-                format!("make haas.peck_retract in the machine profile smaller than {in_word}, or the pecks larger")
-            } else {
-                format!("make R(e) in the {name} R block smaller than {in_word}, or the pecks larger")
-            },
+            format!("make R(e) in the {name} R block smaller than {in_word}, or the pecks larger"),
         ));
     }
     if escape < 0.0 {
@@ -238,7 +243,9 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
             };
             push(Move::feed(join(bottom, s)));
             if k < pecks && e > 0.0 {
-                push(Move::rapid(join(bottom - dir_d * e, s)));
+                // never back past the start of the infeed (a retract larger than the cut)
+                let back = e.min((bottom - d0).abs());
+                push(Move::rapid(join(bottom - dir_d * back, s)));
             }
         }
         // Escape Δd at the bottom, back toward the side already cut.
@@ -256,6 +263,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     push(Move::rapid(a));
     Ok(Output {
         moves,
+        warnings,
         ..Output::default()
     })
 }

@@ -19,6 +19,7 @@ mod g90;
 mod g92;
 mod g94;
 mod passes;
+mod shape_return;
 
 /// One move of a cycle, from the previous move's end (or the cycle's start) to `to`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -17,6 +17,7 @@
 //! Macro B statements and G65 run through `macros.rs` (`Interp::step`).
 
 use super::ahead::Ahead;
+use super::loop_guard::LoopGuard;
 use super::{alarm, Interp};
 use crate::words::{whole_in, Words};
 use crate::{Control, Diagnostic, Span};
@@ -44,7 +45,19 @@ pub(super) enum Callee {
 /// How an O program was left.
 pub(super) enum Exit {
     End,
-    Return(Option<u32>),
+    /// M99, to the block after the call or (FANUC `M99 P`) to the caller's block `N seq`:
+    /// `(seq, the M99 block)`.
+    Return(Option<(u32, Span)>),
+}
+
+/// How a call ended, for the calling program.
+enum Called {
+    /// Go on after the call.
+    Done,
+    /// The program ended (M30 in the called program).
+    End,
+    /// `M99 P`: go on at this block of the caller; the M99 block.
+    ReturnTo(usize, Span),
 }
 
 /// Where execution goes after a block.
@@ -120,7 +133,8 @@ impl Interp<'_> {
         })
     }
 
-    /// [`Interp::run`], with the blocks read `ahead` where there are.
+    /// [`Interp::run`], with the blocks read `ahead` where there are. Every jump back
+    /// (GOTO, END, M99 P, a return to N of this program) goes past the loop guard.
     fn run_from(
         &mut self,
         program: &Program,
@@ -130,8 +144,10 @@ impl Interp<'_> {
         ahead: &mut Option<Ahead>,
     ) -> Result<Exit, Diagnostic> {
         let blocks = &program.programs[index].blocks;
+        // the callers wait while this program runs: the guard's states are this level's
+        let mut guard = LoopGuard::default();
         let mut i = start;
-        'blocks: while i < blocks.len() {
+        while i < blocks.len() {
             if self.opts.block_delete && blocks.block_delete(i) {
                 i += 1;
                 continue;
@@ -145,71 +161,36 @@ impl Interp<'_> {
                 *ahead = None;
             }
             let read = ahead.as_mut().and_then(|a| a.get(i));
-            match self.step(program, index, i, read)? {
-                Flow::Next => i += 1,
-                Flow::Jump(j) => i = j,
+            let from = i;
+            let mut jump = None;
+            i = match self.step(program, index, i, read)? {
+                Flow::Next => i + 1,
+                Flow::Jump(j) => j,
                 Flow::End => return Ok(Exit::End),
-                Flow::Return { seq, span } => {
-                    if depth == 0 && self.machine.control == Control::Haas {
-                        self.warn(
-                            span,
-                            "LS-M99-MAIN",
-                            "M99 in the main program loops to its start on a Haas: simulated once",
-                            "end the main program with M30 to run it once",
-                        );
-                        return Ok(Exit::End);
-                    }
-                    if depth == 0 {
-                        return Err(alarm(
-                            span,
-                            "LS-M99-MAIN",
-                            "M99 in the main program would repeat it endlessly",
-                            "end the main program with M30 (or M02); M99 belongs at the end of a subprogram",
-                        ));
-                    }
-                    return Ok(Exit::Return(seq));
-                }
+                Flow::Return { seq, span } => return self.leave(depth, seq, span),
                 Flow::Call {
                     callee,
                     times,
                     span,
                     locals,
                 } => {
-                    let limit = if self.machine.control == Control::Haas {
-                        MAX_NESTING_HAAS
-                    } else {
-                        MAX_NESTING
-                    };
-                    if depth + 1 > limit {
-                        return Err(alarm(
-                            span,
-                            "PS077",
-                            format!("subprogram calls nested deeper than {limit} levels (a subprogram calling itself?)"),
-                            "remove the recursive call or flatten the nesting",
-                        ));
-                    }
-                    let target = self.callee(program, index, &callee, span)?;
-                    let (called, sub, from) = match &target {
-                        Target::Here(sub, from) => (program, *sub, *from),
-                        Target::Library(p, sub) => (&**p, *sub, 0),
-                    };
-                    let level = self.enter_call(locals, matches!(callee, Callee::Modal(_)));
-                    for _ in 0..times {
-                        match self.run(called, sub, from, depth + 1)? {
-                            Exit::End => return Ok(Exit::End),
-                            Exit::Return(None) => {}
-                            Exit::Return(Some(seq)) => {
-                                let target = seq_index(blocks, seq, span, "returns to")?;
-                                self.leave_call(level);
-                                i = target;
-                                continue 'blocks;
-                            }
+                    let call = (callee, times, span, locals);
+                    match self.call(program, index, depth, call)? {
+                        Called::Done => i + 1,
+                        Called::End => return Ok(Exit::End),
+                        Called::ReturnTo(target, at) => {
+                            jump = Some(at);
+                            target
                         }
                     }
-                    self.leave_call(level);
-                    i += 1;
                 }
-                Flow::Branch { seq, span } => i = seq_index(blocks, seq, span, "branches to")?,
+                Flow::Branch { seq, span } => {
+                    jump = Some(span);
+                    seq_index(blocks, seq, span, "branches to")?
+                }
+            };
+            if i <= from {
+                self.came_back(&mut guard, blocks, (from, i), jump)?;
             }
         }
         let span = blocks.last().map(|b| b.span).unwrap_or_default();
@@ -230,6 +211,73 @@ impl Interp<'_> {
             );
             Ok(Exit::Return(None))
         }
+    }
+
+    /// M99 at `span`: the return to the caller (to its block `N seq`, if given). In the main
+    /// program M99 would repeat it endlessly: once on a Haas, else an alarm.
+    fn leave(&mut self, depth: u32, seq: Option<u32>, span: Span) -> Result<Exit, Diagnostic> {
+        if depth == 0 && self.machine.control == Control::Haas {
+            self.warn(
+                span,
+                "LS-M99-MAIN",
+                "M99 in the main program loops to its start on a Haas: simulated once",
+                "end the main program with M30 to run it once",
+            );
+            return Ok(Exit::End);
+        }
+        if depth == 0 {
+            return Err(alarm(
+                span,
+                "LS-M99-MAIN",
+                "M99 in the main program would repeat it endlessly",
+                "end the main program with M30 (or M02); M99 belongs at the end of a subprogram",
+            ));
+        }
+        Ok(Exit::Return(seq.map(|seq| (seq, span))))
+    }
+
+    /// Run a call of block `Flow::Call` (callee, repeats, the calling block, G65 locals)
+    /// from O program `index` at `depth`: its repeats, one after the other.
+    fn call(
+        &mut self,
+        program: &Program,
+        index: usize,
+        depth: u32,
+        (callee, times, span, locals): (Callee, u32, Span, Option<Box<macro_b::Locals>>),
+    ) -> Result<Called, Diagnostic> {
+        let limit = if self.machine.control == Control::Haas {
+            MAX_NESTING_HAAS
+        } else {
+            MAX_NESTING
+        };
+        if depth + 1 > limit {
+            return Err(alarm(
+                span,
+                "PS077",
+                format!("subprogram calls nested deeper than {limit} levels (a subprogram calling itself?)"),
+                "remove the recursive call or flatten the nesting",
+            ));
+        }
+        let target = self.callee(program, index, &callee, span)?;
+        let (called, sub, from) = match &target {
+            Target::Here(sub, from) => (program, *sub, *from),
+            Target::Library(p, sub) => (&**p, *sub, 0),
+        };
+        let level = self.enter_call(locals, matches!(callee, Callee::Modal(_)));
+        for _ in 0..times {
+            match self.run(called, sub, from, depth + 1)? {
+                Exit::End => return Ok(Called::End),
+                Exit::Return(None) => {}
+                Exit::Return(Some((seq, at))) => {
+                    let blocks = &program.programs[index].blocks;
+                    let target = seq_index(blocks, seq, span, "returns to")?;
+                    self.leave_call(level);
+                    return Ok(Called::ReturnTo(target, at));
+                }
+            }
+        }
+        self.leave_call(level);
+        Ok(Called::Done)
     }
 
     /// The program or block a call runs: in this file, else in the `--lib` folders.

@@ -6,13 +6,14 @@
 //! codes only move the origin later words are read from, and each shift that changes the
 //! frame is shown as a warning.
 
-use super::{alarm, Interp};
+use super::{alarm, Interp, MotionMode};
 use crate::words::{whole_in, Words};
 use crate::{Diagnostic, Machine, Pt};
 use gcode::{Block, Word};
 use std::collections::BTreeMap;
 
 /// The work frames as the program leaves them.
+#[derive(Clone, PartialEq)]
 pub(crate) struct Frames {
     /// The work system in force.
     work: Work,
@@ -165,8 +166,10 @@ impl Interp<'_> {
         Ok(())
     }
 
-    /// G53 X Z: a rapid to that machine position (from the profile's `machine_zero`); it
-    /// never cuts, so if its sweep meets stock that is a crash.
+    /// G53 X Z: a move to that machine position (from the profile's `machine_zero`). FANUC
+    /// and GSK move at rapid traverse whatever the mode; Haas at the G00/G01 in force
+    /// (spec/dialects.md §6.4, docs/field-rules.md). A rapid never cuts, so if its sweep
+    /// meets stock that is a crash.
     pub(super) fn g53(&mut self, b: &Block, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
         if let Some(w) = used.take('U').or_else(|| used.take('W')) {
             return Err(alarm(
@@ -200,6 +203,12 @@ impl Interp<'_> {
             z.map_or(self.pos.z, |w| zero.z + w.value * u),
             x.map_or(self.pos.r, |w| zero.r + w.value * u / 2.0),
         );
+        if self.machine.control == crate::Control::Haas && self.motion == MotionMode::Line {
+            if to.dist(self.pos) < 1e-12 {
+                return Ok(());
+            }
+            return self.push(b, crate::Motion::Feed, to, None, 0.0);
+        }
         self.rapid(b, to)
     }
 

@@ -45,12 +45,20 @@ pub(crate) struct Macros {
 }
 
 /// A `G66 P… [L…] args` in force: its arguments were evaluated at the `G66` block.
+#[derive(Clone, PartialEq)]
 struct ModalCall {
     number: u32,
     times: u32,
     locals: Box<Locals>,
     /// The `G66` block.
     span: Span,
+}
+
+/// The macro side of a loop's state besides the variables (for the loop guard): the
+/// modal call in force and how many calls it made are running.
+pub(super) struct Calls {
+    modal: Option<ModalCall>,
+    in_modal: u32,
 }
 
 /// What a call entered, for [`Interp::leave_call`].
@@ -713,6 +721,44 @@ impl Interp<'_> {
                 m.in_modal -= 1;
             }
         }
+    }
+
+    /// Custom macro B's variables, when it is on.
+    pub(super) fn variables(&self) -> Option<&macro_b::Variables> {
+        self.macros.as_ref().map(|m| &m.state.vars)
+    }
+
+    /// The modal call state, when custom macro B is on.
+    pub(super) fn calls(&self) -> Option<Calls> {
+        self.macros.as_ref().map(|m| Calls {
+            modal: m.modal.clone(),
+            in_modal: m.in_modal,
+        })
+    }
+
+    /// Whether the modal call state is still `calls` (compared in place, nothing copied).
+    pub(super) fn calls_are(&self, calls: Option<&Calls>) -> bool {
+        match (self.macros.as_ref(), calls) {
+            (Some(m), Some(c)) => m.modal == c.modal && m.in_modal == c.in_modal,
+            (None, None) => true,
+            _ => false,
+        }
+    }
+
+    /// The value of `#n` for a message, without noting it as read: a local or common
+    /// variable as it is, a system variable as the machine answers (`None` if it cannot).
+    pub(super) fn value_for_message(&mut self, n: u32, span: Span) -> Option<Value> {
+        let mut m = self.macros.take()?;
+        let value = match m.state.vars.peek(n) {
+            Some(v) => Some(v),
+            None => {
+                let options = m.state.options;
+                let sys = &mut Sys { it: self, span };
+                m.state.vars.read(i64::from(n), span, &options, sys).ok()
+            }
+        };
+        self.macros = Some(m);
+        value
     }
 
     /// The alarm of the block budget: it names the loop last jumped back to, if any.

@@ -16,6 +16,7 @@ mod dialect_words;
 mod flow;
 mod frame;
 mod g10;
+mod loop_guard;
 mod macros;
 mod modal;
 mod motion;
@@ -36,7 +37,8 @@ pub(crate) use modal::MotionMode;
 pub struct Options {
     /// Skip blocks that start with `/`.
     pub block_delete: bool,
-    /// Stop with an alarm when the program expands to more segments than this.
+    /// The move budget: stop with an alarm when the program expands to more segments than
+    /// this (`--max-moves`).
     pub max_segments: usize,
     /// Stop with an alarm after executing this many blocks (endless loops).
     pub max_blocks: usize,
@@ -58,7 +60,7 @@ impl Default for Options {
     fn default() -> Self {
         Self {
             block_delete: false,
-            max_segments: 5_000_000,
+            max_segments: 10_000_000,
             max_blocks: macro_b::DEFAULT_MAX_BLOCKS as usize,
             tools: toolfacts::ToolFacts::default(),
             start_tool: None,
@@ -398,7 +400,14 @@ impl<'m> Interp<'m> {
             Some((G50, _)) => self.g50(&mut used)?,
             Some((G50_3, w)) => self.preset(w, &mut used)?,
             Some((G52, _)) => self.g52(b, &mut used)?,
-            Some((G53, w)) => self.g53(b, &mut used, w)?,
+            Some((G53, w)) => {
+                if let Some((m, _)) = g.motion {
+                    // G00/G01 with G53 sets the mode for the blocks after it too
+                    self.motion = m;
+                    self.retained.drill = None;
+                }
+                self.g53(b, &mut used, w)?
+            }
             Some((G27, w)) => self.g27(b, &mut used, w)?,
             Some((G10, w)) => self.g10(&mut used, w)?,
             Some((t, w)) => {

@@ -148,7 +148,13 @@ impl Interp<'_> {
                 }
             }
         }
-        if let (Some((_, m)), Some((_, o))) = (g.motion, g.one_shot) {
+        if let (Some((m, m_word)), Some((o_code, o))) = (g.motion, g.one_shot) {
+            // G53 moves at the block's G00/G01 (spec/dialects.md §6.4; `G53 G00 X0`, the
+            // Haas and FANUC way home)
+            if o_code == G53 && matches!(m, MotionMode::Rapid | MotionMode::Line) {
+                return Ok(g);
+            }
+            let m = m_word;
             return Err(alarm(
                 o.span,
                 "PS010",

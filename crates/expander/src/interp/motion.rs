@@ -188,10 +188,10 @@ impl Interp<'_> {
                 span,
                 "LS-TOO-LONG",
                 format!(
-                    "the program expands to more than {} moves",
+                    "the program expands to more than {} moves (the move budget)",
                     self.opts.max_segments
                 ),
-                "split the program, or check for a repeat count that is far too large",
+                "check for a loop or a repeat count that is far too large, or raise --max-moves if the program really makes this many moves",
             ));
         }
         let feed = self.feed_for(span, motion)?;

@@ -14,20 +14,29 @@
 //! - **turning, ID** (tips 2, 1, 6): a boring bar of diameter `d` (bar designation, else
 //!   `shank`, else [`DEFAULT_SHANK`]) along +Z, starting [`BODY_GAP`] behind the insert
 //!   outline, its top [`BAR_OFFSET`] below the cutting corner (f = d/2 + 3);
-//! - **grooving**: beyond `reach` along the shank direction, the holder: the blade's width
-//!   plus [`BLADE_HOLDER_SIDE`] on each side, [`DEFAULT_LENGTH`] long (a blade sent deeper
-//!   than its reach crashes its holder);
+//! - **grooving**, OD and face: beyond `reach` along the shank direction, the holder: the
+//!   blade's width plus [`BLADE_HOLDER_SIDE`] on each side, [`DEFAULT_LENGTH`] long (a
+//!   blade sent deeper than its reach crashes its holder);
+//! - **grooving, ID** (`shank_dir = "-x"`): spec/simulation.md, "ID tools are carried along
+//!   Z": the blade projects `reach` from the top of a bar of diameter `shank` (else
+//!   [`DEFAULT_BAR`]) that runs under it along +Z, out of the bore's mouth, never across the
+//!   axis;
 //! - **drill**: beyond `reach` (the flutes) along +Z, the drill's holder, Ø diameter +
 //!   2 × [`DRILL_HOLDER_SIDE`], [`DEFAULT_LENGTH`] long;
-//! - **threading**: a shank like the OD turning holder's, above the insert and toward +Z
-//!   from the insert's chuck-side flank.
+//! - **threading**, OD: a shank like the OD turning holder's, above the insert and toward
+//!   +Z from the insert's chuck-side flank; ID (`side = "id"`): the insert on a bar of
+//!   diameter `shank` (else [`DEFAULT_BAR`]) along +Z under it, like an ID blade.
 
 use super::{Tool, ToolTable};
 use crate::outline::Outline;
+use crate::outline::PastAxis;
 use expander::ToolHint;
 
 /// Shank width (OD holders) or bar diameter (boring bars) without a designation, mm.
 pub(crate) const DEFAULT_SHANK: f64 = 20.0;
+/// Diameter of the bar an ID blade or an ID threading insert sits on when the table gives
+/// no `shank`, mm (spec/simulation.md, "ID tools are carried along Z").
+pub(crate) const DEFAULT_BAR: f64 = 16.0;
 /// Length of a body without a designation's length, mm.
 pub(crate) const DEFAULT_LENGTH: f64 = 100.0;
 /// Clearance between the cutting outline and the body, mm.
@@ -64,9 +73,17 @@ pub struct Body {
     pub name: &'static str,
 }
 
+/// The bar an ID tool sits on: its top at `top` (relative to the reference point), `d`
+/// thick toward the axis, from the cutting outline's left end (`lo`, `hi`: its box) along
+/// +Z for `length` past its right end.
+fn bar_under(lo: [f64; 2], hi: [f64; 2], top: f64, d: f64, length: f64) -> Outline {
+    rect(lo[0], hi[0] + length, top - d, top)
+}
+
 fn rect(z0: f64, z1: f64, r0: f64, r1: f64) -> Outline {
     Outline {
         parts: vec![vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]]],
+        past_axis: PastAxis::Fold,
     }
 }
 
@@ -99,6 +116,17 @@ impl Tool {
                     name: "holder",
                 }
             }
+            Self::Grooving(b) if b.shank_dir == super::AxisDir::MinusX => Body {
+                outline: bar_under(lo, hi, -b.reach, size.shank.unwrap_or(DEFAULT_BAR), length),
+                name: "boring bar",
+            },
+            Self::Threading {
+                side: super::ThreadSide::Id,
+                ..
+            } => Body {
+                outline: bar_under(lo, hi, lo[1], size.shank.unwrap_or(DEFAULT_BAR), length),
+                name: "boring bar",
+            },
             Self::Grooving(b) => {
                 let (w, s) = (b.width_dir.unit(), b.shank_dir.unit());
                 let corners = [
@@ -114,6 +142,7 @@ impl Tool {
                 Body {
                     outline: Outline {
                         parts: vec![geom::flat::convex_hull(&pts)],
+                        past_axis: PastAxis::Fold,
                     },
                     name: "blade holder",
                 }

@@ -23,6 +23,9 @@ pub struct ToolTable {
     designations: Vec<(u32, String)>,
     /// What a turning tool's holder measures, when its designation or `shank` says.
     sizes: Vec<(u32, HolderSize)>,
+    /// The entries whose cutting outline's size the table does not state (an insert with
+    /// no `edge` nor ISO designation, a blade without `width` or `reach`).
+    assumed: Vec<u32>,
 }
 
 impl ToolTable {
@@ -37,6 +40,7 @@ impl ToolTable {
             tools,
             designations: Vec::new(),
             sizes: Vec::new(),
+            assumed: Vec::new(),
         }
     }
 
@@ -46,13 +50,11 @@ impl ToolTable {
         Ok(Self {
             designations: entries
                 .iter()
-                .filter_map(|(t, _, d, _)| d.clone().map(|d| (*t, d)))
+                .filter_map(|e| e.designation.clone().map(|d| (e.t, d)))
                 .collect(),
-            sizes: entries.iter().map(|(t, _, _, s)| (*t, *s)).collect(),
-            tools: entries
-                .into_iter()
-                .map(|(t, tool, _, _)| (t, tool))
-                .collect(),
+            sizes: entries.iter().map(|e| (e.t, e.size)).collect(),
+            assumed: entries.iter().filter(|e| !e.stated).map(|e| e.t).collect(),
+            tools: entries.into_iter().map(|e| (e.t, e.tool)).collect(),
         })
     }
 

@@ -88,6 +88,51 @@ impl ToolTable {
         (tool.outline(), warning)
     }
 
+    /// Whether the table states the size of the outline that cuts for tool `t` under `hint`
+    /// (spec/simulation.md, "Only stated geometry past the axis"): not for a default
+    /// standing in, nor for an entry whose size is assumed; a G75.1 blade (its width the
+    /// program's) takes its reach from the table's grooving entry.
+    pub fn size_stated(&self, t: u32, hint: ToolHint) -> bool {
+        let entry = if t == 0 {
+            self.numbers().first().copied()
+        } else {
+            Some(t)
+        };
+        let Some(entry) = entry.filter(|&n| self.get(n).is_some()) else {
+            return false;
+        };
+        let ok = match hint {
+            ToolHint::Blade { .. } => matches!(self.get(entry), Some(Tool::Grooving(_))),
+            _ => self.resolve(t, hint).1.is_none(),
+        };
+        ok && !self.assumed.contains(&entry)
+    }
+
+    /// The warning for an entry whose outline's size is assumed, once per tool.
+    pub fn size_warning(&self, t: u32, hint: ToolHint) -> Option<String> {
+        if self.size_stated(t, hint) || self.resolve(t, hint).1.is_some() {
+            return None;
+        }
+        let n = if t == 0 {
+            self.numbers().first().copied()?
+        } else {
+            t
+        };
+        let what = match self.get(n)? {
+            Tool::Turning { edge, .. } => format!(
+                "insert size not given, {} mm edges assumed (state `edge` or an ISO insert such as \"CNMG 120408\")",
+                crate::blank::fmt_num(*edge)
+            ),
+            Tool::Grooving(b) => format!(
+                "blade width or reach not given, {} × {} mm assumed (state `width` and `reach`)",
+                crate::blank::fmt_num(b.width),
+                crate::blank::fmt_num(b.reach)
+            ),
+            _ => return None,
+        };
+        Some(format!("T{n:02}: {what}; past the axis it is not checked"))
+    }
+
     /// The tool that cuts for tool `t` under `hint` (see [`ToolTable::outline_for`]), with
     /// the warning when a default stands in.
     pub(super) fn resolve(&self, t: u32, hint: ToolHint) -> (Tool, Option<String>) {

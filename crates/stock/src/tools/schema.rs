@@ -41,9 +41,22 @@ struct RawTool {
 
 const HELP: &str = "each [[tool]] needs `t` and `kind` (turning | grooving | drill | threading) and only the fields of its kind";
 
-/// One entry read: its T number, the tool, the ISO designations it was given by
-/// (`"CNMG 120408 in PCLNR 2525M12"`), if any, for the report, and its holder's size.
-pub(super) type Entry = (u32, Tool, Option<String>, HolderSize);
+/// One entry read.
+pub(super) struct Entry {
+    /// Its T number.
+    pub(super) t: u32,
+    pub(super) tool: Tool,
+    /// The ISO designations it was given by (`"CNMG 120408 in PCLNR 2525M12"`), if any,
+    /// for the report.
+    pub(super) designation: Option<String>,
+    /// Its holder's size.
+    pub(super) size: HolderSize,
+    /// Whether the entry states the size of its cutting outline (spec/simulation.md, "Only
+    /// stated geometry past the axis"): a turning insert's `edge` or an ISO insert
+    /// designation, a blade's `width` and `reach`, a drill's `diameter` (required), a
+    /// threading insert (its form is its angle).
+    pub(super) stated: bool,
+}
 
 /// The table's entries in file order; a T number given twice is an error.
 pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
@@ -54,7 +67,7 @@ pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
         let (line, _) = line_col(text, entry.span().start);
         let raw = entry.get_ref();
         let (tool, designation, size) = parse_tool(raw, line)?;
-        if tools.iter().any(|(t, _, _, _)| *t == raw.t) {
+        if tools.iter().any(|e| e.t == raw.t) {
             return Err(StockError::Tool {
                 t: raw.t,
                 field: "t",
@@ -62,9 +75,25 @@ pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
                 line,
             });
         }
-        tools.push((raw.t, tool, designation, size));
+        tools.push(Entry {
+            t: raw.t,
+            stated: size_stated(raw, designation.is_some()),
+            tool,
+            designation,
+            size,
+        });
     }
     Ok(tools)
+}
+
+/// Whether `raw` states its cutting outline's size (see [`Entry::stated`]); `designated`:
+/// its insert was given by an ISO designation, which gives the edge length.
+fn size_stated(raw: &RawTool, designated: bool) -> bool {
+    match raw.kind.as_str() {
+        "turning" => raw.edge.is_some() || designated,
+        "grooving" => raw.width.is_some() && raw.reach.is_some(),
+        _ => true,
+    }
 }
 
 /// What ISO designations (`insert = "CNMG 120408"`, `holder = "PCLNR 2525M12"`) say about a
@@ -216,9 +245,16 @@ fn parse_tool(
             "entering_angle",
             "edge",
         ],
-        "grooving" => &["width", "width_dir", "shank_dir", "reach", "corner_radius"],
+        "grooving" => &[
+            "width",
+            "width_dir",
+            "shank_dir",
+            "reach",
+            "corner_radius",
+            "shank",
+        ],
         "drill" => &["diameter", "point_angle", "reach"],
-        "threading" => &["angle", "tip_flat", "side"],
+        "threading" => &["angle", "tip_flat", "side", "shank"],
         other => {
             return Err(err(
                 "kind",
@@ -234,6 +270,17 @@ fn parse_tool(
     if matches!(raw.kind.as_str(), "grooving" | "drill") {
         // a blade's or a drill's holder starts where its stated reach ends
         size.declared = raw.reach.is_some();
+    }
+    if matches!(raw.kind.as_str(), "grooving" | "threading") {
+        // the bar an ID blade or insert sits on (spec/simulation.md, "ID tools are
+        // carried along Z"); an ID threading insert's bar is stated by its `shank`
+        size.shank = raw
+            .shank
+            .map(|v| num("shank", Some(v), None, 0.0, 1000.0, false))
+            .transpose()?;
+        if raw.kind == "threading" {
+            size.declared = size.shank.is_some();
+        }
     }
     let tool = match raw.kind.as_str() {
         "turning" => {
