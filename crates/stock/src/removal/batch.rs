@@ -316,7 +316,7 @@ mod tests {
         let mut builder = SweepBuilder::new(&grid, bb, &tools, 0.001, 0.0);
         let passes = [(20.0, -30.0), (19.9, -30.0), (19.8, -25.0)];
         for (i, &(r, z)) in passes.iter().enumerate() {
-            builder.push(i, &seg(Motion::Feed, [5.0, r], [z, r]));
+            builder.push(i, &seg(Motion::Feed, [5.0, r], [z, r]), None);
         }
         builder.flush_run();
         let sweeps = builder.take();

@@ -382,7 +382,7 @@ impl<'a> Epochs<'a> {
         }
         for (k, seg) in segments[start..end].iter().enumerate() {
             self.builder
-                .push_before(start + k, seg, segments.get(start + k + 1));
+                .push(start + k, seg, segments.get(start + k + 1));
             self.snapshots.after_push(start + k + 1, &mut self.builder);
         }
         let parting = end > start && looking && parts_off(&segments[end - 1], tools, bore);

@@ -247,7 +247,7 @@ fn sweep_count(tools: &ToolTable, segs: &[Segment], merge_tol: f64) -> usize {
     // merging alone (paths of feeds would make one sweep of every path)
     b.set_feed_paths(false);
     for (i, s) in segs.iter().enumerate() {
-        b.push(i, s);
+        b.push(i, s, None);
     }
     b.flush_run();
     // the cutting sweeps (each move also has its body's probe)
@@ -381,7 +381,7 @@ fn feed_paths_remove_exactly_what_the_single_moves_remove() {
         let mut b = SweepBuilder::new(&grid, bb, &tools, 0.001, 0.0005);
         b.set_feed_paths(on);
         for (i, s) in segs.iter().enumerate() {
-            b.push(i, s);
+            b.push(i, s, None);
         }
         b.flush_run();
         b.take().items.len()
