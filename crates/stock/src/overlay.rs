@@ -608,11 +608,22 @@ pub fn clean(rings: &[Vec<P>]) -> Vec<Shape> {
     )
 }
 
-/// Float boolean between two shape sets on a grid fitted to both (for measures).
+/// Most shapes a union joins in one call; more are joined half by half (see [`boolean`]).
+const UNION_CHUNK: usize = 64;
+
+/// Float boolean between two shape sets on a grid fitted to both (for measures). A union of
+/// more than [`UNION_CHUNK`] shapes is the union of its two halves' unions, each on a grid
+/// fitted to it: the boolean engine splits every edge at every other edge's end along the
+/// same line, so n overlapping bands with sides on one line (a thread's passes) made n²
+/// pieces in one call (5 000 passes: 5 GB), where the halves' unions stay small.
 pub(crate) fn boolean(a: &[Shape], b: &[Shape], rule: BoolOp) -> Vec<Shape> {
     let (a, b) = (finite_shapes(a), finite_shapes(b));
     if a.is_empty() && b.is_empty() {
         return Vec::new();
+    }
+    if rule == BoolOp::Union && a.len() + b.len() > UNION_CHUNK {
+        let all: Vec<Vec<Vec<P>>> = a.into_iter().chain(b).collect();
+        return to_shapes(union_by_halves(&all));
     }
     let rule = match rule {
         BoolOp::Xor => OverlayRule::Xor,
@@ -625,6 +636,20 @@ pub(crate) fn boolean(a: &[Shape], b: &[Shape], rule: BoolOp) -> Vec<Shape> {
         FloatOverlay::with_subj_and_clip_custom(&a, &b, Default::default(), solver_for(points))
             .overlay(rule, FillRule::NonZero),
     )
+}
+
+/// The union of `shapes` (finite), joined half by half down to [`UNION_CHUNK`] shapes a call.
+fn union_by_halves(shapes: &[Vec<Vec<P>>]) -> Vec<Vec<Vec<P>>> {
+    if shapes.len() <= UNION_CHUNK {
+        let points = shapes.iter().flatten().map(Vec::len).sum();
+        return FloatOverlay::with_subj_custom(shapes, Default::default(), solver_for(points))
+            .overlay(OverlayRule::Subject, FillRule::NonZero);
+    }
+    let (left, right) = shapes.split_at(shapes.len() / 2);
+    let (l, r) = (union_by_halves(left), union_by_halves(right));
+    let points = [&l, &r].into_iter().flatten().flatten().map(Vec::len).sum();
+    FloatOverlay::with_subj_and_clip_custom(&l, &r, Default::default(), solver_for(points))
+        .overlay(OverlayRule::Union, FillRule::NonZero)
 }
 
 /// The boolean operations offered on float shapes.
@@ -915,5 +940,51 @@ mod tests {
             shrunk += usize::from(out != b);
         }
         assert!(shrunk > 2_000, "{shrunk}");
+    }
+
+    /// A union of more shapes than one call joins (joined half by half) is the union: 2 000
+    /// bands of a thread's passes, 0.0005 mm apart on sides of one line, join into the one
+    /// rectangle they cover; 300 scattered unit squares (some overlapping) cover what the
+    /// one-call union of each chunk covers, added up; a union with a clip set joins both.
+    #[test]
+    fn a_union_of_many_shapes_is_joined_by_halves() {
+        let rect = |z0: f64, z1: f64, r0: f64, r1: f64| Shape {
+            outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]],
+            holes: vec![],
+        };
+        let bands: Vec<Shape> = (0..2000)
+            .map(|k| {
+                rect(
+                    -18.0,
+                    0.5,
+                    8.0 - 0.0005 * f64::from(k),
+                    9.0 - 0.0005 * f64::from(k),
+                )
+            })
+            .collect();
+        let u = boolean(&bands, &[], BoolOp::Union);
+        assert_eq!(u.len(), 1);
+        assert_eq!(u[0].outer.len(), 4, "{:?}", u[0].outer);
+        let top = 9.0;
+        let bottom = 8.0 - 0.0005 * 1999.0;
+        assert!((crate::area(&u) - 18.5 * (top - bottom)).abs() < 1e-6);
+        // scattered squares on a 20 x 20 lattice of pitch 0.9 (unit squares: neighbours
+        // overlap by 0.1 along both axes): the area the inclusion–exclusion gives
+        let squares: Vec<Shape> = (0..300)
+            .map(|k| {
+                let (i, j) = (f64::from(k % 20), f64::from(k / 20));
+                rect(0.9 * i, 0.9 * i + 1.0, 0.9 * j, 0.9 * j + 1.0)
+            })
+            .collect();
+        let u = boolean(&squares, &[], BoolOp::Union);
+        let (w, h) = (0.9 * 19.0 + 1.0, 0.9 * 14.0 + 1.0);
+        assert!(
+            (crate::area(&u) - w * h).abs() < 1e-6,
+            "{}",
+            crate::area(&u)
+        );
+        let (a, b) = squares.split_at(100);
+        let u2 = boolean(a, b, BoolOp::Union);
+        assert!((crate::area(&u2) - w * h).abs() < 1e-6);
     }
 }
