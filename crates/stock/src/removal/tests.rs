@@ -210,6 +210,55 @@ fn thread_pass_stamps_one_tooth_per_lead() {
     );
 }
 
+/// A thread cut with G76's flank infeed: 150 passes whose tips all lie on the thread's
+/// leading flank, so that every pass's V holds the last ones. The part is the last pass's
+/// cut (the same area), with the thread's own few vertices a tooth, not the zigzag of a
+/// vertex a pass and tooth grid rounding left where the passes' flanks meet along that line
+/// (8 715 vertices before the kinks were dropped).
+#[test]
+fn flank_infeed_passes_leave_no_zigzag_along_the_flank() {
+    let tools = ToolTable::from_tools(vec![(
+        1,
+        Tool::Threading {
+            angle: 60.0,
+            tip_flat: 0.0,
+            side: crate::tools::ThreadSide::Od,
+        },
+    )]);
+    let blank = Blank::bar(20.0, 40.0, 0.0, None).unwrap();
+    let tan30 = 30f64.to_radians().tan();
+    let pass = |d: f64| {
+        let dz = -d * tan30;
+        let mut t = seg(Motion::Thread, [2.0 + dz, 8.5 - d], [-17.3 + dz, 8.5 - d]);
+        t.lead = 1.5;
+        [
+            seg(Motion::Rapid, [2.0 + dz, 10.5], [2.0 + dz, 8.5 - d]),
+            t,
+            seg(Motion::Rapid, [-17.3 + dz, 8.5 - d], [-17.3 + dz, 10.5]),
+            seg(Motion::Rapid, [-17.3 + dz, 10.5], [2.0 + dz, 10.5]),
+        ]
+    };
+    let passes = 150;
+    let segs: Vec<Segment> = (1..=passes)
+        .flat_map(|k| pass(0.92 * (f64::from(k) / f64::from(passes)).sqrt()))
+        .collect();
+    let sim = run(&blank, &tools, &segs);
+    let last = run(&blank, &tools, &pass(0.92));
+    let vertices: usize = sim
+        .final_shapes
+        .iter()
+        .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
+        .sum();
+    assert!(vertices < 150, "{vertices} vertices");
+    assert!(
+        (sim.removed_area - last.removed_area).abs() < 1e-6,
+        "{} against {}",
+        sim.removed_area,
+        last.removed_area
+    );
+    assert!(sim.crashes.is_empty() && sim.removed_area > 5.0);
+}
+
 #[test]
 fn grooving_hints_choose_the_blade() {
     let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();

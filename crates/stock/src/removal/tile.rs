@@ -4,8 +4,8 @@
 use super::batch::{Batch, Trimmed, BATCH};
 use super::crash::Fragment;
 use crate::overlay::{
-    convex_contains, orient, point_in_ring, right_of, segments_meet, winds, Engine, Grid, IBox,
-    IPt, IShapes,
+    convex_contains, drop_grid_kinks, orient, point_in_ring, right_of, segments_meet, winds,
+    Engine, Grid, IBox, IPt, IShapes,
 };
 use crate::ring_air;
 use crate::sweep::{Item, Sweeps};
@@ -15,6 +15,9 @@ use std::sync::atomic::{AtomicU32, Ordering};
 /// boolean call smaller and the tree deeper: 64 was the fastest with batches of
 /// [`BATCH`] (the stock bench at 10⁵ moves; PERFORMANCE.md, "Batch and tile sizes").
 const MAX_TILE_VERTICES: usize = 64;
+/// A vertex of a tile's stock within this many grid steps of the segment between its
+/// neighbours is dropped after each boolean call ([`drop_grid_kinks`]).
+const KINK: i64 = 1;
 /// Smallest tile side, mm.
 pub(super) const MIN_TILE: f64 = 0.001;
 
@@ -47,6 +50,7 @@ impl Tile {
             return;
         }
         self.stock = engine.difference(&self.stock, batch.iter());
+        drop_grid_kinks(&mut self.stock, KINK, &self.rect);
         self.bbox = IBox::of_shapes(&self.stock);
         self.verts = self.stock.iter().flatten().map(Vec::len).sum();
         batch.clear();
