@@ -6,13 +6,14 @@ use super::batch::{Batch, Trimmed};
 use super::crash::Fragment;
 use super::tile::{Ctx, Node, Tile, Worker, MIN_TILE};
 use super::SimOptions;
-use crate::overlay::{Engine, Grid, IBox, IShape, IShapes};
+use crate::budget::{process_memory, size, OverBudget};
+use crate::overlay::{Engine, Grid, IBox, IPt, IShape, IShapes};
 use crate::snapshot::Snapshots;
 use crate::sweep::{SweepBuilder, Sweeps};
 use crate::{Shape, ToolTable};
 use expander::{Motion, Segment};
 use geom::Rect;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 /// Target width of a Z strip, mm (strips are the units of parallel work; complex stock is
@@ -116,6 +117,7 @@ impl Strips {
                 batch: Batch::default(),
                 trim: Trimmed::default(),
                 runs: Vec::new(),
+                calls: 0,
             };
             loop {
                 let k = next_strip.fetch_add(1, Ordering::Relaxed);
@@ -159,6 +161,14 @@ impl Strips {
                 .gather(&mut parts);
         }
         engine.union(&parts)
+    }
+
+    /// The vertices of the stock and the tiles holding them.
+    fn census(&self) -> (usize, usize) {
+        self.nodes.iter().fold((0, 0), |(v, t), m| {
+            let (nv, nt) = m.lock().unwrap_or_else(|e| e.into_inner()).census();
+            (v + nv, t + nt)
+        })
     }
 
     /// Whether any stock lies right of `x` (grid units).
@@ -220,6 +230,8 @@ pub(super) struct Cuts {
     pub(super) fallen: Vec<(usize, IShapes)>,
     /// (move, message).
     pub(super) warnings: Vec<(usize, String)>,
+    /// The run went over its memory budget: it stopped there.
+    pub(super) over_budget: Option<OverBudget>,
 }
 
 /// What builds the epochs' sweeps in program order: the sweep builder, the snapshot counts
@@ -294,6 +306,7 @@ impl<'a> Epochs<'a> {
         let mut cuts = Cuts::default();
         // moves whose cuts are all in the tiles at the last epoch end
         let mut cut_moves = 0;
+        let stop = AtomicBool::new(false);
         let mut next = Some(self.build(0, None));
         while let Some(ep) = next.take() {
             let lists = strips.lists(&ep.sweeps);
@@ -308,6 +321,8 @@ impl<'a> Epochs<'a> {
                 sweeps: &ep.sweeps,
                 ring_air: opts.ring_air,
                 cover: opts.cover,
+                budget: opts.max_memory,
+                stop: &stop,
             };
             let mut found = strips.cut(&lists, &ctx, engine, || {
                 if ahead {
@@ -315,6 +330,22 @@ impl<'a> Epochs<'a> {
                 }
             });
             cuts.fragments.append(&mut found);
+            if let Some(budget) = opts.max_memory {
+                let held = budget.exceeded();
+                if held.is_some() || ctx.stopped() {
+                    let held = held.or_else(process_memory).unwrap_or(0);
+                    let done = if ctx.stopped() { cut_moves } else { ep.end };
+                    let what = self.what_grew(strips, &ep.sweeps, &cuts, held);
+                    cuts.over_budget = Some(OverBudget {
+                        budget,
+                        held,
+                        moves: done,
+                        what,
+                    });
+                    progress(moves);
+                    break;
+                }
+            }
             self.snapshots.epoch(&ep.sweeps, engine);
             cut_moves = ep.cut_moves(cut_moves);
             // (at the last epoch end the stock is the final part, which the caller has anyway)
@@ -333,6 +364,42 @@ impl<'a> Epochs<'a> {
             }
         }
         cuts
+    }
+
+    /// What the removal holds, largest first, in words, and whether that is most of what
+    /// the process holds (`held` bytes).
+    fn what_grew(&self, strips: &Strips, sweeps: &Sweeps, cuts: &Cuts, held: u64) -> String {
+        let (vertices, tiles) = strips.census();
+        let vertex = std::mem::size_of::<IPt>() as u64;
+        let frags = cuts.fragments.len() as u64;
+        let mut parts = [
+            (
+                vertices as u64 * vertex,
+                format!("the stock's outline, {vertices} vertices in {tiles} tiles"),
+            ),
+            (sweeps.bytes(), "this epoch's sweeps".to_string()),
+            (self.snapshots.bytes(), "the stock snapshots".to_string()),
+            (
+                frags * std::mem::size_of::<Fragment>() as u64,
+                format!("{frags} pieces of rapid cuts"),
+            ),
+        ];
+        parts.sort_by_key(|p| std::cmp::Reverse(p.0));
+        let total: u64 = parts.iter().map(|p| p.0).sum();
+        let list: Vec<String> = parts
+            .iter()
+            .map(|(bytes, what)| format!("{what} ({})", size(*bytes)))
+            .collect();
+        if total * 2 >= held {
+            format!("what grew is the removal's {}", list.join(", "))
+        } else {
+            format!(
+                "the removal itself held only {} ({}): the rest was held before it (the program's {} moves and their text)",
+                size(total),
+                list.join(", "),
+                self.segments.len()
+            )
+        }
     }
 
     /// After a part-off ending at move `end`: the pieces that fell (kept in `cuts`), as the

@@ -32,6 +32,7 @@ mod tile;
 
 pub use crash::Crash;
 
+use crate::budget::{MemoryBudget, OverBudget};
 use crate::overlay::{Engine, Grid, IShapes};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
 use epoch::{Cuts, Epochs, Strips};
@@ -83,6 +84,9 @@ pub struct SimOptions {
     /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
     /// the blank and [`Simulation::final_shapes`].
     pub snapshot_after: Vec<usize>,
+    /// The most memory the process may hold while the removal goes on (`None`: no limit).
+    /// Over it the removal stops where it is ([`Simulation::over_budget`]).
+    pub max_memory: Option<MemoryBudget>,
 }
 
 impl Default for SimOptions {
@@ -95,6 +99,7 @@ impl Default for SimOptions {
             cover: true,
             pass_groups: true,
             snapshot_after: Vec::new(),
+            max_memory: None,
         }
     }
 }
@@ -119,6 +124,9 @@ pub struct Simulation {
     /// count at or after the one asked for where all tiles are flushed (one snapshot for
     /// several counts when they fall in one epoch).
     pub snapshots: Vec<(usize, Vec<Shape>)>,
+    /// The run went over [`SimOptions::max_memory`]: the removal stopped there (the part is
+    /// the stock as it stood), and what grew.
+    pub over_budget: Option<OverBudget>,
 }
 
 /// Removes material: `blank` minus the sweep of every segment's tool outline, in order,
@@ -230,6 +238,7 @@ fn assemble(
         removed_volume,
         warnings,
         snapshots,
+        over_budget: cuts.over_budget,
     }
 }
 
@@ -243,6 +252,7 @@ impl Simulation {
             removed_volume: 0.0,
             warnings,
             snapshots: Vec::new(),
+            over_budget: None,
         }
     }
 }

@@ -731,3 +731,49 @@ fn ring_air_tests_remove_exactly_what_every_tile_test_removes() {
     assert!(without.removed_area > 40.0, "{}", without.removed_area);
     assert_eq!(same_cut(&with, &without).len(), 1);
 }
+
+/// Over its memory budget a run stops at the first look (an epoch end, or a worker's 256th
+/// boolean call) and says how far it got and what the removal held; within it, it runs to
+/// the end as without one.
+#[test]
+fn a_run_over_its_memory_budget_stops_and_says_what_grew() {
+    use crate::budget::MemoryBudget;
+    let blank = Blank::bar(50.0, 100.0, 0.0, None).unwrap();
+    // 3 000 passes 0.001 mm apart: an epoch of 1 024 moves each (programs over 5 000 moves)
+    let segs: Vec<Segment> = (0..3_000)
+        .flat_map(|k| {
+            let r = 24.0 - 0.001 * f64::from(k);
+            [
+                seg(Motion::Rapid, [5.0, r + 1.0], [5.0, r]),
+                seg(Motion::Feed, [5.0, r], [-40.0 - 0.01 * f64::from(k % 7), r]),
+                seg(Motion::Rapid, [-40.0, r], [-40.0, r + 1.0]),
+                seg(Motion::Rapid, [-40.0, r + 1.0], [5.0, r + 1.0]),
+            ]
+        })
+        .collect();
+    let with = |max_memory| {
+        let opts = SimOptions {
+            max_memory,
+            ..SimOptions::default()
+        };
+        simulate(&blank, &v35(), &segs, &opts, &mut |_| {})
+    };
+    if cfg!(target_os = "linux") {
+        let over = with(Some(MemoryBudget::new(1)));
+        let why = over.over_budget.expect("over a budget of one byte");
+        assert_eq!(why.budget, MemoryBudget::new(1));
+        assert!(why.held > 1 << 20 && why.moves < segs.len(), "{why:?}");
+        assert!(why.what.contains("the stock's outline"), "{}", why.what);
+        let message = why.to_string();
+        assert!(
+            message.contains("over the memory budget of 0 KiB"),
+            "{message}"
+        );
+        assert!(message.contains("--max-memory"), "{message}");
+        // it stopped: less was cut than by the whole run
+        let whole = with(Some(MemoryBudget::new(u64::MAX / 4)));
+        assert!(whole.over_budget.is_none());
+        assert!(over.removed_area < whole.removed_area - 1.0);
+        assert_eq!(whole.final_shapes, with(None).final_shapes);
+    }
+}

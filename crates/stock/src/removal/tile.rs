@@ -3,13 +3,14 @@
 
 use super::batch::{Batch, Trimmed, BATCH};
 use super::crash::Fragment;
+use crate::budget::{MemoryBudget, CHECK_EVERY};
 use crate::overlay::{
     convex_contains, drop_grid_kinks, orient, point_in_ring, right_of, segments_meet, winds,
     Engine, Grid, IBox, IPt, IShapes,
 };
 use crate::ring_air;
 use crate::sweep::{Item, Sweeps};
-use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 
 /// A tile whose stock has more vertices than this is split in two. Smaller tiles make each
 /// boolean call smaller and the tree deeper: 64 was the fastest with batches of
@@ -45,9 +46,13 @@ pub(super) enum Node {
 
 impl Tile {
     /// Subtracts the batch from the stock in one boolean call.
-    fn flush(&mut self, batch: &mut Batch, engine: &mut Engine) {
+    fn flush(&mut self, batch: &mut Batch, engine: &mut Engine, ctx: &Ctx, calls: &mut u32) {
         if batch.len() == 0 {
             return;
+        }
+        *calls += 1;
+        if calls.is_multiple_of(CHECK_EVERY) {
+            ctx.look_at_memory();
         }
         self.stock = engine.difference(&self.stock, batch.iter());
         drop_grid_kinks(&mut self.stock, KINK, &self.rect);
@@ -76,6 +81,7 @@ impl Tile {
             batch,
             trim,
             runs,
+            calls,
         } = worker;
         trim.ring_air = ctx.ring_air;
         // a box of the stock as it will be after the batch: smaller than the stock's box
@@ -83,6 +89,9 @@ impl Tile {
         // cut); trimming and covering keep to the box of the stock as it is
         let mut reach = self.bbox;
         for (k, &i) in list.iter().enumerate() {
+            if ctx.stopped() {
+                break;
+            }
             if self.verts > MAX_TILE_VERTICES && batch.len() == 0 && self.splittable(ctx) {
                 return Some(k);
             }
@@ -106,14 +115,14 @@ impl Tile {
             }
             if it.body.is_some() {
                 // a probe: the stock after every earlier cut (this move's own included)
-                self.flush(batch, engine);
+                self.flush(batch, engine, ctx, calls);
                 reach = self.bbox;
                 self.probe(it, ctx, engine, frags, trim);
                 continue;
             }
             let covered = ctx.cover && batch.covers(trim, &self.bbox);
             if it.rapid && !covered {
-                self.flush(batch, engine);
+                self.flush(batch, engine, ctx, calls);
                 reach = self.bbox;
                 let met = self.probe(it, ctx, engine, frags, trim);
                 if !it.probe.is_empty() {
@@ -136,11 +145,11 @@ impl Tile {
                 reach = reach.outside(&r.core);
             }
             if batch.len() >= BATCH {
-                self.flush(batch, engine);
+                self.flush(batch, engine, ctx, calls);
                 reach = self.bbox;
             }
         }
-        self.flush(batch, engine);
+        self.flush(batch, engine, ctx, calls);
         None
     }
 
@@ -227,6 +236,24 @@ pub(super) struct Ctx<'a> {
     pub(super) ring_air: bool,
     /// Batches leave out what they cover ([`super::SimOptions::cover`]).
     pub(super) cover: bool,
+    /// The run's memory budget ([`super::SimOptions::max_memory`]).
+    pub(super) budget: Option<MemoryBudget>,
+    /// Set when the process went over the budget: every worker stops.
+    pub(super) stop: &'a AtomicBool,
+}
+
+impl Ctx<'_> {
+    /// Sets [`Ctx::stop`] when the process holds more than the budget.
+    fn look_at_memory(&self) {
+        if self.budget.is_some_and(|b| b.exceeded().is_some()) {
+            self.stop.store(true, Ordering::Relaxed);
+        }
+    }
+
+    /// Whether the workers stop (the run went over its memory budget).
+    pub(super) fn stopped(&self) -> bool {
+        self.stop.load(Ordering::Relaxed)
+    }
 }
 
 /// What one worker thread writes to: its boolean engine, the rapid cuts it found, and its
@@ -241,6 +268,8 @@ pub(super) struct Worker<'e> {
     pub(super) trim: Trimmed,
     /// Run boxes of a ring ([`ring_air::touches`]).
     pub(super) runs: Vec<IBox>,
+    /// Boolean calls made (the memory is looked at every [`CHECK_EVERY`]).
+    pub(super) calls: u32,
 }
 
 impl Node {
@@ -256,6 +285,9 @@ impl Node {
             }
             Self::Split(children, rects, boxes) => {
                 for ((child, rect), sb) in children.iter_mut().zip(rects.iter()).zip(&mut *boxes) {
+                    if ctx.stopped() {
+                        break;
+                    }
                     let sub: Vec<u32> = list
                         .iter()
                         .copied()
@@ -312,6 +344,17 @@ impl Node {
             }
             Self::Split(children, ..) => {
                 children[0].has_stock_right_of(x) || children[1].has_stock_right_of(x)
+            }
+        }
+    }
+
+    /// The vertices of the stock under this node and its leaves.
+    pub(super) fn census(&self) -> (usize, usize) {
+        match self {
+            Self::Leaf(tile) => (tile.verts, 1),
+            Self::Split(children, ..) => {
+                let (a, b) = (children[0].census(), children[1].census());
+                (a.0 + b.0, a.1 + b.1)
             }
         }
     }

@@ -99,6 +99,18 @@ impl Sweeps {
         }));
     }
 
+    /// About how many bytes these sweeps hold.
+    pub(crate) fn bytes(&self) -> u64 {
+        let each = |n: usize, t: usize| (n * t) as u64;
+        each(self.pts.len(), std::mem::size_of::<IPt>())
+            + each(
+                self.polys.len(),
+                2 * std::mem::size_of::<IBox>() + 16 + 1 + 4,
+            )
+            + each(self.run_boxes.len(), std::mem::size_of::<IBox>())
+            + each(self.items.len(), std::mem::size_of::<Item>())
+    }
+
     /// The polygons of one item.
     pub(crate) fn polys_of(&self, it: &Item) -> impl Iterator<Item = &[IPt]> + Clone {
         self.polys[it.polys.start as usize..it.polys.end as usize]
