@@ -87,6 +87,29 @@ pub(crate) struct Run<'a> {
     pub(crate) tol: f64,
 }
 
+/// The setup sheet's tools: each tool of the moves in order of first use, with its offsets,
+/// what it is, its ISO designation and its times.
+fn tool_list(
+    tools: &stock::ToolTable,
+    times: &expander::timing::Times,
+    offsets: &[(u32, u32)],
+) -> Vec<render::ToolEntry> {
+    let cut = |t: u32| times.cutting.iter().find(|c| c.0 == t).map_or(0.0, |c| c.1);
+    times
+        .per_tool
+        .iter()
+        .map(|&(t, secs)| render::ToolEntry {
+            number: t,
+            offsets: offsets.iter().filter(|o| o.0 == t).map(|o| o.1).collect(),
+            description: tools.get(t).unwrap_or(&stock::Tool::DEFAULT).describe(),
+            designation: tools.designation(t).map(str::to_string),
+            assumed: !tools.size_stated(t, expander::ToolHint::Table),
+            time_s: secs,
+            cut_time_s: cut(t),
+        })
+        .collect()
+}
+
 /// Everything a finished run shows, but the toolpath ([`add_toolpath`]) and the player's
 /// snapshots ([`snapshots`]).
 pub(crate) fn report(run: &Run, findings: &Findings) -> Report {
@@ -117,6 +140,30 @@ fn note(n: &analysis::Note) -> Diagnostic {
     }
 }
 
+/// A cause of the analysis in the report's words.
+fn cause(c: &analysis::Cause) -> render::Cause {
+    render::Cause {
+        kind: c.kind.word().to_string(),
+        text: c.text.clone(),
+        numbers: c
+            .numbers
+            .iter()
+            .map(|(k, v)| ((*k).to_string(), *v))
+            .collect(),
+    }
+}
+
+/// A checked remedy of the analysis in the report's words.
+fn remedy(r: &analysis::Remedy) -> render::Remedy {
+    render::Remedy {
+        text: r.text.clone(),
+        tool: r.tool.clone(),
+        line: r.line,
+        edit: r.edit.clone(),
+        verified: r.verified,
+    }
+}
+
 /// A crash (or scrape) of the analysis at its move's line.
 fn crash(segments: &[Segment], c: &analysis::Crash) -> Crash {
     let span: Span = segments[c.segment].span;
@@ -130,6 +177,9 @@ fn crash(segments: &[Segment], c: &analysis::Crash) -> Crash {
         body: c.body.map(str::to_string),
         obstacle: c.obstacle.map(str::to_string),
         tool: c.tool.clone(),
+        assumed: c.assumed,
+        cause: c.cause.as_ref().map(cause),
+        remedy: c.remedy.as_ref().map(remedy),
     }
 }
 
@@ -230,6 +280,7 @@ fn summary(run: &Run, findings: &Findings) -> Report {
             .collect(),
         variables: tp.variables.clone(),
         line_counts: tp.line_counts.clone(),
+        tool_list: tool_list(run.tools, times, &tp.tool_offsets),
         ..Report::default()
     }
 }
@@ -255,6 +306,7 @@ fn add_crashes(report: &mut Report, run: &Run, findings: &Findings) {
         .collect();
     report.tool_runs = findings.facts.runs.clone();
     let fixture = run.fixture;
+    report.stick_out_mm = fixture.and_then(|f| f.stick_out);
     if let Some(so) = fixture.and_then(|f| f.stick_out) {
         // "stick-out 15 mm", "stick-out 69.5 mm": three decimals, trailing zeros cut
         let n = format!("{so:.3}");
@@ -387,6 +439,9 @@ fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
             r: g.at[1],
             area_mm2: g.area,
             depth_mm: g.depth,
+            assumed: g.assumed,
+            cause: g.cause.as_ref().map(cause),
+            remedy: g.remedy.as_ref().map(remedy),
         })
         .collect();
     report.gouge_shapes = d
@@ -417,6 +472,16 @@ fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
             }
         });
     report.leftovers = leftovers.iter().map(|l| shape(&l.shape)).collect();
+    report.leftover_list = leftovers
+        .iter()
+        .map(|l| render::Leftover {
+            z: l.at[0],
+            r: l.at[1],
+            area_mm2: l.area,
+            depth_mm: l.depth,
+            cause: l.cause.as_ref().map(cause),
+        })
+        .collect();
     report.deviation = Some(render::Deviation {
         overcut_area_mm2: d.overcut_area(),
         undercut_area_mm2: d.undercut_area(),

@@ -51,6 +51,9 @@ pub(crate) fn crashes(removal: Vec<Crash>, fixture: &[FixtureCrash]) -> Vec<Cras
         body: f.body,
         obstacle: Some(f.obstacle),
         tool: vec![],
+        assumed: false,
+        cause: None,
+        remedy: None,
     }));
     // stable: at one move, the stock's crash before the workholding's
     out.sort_by_key(|c| c.segment);
@@ -84,6 +87,65 @@ pub(crate) fn scrape_notes(
         }
         })
         .collect()
+}
+
+/// Marks the crashes of guessed tools whose reference point alone meets nothing as possible
+/// ([`crate::assumed`]): a removal crash whose path does not enter uncut stock, a
+/// workholding crash whose path does not enter the obstacle; returns their warnings.
+pub(crate) fn mark_assumed(
+    crashes: &mut [Crash],
+    segments: &[Segment],
+    s: &crate::Settings,
+    rear: &[u32],
+    chord_tol: f64,
+) -> Vec<Note> {
+    let mut mounts = stock::Mounts::new(s.tools, rear.to_vec());
+    let mut notes = Vec::new();
+    let mut tested = 0;
+    for c in crashes.iter_mut() {
+        let seg = &segments[c.segment];
+        if !crate::assumed::guessed(s.tools, seg) {
+            continue;
+        }
+        tested += 1;
+        if tested > crate::assumed::MAX_TESTED {
+            c.assumed = true;
+            notes.push(crate::assumed::note("crash", c.depth, seg, s.tools));
+            continue;
+        }
+        let core = mounts.of(seg).core.clone();
+        let certain = match c.obstacle {
+            None => {
+                crate::assumed::enters_uncut(
+                    c.segment,
+                    segments,
+                    &s.blank.shapes,
+                    &mut mounts,
+                    chord_tol,
+                ) || core.is_some_and(|core| {
+                    crate::assumed::core_enters_uncut(
+                        c.segment,
+                        &core,
+                        segments,
+                        &s.blank.shapes,
+                        &mut mounts,
+                        chord_tol,
+                    )
+                })
+            }
+            Some(name) => s.fixture.is_some_and(|f| {
+                f.obstacles.iter().filter(|o| o.name == name).any(|o| {
+                    let region = crate::assumed::Region::new(&o.shapes);
+                    crate::assumed::path_enters(seg, &region, chord_tol)
+                })
+            }),
+        };
+        if !certain {
+            c.assumed = true;
+            notes.push(crate::assumed::note("crash", c.depth, seg, s.tools));
+        }
+    }
+    notes
 }
 
 /// The tool drawn where each of the first [`MAX_TOOL_POSES`] crashes hit.

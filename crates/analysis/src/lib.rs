@@ -8,8 +8,11 @@
 //! &str ─gcode─▶ Program ─expander─▶ Toolpath ─stock─▶ Simulation ─analysis─▶ Findings ─▶ Report
 //! ```
 
+mod assumed;
 mod crashes;
 mod deviation;
+pub mod diagnose;
+pub mod diff;
 mod findings;
 mod fixture;
 mod intent;
@@ -20,7 +23,9 @@ mod threads;
 
 pub use crashes::MAX_TOOL_POSES;
 pub use deviation::{deviation, Deviation, Finding};
-pub use findings::{Crash, Findings, GrooveCheck, Note, ThreadCheck, Verdict};
+pub use findings::{
+    Cause, CauseKind, Crash, Findings, GrooveCheck, Note, Remedy, ThreadCheck, Verdict,
+};
 pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH, TAILSTOCK_CENTRE};
 pub use intent::program::stock_marks;
 pub use intent::Intent;
@@ -63,7 +68,7 @@ pub struct Settings<'a> {
 
 /// Chord tolerance of the moves' arcs in every check, mm: the removal's
 /// (`stock::SimOptions::chord_tol`), so a check sees the sweep the removal cut.
-const CHORD_TOL: f64 = 0.001;
+pub(crate) const CHORD_TOL: f64 = 0.001;
 
 /// What the moves alone tell, worked out beside the removal (each is a pass over the moves).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -174,11 +179,28 @@ fn conclude(
     let (removal, scrapes) = crashes::split(sim, cut_tol, segments, s.tools, rear);
     let mut crashes = crashes::crashes(removal, &beside.fixture_crashes);
     crashes::place_tools(&mut crashes, segments, s.tools, rear, CHORD_TOL);
-    let warnings = crashes::scrape_notes(&scrapes, segments, s.tools, rear, cut_tol);
+    let mut warnings = crashes::scrape_notes(&scrapes, segments, s.tools, rear, cut_tol);
+    warnings.extend(crashes::mark_assumed(
+        &mut crashes,
+        segments,
+        s,
+        rear,
+        CHORD_TOL,
+    ));
     let mut part_warnings = deviation
         .as_ref()
         .map(|d| deviation::later_cut_notes(d, segments))
         .unwrap_or_default();
+    part_warnings.extend(
+        deviation
+            .iter()
+            .flat_map(|d| &d.gouges)
+            .filter(|g| g.assumed)
+            .filter_map(|g| {
+                let seg = &segments[g.made_by?];
+                Some(assumed::note("gouge", g.depth, seg, s.tools))
+            }),
+    );
     // the stock each thread cuts into, where it was kept (short programs)
     let thread_stock: Vec<(usize, Vec<Shape>)> = beside
         .thread_passes

@@ -65,6 +65,9 @@ pub struct Times {
     /// Cutting and rapid time per tool number, in order of first use (dwells not
     /// included), s.
     pub per_tool: Vec<(u32, f64)>,
+    /// The time in cut (feed and thread moves) per tool number, in the order of
+    /// [`Times::per_tool`], s: the setup sheet's "in cut".
+    pub cutting: Vec<(u32, f64)>,
 }
 
 /// The cycle time and the time per tool, in one pass over the moves (a million-move
@@ -72,17 +75,30 @@ pub struct Times {
 pub fn times(tp: &Toolpath, machine: &Machine) -> Times {
     let mut total = 0.0;
     let mut per_tool: Vec<(u32, f64)> = vec![];
+    let mut cutting: Vec<(u32, f64)> = vec![];
     for s in &tp.segments {
         let t = segment_time(tp, s, machine);
+        let cut = if s.motion == crate::Motion::Rapid {
+            0.0
+        } else {
+            t
+        };
         total += t;
-        match per_tool.iter_mut().find(|(tool, _)| *tool == s.tool) {
-            Some((_, sum)) => *sum += t,
-            None => per_tool.push((s.tool, t)),
+        match per_tool.iter().position(|(tool, _)| *tool == s.tool) {
+            Some(i) => {
+                per_tool[i].1 += t;
+                cutting[i].1 += cut;
+            }
+            None => {
+                per_tool.push((s.tool, t));
+                cutting.push((s.tool, cut));
+            }
         }
     }
     Times {
         total: total + tp.dwell_s,
         per_tool,
+        cutting,
     }
 }
 
@@ -147,5 +163,43 @@ mod tests {
         );
         let n = 1000.0 * 150.0 / (std::f64::consts::PI * 100.0);
         assert!((times(&s, &m).total - 250.0 / n * 60.0).abs() < 1e-6);
+    }
+
+    /// A tool's time in cut leaves out its rapids; its time counts them (issue 35's
+    /// setup sheet), each tool in order of first use.
+    #[test]
+    fn time_in_cut_leaves_out_the_rapids() {
+        let m = Machine::default();
+        // tool 1: 100 mm at 200 mm/min (30 s), then a rapid back
+        let mut tp = seg(
+            Pt::new(0.0, 10.0),
+            Pt::new(-100.0, 10.0),
+            Feed::PerMinute(200.0),
+        );
+        let feed = tp.segments[0];
+        let rapid_feed = tp.feeds.id(Feed::Rapid).unwrap();
+        let rapid = Segment {
+            motion: Motion::Rapid,
+            from: feed.to,
+            to: feed.from,
+            feed: rapid_feed,
+            ..feed
+        };
+        tp.segments.push(rapid);
+        // tool 2: 50 mm at 200 mm/min (15 s)
+        tp.segments.push(Segment {
+            tool: 2,
+            to: Pt::new(-50.0, 10.0),
+            ..feed
+        });
+        let r = segment_time(&tp, &rapid, &m);
+        assert!(r > 0.0);
+        let t = times(&tp, &m);
+        assert_eq!(t.per_tool.len(), 2);
+        assert_eq!((t.per_tool[0].0, t.cutting[0].0), (1, 1));
+        assert!((t.per_tool[0].1 - (30.0 + r)).abs() < 1e-9);
+        assert!((t.cutting[0].1 - 30.0).abs() < 1e-9);
+        assert_eq!((t.per_tool[1].0, t.cutting[1].0), (2, 2));
+        assert!((t.cutting[1].1 - 15.0).abs() < 1e-9 && (t.per_tool[1].1 - 15.0).abs() < 1e-9);
     }
 }

@@ -225,9 +225,11 @@ fn block_delete_is_optional() {
 
 #[test]
 fn tools_are_tracked() {
-    let tp = run("T0101\nG0 X40 Z0\nT0303\nG0 X50\nT0300\n");
+    let tp = run("T0101\nG0 X40 Z0\nT0303\nG0 X50\nT0300\nT0313\nT0101\n");
     assert_eq!(tp.tools, vec![1, 3]);
     assert_eq!((tp.segments[0].tool, tp.segments[1].tool), (1, 3));
+    // the offsets called, for the setup sheet: a cancel (T0300) is none
+    assert_eq!(tp.tool_offsets, vec![(1, 1), (3, 3), (3, 13)]);
 }
 
 #[test]

@@ -21,6 +21,8 @@
 
 use std::fmt::Write as _;
 
+mod sheet;
+mod solid;
 mod threads;
 
 use crate::block::verdict_text;
@@ -41,6 +43,9 @@ const LAYER_POINT_CAP: usize = 50_000;
 /// Rows listed per diagnostic or finding table before "… N more" (the JSON lists them
 /// all): 20 000 rows of four tables made a 13 MB page; the page stays under 10 MB.
 const MAX_ROWS: usize = 1_000;
+/// Rows of each findings table the printed setup sheet shows (the rest are marked
+/// `extra`, which the print style hides, and counted in a note).
+const PRINT_ROWS: usize = 6;
 /// Coordinates beyond this (mm) are clamped in the embedded data.
 const CLAMP_MM: f64 = 1e7;
 /// The drawing is about this many px wide: points closer than a fraction of a px apart
@@ -249,6 +254,7 @@ fn data_json(report: &Report) -> (String, Moves) {
         out.push(',');
     }
     tools::data(&mut out, report);
+    solid::data(&mut out, report, md);
     out.push_str("\"crashes\":[");
     let crashes: Vec<&Crash> = report
         .crashes
@@ -337,6 +343,15 @@ fn row(out: &mut String, label: &str, value_html: &str) {
     );
 }
 
+/// A [`row`] the printed page leaves out (the setup sheet says it).
+fn screen_row(out: &mut String, label: &str, value_html: &str) {
+    let _ = writeln!(
+        out,
+        "<tr class=\"screen-only\"><th scope=\"row\">{}</th><td>{value_html}</td></tr>",
+        esc(label)
+    );
+}
+
 fn summary_table(out: &mut String, report: &Report) {
     let (verdict, vc) = verdict_text(report);
     out.push_str("<table class=\"kv\" id=\"ls-summary\">\n");
@@ -352,11 +367,11 @@ fn summary_table(out: &mut String, report: &Report) {
     if !report.title.is_empty() && !program.starts_with(&report.title) {
         program = format!("{program} ({})", report.title);
     }
-    row(out, "program", &esc(&program));
+    screen_row(out, "program", &esc(&program));
     if !report.control.is_empty() {
-        row(out, "control", &esc(&report.control));
+        screen_row(out, "control", &esc(&report.control));
     }
-    row(out, "stock", &esc(&report.stock.description));
+    screen_row(out, "stock", &esc(&report.stock.description));
     let tools = if report.tools.is_empty() {
         "—".to_string()
     } else {
@@ -367,9 +382,9 @@ fn summary_table(out: &mut String, report: &Report) {
             .collect::<Vec<_>>()
             .join("<br>")
     };
-    row(out, "tools", &tools);
+    screen_row(out, "tools", &tools);
     let feed = report.segments.saturating_sub(report.rapid_segments);
-    row(
+    screen_row(
         out,
         "moves",
         &esc(&format!(
@@ -388,7 +403,7 @@ fn summary_table(out: &mut String, report: &Report) {
             quantity(report.removed_volume_mm3)
         )),
     );
-    row(out, "cycle time", &esc(&duration(report.cycle_time_s)));
+    screen_row(out, "cycle time", &esc(&duration(report.cycle_time_s)));
     row(out, "tolerance", &esc(&mm(report.tolerance_mm)));
     match &report.deviation {
         Some(d) => {
@@ -417,21 +432,46 @@ fn summary_table(out: &mut String, report: &Report) {
 }
 
 /// Header of a list section, with its count.
+/// An empty list's header is marked `empty` (the printed sheet leaves it out).
 fn list_head(out: &mut String, id: &str, title: &str, n: usize) {
+    let class = if n == 0 { " class=\"empty\"" } else { "" };
     let _ = writeln!(
         out,
-        "<h3 id=\"{id}\">{} <span class=\"count\">({n})</span></h3>",
+        "<h3 id=\"{id}\"{class}>{} <span class=\"count\">({n})</span></h3>",
         esc(title)
     );
 }
 
-/// "… N more" after a capped table.
+/// The class attribute of the `i`-th row of a findings table: ` class="extra"` past what
+/// the printed sheet shows.
+fn extra(i: usize) -> &'static str {
+    if i >= PRINT_ROWS {
+        " class=\"extra\""
+    } else {
+        ""
+    }
+}
+
+/// "… N more" after a capped table: on screen past [`MAX_ROWS`], printed past
+/// [`PRINT_ROWS`].
 fn more(out: &mut String, n: usize) {
     if n > MAX_ROWS {
         let _ = writeln!(
             out,
-            "<p class=\"note\">… {} more not listed (see the JSON report).</p>",
+            "<p class=\"note screen-only\">… {} more not listed (see the JSON report).</p>",
             grouped((n - MAX_ROWS) as f64, 0)
+        );
+    }
+    print_more(out, n);
+}
+
+/// "… N more not printed" after a table of `n` rows longer than the printed sheet shows.
+fn print_more(out: &mut String, n: usize) {
+    if n > PRINT_ROWS {
+        let _ = writeln!(
+            out,
+            "<p class=\"note print-only\">… {} more not printed (see the page on screen or the JSON report).</p>",
+            grouped((n - PRINT_ROWS) as f64, 0)
         );
     }
 }
@@ -446,7 +486,7 @@ fn diag_table(out: &mut String, id: &str, title: &str, list: &[Diagnostic], clas
         out,
         "<table class=\"list {class}\"><thead><tr><th>line</th><th>col</th><th>code</th><th>message</th></tr></thead><tbody>"
     );
-    for d in list.iter().take(MAX_ROWS) {
+    for (i, d) in list.iter().take(MAX_ROWS).enumerate() {
         let line = if d.line == 0 {
             "—".to_string()
         } else {
@@ -454,8 +494,9 @@ fn diag_table(out: &mut String, id: &str, title: &str, list: &[Diagnostic], clas
         };
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"><td class=\"n\">{line}</td><td class=\"n\">{}</td><td><code>{}</code></td><td>{}</td></tr>",
+            "<tr data-line=\"{}\"{}><td class=\"n\">{line}</td><td class=\"n\">{}</td><td><code>{}</code></td><td>{}</td></tr>",
             d.line,
+            extra(i),
             d.column,
             esc(&d.code),
             esc(&d.message)
@@ -471,29 +512,45 @@ fn crash_table(out: &mut String, id: &str, title: &str, list: &[Crash]) {
         out.push_str("<p class=\"none\">none</p>\n");
         return;
     }
-    out.push_str("<table class=\"list crash\"><thead><tr><th>line</th><th>col</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>what</th></tr></thead><tbody>\n");
-    for c in list.iter().take(MAX_ROWS) {
+    out.push_str("<table class=\"list crash\"><thead><tr><th>line</th><th>col</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>what</th><th>why, and the fix latsim checked</th></tr></thead><tbody>\n");
+    for (i, c) in list.iter().take(MAX_ROWS).enumerate() {
         let part = c.body.as_deref().unwrap_or("cutting edge");
         let what = match &c.obstacle {
             Some(o) => format!("{part} in the {o}"),
             None if c.body.is_some() => format!("{part} in stock"),
             None => "rapid in stock".to_string(),
         };
+        let what = if c.assumed {
+            format!("possible: {what} (tool size assumed)")
+        } else {
+            what
+        };
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
+            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td><td>{}</td></tr>",
             c.line,
+            extra(i),
             c.line,
             c.column,
             pos(c.z),
             pos(2.0 * c.r),
             esc(&quantity(c.area_mm2)),
             esc(&quantity(c.depth_mm)),
-            esc(&what)
+            esc(&what),
+            why(c.cause.as_ref(), c.remedy.as_ref())
         );
     }
     out.push_str("</tbody></table>\n");
     more(out, list.len());
+}
+
+/// A finding's cause and checked remedy for a table cell (escaped HTML).
+fn why(cause: Option<&crate::Cause>, remedy: Option<&crate::Remedy>) -> String {
+    let mut cell = cause.map_or_else(String::new, |c| esc(&c.text));
+    if let Some(r) = remedy {
+        let _ = write!(cell, "<br><b>fix (checked):</b> {}", esc(&r.text));
+    }
+    cell
 }
 
 fn gouge_table(out: &mut String, list: &[Gouge]) {
@@ -507,17 +564,25 @@ fn gouge_table(out: &mut String, list: &[Gouge]) {
         out.push_str("<p class=\"none\">none</p>\n");
         return;
     }
-    out.push_str("<table class=\"list gouge\"><thead><tr><th>line</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th></tr></thead><tbody>\n");
-    for g in list.iter().take(MAX_ROWS) {
+    out.push_str("<table class=\"list gouge\"><thead><tr><th>line</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>certainty</th><th>why, and the fix latsim checked</th></tr></thead><tbody>\n");
+    for (i, g) in list.iter().take(MAX_ROWS).enumerate() {
+        let certainty = if g.assumed {
+            "possible: tool size assumed, not in the verdict"
+        } else {
+            "certain"
+        };
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
+            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td><td>{}</td></tr>",
             g.line,
+            extra(i),
             g.line,
             pos(g.z),
             pos(2.0 * g.r),
             esc(&quantity(g.area_mm2)),
-            pos(g.depth_mm)
+            pos(g.depth_mm),
+            certainty,
+            why(g.cause.as_ref(), g.remedy.as_ref())
         );
     }
     out.push_str("</tbody></table>\n");
@@ -627,14 +692,20 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
         esc(&title),
         esc(&verdict)
     );
-    out.push_str("<nav><a href=\"#ls-picture\">picture</a> · <a href=\"#ls-player\">moves</a> · <a href=\"#ls-tables\">tables</a> · <a href=\"#ls-findings\">findings</a></nav>\n");
+    out.push_str("<nav><a href=\"#ls-sheet\">setup sheet</a> · <a href=\"#ls-picture\">picture</a> · <a href=\"#ls-solid-view\">3D</a> · <a href=\"#ls-player\">moves</a> · <a href=\"#ls-tables\">tables</a> · <a href=\"#ls-findings\">findings</a></nav>\n");
 
-    // 1. The report picture.
+    // 1. The setup sheet.
+    sheet::section(&mut out, report);
+
+    // 2. The report picture.
     out.push_str("<section id=\"ls-picture\"><h2>Report picture</h2>\n<div class=\"picture\">\n");
     out.push_str(svg);
     out.push_str("</div></section>\n");
 
-    // 2. The move slider.
+    // 3. The part in 3D.
+    solid::section(&mut out, report);
+
+    // 4. The move slider.
     out.push_str("<section id=\"ls-player\"><h2>Step through the moves</h2>\n");
     out.push_str("<noscript><p class=\"note\">The move slider needs JavaScript.</p></noscript>\n");
     let _ = writeln!(
@@ -667,7 +738,7 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
     }
     out.push_str("</section>\n");
 
-    // 3. Tables.
+    // 5. Tables.
     out.push_str("<section id=\"ls-tables\"><h2>Summary</h2>\n");
     summary_table(&mut out, report);
     out.push_str("</section>\n<section id=\"ls-findings\"><h2>Findings</h2>\n");
@@ -693,15 +764,27 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
         &report.warnings,
         "warning",
     );
+    let quiet = report.alarms.is_empty()
+        && report.crashes.is_empty()
+        && report.rapid_cuts.is_empty()
+        && report.gouges.is_empty()
+        && report.threads.is_empty()
+        && report.warnings.is_empty();
+    if quiet {
+        // the printed sheet leaves the empty lists out
+        out.push_str("<p class=\"print-only\">No alarm, crash, rapid scrape, gouge, thread or warning.</p>\n");
+    }
     out.push_str("</section>\n");
 
     let _ = writeln!(
         out,
         "<script type=\"application/json\" id=\"ls-data\">{data}</script>"
     );
+    // the 3D view in a script of its own: neither stops the other
     let _ = writeln!(
         out,
-        "<script>\n{TOOLS_SCRIPT}{SCRIPT}</script>\n</body>\n</html>"
+        "<script>\n{TOOLS_SCRIPT}{SCRIPT}</script>\n<script>\n{}</script>\n</body>\n</html>",
+        solid::SCRIPT
     );
     out
 }
@@ -712,7 +795,7 @@ mod tests {
 
     #[test]
     fn assets_cannot_break_out() {
-        for s in [STYLE, SCRIPT] {
+        for s in [STYLE, SCRIPT, TOOLS_SCRIPT, solid::SCRIPT] {
             let l = s.to_ascii_lowercase();
             assert!(!l.contains("</"), "`</` in an inline asset");
             assert!(!l.contains("http"), "network reference in an inline asset");

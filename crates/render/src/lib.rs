@@ -22,8 +22,10 @@
 //! move slider drawing on a `<canvas>` from a compact JSON block embedded in the page.
 mod block;
 mod detail;
+mod diff;
 mod doc;
 mod fixture;
+mod fonts;
 mod groove;
 mod html;
 mod json;
@@ -37,6 +39,9 @@ mod scale;
 mod svg;
 mod text;
 
+pub use diff::{
+    diff_html, diff_json, diff_png, diff_svg, DiffFinding, DiffRegion, DiffReport, ToolTime,
+};
 pub use report::*;
 
 /// Width of the SVG and PNG, px.
@@ -63,7 +68,7 @@ pub fn svg(report: &Report) -> String {
     svg::svg(report)
 }
 
-/// The same picture rasterised (anti-aliased, embedded `DejaVu Sans`), as PNG bytes of
+/// The same picture rasterised (anti-aliased, embedded `DejaVu Sans` and a CJK subset), as PNG bytes of
 /// 1600 × 1000 px. Deterministic: the same report gives the same bytes.
 pub fn png(report: &Report) -> Result<Vec<u8>, RenderError> {
     Picture::draw(report).png()

@@ -52,14 +52,15 @@ fn place(v: &View, x: f64, y: f64, w: f64, h: f64, placed: &[Rect]) -> Option<Re
 /// that re-cut no deeper than the profile's `rapid_cut_tol`, a warning) and gouges (red).
 pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
     let mut placed: Vec<Rect> = Vec::new();
-    let crashes = report
-        .crashes
-        .iter()
-        .map(|c| (c.z, c.r, c.line, "crash", colour::CRASH));
-    let gouges = report
-        .gouges
-        .iter()
-        .map(|g| (g.z, g.r, g.line, "gouge", colour::GOUGE));
+    // a possible finding (an assumed tool's) says so on its label
+    let crashes = report.crashes.iter().map(|c| {
+        let what = if c.assumed { "possible crash" } else { "crash" };
+        (c.z, c.r, c.line, what, colour::CRASH)
+    });
+    let gouges = report.gouges.iter().map(|g| {
+        let what = if g.assumed { "possible gouge" } else { "gouge" };
+        (g.z, g.r, g.line, what, colour::GOUGE)
+    });
     let scrapes = report
         .rapid_cuts
         .iter()
@@ -80,6 +81,7 @@ pub(crate) fn findings(doc: &mut Doc, report: &Report, v: &View) {
         match what {
             "crash" => marker(doc, x, y, c),
             "scrape" => scrape_marker(doc, x, y),
+            // a possible crash: the crash colour's ring, not the filled marker
             _ => doc.circle([x, y], 8.0, "none", c, 2.0),
         }
         placed.push([x - 9.0, y - 9.0, 18.0, 18.0]);

@@ -5,7 +5,7 @@
 use crate::doc::Doc;
 use crate::layout::{self, colour, FS_TICK};
 use crate::path::{deviation_d, shapes_d, toolpath_d};
-use crate::report::Report;
+use crate::report::{Report, Shape};
 use crate::scale::{nice_step, step_decimals, ticks, View};
 use crate::text::{tick_label, width};
 
@@ -75,14 +75,27 @@ fn draw_section(doc: &mut Doc, report: &Report, v: &View, mirror: bool) {
         0.0,
         &[],
     );
+    let (possible, certain) = gouges_by_certainty(report);
     doc.mm_path(
         v,
-        &deviation_d(&report.gouge_shapes, md),
+        &deviation_d(&certain, md),
         colour::GOUGE,
         "none",
         0.0,
         &[],
     );
+    if !possible.is_empty() {
+        let id = format!("possible-hatch-{:.0}-{:.0}", v.px[0], v.px[1]);
+        hatch_defs(doc, &id, v.s);
+        doc.mm_path(
+            v,
+            &deviation_d(&possible, md),
+            &format!("url(#{id})"),
+            "none",
+            0.0,
+            &[],
+        );
+    }
     doc.mm_path(
         v,
         &shapes_d(&report.intended, md),
@@ -210,4 +223,55 @@ pub(crate) fn centre_line(doc: &mut Doc, v: &View) {
     if y >= v.px[1] && y <= v.bottom() {
         doc.line([v.px[0], y], [v.right(), y], "#2b2f36", 1.0, "16 4 3 4");
     }
+}
+
+/// The pattern `id` of a possible finding (spec/simulation.md, "Findings from assumed
+/// tools"): the gouge colour in diagonal lines 6 px apart on white, drawn hatched rather
+/// than red. `px_per_mm`: the scale of the view whose mm paths it fills.
+pub(crate) fn hatch_defs(doc: &mut Doc, id: &str, px_per_mm: f64) {
+    let step = crate::text::num(HATCH_PX / px_per_mm, 6);
+    doc.open("defs", &[]);
+    doc.open(
+        "pattern",
+        &[
+            ("id", id.into()),
+            ("patternUnits", "userSpaceOnUse".into()),
+            ("width", step.clone()),
+            ("height", step.clone()),
+            ("patternTransform", "rotate(45)".into()),
+        ],
+    );
+    doc.leaf(
+        "rect",
+        &[
+            ("width", step.clone()),
+            ("height", step.clone()),
+            ("fill", "#ffffff".into()),
+        ],
+    );
+    doc.leaf(
+        "rect",
+        &[
+            ("width", crate::text::num(HATCH_PX / 2.5 / px_per_mm, 6)),
+            ("height", step),
+            ("fill", colour::GOUGE.into()),
+        ],
+    );
+    doc.close();
+    doc.close();
+}
+
+/// Spacing of a possible finding's hatch lines, px.
+const HATCH_PX: f64 = 6.0;
+
+/// The gouge shapes split into (possible, certain): a shape is possible when the gouge at
+/// its index is `assumed`.
+pub(crate) fn gouges_by_certainty(report: &Report) -> (Vec<Shape>, Vec<Shape>) {
+    let (possible, certain): (Vec<_>, Vec<_>) = report
+        .gouge_shapes
+        .iter()
+        .enumerate()
+        .partition(|(i, _)| report.gouges.get(*i).is_some_and(|g| g.assumed));
+    let shapes = |v: Vec<(usize, &Shape)>| v.into_iter().map(|(_, s)| s.clone()).collect();
+    (shapes(possible), shapes(certain))
 }

@@ -1,34 +1,17 @@
-//! Rasterise the report SVG with resvg (tiny-skia, anti-aliased) using the `DejaVu Sans`
-//! font embedded in the binary, so the picture never depends on system fonts.
-
-use std::sync::OnceLock;
+//! Rasterise the report SVG with resvg (tiny-skia, anti-aliased) using the fonts embedded
+//! in the binary (`crate::fonts`: `DejaVu Sans`, then a CJK subset, then the system's only
+//! for a character neither has), so the usual picture never depends on system fonts.
 
 use image::ImageEncoder as _;
 use resvg::{tiny_skia, usvg};
 
+use crate::fonts::options_for;
 use crate::RenderError;
-
-/// The one font the pictures use, shipped in the repository.
-static DEJAVU_SANS: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
-
-/// Options with a font database holding only the embedded font (built once).
-fn options() -> &'static usvg::Options<'static> {
-    static OPT: OnceLock<usvg::Options<'static>> = OnceLock::new();
-    OPT.get_or_init(|| {
-        let mut opt = usvg::Options {
-            font_family: "DejaVu Sans".to_string(),
-            ..usvg::Options::default()
-        };
-        opt.fontdb_mut().load_font_data(DEJAVU_SANS.to_vec());
-        // Generic families resolve to the same font.
-        opt.fontdb_mut().set_sans_serif_family("DejaVu Sans");
-        opt
-    })
-}
 
 /// Rasterise an SVG string at 1:1 (its own width and height in px) on white, to PNG.
 pub(crate) fn rasterise(svg: &str) -> Result<Vec<u8>, RenderError> {
-    let tree = usvg::Tree::from_str(svg, options()).map_err(|e| RenderError::Svg(e.to_string()))?;
+    let tree =
+        usvg::Tree::from_str(svg, options_for(svg)).map_err(|e| RenderError::Svg(e.to_string()))?;
     let size = tree.size().to_int_size();
     let (w, h) = (size.width(), size.height());
     let mut pixmap = tiny_skia::Pixmap::new(w, h).ok_or(RenderError::Size(w, h))?;

@@ -91,6 +91,54 @@ pub struct Crash {
     /// convex parts in `[z, r]`), drawn at the crash; empty when unknown (the CLI fills
     /// the first 20 crashes).
     pub tool: Vec<Vec<[f64; 2]>>,
+    /// A possible crash: its tool's outline is assumed (not in the verdict); drawn hollow.
+    pub assumed: bool,
+    /// Why it happened (the analysis's diagnosis); `None`: not diagnosed.
+    pub cause: Option<Cause>,
+    /// A fix the analysis has checked by re-running the program with it.
+    pub remedy: Option<Remedy>,
+}
+
+/// Why a finding happened.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Cause {
+    /// `trailing-edge`, `leading-edge`, `nose`, `compensation`, `body`, `rapid`,
+    /// `workholding`, `other-tool` or `program`.
+    pub kind: String,
+    /// One sentence for a machinist.
+    pub text: String,
+    /// The measured numbers it rests on, e.g. `("flank_deg", 41.0)`.
+    pub numbers: Vec<(String, f64)>,
+}
+
+/// A fix the analysis has checked by re-running the program with it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Remedy {
+    /// One sentence for a machinist.
+    pub text: String,
+    /// The tool to use instead, for a tool change.
+    pub tool: Option<String>,
+    /// The program line to change, for a program change.
+    pub line: Option<u32>,
+    /// The block(s) as they should read, for a program change.
+    pub edit: Option<String>,
+    /// Whether the re-run confirmed it.
+    pub verified: bool,
+}
+
+/// Material left that should be gone, with why.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Leftover {
+    /// Its thickest place, z.
+    pub z: f64,
+    /// Its thickest place, r.
+    pub r: f64,
+    /// Area, mm² of the half section.
+    pub area_mm2: f64,
+    /// Its thickness there, mm.
+    pub depth_mm: f64,
+    /// Why it stayed.
+    pub cause: Option<Cause>,
 }
 
 /// A piece of workholding drawn in the picture (light grey, labelled).
@@ -115,6 +163,13 @@ pub struct Gouge {
     pub area_mm2: f64,
     /// Largest distance from the intended boundary, mm.
     pub depth_mm: f64,
+    /// A possible gouge: the tool that made it has an assumed outline (not in the
+    /// verdict); drawn hatched instead of filled red.
+    pub assumed: bool,
+    /// Why it happened (the analysis's diagnosis); `None`: not diagnosed.
+    pub cause: Option<Cause>,
+    /// A fix the analysis has checked by re-running the program with it.
+    pub remedy: Option<Remedy>,
 }
 
 /// Summary of final part versus intended shape.
@@ -184,10 +239,14 @@ pub struct Report {
     /// attribution); the one [`Report::leftover_spot`] names gets a detail view after the
     /// findings and grooves, as room allows.
     pub leftovers: Vec<Shape>,
+    /// The leftovers as findings (place, size, cause), in the order of
+    /// [`Report::leftovers`].
+    pub leftover_list: Vec<Leftover>,
     /// The largest leftover's thickest place (measured by the simulator), where its
     /// detail view looks; `None`: no leftover view.
     pub leftover_spot: Option<LeftoverSpot>,
-    /// Gouge areas, drawn red with a darker 2 px outline.
+    /// Gouge areas, drawn red with a darker 2 px outline (hatched for the gouges of
+    /// [`Report::gouges`] at the same place that are `assumed`).
     pub gouge_shapes: Vec<Shape>,
     /// `None` when there is no intended shape.
     pub deviation: Option<Deviation>,
@@ -233,6 +292,32 @@ pub struct Report {
     pub tool_runs: Vec<(usize, usize)>,
     /// The outcome, as the analysis decided it.
     pub verdict: Verdict,
+    /// The tools for the HTML page's setup sheet, in order of first use; empty: the sheet
+    /// lists [`Report::tools`] instead (the CLI fills it). Not in the JSON.
+    pub tool_list: Vec<ToolEntry>,
+    /// The blank's stick-out from the chuck jaws' front, mm; `None`: no chuck given.
+    /// Not in the JSON (its stock description says it).
+    pub stick_out_mm: Option<f64>,
+}
+
+/// One tool as the setup sheet lists it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ToolEntry {
+    /// T number; 0: the tool that cuts before the program's first T word.
+    pub number: u32,
+    /// The offset numbers the program called it with (`T0101` → 1), in order of first use.
+    pub offsets: Vec<u32>,
+    /// What it is, e.g. `turning C 80°, r0.8, tip 3, κr 95°`.
+    pub description: String,
+    /// The ISO designations the tool table gave it by, e.g. `CNMG 120408 in PCLNR 2525M12`.
+    pub designation: Option<String>,
+    /// The tool table does not state its size (no entry: the default tool; an insert with
+    /// no edge nor ISO designation): its outline is assumed.
+    pub assumed: bool,
+    /// The time of all its moves, s.
+    pub time_s: f64,
+    /// The time of its cutting (feed and thread) moves, s.
+    pub cut_time_s: f64,
 }
 
 /// A tool's outline relative to its reference point, `[z, r]`: the cutting outline and the

@@ -109,6 +109,7 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
         Line(&'static str, &'static str),
         Marker,
         Scrape,
+        Hatch,
     }
     let has = |k: PathKind| report.toolpath.iter().any(|l| l.kind == k);
     let mut items: Vec<(Sw, &str)> = vec![
@@ -126,8 +127,16 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
     if has(PathKind::Thread) {
         items.push((Sw::Line(colour::THREAD, ""), "thread"));
     }
-    if !report.gouge_shapes.is_empty() || !report.gouges.is_empty() {
+    let certain = report.gouges.iter().any(|g| !g.assumed)
+        || (report.gouges.is_empty() && !report.gouge_shapes.is_empty());
+    if certain {
         items.push((Sw::Fill(colour::GOUGE, colour::GOUGE_EDGE), "gouge"));
+    }
+    if report.gouges.iter().any(|g| g.assumed) || report.crashes.iter().any(|c| c.assumed) {
+        items.push((
+            Sw::Hatch,
+            "possible (tool size assumed: not in the verdict)",
+        ));
     }
     if !report.leftovers.is_empty() {
         items.push((
@@ -166,6 +175,15 @@ fn legend(doc: &mut Doc, report: &Report, thinned: bool) {
             Sw::Line(c, dash) => doc.line([x, y - 5.0], [x + 22.0, y - 5.0], c, 2.2, dash),
             Sw::Marker => marker(doc, x + 11.0, y - 5.0, colour::CRASH),
             Sw::Scrape => crate::marks::scrape_marker(doc, x + 11.0, y - 5.0),
+            Sw::Hatch => {
+                crate::plot::hatch_defs(doc, "possible-hatch-legend", 1.0);
+                doc.rect(
+                    [x, y - 12.0, 22.0, 14.0],
+                    "url(#possible-hatch-legend)",
+                    colour::GOUGE_EDGE,
+                    1.0,
+                );
+            }
         }
         doc.text(x + 30.0, y, FS_TEXT, "start", colour::INK, label);
         x += w;

@@ -1,10 +1,40 @@
 //! Text helpers: XML escaping, approximate text measurement, wrapping, number formats.
 //!
 //! Widths are estimates for `DejaVu Sans` (about 0.6 em per character); we err wide so
-//! that text placed by these numbers never overlaps its neighbours.
+//! that text placed by these numbers never overlaps its neighbours. A wide character
+//! (Chinese, Japanese, Korean, full-width forms: 1 em in the CJK font) counts as two
+//! columns, 1.2 em; lengths below are in such columns.
 
 /// Average advance of one character in em for `DejaVu Sans` (mixed text is ~0.55).
 const EM_PER_CHAR: f64 = 0.6;
+
+/// Columns of `c`: 2 for an East Asian wide or full-width character, else 1.
+fn columns_of(c: char) -> usize {
+    let wide = matches!(c as u32,
+        0x1100..=0x115F // Hangul Jamo initials
+        | 0x2E80..=0x303E // CJK radicals, Kangxi, ideographic description, CJK punctuation
+        | 0x3041..=0x33FF // kana, bopomofo, Hangul compatibility Jamo, CJK compatibility
+        | 0x3400..=0x4DBF // CJK extension A
+        | 0x4E00..=0x9FFF // CJK unified ideographs
+        | 0xA000..=0xA4CF // Yi
+        | 0xAC00..=0xD7A3 // Hangul syllables
+        | 0xF900..=0xFAFF // CJK compatibility ideographs
+        | 0xFE30..=0xFE4F // CJK compatibility forms
+        | 0xFF00..=0xFF60 // full-width forms
+        | 0xFFE0..=0xFFE6
+        | 0x20000..=0x3FFFD // CJK extensions B and on
+    );
+    if wide {
+        2
+    } else {
+        1
+    }
+}
+
+/// Columns of `s` (see [`columns_of`]): its character count when it has no wide one.
+pub(crate) fn columns(s: &str) -> usize {
+    s.chars().map(columns_of).sum()
+}
 
 /// Escape a string for XML text and attribute values.
 pub(crate) fn esc(s: &str) -> String {
@@ -26,10 +56,10 @@ pub(crate) fn esc(s: &str) -> String {
 
 /// Approximate rendered width of `s` in px at `size` px.
 pub(crate) fn width(s: &str, size: f64) -> f64 {
-    s.chars().count() as f64 * size * EM_PER_CHAR
+    columns(s) as f64 * size * EM_PER_CHAR
 }
 
-/// How many characters fit in `px` at `size`.
+/// How many columns fit in `px` at `size`.
 pub(crate) fn chars_fitting(px: f64, size: f64) -> usize {
     if px.is_nan() || px <= 0.0 {
         return 0;
@@ -37,29 +67,37 @@ pub(crate) fn chars_fitting(px: f64, size: f64) -> usize {
     (px / (size * EM_PER_CHAR)).floor() as usize
 }
 
-/// Cut `s` to at most `max` characters, ending with an ellipsis when cut.
+/// Cut `s` to at most `max` columns, ending with an ellipsis when cut.
 pub(crate) fn truncate(s: &str, max: usize) -> String {
-    let n = s.chars().count();
-    if n <= max {
+    if columns(s) <= max {
         return s.to_string();
     }
     if max == 0 {
         return String::new();
     }
-    let mut out: String = s.chars().take(max - 1).collect();
+    let mut out = String::new();
+    let mut used = 1; // the ellipsis
+    for c in s.chars() {
+        used += columns_of(c);
+        if used > max {
+            break;
+        }
+        out.push(c);
+    }
     out.push('…');
     out
 }
 
-/// Word-wrap `s` to lines of at most `max` characters, at most `max_lines` lines; the
-/// last line is truncated with an ellipsis when text remains.
+/// Word-wrap `s` to lines of at most `max` columns, at most `max_lines` lines; the last
+/// line is truncated with an ellipsis when text remains. A word longer than a line (a
+/// Chinese sentence has no spaces) is broken between characters.
 pub(crate) fn wrap(s: &str, max: usize, max_lines: usize) -> Vec<String> {
     let max = max.max(4);
     let mut lines: Vec<String> = Vec::new();
     let mut cur = String::new();
     for word in s.split_whitespace() {
-        let wlen = word.chars().count();
-        let clen = cur.chars().count();
+        let wlen = columns(word);
+        let clen = columns(&cur);
         if clen > 0 && clen + 1 + wlen <= max {
             cur.push(' ');
             cur.push_str(word);
@@ -68,13 +106,17 @@ pub(crate) fn wrap(s: &str, max: usize, max_lines: usize) -> Vec<String> {
         if clen > 0 {
             lines.push(std::mem::take(&mut cur));
         }
-        // A single word longer than a line is hard-broken.
-        let mut rest: Vec<char> = word.chars().collect();
-        while rest.len() > max {
-            lines.push(rest[..max].iter().collect());
-            rest.drain(..max);
+        let (mut piece, mut used) = (String::new(), 0);
+        for c in word.chars() {
+            let w = columns_of(c);
+            if used + w > max {
+                lines.push(std::mem::take(&mut piece));
+                used = 0;
+            }
+            piece.push(c);
+            used += w;
         }
-        cur = rest.into_iter().collect();
+        cur = piece;
     }
     if !cur.is_empty() {
         lines.push(cur);
@@ -318,6 +360,24 @@ mod tests {
         let lines = wrap("Ø125×110 ünïcödé", 5, 10);
         assert!(lines.iter().all(|l| l.chars().count() <= 5));
         assert_eq!(truncate("abcdef", 4), "abc…");
+    }
+
+    /// A Chinese character is as wide as two Latin ones: lines of CJK text keep within
+    /// the columns they are given (issue 35), Latin text wraps as before.
+    #[test]
+    fn wide_characters_count_two_columns() {
+        assert_eq!(columns("毛坯料宽40"), 10);
+        assert_eq!(columns("Ø125×110"), 8);
+        assert_eq!(width("毛", 10.0), width("ab", 10.0));
+        let lines = wrap("毛坯料宽40 长露出超过90 粗车外圆", 8, 5);
+        assert_eq!(lines, ["毛坯料宽", "40", "长露出超", "过90", "粗车外圆"]);
+        assert!(lines.iter().all(|l| columns(l) <= 8));
+        assert_eq!(truncate("毛坯料宽40", 6), "毛坯…");
+        assert_eq!(truncate("毛坯料宽40", 10), "毛坯料宽40");
+        assert_eq!(
+            wrap("a bb ccc dddd eeeee", 5, 9),
+            ["a bb", "ccc", "dddd", "eeeee"]
+        );
     }
 
     #[test]

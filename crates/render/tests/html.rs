@@ -62,7 +62,7 @@ fn page_is_self_contained_with_slider_and_picture() {
     assert!(page.contains(r#"<canvas id="ls-canvas""#));
     assert!(page.contains(r#"id="ls-label""#));
     // Exactly two scripts: the data and the player (inline).
-    assert_eq!(page.matches("<script").count(), 2);
+    assert_eq!(page.matches("<script").count(), 3);
     assert!(page.contains("<script>\n"));
     assert!(page.contains("keydown"));
     assert!(page.contains("move="));
@@ -89,10 +89,10 @@ fn tables_list_verdict_summary_and_findings() {
     ] {
         assert!(page.contains(needle), "missing {needle}");
     }
-    // The gouge row: line 11, Z −22.5, X Ø28 (r 14), 1 mm², 0.2 mm deep.
+    // The gouge row: line 11, Z −22.5, X Ø28 (r 14), 1 mm², 0.2 mm deep, certain.
     assert!(
         page.contains(
-            "<tr data-line=\"11\"><td class=\"n\">11</td><td class=\"n\">-22.5</td><td class=\"n\">28</td><td class=\"n\">1.00</td><td class=\"n\">0.2</td></tr>"
+            "<tr data-line=\"11\"><td class=\"n\">11</td><td class=\"n\">-22.5</td><td class=\"n\">28</td><td class=\"n\">1.00</td><td class=\"n\">0.2</td><td>certain</td><td></td></tr>"
         ),
         "gouge row"
     );
@@ -118,9 +118,9 @@ fn text_is_escaped() {
         message: "</script><script>alert(2)</script>".into(),
     });
     let page = render::html(&r);
-    // Only our own two script elements.
-    assert_eq!(page.matches("<script").count(), 2);
-    assert_eq!(page.matches("</script>").count(), 2);
+    // Only our own three script elements (data, player, 3D view).
+    assert_eq!(page.matches("<script").count(), 3);
+    assert_eq!(page.matches("</script>").count(), 3);
     assert!(page.contains("&lt;script&gt;alert(1)&lt;/script&gt;.nc"));
     assert!(page.contains("bar &amp; &lt;b&gt;bold&lt;/b&gt;"));
     assert!(page.contains("<code>W-&lt;x&gt;</code>"));

@@ -27,6 +27,10 @@ pub struct Mounted {
     pub body: Option<Body>,
     /// Why a default outline cuts for this tool (no entry, a cycle's default blade).
     pub warning: Option<String>,
+    /// For an outline whose size is assumed, the part of it the table states
+    /// (`ToolTable::stated_core`: an insert's nose), as mounted; `None` for a stated tool
+    /// or when nothing of it is stated.
+    pub core: Option<Arc<Outline>>,
 }
 
 impl Mounted {
@@ -45,14 +49,17 @@ impl Mounted {
             b.outline.past_axis = past;
         }
         let warning = warning.or_else(|| tools.size_warning(t, hint));
+        let core = tools.stated_core(t, hint);
         if !rear {
             return Self {
                 edge: Arc::new(edge),
                 body,
                 warning,
+                core: core.map(Arc::new),
             };
         }
         Self {
+            core: core.map(|c| Arc::new(c.mirrored())),
             edge: Arc::new(edge.mirrored()),
             body: body.map(|b| Body {
                 outline: b.outline.mirrored(),
@@ -237,9 +244,9 @@ mod tests {
         assert_eq!(s.len(), 2);
         assert!((s.iter().map(|r| area(r)).sum::<f64>() - 4.0).abs() < 1e-12);
         assert!(s.iter().flatten().all(|p| p[1] >= 0.0));
-        // a guessed size stops at the axis: only the 3 × 0.5 above it
+        // a guessed size stops at the axis: only the 4 × 0.5 above it (the hull is 4 long)
         square.past_axis = PastAxis::DropBelow;
         let s = float_sweep(&square, &[[0.0, -0.5], [3.0, -0.5]]);
-        assert!((s.iter().map(|r| area(r)).sum::<f64>() - 1.5).abs() < 1e-12);
+        assert!((s.iter().map(|r| area(r)).sum::<f64>() - 2.0).abs() < 1e-12);
     }
 }

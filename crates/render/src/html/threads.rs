@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use super::{list_head, pos};
+use super::{extra, list_head, pos, print_more};
 use crate::report::ThreadCheck;
 use crate::text::esc;
 
@@ -34,11 +34,12 @@ pub(super) fn threads_table(out: &mut String, list: &[ThreadCheck]) {
         list.len(),
     );
     out.push_str("<table class=\"list thread\"><thead><tr><th>line</th><th>side</th><th>lead (mm)</th><th>passes</th><th>X programmed</th><th>X expected</th><th>X reached</th><th>depth error (mm)</th><th>pitch Ø (mm)</th><th>flank angle (°)</th></tr></thead><tbody>\n");
-    for t in list {
+    for (i, t) in list.iter().enumerate() {
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"><td class=\"n\">{}</td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
+            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
             t.line,
+            extra(i),
             t.line,
             if t.inside { "ID" } else { "OD" },
             lead_cell(t),
@@ -52,6 +53,7 @@ pub(super) fn threads_table(out: &mut String, list: &[ThreadCheck]) {
         );
     }
     out.push_str("</tbody></table>\n");
+    print_more(out, list.len());
 }
 
 /// The lead, with the number of starts of a multi-start thread (`3 (2 starts)`).

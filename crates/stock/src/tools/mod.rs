@@ -26,6 +26,10 @@ pub struct ToolTable {
     /// The entries whose cutting outline's size the table does not state (an insert with
     /// no `edge` nor ISO designation, a blade without `width` or `reach`).
     assumed: Vec<u32>,
+    /// The turning entries whose nose radius the table states.
+    noses: Vec<u32>,
+    /// The grooving entries whose width the table states.
+    widths: Vec<u32>,
 }
 
 impl ToolTable {
@@ -37,11 +41,40 @@ impl ToolTable {
     /// A table from explicit entries (T number, tool).
     pub fn from_tools(tools: Vec<(u32, Tool)>) -> Self {
         Self {
+            noses: tools.iter().map(|(t, _)| *t).collect(),
+            widths: tools.iter().map(|(t, _)| *t).collect(),
             tools,
             designations: Vec::new(),
             sizes: Vec::new(),
             assumed: Vec::new(),
         }
+    }
+
+    /// The table with tool `t` given by `fields` (a `[[tool]]` entry's TOML without `t`)
+    /// instead of its own entry (or beside the others, when it has none).
+    pub fn replaced(&self, t: u32, fields: &str) -> Result<Self, StockError> {
+        let one = Self::from_toml(&format!("[[tool]]\nt = {t}\n{fields}"))?;
+        let mut out = self.clone();
+        // in place: the first entry is the tool before the first T word
+        match (
+            out.tools.iter().position(|(n, _)| *n == t),
+            one.tools.first(),
+        ) {
+            (Some(k), Some(new)) => out.tools[k] = new.clone(),
+            (None, Some(new)) => out.tools.push(new.clone()),
+            _ => {}
+        }
+        out.designations.retain(|(n, _)| *n != t);
+        out.sizes.retain(|(n, _)| *n != t);
+        out.assumed.retain(|n| *n != t);
+        out.noses.retain(|n| *n != t);
+        out.widths.retain(|n| *n != t);
+        out.designations.extend(one.designations);
+        out.sizes.extend(one.sizes);
+        out.assumed.extend(one.assumed);
+        out.noses.extend(one.noses);
+        out.widths.extend(one.widths);
+        Ok(out)
     }
 
     /// Parses the `[[tool]]` TOML format of the simulation spec.
@@ -54,6 +87,16 @@ impl ToolTable {
                 .collect(),
             sizes: entries.iter().map(|e| (e.t, e.size)).collect(),
             assumed: entries.iter().filter(|e| !e.stated).map(|e| e.t).collect(),
+            noses: entries
+                .iter()
+                .filter(|e| e.nose_stated)
+                .map(|e| e.t)
+                .collect(),
+            widths: entries
+                .iter()
+                .filter(|e| e.width_stated)
+                .map(|e| e.t)
+                .collect(),
             tools: entries.into_iter().map(|e| (e.t, e.tool)).collect(),
         })
     }

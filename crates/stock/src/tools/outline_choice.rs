@@ -61,6 +61,19 @@ impl ToolTable {
     }
 }
 
+/// The shortest edge of an insert's stated core ([`ToolTable::stated_core`]), mm: a sharp
+/// insert's core is its tip.
+const CORE_EDGE: f64 = 0.2;
+
+/// The tip of a blade whose width is known but not its reach: as deep as it is wide.
+fn blade_stub(b: GroovingBlade) -> Outline {
+    Tool::Grooving(GroovingBlade {
+        reach: b.reach.min(b.width),
+        ..b
+    })
+    .outline()
+}
+
 /// A cache key for the outline of tool `t` under `hint`.
 pub(crate) fn hint_key(t: u32, hint: ToolHint) -> (u32, u8, u64) {
     match hint {
@@ -106,6 +119,61 @@ impl ToolTable {
             _ => self.resolve(t, hint).1.is_none(),
         };
         ok && !self.assumed.contains(&entry)
+    }
+
+    /// The part of a guessed outline the table does state ([`ToolTable::size_stated`] is
+    /// false): for a turning insert whose nose radius is given but not its size, the nose
+    /// with edges as short as the nose allows — a part of the insert whatever its size;
+    /// `None` when nothing of the outline is stated (then only its reference point is).
+    pub fn stated_core(&self, t: u32, hint: ToolHint) -> Option<Outline> {
+        if self.size_stated(t, hint) {
+            return None;
+        }
+        if let ToolHint::Blade { .. } = hint {
+            // the program gives the blade's width (G75.1 I): its tip is stated
+            return match self.resolve(t, hint).0 {
+                Tool::Grooving(b) => Some(blade_stub(b)),
+                _ => None,
+            };
+        }
+        let n = if t == 0 { *self.numbers().first()? } else { t };
+        if hint != ToolHint::Table {
+            return None;
+        }
+        if self.widths.contains(&n) {
+            return match self.get(n)?.clone() {
+                Tool::Grooving(b) => Some(blade_stub(b)),
+                _ => None,
+            };
+        }
+        if !self.noses.contains(&n) {
+            return None;
+        }
+        match self.get(n)?.clone() {
+            Tool::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                ..
+            } => Some(
+                Tool::Turning {
+                    insert,
+                    nose_radius,
+                    tip,
+                    entering_angle,
+                    edge: (2.0 * nose_radius).max(CORE_EDGE),
+                }
+                .outline(),
+            ),
+            _ => None,
+        }
+    }
+
+    /// The tool that cuts for tool `t` under `hint`, described (a default's or a cycle's
+    /// blade's own description).
+    pub fn describe_for(&self, t: u32, hint: ToolHint) -> String {
+        self.resolve(t, hint).0.describe()
     }
 
     /// The warning for an entry whose outline's size is assumed, once per tool.

@@ -56,6 +56,10 @@ pub(super) struct Entry {
     /// designation, a blade's `width` and `reach`, a drill's `diameter` (required), a
     /// threading insert (its form is its angle).
     pub(super) stated: bool,
+    /// Whether a turning entry states its nose radius (`nose_radius` or an ISO insert).
+    pub(super) nose_stated: bool,
+    /// Whether a grooving entry states its width.
+    pub(super) width_stated: bool,
 }
 
 /// The table's entries in file order; a T number given twice is an error.
@@ -78,6 +82,9 @@ pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
         tools.push(Entry {
             t: raw.t,
             stated: size_stated(raw, designation.is_some()),
+            nose_stated: raw.kind == "turning"
+                && (raw.nose_radius.is_some() || designation.is_some()),
+            width_stated: raw.kind == "grooving" && raw.width.is_some(),
             tool,
             designation,
             size,
