@@ -1,9 +1,16 @@
 //! The memory budget of a run: no input may take the machine down. The removal looks at the
-//! process's resident memory now and then (at every epoch end, and every
-//! [`CHECK_EVERY`] boolean calls of a worker); over the budget it stops where it is and
-//! says what grew ([`OverBudget`]), and the caller ends that run (exit 2).
+//! process's resident memory now and then (at every epoch end, and every [`CHECK_EVERY`]
+//! boolean calls of a worker); over the budget it stops where it is and says what grew
+//! ([`OverBudget`]), and the caller ends that run (exit 2).
+//!
+//! The programs of a batch run side by side in one process and share its memory: when the
+//! process is over the budget, the run that stops is the one that holds the most
+//! ([`Ledger`]: what each removal holds, or, before its removal began, its program's size),
+//! and the others go on.
 
 use std::fmt;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
 
 /// A worker looks at the process's memory once in this many boolean calls (reading it costs
 /// a few microseconds; a boolean call of a tile about as much).
@@ -67,6 +74,112 @@ impl MemoryBudget {
     /// where the process's memory cannot be read).
     pub(crate) fn exceeded(&self) -> Option<u64> {
         process_memory().filter(|&held| held > self.bytes)
+    }
+}
+
+/// What each program of a batch holds, bytes, for deciding which stops when the process
+/// is over its budget: a program's file size until its removal looks, then what the removal
+/// holds (the moves, the stock, the sweeps, the snapshots); 0 once it is done.
+#[derive(Debug)]
+pub struct Ledger {
+    held: Vec<AtomicU64>,
+}
+
+impl Ledger {
+    /// A ledger of programs whose files hold `sizes` bytes.
+    pub fn new(sizes: impl IntoIterator<Item = u64>) -> Arc<Self> {
+        Arc::new(Self {
+            held: sizes
+                .into_iter()
+                .map(|b| AtomicU64::new(b.max(1)))
+                .collect(),
+        })
+    }
+
+    /// Program `i` is done: it holds nothing that counts.
+    pub fn done(&self, i: usize) {
+        if let Some(h) = self.held.get(i) {
+            h.store(0, Ordering::Relaxed);
+        }
+    }
+
+    /// Whether program `i` holds at least as much as every other program not done.
+    fn holds_most(&self, i: usize) -> bool {
+        let mine = self.held.get(i).map_or(0, |h| h.load(Ordering::Relaxed));
+        self.held
+            .iter()
+            .enumerate()
+            .all(|(j, h)| j == i || h.load(Ordering::Relaxed) <= mine)
+    }
+}
+
+/// One run's budget: the process's memory against it, and, in a batch, the run's line in
+/// the batch's [`Ledger`].
+#[derive(Debug, Clone)]
+pub struct RunMemory {
+    budget: MemoryBudget,
+    batch: Option<(Arc<Ledger>, usize)>,
+}
+
+impl PartialEq for RunMemory {
+    fn eq(&self, other: &Self) -> bool {
+        self.budget == other.budget
+            && self.batch.as_ref().map(|b| b.1) == other.batch.as_ref().map(|b| b.1)
+    }
+}
+
+impl RunMemory {
+    /// The budget of a run on its own.
+    pub fn alone(budget: MemoryBudget) -> Self {
+        Self {
+            budget,
+            batch: None,
+        }
+    }
+
+    /// The budget of program `i` of a batch.
+    pub fn in_batch(budget: MemoryBudget, ledger: Arc<Ledger>, i: usize) -> Self {
+        Self {
+            budget,
+            batch: Some((ledger, i)),
+        }
+    }
+
+    /// The budget.
+    pub fn budget(&self) -> MemoryBudget {
+        self.budget
+    }
+
+    /// This run is done: in a batch, it holds nothing that counts any more.
+    pub fn done(&self) {
+        if let Some((ledger, i)) = &self.batch {
+            ledger.done(*i);
+        }
+    }
+
+    /// The removal of this run holds about `bytes` now.
+    pub(crate) fn holds(&self, bytes: u64) {
+        if let Some((ledger, i)) = &self.batch {
+            if let Some(h) = ledger.held.get(*i) {
+                h.store(bytes.max(1), Ordering::Relaxed);
+            }
+        }
+    }
+
+    /// What the process holds now, bytes (0 where the system does not say).
+    pub fn held(&self) -> u64 {
+        process_memory().unwrap_or(0)
+    }
+
+    /// The process's memory when it is over the budget and this run is the one to stop
+    /// (alone, or holding the most of the batch's programs not done), else `None`.
+    pub fn over(&self) -> Option<u64> {
+        let held = self.budget.exceeded()?;
+        let mine = self
+            .batch
+            .as_ref()
+            .is_none_or(|(ledger, i)| ledger.holds_most(*i));
+        mine.then_some(held)
     }
 }
 

@@ -31,7 +31,7 @@ mod sweep;
 mod tools;
 
 pub use blank::Blank;
-pub use budget::{process_memory, MemoryBudget, OverBudget};
+pub use budget::{process_memory, Ledger, MemoryBudget, OverBudget, RunMemory};
 pub use error::StockError;
 pub use mounted::{chord_sweeps, float_sweep, move_path, Mounted, Mounts};
 pub use outline::{Outline, PastAxis};

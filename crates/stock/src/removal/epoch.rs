@@ -6,7 +6,7 @@ use super::batch::{Batch, Trimmed};
 use super::crash::Fragment;
 use super::tile::{Ctx, Node, Tile, Worker, MIN_TILE};
 use super::SimOptions;
-use crate::budget::{process_memory, size, OverBudget};
+use crate::budget::{size, OverBudget, RunMemory};
 use crate::overlay::{Engine, Grid, IBox, IPt, IShape, IShapes};
 use crate::snapshot::Snapshots;
 use crate::sweep::{SweepBuilder, Sweeps};
@@ -321,7 +321,7 @@ impl<'a> Epochs<'a> {
                 sweeps: &ep.sweeps,
                 ring_air: opts.ring_air,
                 cover: opts.cover,
-                budget: opts.max_memory,
+                budget: opts.max_memory.as_ref(),
                 stop: &stop,
             };
             let mut found = strips.cut(&lists, &ctx, engine, || {
@@ -330,18 +330,10 @@ impl<'a> Epochs<'a> {
                 }
             });
             cuts.fragments.append(&mut found);
-            if let Some(budget) = opts.max_memory {
-                let held = budget.exceeded();
-                if held.is_some() || ctx.stopped() {
-                    let held = held.or_else(process_memory).unwrap_or(0);
-                    let done = if ctx.stopped() { cut_moves } else { ep.end };
-                    let what = self.what_grew(strips, &ep.sweeps, &cuts, held);
-                    cuts.over_budget = Some(OverBudget {
-                        budget,
-                        held,
-                        moves: done,
-                        what,
-                    });
+            if let Some(memory) = &opts.max_memory {
+                let over = self.over_budget(memory, (&ctx, strips), &ep, &cuts, cut_moves);
+                if let Some(over) = over {
+                    cuts.over_budget = Some(over);
                     progress(moves);
                     break;
                 }
@@ -366,40 +358,55 @@ impl<'a> Epochs<'a> {
         cuts
     }
 
-    /// What the removal holds, largest first, in words, and whether that is most of what
-    /// the process holds (`held` bytes).
-    fn what_grew(&self, strips: &Strips, sweeps: &Sweeps, cuts: &Cuts, held: u64) -> String {
+    /// The run went over its budget (a worker saw it, or the run's thread sees it now): how
+    /// far it got (`cut_moves` before this epoch when a worker stopped it midway) and what
+    /// grew. First tells the batch's ledger what this run holds.
+    fn over_budget(
+        &self,
+        memory: &RunMemory,
+        (ctx, strips): (&Ctx, &Strips),
+        ep: &Epoch,
+        cuts: &Cuts,
+        cut_moves: usize,
+    ) -> Option<OverBudget> {
+        let parts = self.holdings(strips, &ep.sweeps, cuts);
+        let total: u64 = parts.iter().map(|p| p.0).sum();
+        memory.holds(total);
+        let held = memory
+            .over()
+            .or_else(|| ctx.stopped().then(|| memory.held()))?;
+        let moves = if ctx.stopped() { cut_moves } else { ep.end };
+        Some(OverBudget {
+            budget: memory.budget(),
+            held,
+            moves,
+            what: what_grew(parts, held),
+        })
+    }
+
+    /// What the run holds that grows with its input: the moves, the stock's outline, the
+    /// epoch's sweeps, the snapshots, the rapid cuts' pieces (bytes, in words).
+    fn holdings(&self, strips: &Strips, sweeps: &Sweeps, cuts: &Cuts) -> [(u64, String); 5] {
         let (vertices, tiles) = strips.census();
-        let vertex = std::mem::size_of::<IPt>() as u64;
-        let frags = cuts.fragments.len() as u64;
-        let mut parts = [
+        let bytes = |n: usize, each: usize| (n * each) as u64;
+        let frags = cuts.fragments.len();
+        let moves = self.segments.len();
+        [
             (
-                vertices as u64 * vertex,
+                bytes(moves, std::mem::size_of::<Segment>()),
+                format!("the program's {moves} moves"),
+            ),
+            (
+                bytes(vertices, std::mem::size_of::<IPt>()),
                 format!("the stock's outline, {vertices} vertices in {tiles} tiles"),
             ),
             (sweeps.bytes(), "this epoch's sweeps".to_string()),
             (self.snapshots.bytes(), "the stock snapshots".to_string()),
             (
-                frags * std::mem::size_of::<Fragment>() as u64,
+                bytes(frags, std::mem::size_of::<Fragment>()),
                 format!("{frags} pieces of rapid cuts"),
             ),
-        ];
-        parts.sort_by_key(|p| std::cmp::Reverse(p.0));
-        let total: u64 = parts.iter().map(|p| p.0).sum();
-        let list: Vec<String> = parts
-            .iter()
-            .map(|(bytes, what)| format!("{what} ({})", size(*bytes)))
-            .collect();
-        if total * 2 >= held {
-            format!("what grew is the removal's {}", list.join(", "))
-        } else {
-            format!(
-                "the removal itself held only {} ({}): the rest was held before it (the program's {} moves and their text)",
-                size(total),
-                list.join(", "),
-                self.segments.len()
-            )
-        }
+        ]
     }
 
     /// After a part-off ending at move `end`: the pieces that fell (kept in `cuts`), as the
@@ -500,4 +507,31 @@ fn fallen_pieces(stock: IShapes, left_end: i32) -> Option<IShapes> {
     }
     let off: IShapes = stock.into_iter().filter(|s| !held(s)).collect();
     (!off.is_empty()).then_some(off)
+}
+
+/// What grew, in words: the run's holdings largest first, and whether they are most of
+/// what the process held (`held` bytes) or the rest was held elsewhere.
+fn what_grew(mut parts: [(u64, String); 5], held: u64) -> String {
+    parts.sort_by_key(|p| std::cmp::Reverse(p.0));
+    let total: u64 = parts.iter().map(|p| p.0).sum();
+    let list: Vec<String> = parts
+        .iter()
+        .filter(|p| p.0 >= 1024)
+        .take(3)
+        .map(|(bytes, what)| format!("{what} ({})", size(*bytes)))
+        .collect();
+    let list = if list.is_empty() {
+        vec!["nothing over 1 KiB".to_string()]
+    } else {
+        list
+    };
+    if total * 2 >= held {
+        format!("what grew is this run's {}", list.join(", "))
+    } else {
+        format!(
+            "this run's removal held {} of it ({}); the rest is held by the reading of the program, other programs of the batch or the process itself",
+            size(total),
+            list.join(", ")
+        )
+    }
 }

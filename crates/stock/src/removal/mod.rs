@@ -32,7 +32,7 @@ mod tile;
 
 pub use crash::Crash;
 
-use crate::budget::{MemoryBudget, OverBudget};
+use crate::budget::{OverBudget, RunMemory};
 use crate::overlay::{Engine, Grid, IShapes};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
 use epoch::{Cuts, Epochs, Strips};
@@ -84,9 +84,9 @@ pub struct SimOptions {
     /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
     /// the blank and [`Simulation::final_shapes`].
     pub snapshot_after: Vec<usize>,
-    /// The most memory the process may hold while the removal goes on (`None`: no limit).
-    /// Over it the removal stops where it is ([`Simulation::over_budget`]).
-    pub max_memory: Option<MemoryBudget>,
+    /// The run's memory budget (`None`: no limit). Over it the removal stops where it is
+    /// ([`Simulation::over_budget`]).
+    pub max_memory: Option<RunMemory>,
 }
 
 impl Default for SimOptions {

@@ -737,7 +737,7 @@ fn ring_air_tests_remove_exactly_what_every_tile_test_removes() {
 /// the end as without one.
 #[test]
 fn a_run_over_its_memory_budget_stops_and_says_what_grew() {
-    use crate::budget::MemoryBudget;
+    use crate::budget::{Ledger, MemoryBudget, RunMemory};
     let blank = Blank::bar(50.0, 100.0, 0.0, None).unwrap();
     // 3 000 passes 0.001 mm apart: an epoch of 1 024 moves each (programs over 5 000 moves)
     let segs: Vec<Segment> = (0..3_000)
@@ -759,7 +759,7 @@ fn a_run_over_its_memory_budget_stops_and_says_what_grew() {
         simulate(&blank, &v35(), &segs, &opts, &mut |_| {})
     };
     if cfg!(target_os = "linux") {
-        let over = with(Some(MemoryBudget::new(1)));
+        let over = with(Some(RunMemory::alone(MemoryBudget::new(1))));
         let why = over.over_budget.expect("over a budget of one byte");
         assert_eq!(why.budget, MemoryBudget::new(1));
         assert!(why.held > 1 << 20 && why.moves < segs.len(), "{why:?}");
@@ -771,9 +771,22 @@ fn a_run_over_its_memory_budget_stops_and_says_what_grew() {
         );
         assert!(message.contains("--max-memory"), "{message}");
         // it stopped: less was cut than by the whole run
-        let whole = with(Some(MemoryBudget::new(u64::MAX / 4)));
+        let whole = with(Some(RunMemory::alone(MemoryBudget::new(u64::MAX / 4))));
         assert!(whole.over_budget.is_none());
         assert!(over.removed_area < whole.removed_area - 1.0);
         assert_eq!(whole.final_shapes, with(None).final_shapes);
+        // in a batch the program that holds less goes on while a larger one is not done,
+        // and stops once that one is
+        let ledger = Ledger::new([1, u64::MAX / 2]);
+        let small = with(Some(RunMemory::in_batch(
+            MemoryBudget::new(1),
+            ledger.clone(),
+            0,
+        )));
+        assert!(small.over_budget.is_none());
+        assert_eq!(small.final_shapes, whole.final_shapes);
+        ledger.done(1);
+        let alone = with(Some(RunMemory::in_batch(MemoryBudget::new(1), ledger, 0)));
+        assert!(alone.over_budget.is_some());
     }
 }

@@ -3,7 +3,7 @@
 
 use super::batch::{Batch, Trimmed, BATCH};
 use super::crash::Fragment;
-use crate::budget::{MemoryBudget, CHECK_EVERY};
+use crate::budget::{RunMemory, CHECK_EVERY};
 use crate::overlay::{
     convex_contains, drop_grid_kinks, orient, point_in_ring, right_of, segments_meet, winds,
     Engine, Grid, IBox, IPt, IShapes,
@@ -237,15 +237,16 @@ pub(super) struct Ctx<'a> {
     /// Batches leave out what they cover ([`super::SimOptions::cover`]).
     pub(super) cover: bool,
     /// The run's memory budget ([`super::SimOptions::max_memory`]).
-    pub(super) budget: Option<MemoryBudget>,
+    pub(super) budget: Option<&'a RunMemory>,
     /// Set when the process went over the budget: every worker stops.
     pub(super) stop: &'a AtomicBool,
 }
 
 impl Ctx<'_> {
-    /// Sets [`Ctx::stop`] when the process holds more than the budget.
+    /// Sets [`Ctx::stop`] when the process holds more than the budget and this run is the
+    /// one to stop.
     fn look_at_memory(&self) {
-        if self.budget.is_some_and(|b| b.exceeded().is_some()) {
+        if self.budget.is_some_and(|b| b.over().is_some()) {
             self.stop.store(true, Ordering::Relaxed);
         }
     }
