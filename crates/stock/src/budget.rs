@@ -33,11 +33,13 @@ impl MemoryBudget {
         self.bytes
     }
 
-    /// Half the machine's memory (`MemTotal` of `/proc/meminfo`); `None` where the machine
-    /// does not say (not Linux).
+    /// Half the machine's memory (`MemTotal` of `/proc/meminfo`, or the container's limit
+    /// where that is less: cgroup v2's `memory.max`); `None` where the machine does not say
+    /// (not Linux).
     pub fn half_of_machine() -> Option<Self> {
         let info = std::fs::read_to_string("/proc/meminfo").ok()?;
-        kib_field(&info, "MemTotal:").map(|kib| Self::new(kib * 1024 / 2))
+        let limit = std::fs::read_to_string("/sys/fs/cgroup/memory.max").ok();
+        machine_memory(&info, limit.as_deref()).map(|bytes| Self::new(bytes / 2))
     }
 
     /// Reads a size such as `8G`, `512M`, `300000K` or `1000000` (bytes); the units are
@@ -196,6 +198,14 @@ pub fn process_memory() -> Option<u64> {
     kib_field(&status, "VmRSS:").map(|kib| kib * 1024)
 }
 
+/// The memory a process may take, bytes: `MemTotal` of `meminfo`, or the cgroup's
+/// `memory.max` where it is a number and less (`max` means no limit).
+fn machine_memory(meminfo: &str, cgroup_max: Option<&str>) -> Option<u64> {
+    let total = kib_field(meminfo, "MemTotal:")? * 1024;
+    let limit = cgroup_max.and_then(|t| t.trim().parse::<u64>().ok());
+    Some(limit.map_or(total, |l| l.min(total)))
+}
+
 /// The value in kB of the line starting with `key` in a `/proc` file.
 fn kib_field(text: &str, key: &str) -> Option<u64> {
     text.lines()
@@ -251,6 +261,20 @@ mod tests {
         assert!(b("0").unwrap_err().contains("at least one byte"));
         assert_eq!(size(3 << 29), "1.5 GiB");
         assert_eq!(size(212 << 20), "212 MiB");
+    }
+
+    /// A container's limit below the machine's memory is the machine's memory.
+    #[test]
+    fn a_container_limit_below_the_machine_counts() {
+        let info = "MemTotal:       24000000 kB\nMemFree:  1000 kB\n";
+        assert_eq!(machine_memory(info, None), Some(24_000_000 * 1024));
+        assert_eq!(machine_memory(info, Some("max\n")), Some(24_000_000 * 1024));
+        assert_eq!(machine_memory(info, Some("2147483648\n")), Some(1 << 31));
+        assert_eq!(
+            machine_memory(info, Some("99999999999999\n")),
+            Some(24_000_000 * 1024)
+        );
+        assert_eq!(machine_memory("MemFree: 1 kB\n", Some("1")), None);
     }
 
     /// This process's memory is read where the system says it (Linux), and a budget of a
