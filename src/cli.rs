@@ -265,6 +265,11 @@ pub(crate) struct RunArgs {
     /// Deviation tolerance in mm for gouges and leftovers.
     #[arg(long, value_name = "MM", default_value_t = 0.01, allow_hyphen_values = true, value_parser = positive_length)]
     pub(crate) tol: f64,
+    /// The most memory the run may hold, e.g. `8G`, `512M` (default: half the machine's).
+    /// A run over it stops with a message naming what grew (exit 2); in a batch the program
+    /// holding the most stops, its verdict line says so, and the others go on.
+    #[arg(long, value_name = "SIZE", value_parser = stock::MemoryBudget::parse)]
+    pub(crate) max_memory: Option<stock::MemoryBudget>,
 }
 
 /// `--reports`: a report kind `--out` writes.

@@ -202,11 +202,14 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     let stems = output_stems(&files);
     let inputs = inputs_of(args, &files, &stems);
     let started = std::time::Instant::now();
+    let memory = memory_of(args, &files);
     let job = |i: usize| {
         let t = std::time::Instant::now();
         let mut outcome = guarded(&files[i], files.len() > 1, || {
-            run_one(args, &files[i], &stems[i], &inputs, files.len() > 1)
+            let batch = files.len() > 1;
+            run_one(args, &files[i], &stems[i], &inputs, (batch, memory(i)))
         });
+        memory(i).inspect(stock::RunMemory::done);
         outcome.seconds = t.elapsed().as_secs_f64();
         outcome
     };
@@ -230,6 +233,24 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
     let outcomes = in_parallel(files.len(), job);
     let worst = outcomes.iter().map(|o| o.code).max().unwrap_or(EXIT_CLEAN);
     crate::ci::write(args, &outcomes, worst, started, &inputs)
+}
+
+/// Each program's memory budget (`--max-memory`, else half the machine's), shared by the
+/// batch through one ledger.
+fn memory_of(args: &RunArgs, files: &[PathBuf]) -> impl Fn(usize) -> Option<stock::RunMemory> {
+    let budget = args
+        .max_memory
+        .or_else(stock::MemoryBudget::half_of_machine);
+    let sizes = files
+        .iter()
+        .map(|f| std::fs::metadata(f).map_or(0, |m| m.len()));
+    let ledger = (files.len() > 1).then(|| stock::Ledger::new(sizes));
+    move |i| {
+        budget.map(|b| match &ledger {
+            Some(l) => stock::RunMemory::in_batch(b, l.clone(), i),
+            None => stock::RunMemory::alone(b),
+        })
+    }
 }
 
 /// The files a run reads, which no report may replace: the programs, the tables and
@@ -333,7 +354,13 @@ fn guarded(path: &Path, batch: bool, job: impl FnOnce() -> Outcome) -> Outcome {
 
 /// Simulate one program and write its reports. In a batch, the terminal gets only the
 /// verdict line (diagnostics are in the reports).
-fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: bool) -> Outcome {
+fn run_one(
+    args: &RunArgs,
+    path: &Path,
+    stem: &str,
+    inputs: &[PathBuf],
+    (batch, memory): (bool, Option<stock::RunMemory>),
+) -> Outcome {
     let unusable = || Outcome::unusable(path.to_path_buf(), None);
     let Ok(mut job) = Job::load(args, path, batch) else {
         return unusable();
@@ -350,6 +377,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     };
     let opts = stock::SimOptions {
         snapshot_after: marks.clone(),
+        max_memory: memory,
         ..stock::SimOptions::default()
     };
     let bar = progress_bar(moves as u64, args.program.quiet || batch);
@@ -368,6 +396,9 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     );
     if let Some(b) = &bar {
         b.finish_and_clear();
+    }
+    if let Some(over) = &sim.over_budget {
+        return over_budget(path, over, batch);
     }
     let rerun = crate::rerun::Rerunner {
         job: &job,
@@ -415,6 +446,20 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     }
     let line = verdict_line(&name, &report, &job.loaded, &findings);
     crate::outcome::finish(path, line, items, against, findings.verdict, batch)
+}
+
+/// A run stopped over its memory budget: the message (the verdict line in a batch), exit 2.
+fn over_budget(path: &Path, over: &stock::OverBudget, batch: bool) -> Outcome {
+    let message = over.to_string();
+    if batch {
+        println!("{}: UNUSABLE — {message}", path.display());
+    } else {
+        diag::print_plain(
+            &format!("{}: {message}", path.display()),
+            "split the program, or give a larger --max-memory where the machine has the memory",
+        );
+    }
+    Outcome::unusable(path.to_path_buf(), Some(message))
 }
 
 /// Renders every report first, then writes them all to disk, then makes them visible: a

@@ -21,7 +21,13 @@
 //!   n/50 short G01 moves a pass, a sharp 35° insert;
 //! - `g73`: a G73-like pattern repeating cycle: an O0006-like profile (straights, a taper,
 //!   an R20 arc) swept n/8 times, each pass moved by (4, 2) mm / passes toward the part,
-//!   so that every pass leaves a new sliver along the whole profile (55° insert r0.4).
+//!   so that every pass leaves a new sliver along the whole profile (55° insert r0.4);
+//! - `threads`: an M18 × 1.5 thread 17.3 mm long cut as n/4 single passes (rapid in at
+//!   Z2, thread move, rapid out and back: a CAM's G32 passes, or G92's), each deeper than
+//!   the last by 0.6 mm / passes, at most 0.0005, on a Φ20 × 40 bar (60° threading tool);
+//! - `g76`: the same thread cut as G76 cuts it, flank infeed: pass k of n/4 at depth
+//!   0.92·√(k / passes) mm, moved back along Z by the depth × tan 30°, so that every pass
+//!   leaves a step on the trailing flank.
 
 use expander::{FeedId, Motion, Pt, Segment, Span};
 use std::time::Instant;
@@ -211,6 +217,35 @@ fn g73(n: usize) -> Vec<Segment> {
     p.segs
 }
 
+/// A thread's passes (see the module documentation): `flank` moves each pass back along Z
+/// by its depth × tan 30° (G76's flank infeed), else every pass is a radial plunge.
+fn threads(n: usize, flank: bool) -> Vec<Segment> {
+    let passes = (n / 4).max(1);
+    let mut p = Path {
+        at: Pt::new(2.0, 10.5),
+        segs: Vec::with_capacity(n + 4),
+    };
+    let tan30 = 30f64.to_radians().tan();
+    for k in 1..=passes {
+        let (depth, dz) = if flank {
+            let d = 0.92 * (k as f64 / passes as f64).sqrt();
+            (d, -d * tan30)
+        } else {
+            ((0.6 / passes as f64).min(0.0005) * k as f64, 0.0)
+        };
+        p.go(Motion::Rapid, 2.0 + dz, 8.5 - depth);
+        let from = p.at;
+        let to = Pt::new(-17.3 + dz, from.r);
+        let mut t = seg(Motion::Thread, from, to);
+        t.lead = 1.5;
+        p.segs.push(t);
+        p.at = to;
+        p.go(Motion::Rapid, to.z, 10.5);
+        p.go(Motion::Rapid, 2.0 + dz, 10.5);
+    }
+    p.segs
+}
+
 fn main() {
     let args: Vec<usize> = std::env::args()
         .skip(1)
@@ -246,12 +281,23 @@ fn main() {
     )]);
     let d55 = ToolTable::from_tools(vec![(1, Tool::DEFAULT)]);
     let big = Blank::bar(190.0, 110.0, 0.0, None).expect("bar");
+    let m18 = Blank::bar(20.0, 40.0, 0.0, None).expect("bar");
+    let thread60 = ToolTable::from_tools(vec![(
+        1,
+        Tool::Threading {
+            angle: 60.0,
+            tip_flat: 0.0,
+            side: stock::ThreadSide::Od,
+        },
+    )]);
     println!(
         "{:<9} {:>9} {:>9} {:>12} {:>9} {:>8} {:>12}",
         "pattern", "moves", "time s", "moves/s", "vertices", "crashes", "removed mm²"
     );
     for &n in &sizes {
-        let names = ["grooves", "wobble", "roughing", "taper", "contour", "g73"];
+        let names = [
+            "grooves", "wobble", "roughing", "taper", "contour", "g73", "threads", "g76",
+        ];
         for name in names {
             if only.as_deref().is_some_and(|o| o != name) {
                 continue;
@@ -263,7 +309,9 @@ fn main() {
                 "roughing" => (roughing(n, false), &v35, &blank),
                 "taper" => (roughing(n, true), &v35, &blank),
                 "contour" => (contour(n), &v35_sharp, &blank),
-                _ => (g73(n), &d55, &big),
+                "g73" => (g73(n), &d55, &big),
+                "threads" => (threads(n, false), &thread60, &m18),
+                _ => (threads(n, true), &thread60, &m18),
             };
             let opts = SimOptions {
                 feed_paths: std::env::var("FEED_PATHS").map_or(true, |v| v != "0"),

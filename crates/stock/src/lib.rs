@@ -15,6 +15,7 @@
 //! ```
 
 mod blank;
+mod budget;
 mod error;
 mod mounted;
 mod outline;
@@ -30,6 +31,7 @@ mod sweep;
 mod tools;
 
 pub use blank::Blank;
+pub use budget::{process_memory, Ledger, MemoryBudget, OverBudget, RunMemory};
 pub use error::StockError;
 pub use mounted::{chord_sweeps, float_sweep, move_path, Mounted, Mounts};
 pub use outline::{Outline, PastAxis};

@@ -183,6 +183,47 @@ impl IBox {
             && self.min[1] <= o.max[1]
             && o.min[1] <= self.max[1]
     }
+
+    /// The box of some shapes' outer rings (EMPTY for none).
+    pub(crate) fn of_shapes(shapes: &IShapes) -> Self {
+        Self::of(shapes.iter().filter_map(|s| s.first()).flatten().copied())
+    }
+
+    /// `self ∩ b` (empty when they miss each other: min above max).
+    pub(crate) fn intersection(&self, b: &Self) -> Self {
+        Self {
+            min: [self.min[0].max(b.min[0]), self.min[1].max(b.min[1])],
+            max: [self.max[0].min(b.max[0]), self.max[1].min(b.max[1])],
+        }
+    }
+
+    /// True when this box contains `inner`.
+    pub(crate) fn contains(&self, inner: &Self) -> bool {
+        self.min[0] <= inner.min[0]
+            && self.min[1] <= inner.min[1]
+            && self.max[0] >= inner.max[0]
+            && self.max[1] >= inner.max[1]
+    }
+
+    /// A box that holds this one less the box `core` (this box itself unless `core` spans
+    /// it across one axis and reaches past one end along the other).
+    pub(crate) fn outside(self, core: &Self) -> Self {
+        let b = self;
+        let mut out = b;
+        for axis in 0..2 {
+            let other = 1 - axis;
+            if core.is_empty() || core.min[other] > b.min[other] || core.max[other] < b.max[other] {
+                continue;
+            }
+            if core.max[axis] >= b.max[axis] {
+                out.max[axis] = out.max[axis].min(core.min[axis].max(b.min[axis]));
+            }
+            if core.min[axis] <= b.min[axis] {
+                out.min[axis] = out.min[axis].max(core.max[axis].min(b.max[axis]));
+            }
+        }
+        out
+    }
 }
 
 /// Twice the signed area of a grid ring, exact. This stays next to `i_overlay` rather than
@@ -216,6 +257,23 @@ pub(crate) fn orient(a: IPt, b: IPt, c: IPt) -> i64 {
     let d = |p: i32, q: i32| i128::from(i64::from(p) - i64::from(q));
     let v = d(b.x, a.x) * d(c.y, a.y) - d(b.y, a.y) * d(c.x, a.x);
     v.signum() as i64
+}
+
+/// True when `c` lies strictly right of the directed line `p → q`, exactly: the
+/// determinant in f64 (differences of i32 are exact, the products round by at most
+/// 2⁻⁵³ of their size), the exact [`orient`] only when it is too close to zero to tell.
+pub(crate) fn right_of(p: IPt, q: IPt, c: IPt) -> bool {
+    let d = |a: i32, b: i32| f64::from(a) - f64::from(b);
+    let (l, r) = (d(q.x, p.x) * d(c.y, p.y), d(q.y, p.y) * d(c.x, p.x));
+    let det = l - r;
+    let bound = (l.abs() + r.abs()) * 1e-15;
+    if det < -bound {
+        true
+    } else if det > bound {
+        false
+    } else {
+        orient(p, q, c) < 0
+    }
 }
 
 /// True when every point of `inner` is inside or on the convex counter-clockwise `outer`.
@@ -416,6 +474,86 @@ pub(crate) fn winding_step(p: IPt, a: IPt, b: IPt) -> i32 {
     }
 }
 
+/// Drops the vertices of `shapes` that lie within `tol` grid steps of the segment between
+/// their neighbours (projecting inside it) when no other vertex lies in the triangle they
+/// make with them: the kinks grid rounding leaves where the edges of many passes run along
+/// one line (a G76's flank infeed puts every pass's tip on the thread's leading flank: an
+/// 891-pass thread kept 21 735 such vertices, and every pass's boolean call met them all).
+/// A ring keeps at least three vertices. No edge can cross a triangle that holds no vertex
+/// (the rings do not cross each other), so the shapes stay valid; the region moves by at
+/// most `tol` grid steps where a vertex went. Vertices on the sides of `frame` (a tile's
+/// rectangle, where its neighbour's stock meets it) stay.
+pub(crate) fn drop_grid_kinks(shapes: &mut IShapes, tol: i64, frame: &IBox) {
+    let on_frame = |v: IPt| {
+        v.x == frame.min[0] || v.x == frame.max[0] || v.y == frame.min[1] || v.y == frame.max[1]
+    };
+    let near_line = |a: IPt, v: IPt, c: IPt| {
+        let w = |p: IPt, q: IPt| {
+            (
+                i128::from(q.x) - i128::from(p.x),
+                i128::from(q.y) - i128::from(p.y),
+            )
+        };
+        let (e, u, back) = (w(a, c), w(a, v), w(c, v));
+        let len2 = e.0 * e.0 + e.1 * e.1;
+        let cross = e.0 * u.1 - e.1 * u.0;
+        let ahead = e.0 * u.0 + e.1 * u.1 > 0 && e.0 * back.0 + e.1 * back.1 < 0;
+        len2 > 0 && ahead && cross * cross <= i128::from(tol * tol) * len2 && !on_frame(v)
+    };
+    let candidate = |r: &Vec<IPt>| {
+        let n = r.len();
+        n > 3 && (0..n).any(|k| near_line(r[(k + n - 1) % n], r[k], r[(k + 1) % n]))
+    };
+    if !shapes.iter().flatten().any(candidate) {
+        return;
+    }
+    let all: Vec<IPt> = shapes.iter().flatten().flatten().copied().collect();
+    let removable = |a: IPt, v: IPt, c: IPt| {
+        if !near_line(a, v, c) {
+            return false;
+        }
+        let b = IBox::of([a, v, c]);
+        let inside = |p: IPt| {
+            let (s1, s2, s3) = (orient(a, v, p), orient(v, c, p), orient(c, a, p));
+            (s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0)
+        };
+        !all.iter().any(|&p| {
+            p != a && p != v && p != c && b.overlaps(&IBox::of_segment(p, p)) && inside(p)
+        })
+    };
+    for ring in shapes.iter_mut().flatten().filter(|r| candidate(r)) {
+        let mut out: Vec<IPt> = Vec::with_capacity(ring.len());
+        for &v in ring.iter() {
+            out.push(v);
+            while out.len() >= 3 {
+                let l = out.len();
+                if removable(out[l - 3], out[l - 2], out[l - 1]) {
+                    out.remove(l - 2);
+                } else {
+                    break;
+                }
+            }
+        }
+        // the wrap-around: the first and last vertices against each other
+        loop {
+            let n = out.len();
+            if n < 4 {
+                break;
+            }
+            if removable(out[n - 1], out[0], out[1]) {
+                out.remove(0);
+            } else if removable(out[n - 2], out[n - 1], out[0]) {
+                out.pop();
+            } else {
+                break;
+            }
+        }
+        if out.len() >= 3 {
+            *ring = out;
+        }
+    }
+}
+
 /// A reusable boolean engine (keeps its buffers between calls).
 pub(crate) struct Engine {
     ov: Overlay<i32>,
@@ -423,16 +561,12 @@ pub(crate) struct Engine {
     frag: Overlay<i32>,
 }
 
-/// Calls with at least this many points use the fragment splitter. `i_overlay`'s automatic
-/// choice splits edges pair by pair (its list solver) below 2 000 edges; when a batch's
-/// sweeps run nearly along the stock's edges (a 665-pass G73 over an R6 arc, passes
-/// 0.009 mm apart, an insert in a PCLNR holder: 1 332 moves) that took 2.2 s in release,
-/// the fragment splitter 0.38 s. Measured neutral elsewhere (stock bench at 10⁴ and 10⁵,
-/// the 10⁵ zig-zag, O0006 r9999; same results bit for bit); 200 points was slower on the
-/// zig-zag, 1 500 kept half the gain. From 2 000 to 32 000 edges the automatic choice is
-/// its tree splitter, which took 513 ms to join the 274 tiles (20 691 points) of a
-/// 2·10⁴-move cutting zig-zag; the fragment splitter 8 ms. Hence every call, the unions
-/// and the float booleans of the measures included, chooses by [`solver_for`].
+/// Calls with at least this many points use the fragment splitter: below 2 000 edges
+/// `i_overlay`'s automatic choice splits edges pair by pair, which is slow when a batch's
+/// sweeps run nearly along the stock's edges, and from 2 000 to 32 000 its tree splitter was
+/// slow to join tiles (figures in PERFORMANCE.md, "The splitter's threshold"). Hence every
+/// call, the unions and the float booleans of the measures included, chooses by
+/// [`solver_for`].
 const FRAG_FROM: usize = 600;
 
 /// The edge splitter for a call of `points` points (see [`FRAG_FROM`]). The fragment
@@ -554,11 +688,22 @@ pub fn clean(rings: &[Vec<P>]) -> Vec<Shape> {
     )
 }
 
-/// Float boolean between two shape sets on a grid fitted to both (for measures).
+/// Most shapes a union joins in one call; more are joined half by half (see [`boolean`]).
+const UNION_CHUNK: usize = 64;
+
+/// Float boolean between two shape sets on a grid fitted to both (for measures). A union of
+/// more than [`UNION_CHUNK`] shapes is the union of its two halves' unions, each on a grid
+/// fitted to it: the boolean engine splits every edge at every other edge's end along the
+/// same line, so n overlapping bands with sides on one line (a thread's passes) made n²
+/// pieces in one call (5 000 passes: 5 GB), where the halves' unions stay small.
 pub(crate) fn boolean(a: &[Shape], b: &[Shape], rule: BoolOp) -> Vec<Shape> {
     let (a, b) = (finite_shapes(a), finite_shapes(b));
     if a.is_empty() && b.is_empty() {
         return Vec::new();
+    }
+    if rule == BoolOp::Union && a.len() + b.len() > UNION_CHUNK {
+        let all: Vec<Vec<Vec<P>>> = a.into_iter().chain(b).collect();
+        return to_shapes(union_by_halves(&all));
     }
     let rule = match rule {
         BoolOp::Xor => OverlayRule::Xor,
@@ -571,6 +716,20 @@ pub(crate) fn boolean(a: &[Shape], b: &[Shape], rule: BoolOp) -> Vec<Shape> {
         FloatOverlay::with_subj_and_clip_custom(&a, &b, Default::default(), solver_for(points))
             .overlay(rule, FillRule::NonZero),
     )
+}
+
+/// The union of `shapes` (finite), joined half by half down to [`UNION_CHUNK`] shapes a call.
+fn union_by_halves(shapes: &[Vec<Vec<P>>]) -> Vec<Vec<Vec<P>>> {
+    if shapes.len() <= UNION_CHUNK {
+        let points = shapes.iter().flatten().map(Vec::len).sum();
+        return FloatOverlay::with_subj_custom(shapes, Default::default(), solver_for(points))
+            .overlay(OverlayRule::Subject, FillRule::NonZero);
+    }
+    let (left, right) = shapes.split_at(shapes.len() / 2);
+    let (l, r) = (union_by_halves(left), union_by_halves(right));
+    let points = [&l, &r].into_iter().flatten().flatten().map(Vec::len).sum();
+    FloatOverlay::with_subj_and_clip_custom(&l, &r, Default::default(), solver_for(points))
+        .overlay(OverlayRule::Union, FillRule::NonZero)
 }
 
 /// The boolean operations offered on float shapes.
@@ -833,5 +992,163 @@ mod tests {
             }
             w
         }
+    }
+
+    /// What a box keeps when a core is cut out of it holds every unit cell of the box the
+    /// core does not cover (what a cut leaves is the closure of such cells), and it shrinks
+    /// when the core spans the box.
+    #[test]
+    fn the_box_outside_a_core_holds_what_the_cut_leaves() {
+        let mut rng = Rng(0x0b0c_5eed_0042);
+        let mut shrunk = 0;
+        for _ in 0..20_000 {
+            let (b, core) = (box_within(&mut rng, 5), box_within(&mut rng, 7));
+            let out = b.outside(&core);
+            // every unit cell of the box the core does not cover lies in what is kept
+            for x in b.min[0]..b.max[0] {
+                for y in b.min[1]..b.max[1] {
+                    let cut =
+                        core.min[0] <= x && x < core.max[0] && core.min[1] <= y && y < core.max[1];
+                    let kept =
+                        out.min[0] <= x && x < out.max[0] && out.min[1] <= y && y < out.max[1];
+                    assert!(
+                        cut || kept,
+                        "{b:?} less {core:?} gave {out:?}: cell ({x}, {y})"
+                    );
+                }
+            }
+            shrunk += usize::from(out != b);
+        }
+        assert!(shrunk > 2_000, "{shrunk}");
+    }
+
+    /// A union of more shapes than one call joins (joined half by half) is the union: 2 000
+    /// bands of a thread's passes, 0.0005 mm apart on sides of one line, join into the one
+    /// rectangle they cover; 300 scattered unit squares (some overlapping) cover what the
+    /// one-call union of each chunk covers, added up; a union with a clip set joins both.
+    #[test]
+    fn a_union_of_many_shapes_is_joined_by_halves() {
+        let rect = |z0: f64, z1: f64, r0: f64, r1: f64| Shape {
+            outer: vec![[z0, r0], [z1, r0], [z1, r1], [z0, r1]],
+            holes: vec![],
+        };
+        let bands: Vec<Shape> = (0..2000)
+            .map(|k| {
+                rect(
+                    -18.0,
+                    0.5,
+                    8.0 - 0.0005 * f64::from(k),
+                    9.0 - 0.0005 * f64::from(k),
+                )
+            })
+            .collect();
+        let u = boolean(&bands, &[], BoolOp::Union);
+        assert_eq!(u.len(), 1);
+        assert_eq!(u[0].outer.len(), 4, "{:?}", u[0].outer);
+        let top = 9.0;
+        let bottom = 8.0 - 0.0005 * 1999.0;
+        assert!((crate::area(&u) - 18.5 * (top - bottom)).abs() < 1e-6);
+        // scattered squares on a 20 x 20 lattice of pitch 0.9 (unit squares: neighbours
+        // overlap by 0.1 along both axes): the area the inclusion–exclusion gives
+        let squares: Vec<Shape> = (0..300)
+            .map(|k| {
+                let (i, j) = (f64::from(k % 20), f64::from(k / 20));
+                rect(0.9 * i, 0.9 * i + 1.0, 0.9 * j, 0.9 * j + 1.0)
+            })
+            .collect();
+        let u = boolean(&squares, &[], BoolOp::Union);
+        let (w, h) = (0.9 * 19.0 + 1.0, 0.9 * 14.0 + 1.0);
+        assert!(
+            (crate::area(&u) - w * h).abs() < 1e-6,
+            "{}",
+            crate::area(&u)
+        );
+        let (a, b) = squares.split_at(100);
+        let u2 = boolean(a, b, BoolOp::Union);
+        assert!((crate::area(&u2) - w * h).abs() < 1e-6);
+    }
+
+    /// A kink of a grid step goes, one of two stays, one with a vertex of another ring in
+    /// its triangle stays, and one on the frame stays; on random rings the dropped vertices
+    /// move the region by less than a step a vertex (area within the triangles dropped) and
+    /// no ring loses its orientation.
+    #[test]
+    fn grid_kinks_go_and_the_rings_stay_valid() {
+        let p = |x: i32, y: i32| IPt::new(x, y);
+        let frame = IBox {
+            min: [-1000, -1000],
+            max: [1000, 1000],
+        };
+        // a square whose bottom edge has a 1-step kink at (50, -1) and a 2-step one at (80, 2)
+        let mut shapes: IShapes = vec![vec![vec![
+            p(0, 0),
+            p(50, -1),
+            p(100, 0),
+            p(100, 100),
+            p(0, 100),
+        ]]];
+        drop_grid_kinks(&mut shapes, 1, &frame);
+        assert_eq!(
+            shapes[0][0],
+            vec![p(0, 0), p(100, 0), p(100, 100), p(0, 100)]
+        );
+        let mut shapes: IShapes = vec![vec![vec![
+            p(0, 0),
+            p(80, 2),
+            p(100, 0),
+            p(100, 100),
+            p(0, 100),
+        ]]];
+        drop_grid_kinks(&mut shapes, 1, &frame);
+        assert_eq!(shapes[0][0].len(), 5, "two steps off the line: kept");
+        // a hole's vertex in the kink's triangle keeps it
+        let mut shapes: IShapes = vec![vec![
+            vec![p(0, 0), p(50, -1), p(100, 0), p(100, 100), p(0, 100)],
+            vec![p(50, 0), p(40, 10), p(60, 10)],
+        ]];
+        drop_grid_kinks(&mut shapes, 1, &frame);
+        assert_eq!(shapes[0][0].len(), 5, "a vertex in the triangle: kept");
+        // on the frame's side: kept
+        let mut shapes: IShapes = vec![vec![vec![
+            p(0, 0),
+            p(50, -1),
+            p(100, 0),
+            p(100, 100),
+            p(0, 100),
+        ]]];
+        let edge = IBox {
+            min: [0, -1],
+            max: [100, 100],
+        };
+        drop_grid_kinks(&mut shapes, 1, &edge);
+        assert_eq!(shapes[0][0].len(), 5, "on the frame: kept");
+        // random rings: 400-700 points round a circle of radius 10 000, jittered by up to two
+        // steps (chords of ~100 steps: their sagitta is 0.1 step)
+        let mut rng = Rng(0x5eed_0f1c_5eed);
+        let mut dropped = 0;
+        for _ in 0..40 {
+            let n = 400 + rng.next(300).unsigned_abs() as usize;
+            let ring: Vec<IPt> = (0..n)
+                .map(|k| {
+                    let t = std::f64::consts::TAU * k as f64 / n as f64;
+                    let r = 10_000.0 + rng.next(2) as f64;
+                    p((r * t.cos()).round() as i32, (r * t.sin()).round() as i32)
+                })
+                .collect();
+            let before = ring_area2(&ring);
+            let mut shapes: IShapes = vec![vec![ring.clone()]];
+            drop_grid_kinks(&mut shapes, 1, &frame);
+            let after = &shapes[0][0];
+            assert!(after.len() >= 3 && after.iter().all(|q| ring.contains(q)));
+            assert!(ring_area2(after) > 0, "orientation kept");
+            // each dropped vertex takes a triangle of height <= 1 on its chord (<= 2 r)
+            let gone = (ring.len() - after.len()) as i128;
+            assert!(
+                (before - ring_area2(after)).abs() <= gone * 2 * 20_002,
+                "{ring:?}"
+            );
+            dropped += gone;
+        }
+        assert!(dropped > 0);
     }
 }

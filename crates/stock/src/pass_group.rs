@@ -531,7 +531,7 @@ mod tests {
         let mut b = SweepBuilder::new(&grid, clip, &tools, 0.001, 0.0005);
         b.set_pass_groups(pass_groups);
         for (i, s) in segs.iter().enumerate() {
-            b.push(i, s);
+            b.push(i, s, None);
         }
         b.flush_run();
         let items = b.take().items;
@@ -706,7 +706,7 @@ mod tests {
             let mut b = SweepBuilder::new(&grid, clip, &tools, 0.001, 0.0005);
             b.set_pass_groups(pass_groups);
             for (i, s) in segs.iter().enumerate() {
-                b.push(i, s);
+                b.push(i, s, None);
             }
             b.flush_run();
             b.take().items.iter().filter(|it| !it.rapid).count()

@@ -108,6 +108,17 @@ impl Snapshots {
         }
     }
 
+    /// About how many bytes the snapshots' stock and the snapshots taken hold.
+    pub(crate) fn bytes(&self) -> u64 {
+        let vertices: usize = std::iter::once(&self.stock)
+            .chain(self.out.iter().map(|(_, s)| s))
+            .flatten()
+            .flatten()
+            .map(Vec::len)
+            .sum();
+        (vertices * std::mem::size_of::<crate::overlay::IPt>()) as u64
+    }
+
     fn cut(&mut self, sweeps: &Sweeps, items: std::ops::Range<usize>, engine: &mut Engine) {
         if items.is_empty() {
             return;

@@ -1,0 +1,537 @@
+//! Epochs: the program is cut a slice of moves at a time into the stock's Z strips, the
+//! next slice's sweeps built while the workers cut this one's; an epoch ends at a part-off,
+//! and the pieces that fell are erased from what comes after.
+
+use super::batch::{Batch, Trimmed};
+use super::crash::Fragment;
+use super::tile::{Ctx, Node, Tile, Worker, MIN_TILE};
+use super::SimOptions;
+use crate::budget::{size, OverBudget, RunMemory};
+use crate::overlay::{Engine, Grid, IBox, IPt, IShape, IShapes};
+use crate::snapshot::Snapshots;
+use crate::sweep::{SweepBuilder, Sweeps};
+use crate::{Shape, ToolTable};
+use expander::{Motion, Segment};
+use geom::Rect;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// Target width of a Z strip, mm (strips are the units of parallel work; complex stock is
+/// split further into tiles).
+const STRIP_WIDTH: f64 = 30.0;
+/// Upper bound on the number of strips.
+const MAX_STRIPS: usize = 64;
+/// Segments handled between two progress reports (also bounds the sweeps held in memory).
+const EPOCH: usize = 32_768;
+/// Most part-offs after which the stock is looked at for pieces that fell.
+const MAX_SEPARATION_CHECKS: usize = 1_000;
+
+/// The stock of a run: Z strips, each a tree of tiles, cut by `threads` workers.
+pub(super) struct Strips {
+    /// The strips' Z bounds (grid units), one more than the strips.
+    bounds: Vec<i32>,
+    nodes: Vec<Mutex<Node>>,
+    /// Tiles no smaller than this (grid units) are never split.
+    min_tile: i64,
+    threads: usize,
+    /// The bar's left end (grid units), where the chuck holds it.
+    left_end: i32,
+}
+
+impl Strips {
+    /// The blank's `stock` in strips across the clip box `clip` (`bb`: the blank's box).
+    pub(super) fn new(
+        grid: &Grid,
+        clip: &Rect,
+        bb: &Rect,
+        stock: &IShapes,
+        engine: &mut Engine,
+    ) -> Self {
+        let IBox {
+            min: [x0, y0],
+            max: [x1, y1],
+        } = grid.box_to_int(clip);
+        let n_strips = ((clip.width() / STRIP_WIDTH).ceil() as usize).clamp(1, MAX_STRIPS);
+        let bounds: Vec<i32> = (0..=n_strips)
+            .map(|k| {
+                (i64::from(x0) + (i64::from(x1) - i64::from(x0)) * k as i64 / n_strips as i64)
+                    as i32
+            })
+            .collect();
+        let nodes = (0..n_strips)
+            .map(|k| {
+                let tile = IBox {
+                    min: [bounds[k], y0],
+                    max: [bounds[k + 1], y1],
+                };
+                let part = engine.intersection(stock, [&tile.corners()[..]]);
+                Mutex::new(Node::Leaf(Tile::new(tile, part)))
+            })
+            .collect();
+        let threads = std::thread::available_parallelism()
+            .map_or(1, |n| n.get())
+            .min(n_strips);
+        Self {
+            bounds,
+            nodes,
+            min_tile: (MIN_TILE / grid.step()) as i64,
+            threads,
+            left_end: grid.box_to_int(bb).min[0],
+        }
+    }
+
+    /// For each strip, the sweeps whose box reaches into it.
+    fn lists(&self, sweeps: &Sweeps) -> Vec<Vec<u32>> {
+        let bounds = &self.bounds;
+        let n_strips = bounds.len() - 1;
+        let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n_strips];
+        for (i, it) in sweeps.items.iter().enumerate() {
+            let lo = bounds
+                .partition_point(|&b| b <= it.bbox.min[0])
+                .saturating_sub(1);
+            let hi = bounds
+                .partition_point(|&b| b < it.bbox.max[0])
+                .min(n_strips);
+            for list in &mut lists[lo..hi.max(lo + 1).min(n_strips)] {
+                list.push(i as u32);
+            }
+        }
+        lists
+    }
+
+    /// Cuts an epoch's sweeps into the strips (`lists[k]`: the sweeps that reach strip `k`),
+    /// the workers taking strips in turn; the calling thread first does `meanwhile`
+    /// (building the next epoch), then joins them. Returns the rapid cuts found.
+    fn cut(
+        &self,
+        lists: &[Vec<u32>],
+        ctx: &Ctx,
+        engine: &mut Engine,
+        meanwhile: impl FnOnce(),
+    ) -> Vec<Fragment> {
+        let next_strip = AtomicUsize::new(0);
+        let work = |engine: &mut Engine| {
+            let mut worker = Worker {
+                engine,
+                frags: Vec::new(),
+                batch: Batch::default(),
+                trim: Trimmed::default(),
+                runs: Vec::new(),
+                calls: 0,
+            };
+            loop {
+                let k = next_strip.fetch_add(1, Ordering::Relaxed);
+                if k >= self.nodes.len() {
+                    break;
+                }
+                if lists[k].is_empty() {
+                    continue;
+                }
+                // a poisoned lock only means another worker panicked; its data is still whole
+                let mut strip = self.nodes[k].lock().unwrap_or_else(|e| e.into_inner());
+                strip.process(&lists[k], ctx, &mut worker);
+            }
+            worker.frags
+        };
+        let total: usize = lists.iter().map(Vec::len).sum();
+        if self.threads <= 1 || total < 256 {
+            meanwhile();
+            return work(engine);
+        }
+        std::thread::scope(|s| {
+            let handles: Vec<_> = (1..self.threads)
+                .map(|_| s.spawn(|| work(&mut Engine::new())))
+                .collect();
+            meanwhile();
+            let mut all = work(engine);
+            for h in handles {
+                // a worker that panicked lost its fragments; the strips stay consistent
+                all.extend(h.join().unwrap_or_default());
+            }
+            all
+        })
+    }
+
+    /// The stock as it stands: every strip's tiles joined.
+    pub(super) fn stock(&self, engine: &mut Engine) -> IShapes {
+        let mut parts: Vec<IShapes> = Vec::new();
+        for m in &self.nodes {
+            m.lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .gather(&mut parts);
+        }
+        engine.union(&parts)
+    }
+
+    /// The vertices of the stock and the tiles holding them.
+    fn census(&self) -> (usize, usize) {
+        self.nodes.iter().fold((0, 0), |(v, t), m| {
+            let (nv, nt) = m.lock().unwrap_or_else(|e| e.into_inner()).census();
+            (v + nv, t + nt)
+        })
+    }
+
+    /// Whether any stock lies right of `x` (grid units).
+    fn has_stock_right_of(&self, x: i32) -> bool {
+        self.nodes.iter().any(|m| {
+            m.lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .has_stock_right_of(x)
+        })
+    }
+
+    /// The stock of every tile, the strips taken apart.
+    pub(super) fn into_parts(self) -> Vec<IShapes> {
+        let mut parts: Vec<IShapes> = Vec::new();
+        for m in self.nodes {
+            m.into_inner()
+                .unwrap_or_else(|e| e.into_inner())
+                .collect(&mut parts);
+        }
+        parts
+    }
+}
+
+/// One epoch's sweeps, built (possibly while the workers cut the epoch before).
+struct Epoch {
+    /// The epoch holds the moves up to this index.
+    end: usize,
+    /// It ends with a part-off: the stock is looked at for pieces that fell before the
+    /// next epoch is built.
+    parting: bool,
+    sweeps: Sweeps,
+    /// A merged run of feeds was still open at its end (its cut comes in a later epoch).
+    open_run: bool,
+}
+
+impl Epoch {
+    /// The moves whose cuts are all in the tiles once this epoch is cut (`before`: those of
+    /// the epochs before): a merged run still open is not, its sweep comes when it ends.
+    fn cut_moves(&self, before: usize) -> usize {
+        if !self.open_run {
+            return self.end;
+        }
+        self.sweeps
+            .items
+            .iter()
+            .filter(|it| it.body.is_none())
+            .map(|it| it.seg + 1)
+            .max()
+            .unwrap_or(before)
+    }
+}
+
+/// What cutting the epochs found besides the stock.
+#[derive(Default)]
+pub(super) struct Cuts {
+    /// Every strip's rapid cuts.
+    pub(super) fragments: Vec<Fragment>,
+    /// Pieces parted off the held bar: (moves done when they fell, the pieces).
+    pub(super) fallen: Vec<(usize, IShapes)>,
+    /// (move, message).
+    pub(super) warnings: Vec<(usize, String)>,
+    /// The run went over its memory budget: it stopped there.
+    pub(super) over_budget: Option<OverBudget>,
+}
+
+/// What builds the epochs' sweeps in program order: the sweep builder, the snapshot counts
+/// it passes, and the program.
+pub(super) struct Epochs<'a> {
+    pub(super) builder: SweepBuilder<'a>,
+    pub(super) snapshots: Snapshots,
+    segments: &'a [Segment],
+    tools: &'a ToolTable,
+    /// The blank's bore radius (a blade parts off there).
+    bore: f64,
+    /// Most moves an epoch holds.
+    len: usize,
+    /// Part-offs after which the stock was looked at for pieces that fell.
+    checks: usize,
+}
+
+impl<'a> Epochs<'a> {
+    /// The epochs of `segments` over the blank `shapes` (`stock` on `grid`), sweeps clipped
+    /// to `clip`.
+    pub(super) fn new(
+        grid: &'a Grid,
+        clip: Rect,
+        tools: &'a ToolTable,
+        segments: &'a [Segment],
+        opts: &SimOptions,
+        (shapes, stock): (&[Shape], &IShapes),
+    ) -> Self {
+        let positive = |v: f64| v.is_finite() && v > 0.0;
+        let tol = if positive(opts.chord_tol) {
+            opts.chord_tol
+        } else {
+            0.001
+        };
+        let merge_tol = if positive(opts.merge_tol) {
+            opts.merge_tol
+        } else {
+            0.0
+        };
+        let mut builder = SweepBuilder::new(grid, clip, tools, tol, merge_tol);
+        builder.set_rear(crate::section::rear_tools(segments));
+        builder.set_feed_paths(opts.feed_paths);
+        let snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), stock);
+        // a group's passes are one sweep: only where snapshots are not taken move by move
+        builder.set_pass_groups(opts.pass_groups && !snapshots.exact());
+        Self {
+            builder,
+            // programs whose snapshots come from epoch ends get about 30 epochs (depending
+            // only on the program's length, so every report of a run reads the same removal)
+            len: if snapshots.exact() {
+                EPOCH
+            } else {
+                (segments.len() / 30).clamp(1024, EPOCH)
+            },
+            snapshots,
+            segments,
+            tools,
+            bore: bore(shapes),
+            checks: 0,
+        }
+    }
+
+    /// Cuts every epoch into `strips`, calling `progress` with the moves done after each.
+    pub(super) fn cut_all(
+        &mut self,
+        strips: &Strips,
+        (grid, engine): (&Grid, &mut Engine),
+        opts: &SimOptions,
+        progress: &mut dyn FnMut(usize),
+    ) -> Cuts {
+        let moves = self.segments.len();
+        let mut cuts = Cuts::default();
+        // moves whose cuts are all in the tiles at the last epoch end
+        let mut cut_moves = 0;
+        let stop = AtomicBool::new(false);
+        let mut next = Some(self.build(0, None));
+        while let Some(ep) = next.take() {
+            let lists = strips.lists(&ep.sweeps);
+            // the next epoch's sweeps are built while the workers cut this one's, unless this
+            // one ends with a part-off (the stock is looked at first: pieces that fell are
+            // erased from what comes after) or the snapshots are exact (their counts are read
+            // epoch by epoch; such programs fit one epoch anyway)
+            let ahead = !ep.parting && ep.end < moves && !self.snapshots.exact();
+            let ctx = Ctx {
+                grid,
+                min_tile: strips.min_tile,
+                sweeps: &ep.sweeps,
+                ring_air: opts.ring_air,
+                cover: opts.cover,
+                budget: opts.max_memory.as_ref(),
+                stop: &stop,
+            };
+            let mut found = strips.cut(&lists, &ctx, engine, || {
+                if ahead {
+                    next = Some(self.build(ep.end, None));
+                }
+            });
+            cuts.fragments.append(&mut found);
+            if let Some(memory) = &opts.max_memory {
+                let over = self.over_budget(memory, (&ctx, strips), &ep, &cuts, cut_moves);
+                if let Some(over) = over {
+                    cuts.over_budget = Some(over);
+                    progress(moves);
+                    break;
+                }
+            }
+            self.snapshots.epoch(&ep.sweeps, engine);
+            cut_moves = ep.cut_moves(cut_moves);
+            // (at the last epoch end the stock is the final part, which the caller has anyway)
+            if ep.end < moves {
+                self.snapshots
+                    .at_epoch_end(cut_moves, || strips.stock(engine));
+            }
+            let fallen = if ep.parting && ep.end < moves {
+                self.fallen_at(ep.end, strips, (grid, engine), &mut cuts)
+            } else {
+                None
+            };
+            progress(ep.end);
+            if next.is_none() && ep.end < moves {
+                next = Some(self.build(ep.end, fallen));
+            }
+        }
+        cuts
+    }
+
+    /// The run went over its budget (a worker saw it, or the run's thread sees it now): how
+    /// far it got (`cut_moves` before this epoch when a worker stopped it midway) and what
+    /// grew. First tells the batch's ledger what this run holds.
+    fn over_budget(
+        &self,
+        memory: &RunMemory,
+        (ctx, strips): (&Ctx, &Strips),
+        ep: &Epoch,
+        cuts: &Cuts,
+        cut_moves: usize,
+    ) -> Option<OverBudget> {
+        let parts = self.holdings(strips, &ep.sweeps, cuts);
+        let total: u64 = parts.iter().map(|p| p.0).sum();
+        memory.holds(total);
+        let held = memory
+            .over()
+            .or_else(|| ctx.stopped().then(|| memory.held()))?;
+        let moves = if ctx.stopped() { cut_moves } else { ep.end };
+        Some(OverBudget {
+            budget: memory.budget(),
+            held,
+            moves,
+            what: what_grew(parts, held),
+        })
+    }
+
+    /// What the run holds that grows with its input: the moves, the stock's outline, the
+    /// epoch's sweeps, the snapshots, the rapid cuts' pieces (bytes, in words).
+    fn holdings(&self, strips: &Strips, sweeps: &Sweeps, cuts: &Cuts) -> [(u64, String); 5] {
+        let (vertices, tiles) = strips.census();
+        let bytes = |n: usize, each: usize| (n * each) as u64;
+        let frags = cuts.fragments.len();
+        let moves = self.segments.len();
+        [
+            (
+                bytes(moves, std::mem::size_of::<Segment>()),
+                format!("the program's {moves} moves"),
+            ),
+            (
+                bytes(vertices, std::mem::size_of::<IPt>()),
+                format!("the stock's outline, {vertices} vertices in {tiles} tiles"),
+            ),
+            (sweeps.bytes(), "this epoch's sweeps".to_string()),
+            (self.snapshots.bytes(), "the stock snapshots".to_string()),
+            (
+                bytes(frags, std::mem::size_of::<Fragment>()),
+                format!("{frags} pieces of rapid cuts"),
+            ),
+        ]
+    }
+
+    /// After a part-off ending at move `end`: the pieces that fell (kept in `cuts`), as the
+    /// (move, section shapes) the builder erases; none when the blade has no stock beyond
+    /// it (a face to the centre parts nothing off) or no piece fell.
+    fn fallen_at(
+        &mut self,
+        end: usize,
+        strips: &Strips,
+        (grid, engine): (&Grid, &mut Engine),
+        cuts: &mut Cuts,
+    ) -> Option<(usize, Vec<Shape>)> {
+        let seg = &self.segments[end - 1];
+        if !strips.has_stock_right_of(grid.to_int([seg.from.z.max(seg.to.z), 0.0]).x) {
+            return None;
+        }
+        self.checks += 1;
+        if self.checks == MAX_SEPARATION_CHECKS {
+            cuts.warnings.push((
+                end - 1,
+                format!("{MAX_SEPARATION_CHECKS} part-offs: pieces parted off after this move stay in the stock"),
+            ));
+        }
+        let off = fallen_pieces(strips.stock(engine), strips.left_end)?;
+        let erase = (end - 1, grid.shapes_to_float(&off));
+        cuts.fallen.push((end, off));
+        Some(erase)
+    }
+
+    /// Builds the sweeps of the epoch starting at move `start` (ended at the first part-off
+    /// while part-offs are looked at), after erasing the pieces `fallen` from what later
+    /// sweeps see.
+    fn build(&mut self, start: usize, fallen: Option<(usize, Vec<Shape>)>) -> Epoch {
+        let (segments, tools, bore) = (self.segments, self.tools, self.bore);
+        let looking = self.checks < MAX_SEPARATION_CHECKS;
+        let mut end = (start + self.len).min(segments.len());
+        // a part-off may leave a piece: its epoch ends with it, so that the stock can be
+        // looked at before the next move
+        if let Some(k) = segments[start..end]
+            .iter()
+            .position(|s| looking && parts_off(s, tools, bore))
+        {
+            end = start + k + 1;
+        }
+        if let Some((idx, pieces)) = fallen {
+            self.builder.erase(idx, &pieces);
+        }
+        for (k, seg) in segments[start..end].iter().enumerate() {
+            self.builder
+                .push(start + k, seg, segments.get(start + k + 1));
+            self.snapshots.after_push(start + k + 1, &mut self.builder);
+        }
+        let parting = end > start && looking && parts_off(&segments[end - 1], tools, bore);
+        if end == segments.len() || parting {
+            self.builder.flush_run();
+        }
+        Epoch {
+            end,
+            parting,
+            sweeps: self.builder.take(),
+            open_run: self.builder.has_open_run(),
+        }
+    }
+}
+
+/// A tube's bore radius, 0 for a bar: a blade parts a tube off when it reaches the bore,
+/// not the axis.
+fn bore(shapes: &[Shape]) -> f64 {
+    shapes
+        .iter()
+        .flat_map(|s| s.outer.iter().chain(s.holes.iter().flatten()))
+        .map(|p| p[1])
+        .fold(f64::INFINITY, f64::min)
+        .max(0.0)
+}
+
+/// A part-off: a feed of a blade (a grooving tool, or a grooving cycle's) inward to the
+/// axis or into the blank's bore (`bore`: its inner radius, 0 for a bar); it may leave a
+/// piece that no longer reaches the held bar. (A turning tool facing to the centre leaves,
+/// between passes, only a pip at the axis that its next pass cuts: no part.)
+fn parts_off(seg: &Segment, tools: &ToolTable, bore: f64) -> bool {
+    seg.motion == Motion::Feed
+        && seg.to.r <= bore + 1e-9
+        && seg.from.r > seg.to.r
+        && tools.blade_cuts(seg)
+}
+
+/// The pieces of `stock` that no longer reach the bar's left end `left_end` (grid units),
+/// where the chuck holds it: parted off, fallen. None while the held bar is the only piece,
+/// or when no piece reaches the left end (nothing to tell held from fallen).
+fn fallen_pieces(stock: IShapes, left_end: i32) -> Option<IShapes> {
+    let held = |s: &IShape| {
+        s.first()
+            .is_some_and(|outer| outer.iter().any(|p| p.x <= left_end + 1))
+    };
+    if stock.len() < 2 || !stock.iter().any(held) {
+        return None;
+    }
+    let off: IShapes = stock.into_iter().filter(|s| !held(s)).collect();
+    (!off.is_empty()).then_some(off)
+}
+
+/// What grew, in words: the run's holdings largest first, and whether they are most of
+/// what the process held (`held` bytes) or the rest was held elsewhere.
+fn what_grew(mut parts: [(u64, String); 5], held: u64) -> String {
+    parts.sort_by_key(|p| std::cmp::Reverse(p.0));
+    let total: u64 = parts.iter().map(|p| p.0).sum();
+    let list: Vec<String> = parts
+        .iter()
+        .filter(|p| p.0 >= 1024)
+        .take(3)
+        .map(|(bytes, what)| format!("{what} ({})", size(*bytes)))
+        .collect();
+    let list = if list.is_empty() {
+        vec!["nothing over 1 KiB".to_string()]
+    } else {
+        list
+    };
+    if total * 2 >= held {
+        format!("what grew is this run's {}", list.join(", "))
+    } else {
+        format!(
+            "this run's removal held {} of it ({}); the rest is held by the reading of the program, other programs of the batch or the process itself",
+            size(total),
+            list.join(", ")
+        )
+    }
+}
