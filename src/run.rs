@@ -368,67 +368,15 @@ fn run_one(
     input::print_diagnostics(&job.loaded, args.program.quiet || batch);
     let targets = outputs(args, stem);
     let html = targets.iter().any(|(_, kind)| *kind == "html");
-    let moves = job.loaded.toolpath.segments.len();
-    // the HTML player's snapshots cost a second cut of every sweep: only for an HTML report
-    let marks = if html {
-        crate::report::snapshot_marks(moves)
-    } else {
-        vec![]
-    };
-    let opts = stock::SimOptions {
-        snapshot_after: marks.clone(),
-        max_memory: memory,
-        ..stock::SimOptions::default()
-    };
-    let bar = progress_bar(moves as u64, args.program.quiet || batch);
-    let mut tick = |done: usize| {
-        if let Some(b) = &bar {
-            b.set_position(done as u64);
-        }
-    };
-    let settings = job.settings(args.tol);
-    let (mut sim, mut findings) = analysis::pipeline(
-        &job.loaded.toolpath,
-        &job.intents,
-        &settings,
-        &opts,
-        &mut tick,
-    );
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
+    let (mut sim, findings) = simulate(args, &job, html, memory, args.program.quiet || batch);
     if let Some(over) = &sim.over_budget {
         return over_budget(path, over, batch);
     }
-    let rerun = crate::rerun::Rerunner {
-        job: &job,
-        tol: args.tol,
-    };
-    analysis::diagnose::diagnose(&mut findings, &job.loaded.toolpath, &settings, &rerun);
-    // the player does not show the stock the intents were read against (the epoch
-    // snapshots of a long program are labelled with their own counts, not the marks)
-    let stock_marks = analysis::stock_marks(&job.loaded.toolpath, &job.tools);
-    sim.snapshots
-        .retain(|(k, _)| marks.contains(k) || !stock_marks.contains(k));
     let name = path.file_name().map_or_else(
         || job.loaded.source.name.clone(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let mut report = crate::report::report(
-        &crate::report::Run {
-            loaded: &job.loaded,
-            name: &name,
-            blank: &job.blank,
-            tools: &job.tools,
-            sim: &sim,
-            fixture: job.fixture.as_ref(),
-            tol: args.tol,
-        },
-        &findings,
-    );
-    if html {
-        report.snapshots = crate::report::snapshots(&job.blank, moves, &sim);
-    }
+    let mut report = build_report(&job, &name, &mut sim, &findings, args.tol, html);
     let places = (!batch).then(|| Places::of(&job.loaded, &findings));
     let Ok(against) = crate::baseline::against(args, stem, &report, &job) else {
         return unusable();
@@ -446,6 +394,88 @@ fn run_one(
     }
     let line = verdict_line(&name, &report, &job.loaded, &findings);
     crate::outcome::finish(path, line, items, against, findings.verdict, batch)
+}
+
+/// The removal and the analysis (with a progress bar unless `quiet`), then the diagnosis
+/// of what they found; the HTML player's snapshots only for an HTML report (they cost a
+/// second cut of every sweep). A run over its memory budget is returned undiagnosed.
+fn simulate(
+    args: &RunArgs,
+    job: &Job,
+    html: bool,
+    memory: Option<stock::RunMemory>,
+    quiet: bool,
+) -> (stock::Simulation, analysis::Findings) {
+    let moves = job.loaded.toolpath.segments.len();
+    let opts = stock::SimOptions {
+        snapshot_after: if html {
+            crate::report::snapshot_marks(moves)
+        } else {
+            vec![]
+        },
+        max_memory: memory,
+        ..stock::SimOptions::default()
+    };
+    let bar = progress_bar(moves as u64, quiet);
+    let mut tick = |done: usize| {
+        if let Some(b) = &bar {
+            b.set_position(done as u64);
+        }
+    };
+    let settings = job.settings(args.tol);
+    let (sim, mut findings) = analysis::pipeline(
+        &job.loaded.toolpath,
+        &job.intents,
+        &settings,
+        &opts,
+        &mut tick,
+    );
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    if sim.over_budget.is_none() {
+        let rerun = crate::rerun::Rerunner { job, tol: args.tol };
+        analysis::diagnose::diagnose(&mut findings, &job.loaded.toolpath, &settings, &rerun);
+    }
+    (sim, findings)
+}
+
+/// The report of a run (its snapshots for an HTML report; the player does not show the
+/// stock the intents were read against: the epoch snapshots of a long program are
+/// labelled with their own counts, not the marks).
+fn build_report(
+    job: &Job,
+    name: &str,
+    sim: &mut stock::Simulation,
+    findings: &analysis::Findings,
+    tol: f64,
+    html: bool,
+) -> render::Report {
+    let moves = job.loaded.toolpath.segments.len();
+    let marks = if html {
+        crate::report::snapshot_marks(moves)
+    } else {
+        vec![]
+    };
+    let stock_marks = analysis::stock_marks(&job.loaded.toolpath, &job.tools);
+    sim.snapshots
+        .retain(|(k, _)| marks.contains(k) || !stock_marks.contains(k));
+    let mut report = crate::report::report(
+        &crate::report::Run {
+            loaded: &job.loaded,
+            name,
+            blank: &job.blank,
+            tools: &job.tools,
+            sim,
+            fixture: job.fixture.as_ref(),
+            tol,
+        },
+        findings,
+    );
+    if html {
+        report.snapshots = crate::report::snapshots(&job.blank, moves, sim);
+    }
+    report
 }
 
 /// A run stopped over its memory budget: the message (the verdict line in a batch), exit 2.
