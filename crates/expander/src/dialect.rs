@@ -32,6 +32,9 @@ pub(crate) struct Foreign {
 /// The canonical (system A, or internal) code of the written code `tenths` under `control`.
 /// Codes not listed in §2.1 mean the same in every system and pass unchanged.
 pub(crate) fn canonical(control: Control, tenths: i32) -> Result<i32, Foreign> {
+    if control == Control::LinuxCnc {
+        return crate::linuxcnc::canonical(tenths);
+    }
     match control.system() {
         GCodeSystem::A => system_a(tenths),
         GCodeSystem::B => system_b(tenths),

@@ -294,7 +294,11 @@ impl Interp<'_> {
             MotionMode::Thread if to.dist(self.pos) < 1e-12 => Ok(()),
             MotionMode::Line => self.feed_line(b.span, to, corner),
             MotionMode::Thread => {
-                let lead = self.feed * self.unit();
+                let lead = if self.machine.control == crate::Control::LinuxCnc {
+                    self.thread_lead(b, used)?
+                } else {
+                    self.feed * self.unit()
+                };
                 self.thread_phase = crate::cycles::thread_start_angle(used)? / 360.0;
                 let pushed = self.push(b, Motion::Thread, to, None, lead);
                 self.thread_phase = 0.0;

@@ -188,6 +188,10 @@ impl Reader<'_> {
             };
         }
         let end = self.skip_line();
+        if self.options.macros == Some(macro_b::Dialect::LinuxCnc) {
+            // LinuxCNC's own comment (G-code overview, "Comments")
+            return;
+        }
         self.note(
             start.to(end),
             "text after ';' read as a comment (a Mach3/Fagor/Siemens-style comment: a FANUC control would read it as code); write it as ( … )",
