@@ -294,11 +294,16 @@ impl Interp<'_> {
             MotionMode::Thread if to.dist(self.pos) < 1e-12 => Ok(()),
             MotionMode::Line => self.feed_line(b.span, to, corner),
             MotionMode::Thread => {
-                let lead = if self.machine.control == crate::Control::LinuxCnc {
-                    self.thread_lead(b, used)?
-                } else {
-                    self.feed * self.unit()
-                };
+                if self.machine.control == crate::Control::LinuxCnc {
+                    // G33 K: the lead is K and the feed per revolution; F stays the feed
+                    let lead = self.thread_lead(b, used)?;
+                    let per_rev = lead / self.unit();
+                    let feed = std::mem::replace(&mut self.feed, per_rev);
+                    let pushed = self.push(b, Motion::Thread, to, None, lead);
+                    self.feed = feed;
+                    return pushed;
+                }
+                let lead = self.feed * self.unit();
                 self.thread_phase = crate::cycles::thread_start_angle(used)? / 360.0;
                 let pushed = self.push(b, Motion::Thread, to, None, lead);
                 self.thread_phase = 0.0;
