@@ -507,7 +507,7 @@ impl Interp<'_> {
 /// (issue 31: generated `LinuxCNC` lathe programs start `G18 G7 G90`).
 fn unknown_code_help(t: i32) -> &'static str {
     if t == G07 {
-        "G7 selects diameter mode in LinuxCNC (rs274ngc): LinuxCNC programs are not supported (latsim reads X as a diameter by default; --x-mode radius for radii)"
+        "G7 selects diameter mode in LinuxCNC (rs274ngc): run LinuxCNC programs with --control linuxcnc (under FANUC, GSK and Haas X is a diameter by default; --x-mode radius for radii)"
     } else {
         "see spec/language.md and spec/dialects.md §6.1 for the supported codes"
     }
