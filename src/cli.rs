@@ -123,7 +123,7 @@ pub(crate) enum ControlArg {
     /// Haas lathe (system A plus Haas one-block cycles)
     #[value(name = "haas")]
     Haas,
-    /// LinuxCNC lathe (rs274ngc: G7/G8, T M6 G43, O-word subroutines)
+    /// `LinuxCNC` lathe (rs274ngc: G7/G8, T M6 G43, O-word subroutines)
     #[value(name = "linuxcnc")]
     LinuxCnc,
 }

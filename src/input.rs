@@ -244,8 +244,8 @@ pub(crate) fn load_program(
     };
     // LinuxCNC switches between G7 and G8 in the program: its interpreter doubles a radius
     // X block by block, the reader reads X as written
-    let x_radius = machine.x_mode == expander::XMode::Radius
-        && machine.control != expander::Control::LinuxCnc;
+    let x_radius =
+        machine.x_mode == expander::XMode::Radius && machine.control != expander::Control::LinuxCnc;
     let read = gcode::ReadOptions {
         decimal_comma: args.decimal_comma,
         macros,

@@ -1,6 +1,6 @@
-//! LinuxCNC lathe programs under `--control linuxcnc` (issue 36, docs/linuxcnc.md): each
+//! `LinuxCNC` lathe programs under `--control linuxcnc` (issue 36, docs/linuxcnc.md): each
 //! construct on a program of our own, against hand-computed paths or the same part written
-//! for FANUC. LinuxCNC's own nc_files were tried by hand (docs/linuxcnc.md), not copied.
+//! for FANUC. `LinuxCNC`'s own `nc_files` were tried by hand (docs/linuxcnc.md), not copied.
 
 mod common;
 use common::{asset, latsim, report_of, temp_program};
@@ -97,7 +97,7 @@ fn t_m6_loads_the_tool_and_g43_h_picks_the_offset() {
     assert!(err.contains("M6 without a tool prepared"), "{err}");
 }
 
-/// The same shoulder finished with G42.1 D0.8 L2 (LinuxCNC orientation 2) and G90.1
+/// The same shoulder finished with G42.1 D0.8 L2 (`LinuxCNC` orientation 2) and G90.1
 /// absolute arc centres, and with FANUC's G42 and tool 2 of the table (r0.4, tip 3): the
 /// same compensated path.
 #[test]
@@ -114,10 +114,18 @@ fn dynamic_compensation_with_linuxcnc_orientation_equals_fanuc_tip_3() {
 
 #[test]
 fn g33_k_is_the_lead_and_g4_p_is_seconds() {
-    let prog = "G7 G21 G95 T4 M6\nG97 S600 M3\nG0 X32 Z4\nX29.4\nG33 Z-18 K1.5\nG0 X32\nG4 P2\nM2\n";
+    let prog =
+        "G7 G21 G95 T4 M6\nG97 S600 M3\nG0 X32 Z4\nX29.4\nG33 Z-18 K1.5\nG0 X32\nG4 P2\nM2\n";
     let r = report_of(
         prog,
-        &["--control", "linuxcnc", "--stock", "30x40", "--tools", asset("corpus/tools/shop.toml").to_str().unwrap()],
+        &[
+            "--control",
+            "linuxcnc",
+            "--stock",
+            "30x40",
+            "--tools",
+            asset("corpus/tools/shop.toml").to_str().unwrap(),
+        ],
     );
     assert_eq!(r["verdict"], "clean", "{r}");
     let p = path(prog, "linuxcnc");
@@ -155,6 +163,10 @@ fn linuxcnc_codes_latsim_does_not_run_are_alarms_at_their_word() {
         assert!(err.contains("LS-NOT-IMPLEMENTED"), "{err}");
         assert!(err.contains(&format!("p.ngc:2:{col}")), "{word}: {err}");
     }
+    // U and W are axes of their own in LinuxCNC
+    let (code, err) = check("G7 G0 X30 Z2\nG0 U5\nM2\n");
+    assert_eq!(code, 1);
+    assert!(err.contains("axis of its own in LinuxCNC"), "{err}");
     // a code LinuxCNC does not have is named as such
     let (code, err) = check("G7 G50 S2000\nM2\n");
     assert_eq!(code, 1);
@@ -162,5 +174,9 @@ fn linuxcnc_codes_latsim_does_not_run_are_alarms_at_their_word() {
     // and LinuxCNC's G7 stays an alarm under FANUC
     let (_dir, p) = temp_program("p.nc", b"G7 G0 X30 Z2\nM30\n");
     let out = latsim(&["check", p.to_str().unwrap(), "--control", "fanuc-a"]);
-    assert!(out.stderr.contains("diameter mode in LinuxCNC"), "{}", out.stderr);
+    assert!(
+        out.stderr.contains("diameter mode in LinuxCNC"),
+        "{}",
+        out.stderr
+    );
 }

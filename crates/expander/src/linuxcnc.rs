@@ -1,15 +1,15 @@
-//! LinuxCNC (rs274ngc) G codes → the interpreter's canonical meanings (docs/linuxcnc.md).
+//! `LinuxCNC` (rs274ngc) G codes → the interpreter's canonical meanings (docs/linuxcnc.md).
 //! Its distance, feed and thread codes are those of FANUC system B (`G90`/`G91`, `G94`/`G95`,
 //! `G33`, `G92` as the coordinate setting); what system B has no code for gets an internal
-//! number below. A LinuxCNC code latsim does not run is named by [`unsupported`] (an alarm
-//! at its word, never a skip); a code LinuxCNC does not have is an alarm naming LinuxCNC.
+//! number below. A `LinuxCNC` code latsim does not run is named by [`unsupported`] (an alarm
+//! at its word, never a skip); a code `LinuxCNC` does not have is an alarm naming `LinuxCNC`.
 
 use crate::codes::*;
 use crate::dialect::{self, Foreign};
 
 /// `G7`: X is a diameter from this block on.
 pub(crate) const X_DIAMETER: i32 = -1070;
-/// `G8`: X is a radius from this block on (LinuxCNC's power-on mode).
+/// `G8`: X is a radius from this block on (`LinuxCNC`'s power-on mode).
 pub(crate) const X_RADIUS: i32 = -1080;
 /// `G43 [H]`: the tool length offset of the loaded tool (or of tool H).
 pub(crate) const LENGTH_OFFSET: i32 = -1430;
@@ -25,16 +25,16 @@ pub(crate) const ARC_ABSOLUTE: i32 = -1901;
 pub(crate) const ARC_INCREMENTAL: i32 = -1911;
 /// `G61`, `G61.1`, `G64 [P Q]`: path blending; no effect on the section.
 pub(crate) const PATH_CONTROL: i32 = -1640;
-/// `G70 Q X Z D E P`: LinuxCNC's finishing cycle over the profile in O-sub Q.
+/// `G70 Q X Z D E P`: `LinuxCNC`'s finishing cycle over the profile in O-sub Q.
 pub(crate) const CYCLE_G70: i32 = -1700;
-/// `G71`, `G71.1`, `G71.2`: LinuxCNC's roughing along Z (`+ 0/1/2`).
+/// `G71`, `G71.1`, `G71.2`: `LinuxCNC`'s roughing along Z (`+ 0/1/2`).
 pub(crate) const CYCLE_G71: i32 = -1710;
-/// `G72`, `G72.1`, `G72.2`: LinuxCNC's roughing along X (`+ 0/1/2`).
+/// `G72`, `G72.1`, `G72.2`: `LinuxCNC`'s roughing along X (`+ 0/1/2`).
 pub(crate) const CYCLE_G72: i32 = -1720;
-/// `G76 P Z I J R K Q H E L`: LinuxCNC's one-line threading cycle.
+/// `G76 P Z I J R K Q H E L`: `LinuxCNC`'s one-line threading cycle.
 pub(crate) const CYCLE_G76: i32 = -1760;
 
-/// The canonical code of LinuxCNC's `tenths`; a code LinuxCNC does not have is an error.
+/// The canonical code of `LinuxCNC`'s `tenths`; a code `LinuxCNC` does not have is an error.
 pub(crate) fn canonical(t: i32) -> Result<i32, Foreign> {
     Ok(match t {
         70 => X_DIAMETER,
@@ -58,8 +58,8 @@ pub(crate) fn canonical(t: i32) -> Result<i32, Foreign> {
         950 => G99,
         980 => dialect::DRILL_RETURN_INITIAL,
         990 => dialect::DRILL_RETURN_R,
-        0 | 10 | 20 | 30 | 40 | 170 | 180 | 190 | 200 | 210 | 280 | 400 | 410 | 420 | 520
-        | 530 | 800 | 960 | 970 => t,
+        0 | 10 | 20 | 30 | 40 | 170 | 180 | 190 | 200 | 210 | 280 | 400 | 410 | 420 | 520 | 530
+        | 800 | 960 | 970 => t,
         540..=590 if t % 10 == 0 => t,
         t if unsupported(t).is_some() => t,
         t => {
@@ -73,7 +73,7 @@ pub(crate) fn canonical(t: i32) -> Result<i32, Foreign> {
     })
 }
 
-/// Why latsim does not run the LinuxCNC code `t` (canonical): named at its word.
+/// Why latsim does not run the `LinuxCNC` code `t` (canonical): named at its word.
 pub(crate) fn unsupported(t: i32) -> Option<&'static str> {
     Some(match t {
         50..=53 => "G5, G5.1, G5.2, G5.3 (splines and NURBS) are not run by latsim",

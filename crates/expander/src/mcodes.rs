@@ -69,7 +69,7 @@ pub(crate) fn machine_function(control: Control, m: u32) -> Option<(&'static str
             _ => Option::None,
         },
         Control::LinuxCnc => match m {
-            7 | 8 | 9 => Some(("coolant mist / flood / off", None)),
+            7..=9 => Some(("coolant mist / flood / off", None)),
             48..=53 => Some(("override and feed hold controls", None)),
             _ => Option::None,
         },

@@ -9,7 +9,7 @@ pub enum Dialect {
     /// Haas: `WH` for `WHILE`, `IF … THEN` with an NC block, `#3000` alarms as 1000 + n,
     /// `#10000`+n aliases of the common variables.
     Haas,
-    /// LinuxCNC (rs274ngc): `;` comments, o-words and named parameters `#<name>`; its
+    /// `LinuxCNC` (rs274ngc): `;` comments, o-words and named parameters `#<name>`; its
     /// expressions are macro B's (docs/linuxcnc.md).
     LinuxCnc,
 }
@@ -97,7 +97,7 @@ impl Options {
         }
     }
 
-    /// LinuxCNC rules: `MOD` (its modulo operator), FANUC's otherwise.
+    /// `LinuxCNC` rules: `MOD` (its modulo operator), FANUC's otherwise.
     pub fn linuxcnc() -> Self {
         Self {
             dialect: Dialect::LinuxCnc,

@@ -17,7 +17,12 @@ impl Interp<'_> {
                     self.out.dwell_s += p.value.max(0.0);
                     Ok(())
                 }
-                None => Err(alarm(g.span, "LS-VALUE", "G4 without a time", "write G4 P<seconds>")),
+                None => Err(alarm(
+                    g.span,
+                    "LS-VALUE",
+                    "G4 without a time",
+                    "write G4 P<seconds>",
+                )),
             };
         }
         let x = used.take('X').or_else(|| used.take('U'));

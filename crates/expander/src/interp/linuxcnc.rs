@@ -1,8 +1,8 @@
-//! What LinuxCNC (rs274ngc) reads differently from FANUC (docs/linuxcnc.md): the modal G7/G8
+//! What `LinuxCNC` (rs274ngc) reads differently from FANUC (docs/linuxcnc.md): the modal G7/G8
 //! diameter and radius mode and G90.1 absolute arc centres (applied to a copy of the block
 //! before it runs, so everything after reads diameters and offsets as usual), `T n` that
 //! only prepares the tool and `M6` that changes it, `G43 [H]` / `G49`, `G41.1`/`G42.1 D L`
-//! with LinuxCNC's orientation numbers, `G96 D` (the speed clamp) and `G33 K` (the lead).
+//! with `LinuxCNC`'s orientation numbers, `G96 D` (the speed clamp) and `G33 K` (the lead).
 
 use super::{alarm, Interp, MotionMode};
 use crate::codes::*;
@@ -15,8 +15,8 @@ use gcode::{Block, Word};
 /// The offset number latsim keeps the nose of `G41.1`/`G42.1` under (no tool table has it).
 pub(crate) const DYNAMIC_OFFSET: u32 = 1_000_000;
 
-/// FANUC's imaginary tip number (spec/tnrc.md) of LinuxCNC's lathe tool orientation `l`.
-/// LinuxCNC's `latheorigin_x/z` (interp_queue.cc) put the tip of orientation 1 at (−X, +Z)
+/// FANUC's imaginary tip number (spec/tnrc.md) of `LinuxCNC`'s lathe tool orientation `l`.
+/// `LinuxCNC`'s `latheorigin_x/z` (`interp_queue.cc`) put the tip of orientation 1 at (−X, +Z)
 /// from the nose centre, 2 at (−X, −Z), 3 at (+X, −Z), 4 at (+X, +Z), 6 at −X, 8 at +X:
 /// FANUC's 4, 3, 2, 1, 8, 6. 5, 7, 9 and 0 are the same in both.
 pub(crate) fn fanuc_tip(l: u8) -> u8 {
@@ -32,7 +32,7 @@ pub(crate) fn fanuc_tip(l: u8) -> u8 {
 }
 
 impl Interp<'_> {
-    /// The block as LinuxCNC means it, when that differs from how it is written: G7/G8 in
+    /// The block as `LinuxCNC` means it, when that differs from how it is written: G7/G8 in
     /// the block set the mode first; under G8 every X is a radius, doubled here; under G90.1
     /// an arc's I and K become offsets from the start. `None`: the block as written.
     pub(super) fn linuxcnc_block(&mut self, b: &Block) -> Option<Block> {
@@ -74,7 +74,7 @@ impl Interp<'_> {
         own.unwrap_or(matches!(self.motion, MotionMode::Cw | MotionMode::Ccw))
     }
 
-    /// The LinuxCNC modes of `set_mode`: `Ok(false)` when `t` is none of them.
+    /// The `LinuxCNC` modes of `set_mode`: `Ok(false)` when `t` is none of them.
     pub(super) fn linuxcnc_mode(
         &mut self,
         t: i32,
@@ -91,7 +91,11 @@ impl Interp<'_> {
             lc::LENGTH_OFFSET => {
                 // M6 in the same block loads its tool first (LinuxCNC's order of execution)
                 let m6 = b.words.iter().any(|w| w.letter == 'M' && w.value == 6.0);
-                let prepared = b.words.iter().find(|w| w.letter == 'T').map(|t| t.value as u32);
+                let prepared = b
+                    .words
+                    .iter()
+                    .find(|w| w.letter == 'T')
+                    .map(|t| t.value as u32);
                 let loaded = match (m6, prepared.or(self.pending_tool)) {
                     (true, Some(t)) => t,
                     _ => self.tool,
@@ -138,7 +142,7 @@ impl Interp<'_> {
         Ok(())
     }
 
-    /// `T n`: LinuxCNC prepares tool n; `M6` loads it.
+    /// `T n`: `LinuxCNC` prepares tool n; `M6` loads it.
     pub(super) fn prepare_tool(&mut self, t: &Word) -> Result<(), Diagnostic> {
         if !whole_in(t, 0.0, 99_999.0) {
             return Err(alarm(
@@ -171,7 +175,7 @@ impl Interp<'_> {
         Ok(())
     }
 
-    /// `G41.1`/`G42.1 D L`: the nose of diameter D and orientation L (LinuxCNC numbers,
+    /// `G41.1`/`G42.1 D L`: the nose of diameter D and orientation L (`LinuxCNC` numbers,
     /// `fanuc_tip`) compensates from this block on.
     pub(super) fn dynamic_nose(&mut self, g: &Word, used: &mut Words) -> Result<(), Diagnostic> {
         let Some(d) = used.take('D') else {
@@ -195,7 +199,12 @@ impl Interp<'_> {
             None => 0,
         };
         if d.value < 0.0 {
-            return Err(alarm(d.span, "LS-VALUE", "negative tool diameter", "D is the tool's diameter"));
+            return Err(alarm(
+                d.span,
+                "LS-VALUE",
+                "negative tool diameter",
+                "D is the tool's diameter",
+            ));
         }
         let nose = Nose {
             radius: d.value * self.unit() / 2.0,
@@ -207,12 +216,22 @@ impl Interp<'_> {
         Ok(())
     }
 
-    /// `G33 K`: the lead of a LinuxCNC thread move (K, not F: F stays the feed).
+    /// `G33 K`: the lead of a `LinuxCNC` thread move (K, not F: F stays the feed).
     pub(super) fn thread_lead(&self, b: &Block, used: &mut Words) -> Result<f64, Diagnostic> {
         match used.take('K') {
             Some(k) if k.value > 0.0 => Ok(k.value * self.unit()),
-            Some(k) => Err(alarm(k.span, "LS-VALUE", "G33 K must be positive", "K is the distance per revolution")),
-            None => Err(alarm(b.span, "LS-VALUE", "G33 without K", "write G33 Z… K<distance per revolution>")),
+            Some(k) => Err(alarm(
+                k.span,
+                "LS-VALUE",
+                "G33 K must be positive",
+                "K is the distance per revolution",
+            )),
+            None => Err(alarm(
+                b.span,
+                "LS-VALUE",
+                "G33 without K",
+                "write G33 Z… K<distance per revolution>",
+            )),
         }
     }
 }

@@ -223,11 +223,11 @@ pub(crate) struct Interp<'m> {
     moved: bool,
     /// The used-word flags of the block being run (one buffer for all blocks).
     used_buffer: Vec<bool>,
-    /// LinuxCNC: G7 (X is a diameter) in force, else G8 (a radius).
+    /// `LinuxCNC`: G7 (X is a diameter) in force, else G8 (a radius).
     x_diameter: bool,
-    /// LinuxCNC: G90.1 (arc centres absolute) in force.
+    /// `LinuxCNC`: G90.1 (arc centres absolute) in force.
     arc_absolute: bool,
-    /// LinuxCNC: the tool a T word prepared for the next M6.
+    /// `LinuxCNC`: the tool a T word prepared for the next M6.
     pending_tool: Option<u32>,
 }
 
@@ -371,8 +371,8 @@ impl<'m> Interp<'m> {
         )
     }
 
-    /// Execute one block: its modal words, its one action, then its flow words. A LinuxCNC
-    /// block runs as LinuxCNC means it (`linuxcnc_block`: radius X, absolute arc centres).
+    /// Execute one block: its modal words, its one action, then its flow words. A `LinuxCNC`
+    /// block runs as `LinuxCNC` means it (`linuxcnc_block`: radius X, absolute arc centres).
     fn block(&mut self, sub: &Subprogram, b: &Block, index: usize) -> Result<Flow, Diagnostic> {
         if self.machine.control == crate::Control::LinuxCnc {
             if let Some(meant) = self.linuxcnc_block(b) {

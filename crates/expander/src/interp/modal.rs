@@ -151,7 +151,11 @@ impl Interp<'_> {
                 G40 | G41 | G42 => g.set_comp(t, w)?,
                 crate::linuxcnc::DYNAMIC_LEFT | crate::linuxcnc::DYNAMIC_RIGHT => {
                     self.dynamic_nose(w, used)?;
-                    let side = if t == crate::linuxcnc::DYNAMIC_LEFT { G41 } else { G42 };
+                    let side = if t == crate::linuxcnc::DYNAMIC_LEFT {
+                        G41
+                    } else {
+                        G42
+                    };
                     g.set_comp(side, w)?
                 }
                 t => self.set_mode(t, w, b, used)?,
@@ -171,7 +175,9 @@ impl Interp<'_> {
         b: &Block,
         used: &mut Words,
     ) -> Result<(), Diagnostic> {
-        if self.machine.control == crate::Control::LinuxCnc && self.linuxcnc_mode(t, (w, b), used)? {
+        if self.machine.control == crate::Control::LinuxCnc
+            && self.linuxcnc_mode(t, (w, b), used)?
+        {
             return Ok(());
         }
         match t {
@@ -228,7 +234,7 @@ impl Interp<'_> {
             .map_err(|f| alarm(w.span, "LS-DIALECT", f.message, f.help))
     }
 
-    /// Why the LinuxCNC code `t` (canonical) does not run, under `--control linuxcnc`.
+    /// Why the `LinuxCNC` code `t` (canonical) does not run, under `--control linuxcnc`.
     fn linuxcnc_unsupported(&self, t: i32) -> Option<String> {
         if self.machine.control != crate::Control::LinuxCnc {
             return None;
@@ -236,7 +242,9 @@ impl Interp<'_> {
         let cycle = match t {
             crate::linuxcnc::CYCLE_G70 => "G70",
             crate::linuxcnc::CYCLE_G76 => "G76",
-            t if (crate::linuxcnc::CYCLE_G72 - 2..=crate::linuxcnc::CYCLE_G71).contains(&t) => "G71/G72",
+            t if (crate::linuxcnc::CYCLE_G72 - 2..=crate::linuxcnc::CYCLE_G71).contains(&t) => {
+                "G71/G72"
+            }
             t => return crate::linuxcnc::unsupported(t).map(str::to_string),
         };
         Some(format!("LinuxCNC's {cycle} cycle is not run by latsim yet"))

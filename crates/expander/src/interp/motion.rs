@@ -55,6 +55,14 @@ impl Interp<'_> {
 
     /// System B/C: U or W outside a cycle.
     fn uw_outside_cycle(&mut self, w: &gcode::Word) -> Result<(), Diagnostic> {
+        if self.machine.control == crate::Control::LinuxCnc {
+            return Err(alarm(
+                w.span,
+                "LS-DIALECT",
+                format!("{} is an axis of its own in LinuxCNC, not an incremental X/Z (a lathe has X and Z)", w.letter),
+                "write G91 X…/Z… for an incremental move (G90 back to absolute)",
+            ));
+        }
         if !self.machine.uw_incremental {
             return Err(alarm(
                 w.span,

@@ -69,7 +69,7 @@ pub enum Control {
     /// Haas lathe: system A codes plus Haas one-block cycles and words.
     #[serde(rename = "haas")]
     Haas,
-    /// LinuxCNC (rs274ngc) lathe: G7/G8 diameter/radius mode, G90/G91 and G94/G95 modes,
+    /// `LinuxCNC` (rs274ngc) lathe: G7/G8 diameter/radius mode, G90/G91 and G94/G95 modes,
     /// `T n M6` with G43, O-word subroutines, its own G70/G71/G72/G76 (docs/linuxcnc.md).
     #[serde(rename = "linuxcnc")]
     LinuxCnc,
@@ -138,7 +138,7 @@ impl Control {
 
     /// Power-on feed mode: GSK 980TD starts in G98 (mm/min); FANUC lathes (parameter 3402
     /// FPM = 0, the factory value) and Haas start in feed per revolution (dialects.md §2.4);
-    /// LinuxCNC starts in G94, units per minute (docs/linuxcnc.md).
+    /// `LinuxCNC` starts in G94, units per minute (docs/linuxcnc.md).
     pub fn power_on_feed_mode(self) -> FeedMode {
         match self {
             Self::Gsk980 | Self::LinuxCnc => FeedMode::G98,
