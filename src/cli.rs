@@ -123,6 +123,9 @@ pub(crate) enum ControlArg {
     /// Haas lathe (system A plus Haas one-block cycles)
     #[value(name = "haas")]
     Haas,
+    /// `LinuxCNC` lathe (rs274ngc: G7/G8, T M6 G43, O-word subroutines)
+    #[value(name = "linuxcnc")]
+    LinuxCnc,
 }
 
 impl ControlArg {
@@ -134,6 +137,7 @@ impl ControlArg {
             Self::FanucB => expander::Control::FanucB,
             Self::FanucC => expander::Control::FanucC,
             Self::Haas => expander::Control::Haas,
+            Self::LinuxCnc => expander::Control::LinuxCnc,
         }
     }
 }
@@ -155,10 +159,10 @@ impl ProgramArgs {
             Some(s) => s == Switch::On,
             None => control != expander::Control::Gsk980,
         };
-        on.then_some(if control == expander::Control::Haas {
-            macro_b::Dialect::Haas
-        } else {
-            macro_b::Dialect::Fanuc
+        on.then_some(match control {
+            expander::Control::Haas => macro_b::Dialect::Haas,
+            expander::Control::LinuxCnc => macro_b::Dialect::LinuxCnc,
+            _ => macro_b::Dialect::Fanuc,
         })
     }
 }

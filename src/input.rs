@@ -166,6 +166,13 @@ fn load_machine(args: &ProgramArgs) -> Result<Machine, ()> {
             })?
         }
     };
+    if let Some(mode) = args.x_mode {
+        // LinuxCNC: the power-on G7/G8, which the interpreter changes as the program says
+        machine.x_mode = match mode {
+            XModeArg::Diameter => expander::XMode::Diameter,
+            XModeArg::Radius => expander::XMode::Radius,
+        };
+    }
     if let Some(inc) = args.increment {
         machine.increment = match inc {
             IncrementArg::IsB => Increment::IsB,
@@ -235,10 +242,10 @@ pub(crate) fn load_program(
         }
         None => vec![],
     };
-    let x_radius = match args.x_mode {
-        Some(m) => m == XModeArg::Radius,
-        None => machine.x_mode == expander::XMode::Radius,
-    };
+    // LinuxCNC switches between G7 and G8 in the program: its interpreter doubles a radius
+    // X block by block, the reader reads X as written
+    let x_radius =
+        machine.x_mode == expander::XMode::Radius && machine.control != expander::Control::LinuxCnc;
     let read = gcode::ReadOptions {
         decimal_comma: args.decimal_comma,
         macros,
@@ -293,6 +300,7 @@ pub(crate) fn load_program(
             let mut o = match d {
                 macro_b::Dialect::Haas => macro_b::Options::haas(),
                 macro_b::Dialect::Fanuc => macro_b::Options::fanuc(),
+                macro_b::Dialect::LinuxCnc => macro_b::Options::linuxcnc(),
             };
             o.limits.max_blocks = args.max_steps as u64;
             o

@@ -411,6 +411,7 @@ fn corpus_folders_run_as_batches() {
         ("haas", "haas"),
         ("subprograms", "fanuc-a"),
         ("macro", "fanuc-a"),
+        ("linuxcnc", "linuxcnc"),
     ] {
         let dir = root.join(folder);
         let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)

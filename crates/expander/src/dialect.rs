@@ -32,6 +32,9 @@ pub(crate) struct Foreign {
 /// The canonical (system A, or internal) code of the written code `tenths` under `control`.
 /// Codes not listed in §2.1 mean the same in every system and pass unchanged.
 pub(crate) fn canonical(control: Control, tenths: i32) -> Result<i32, Foreign> {
+    if control == Control::LinuxCnc {
+        return crate::linuxcnc::canonical(tenths);
+    }
     match control.system() {
         GCodeSystem::A => system_a(tenths),
         GCodeSystem::B => system_b(tenths),
@@ -42,6 +45,10 @@ pub(crate) fn canonical(control: Control, tenths: i32) -> Result<i32, Foreign> {
 /// How the control writes the canonical code `canonical`, when it writes it differently
 /// (system B `G77` for G90): cycle alarms are worded in the program's own codes.
 pub(crate) fn written(control: Control, canonical: i32) -> Option<i32> {
+    if control == Control::LinuxCnc {
+        // LinuxCNC has no G77/G78/G79 cycles; its thread move is G33
+        return (canonical == G32).then_some(330);
+    }
     let w = match (control.system(), canonical) {
         (GCodeSystem::B, G90) => 770,
         (GCodeSystem::B, G92) => 780,

@@ -15,6 +15,7 @@ mod cycles;
 mod dialect;
 mod interp;
 mod library;
+mod linuxcnc;
 mod machine;
 mod mcodes;
 mod text_place;

@@ -68,6 +68,11 @@ pub(crate) fn machine_function(control: Control, m: u32) -> Option<(&'static str
             32 | 33 => Some(("lubrication on / off", None)),
             _ => Option::None,
         },
+        Control::LinuxCnc => match m {
+            7..=9 => Some(("coolant mist / flood / off", None)),
+            48..=53 => Some(("override and feed hold controls", None)),
+            _ => Option::None,
+        },
         Control::FanucA | Control::FanucB | Control::FanucC => match m {
             50 | 51 => Some(("C-axis (index) mode off / on", None)),
             68 => Some(("chuck clamp", ChuckCloses)),

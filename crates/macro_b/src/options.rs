@@ -9,6 +9,9 @@ pub enum Dialect {
     /// Haas: `WH` for `WHILE`, `IF … THEN` with an NC block, `#3000` alarms as 1000 + n,
     /// `#10000`+n aliases of the common variables.
     Haas,
+    /// `LinuxCNC` (rs274ngc): `;` comments, o-words and named parameters `#<name>`; its
+    /// expressions are macro B's (docs/linuxcnc.md).
+    LinuxCnc,
 }
 
 /// Limits that end a program with an alarm instead of letting it run away.
@@ -90,6 +93,15 @@ impl Options {
                 macro_depth: 9,
                 ..Limits::default()
             },
+            ..Self::fanuc()
+        }
+    }
+
+    /// `LinuxCNC` rules: `MOD` (its modulo operator), FANUC's otherwise.
+    pub fn linuxcnc() -> Self {
+        Self {
+            dialect: Dialect::LinuxCnc,
+            allow_mod: true,
             ..Self::fanuc()
         }
     }

@@ -10,6 +10,21 @@ impl Interp<'_> {
     /// G04 P (ms) or X/U (s); Haas `P1.5` (with a point) is seconds (spec/dialects.md §3.1).
     pub(super) fn dwell(&mut self, used: &mut Words, g: &Word) -> Result<(), Diagnostic> {
         let p = used.take('P');
+        if self.machine.control == crate::Control::LinuxCnc {
+            // LinuxCNC: `G4 P` is seconds, with or without a decimal point (G-code reference, G4)
+            return match p {
+                Some(p) => {
+                    self.out.dwell_s += p.value.max(0.0);
+                    Ok(())
+                }
+                None => Err(alarm(
+                    g.span,
+                    "LS-VALUE",
+                    "G4 without a time",
+                    "write G4 P<seconds>",
+                )),
+            };
+        }
         let x = used.take('X').or_else(|| used.take('U'));
         let haas = self.machine.control == crate::Control::Haas;
         let seconds = match (p, x) {

@@ -116,6 +116,10 @@ impl Interp<'_> {
             let Some(reason) = axis_reason(w.letter) else {
                 continue;
             };
+            // LinuxCNC: H is G43's tool number (an unused H is still an alarm)
+            if w.letter == 'H' && self.machine.control == crate::Control::LinuxCnc {
+                continue;
+            }
             // system A's plain chamfer on a G01 (profile g01_cr = "plain"), not the C axis
             if w.letter == 'C'
                 && motion == MotionMode::Line

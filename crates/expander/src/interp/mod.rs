@@ -16,6 +16,7 @@ mod dialect_words;
 mod flow;
 mod frame;
 mod g10;
+mod linuxcnc;
 mod loop_guard;
 mod macros;
 mod modal;
@@ -223,6 +224,12 @@ pub(crate) struct Interp<'m> {
     moved: bool,
     /// The used-word flags of the block being run (one buffer for all blocks).
     used_buffer: Vec<bool>,
+    /// `LinuxCNC`: G7 (X is a diameter) in force, else G8 (a radius).
+    x_diameter: bool,
+    /// `LinuxCNC`: G90.1 (arc centres absolute) in force.
+    arc_absolute: bool,
+    /// `LinuxCNC`: the tool a T word prepared for the next M6.
+    pending_tool: Option<u32>,
 }
 
 /// A controller alarm.
@@ -283,6 +290,9 @@ impl<'m> Interp<'m> {
             macros: None,
             moved: false,
             used_buffer: Vec::new(),
+            x_diameter: machine.x_mode == crate::XMode::Diameter,
+            arc_absolute: false,
+            pending_tool: None,
         }
     }
 
@@ -362,8 +372,19 @@ impl<'m> Interp<'m> {
         )
     }
 
-    /// Execute one block: its modal words, its one action, then its flow words.
+    /// Execute one block: its modal words, its one action, then its flow words. A `LinuxCNC`
+    /// block runs as `LinuxCNC` means it (`linuxcnc_block`: radius X, absolute arc centres).
     fn block(&mut self, sub: &Subprogram, b: &Block, index: usize) -> Result<Flow, Diagnostic> {
+        if self.machine.control == crate::Control::LinuxCnc {
+            if let Some(meant) = self.linuxcnc_block(b) {
+                return self.run_block(sub, &meant, index);
+            }
+        }
+        self.run_block(sub, b, index)
+    }
+
+    /// [`Interp::block`] as the interpreter reads it.
+    fn run_block(&mut self, sub: &Subprogram, b: &Block, index: usize) -> Result<Flow, Diagnostic> {
         self.moved = false;
         if self.param_mode {
             // G10 L50 … G11: parameter data, not a program.

@@ -118,6 +118,14 @@ impl Interp<'_> {
             }
             used.mark(i);
             let t = self.canonical(w)?;
+            if let Some(reason) = self.linuxcnc_unsupported(t) {
+                return Err(alarm(
+                    w.span,
+                    "LS-NOT-IMPLEMENTED",
+                    format!("{} (LinuxCNC): {reason}", g_name(w)),
+                    "docs/linuxcnc.md lists the LinuxCNC codes latsim runs",
+                ));
+            }
             if let Some(reason) = codes::not_simulated(t) {
                 return Err(alarm(
                     w.span,
@@ -141,6 +149,15 @@ impl Interp<'_> {
                 t if cycles::is_modal(t) => g.set_motion(MotionMode::Cycle(t), w)?,
                 t if is_one_shot(t) => g.set_one_shot(t, w)?,
                 G40 | G41 | G42 => g.set_comp(t, w)?,
+                crate::linuxcnc::DYNAMIC_LEFT | crate::linuxcnc::DYNAMIC_RIGHT => {
+                    self.dynamic_nose(w, used)?;
+                    let side = if t == crate::linuxcnc::DYNAMIC_LEFT {
+                        G41
+                    } else {
+                        G42
+                    };
+                    g.set_comp(side, w)?
+                }
                 t => self.set_mode(t, w, b, used)?,
             }
         }
@@ -158,6 +175,11 @@ impl Interp<'_> {
         b: &Block,
         used: &mut Words,
     ) -> Result<(), Diagnostic> {
+        if self.machine.control == crate::Control::LinuxCnc
+            && self.linuxcnc_mode(t, (w, b), used)?
+        {
+            return Ok(());
+        }
         match t {
             G20 => self.inch = true,
             G21 => self.inch = false,
@@ -212,6 +234,22 @@ impl Interp<'_> {
             .map_err(|f| alarm(w.span, "LS-DIALECT", f.message, f.help))
     }
 
+    /// Why the `LinuxCNC` code `t` (canonical) does not run, under `--control linuxcnc`.
+    fn linuxcnc_unsupported(&self, t: i32) -> Option<String> {
+        if self.machine.control != crate::Control::LinuxCnc {
+            return None;
+        }
+        let cycle = match t {
+            crate::linuxcnc::CYCLE_G70 => "G70",
+            crate::linuxcnc::CYCLE_G76 => "G76",
+            t if (crate::linuxcnc::CYCLE_G72 - 2..=crate::linuxcnc::CYCLE_G71).contains(&t) => {
+                "G71/G72"
+            }
+            t => return crate::linuxcnc::unsupported(t).map(str::to_string),
+        };
+        Some(format!("LinuxCNC's {cycle} cycle is not run by latsim yet"))
+    }
+
     /// Whether the block has a G code whose canonical meaning satisfies `pred`.
     pub(super) fn has_g(&self, b: &Block, pred: impl Fn(i32) -> bool) -> bool {
         b.words.iter().any(|w| {
@@ -256,6 +294,12 @@ impl Interp<'_> {
             }
         }
         let mut deferred = None;
+        if self.machine.control == crate::Control::LinuxCnc {
+            if let Some(t) = used.take('T') {
+                self.prepare_tool(t)?;
+            }
+            return Ok(None);
+        }
         if let Some(t) = used.take('T') {
             if !whole_in(t, 0.0, 9999.0) {
                 return Err(alarm(
@@ -324,7 +368,7 @@ impl Interp<'_> {
     }
 
     /// Tool `tool` cuts from now on (tool 00 keeps the tool in force).
-    fn select_tool(&mut self, tool: u32) {
+    pub(super) fn select_tool(&mut self, tool: u32) {
         if tool != 0 {
             self.tool = tool;
             if !self.out.tools.contains(&tool) {
@@ -389,6 +433,7 @@ impl Interp<'_> {
                 23 | 24 if self.machine.control == crate::Control::Haas => {
                     self.thread_chamfer = w.value as u32 == 23;
                 }
+                6 if self.machine.control == crate::Control::LinuxCnc => self.change_tool(w)?,
                 m @ (2 | 30 | 5 | 9 | 98 | 99) => after.push((m, w)),
                 97 if self.machine.control == crate::Control::Haas => after.push((97, w)),
                 97 => {
@@ -470,7 +515,7 @@ impl Interp<'_> {
 /// (issue 31: generated `LinuxCNC` lathe programs start `G18 G7 G90`).
 fn unknown_code_help(t: i32) -> &'static str {
     if t == G07 {
-        "G7 selects diameter mode in LinuxCNC (rs274ngc): LinuxCNC programs are not supported (latsim reads X as a diameter by default; --x-mode radius for radii)"
+        "G7 selects diameter mode in LinuxCNC (rs274ngc): run LinuxCNC programs with --control linuxcnc (under FANUC, GSK and Haas X is a diameter by default; --x-mode radius for radii)"
     } else {
         "see spec/language.md and spec/dialects.md §6.1 for the supported codes"
     }

@@ -55,6 +55,14 @@ impl Interp<'_> {
 
     /// System B/C: U or W outside a cycle.
     fn uw_outside_cycle(&mut self, w: &gcode::Word) -> Result<(), Diagnostic> {
+        if self.machine.control == crate::Control::LinuxCnc {
+            return Err(alarm(
+                w.span,
+                "LS-DIALECT",
+                format!("{} is an axis of its own in LinuxCNC, not an incremental X/Z (a lathe has X and Z)", w.letter),
+                "write G91 X…/Z… for an incremental move (G90 back to absolute)",
+            ));
+        }
         if !self.machine.uw_incremental {
             return Err(alarm(
                 w.span,
@@ -294,6 +302,15 @@ impl Interp<'_> {
             MotionMode::Thread if to.dist(self.pos) < 1e-12 => Ok(()),
             MotionMode::Line => self.feed_line(b.span, to, corner),
             MotionMode::Thread => {
+                if self.machine.control == crate::Control::LinuxCnc {
+                    // G33 K: the lead is K and the feed per revolution; F stays the feed
+                    let lead = self.thread_lead(b, used)?;
+                    let per_rev = lead / self.unit();
+                    let feed = std::mem::replace(&mut self.feed, per_rev);
+                    let pushed = self.push(b, Motion::Thread, to, None, lead);
+                    self.feed = feed;
+                    return pushed;
+                }
                 let lead = self.feed * self.unit();
                 self.thread_phase = crate::cycles::thread_start_angle(used)? / 360.0;
                 let pushed = self.push(b, Motion::Thread, to, None, lead);

@@ -69,6 +69,10 @@ pub enum Control {
     /// Haas lathe: system A codes plus Haas one-block cycles and words.
     #[serde(rename = "haas")]
     Haas,
+    /// `LinuxCNC` (rs274ngc) lathe: G7/G8 diameter/radius mode, G90/G91 and G94/G95 modes,
+    /// `T n M6` with G43, O-word subroutines, its own G70/G71/G72/G76 (docs/linuxcnc.md).
+    #[serde(rename = "linuxcnc")]
+    LinuxCnc,
 }
 
 /// FANUC lathe G-code system (spec/dialects.md §2.1).
@@ -84,12 +88,13 @@ pub enum GCodeSystem {
 
 impl Control {
     /// Every control, in the order `--control` lists them.
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 6] = [
         Self::Gsk980,
         Self::FanucA,
         Self::FanucB,
         Self::FanucC,
         Self::Haas,
+        Self::LinuxCnc,
     ];
 
     /// The CLI and profile spelling: `gsk980`, `fanuc-a`, … `haas`.
@@ -100,6 +105,7 @@ impl Control {
             Self::FanucB => "fanuc-b",
             Self::FanucC => "fanuc-c",
             Self::Haas => "haas",
+            Self::LinuxCnc => "linuxcnc",
         }
     }
 
@@ -111,6 +117,7 @@ impl Control {
             Self::FanucB => "FANUC lathe, G-code system B",
             Self::FanucC => "FANUC lathe, G-code system C",
             Self::Haas => "Haas lathe",
+            Self::LinuxCnc => "LinuxCNC lathe (rs274ngc)",
         }
     }
 
@@ -122,17 +129,19 @@ impl Control {
     /// The G-code system its codes are read in.
     pub fn system(self) -> GCodeSystem {
         match self {
-            Self::FanucB => GCodeSystem::B,
+            // G90/G91 distance modes, G94/G95 feed modes, G33 threads, G92 offsets
+            Self::FanucB | Self::LinuxCnc => GCodeSystem::B,
             Self::FanucC => GCodeSystem::C,
             Self::Gsk980 | Self::FanucA | Self::Haas => GCodeSystem::A,
         }
     }
 
     /// Power-on feed mode: GSK 980TD starts in G98 (mm/min); FANUC lathes (parameter 3402
-    /// FPM = 0, the factory value) and Haas start in feed per revolution (dialects.md §2.4).
+    /// FPM = 0, the factory value) and Haas start in feed per revolution (dialects.md §2.4);
+    /// `LinuxCNC` starts in G94, units per minute (docs/linuxcnc.md).
     pub fn power_on_feed_mode(self) -> FeedMode {
         match self {
-            Self::Gsk980 => FeedMode::G98,
+            Self::Gsk980 | Self::LinuxCnc => FeedMode::G98,
             _ => FeedMode::G99,
         }
     }
@@ -367,7 +376,12 @@ impl Machine {
         Self {
             control,
             power_on_units: Units::Mm,
-            x_mode: XMode::Diameter,
+            // LinuxCNC powers on in G8, radius mode (G-code reference, "G8")
+            x_mode: if control == Control::LinuxCnc {
+                XMode::Radius
+            } else {
+                XMode::Diameter
+            },
             increment: Increment::IsB,
             pq_units: PqUnits::Increment,
             feed_mode: control.power_on_feed_mode(),
@@ -380,7 +394,8 @@ impl Machine {
             power_on_feed: 0.0,
             rapid_cut_tol: 0.1,
             machine_zero: Pt::new(150.0, 125.0),
-            uw_incremental: true,
+            // U and W are axes of their own in LinuxCNC
+            uw_incremental: control != Control::LinuxCnc,
             power_on_incremental: false,
             g01_cr: G01Cr::Comma,
             short_t: if control == Control::Gsk980 {

@@ -188,6 +188,10 @@ impl Reader<'_> {
             };
         }
         let end = self.skip_line();
+        if self.options.macros == Some(macro_b::Dialect::LinuxCnc) {
+            // LinuxCNC's own comment (G-code overview, "Comments")
+            return;
+        }
         self.note(
             start.to(end),
             "text after ';' read as a comment (a Mach3/Fagor/Siemens-style comment: a FANUC control would read it as code); write it as ( … )",
@@ -233,19 +237,30 @@ impl Reader<'_> {
         let start = self.src[..at].rfind('\n').map_or(0, |i| i + 1);
         let end = self.src[at..].find('\n').map_or(self.src.len(), |i| at + i);
         let found = foreign::construct(&self.src[start..end])?;
+        let line = Span {
+            line: self.line,
+            column: 1,
+            offset: start as u32,
+            len: (end - start).min(u32::MAX as usize) as u32,
+        };
+        if self.options.macros == Some(macro_b::Dialect::LinuxCnc)
+            && found.whose.starts_with("LinuxCNC")
+        {
+            // --control linuxcnc: LinuxCNC's own construct that latsim does not read yet
+            return Some(ParseError::new(
+                line,
+                format!("{} is not read by latsim yet under --control linuxcnc", found.what),
+                "docs/linuxcnc.md lists the LinuxCNC constructs latsim reads; write the subroutine out as plain blocks",
+            ));
+        }
         Some(ParseError::new(
-            Span {
-                line: self.line,
-                column: 1,
-                offset: start as u32,
-                len: (end - start).min(u32::MAX as usize) as u32,
-            },
+            line,
             format!(
                 "{} is {} syntax, not FANUC, GSK or Haas",
                 found.what, found.whose
             ),
             format!(
-                "latsim reads FANUC, GSK and Haas lathe programs; {} programs are not supported",
+                "latsim reads FANUC, GSK and Haas lathe programs, and LinuxCNC ones with --control linuxcnc; {} constructs are not supported",
                 found.whose
             ),
         ))

@@ -22,6 +22,7 @@ impl Reader<'_> {
         let text = block_text(self.src, start.offset as usize).trim_end();
         let options = match self.options.macros {
             Some(Dialect::Haas) => macro_b::Options::haas(),
+            Some(Dialect::LinuxCnc) => macro_b::Options::linuxcnc(),
             _ => macro_b::Options::fanuc(),
         };
         let stmt =
