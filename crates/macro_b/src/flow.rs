@@ -72,112 +72,126 @@ fn program_name(number: Option<u32>) -> String {
     number.map_or_else(|| "the main program".to_string(), |n| format!("O{n:04}"))
 }
 
-impl<B> MacroProgram<B> {
-    /// Prepare a program. `number` is its O number (`None` for a main program without
-    /// one); `limits.loop_depth` is the `DO` nesting limit.
-    pub fn new(number: Option<u32>, lines: Vec<Line<B>>, limits: &Limits) -> Result<Self> {
-        let mut partner = vec![usize::MAX; lines.len()];
-        let mut loops = Vec::new();
-        let mut seqs: Vec<(u32, usize)> = Vec::new();
-        let mut warnings = Vec::new();
-        let mut open: Vec<(u8, usize)> = Vec::new();
-        let mut ifs: Vec<(usize, Option<usize>)> = Vec::new();
-        for (i, line) in lines.iter().enumerate() {
-            if let Some(n) = line.seq {
-                seqs.push((n, i));
+/// The pairing of a program's DO/END and IF/ELSE/ENDIF lines, made line by line: each
+/// line's partner, the loops, and the blocks still open.
+#[derive(Default)]
+struct Pairing {
+    partner: Vec<usize>,
+    loops: Vec<(usize, usize)>,
+    warnings: Vec<Warning>,
+    /// Loops opened and not yet ended: (DO number, line).
+    open: Vec<(u8, usize)>,
+    /// Block-form IFs not yet ended: (IF line, its ELSE line).
+    ifs: Vec<(usize, Option<usize>)>,
+}
+
+impl Pairing {
+    /// Line `i` of `lines`: a DO, END, IF-THEN block, ELSE or ENDIF pairs; others pass.
+    fn line<B>(&mut self, i: usize, lines: &[Line<B>], limits: &Limits) -> Result<()> {
+        let line = &lines[i];
+        match stmt_of(line) {
+            Some(StmtKind::While { id, .. } | StmtKind::Do { id }) => {
+                self.open_loop(*id, i, lines, limits)
             }
-            match stmt_of(line) {
-                Some(StmtKind::While { id, .. } | StmtKind::Do { id }) => {
-                    if open.len() >= limits.loop_depth {
-                        return Err(MacroError::new(
-                            ErrorKind::LoopNesting,
-                            line.span,
-                            format!(
-                                "DO{id} nests loops {} deep",
-                                open.len() + 1
-                            ),
-                            format!("loops may nest at most {} deep", limits.loop_depth),
-                        ));
-                    }
-                    if let Some(&(_, j)) = open.iter().find(|(m, _)| m == id) {
-                        return Err(MacroError::new(
-                            ErrorKind::LoopNesting,
-                            line.span,
-                            format!(
-                                "DO{id} inside the DO{id} opened at line {}",
-                                lines[j].span.line
-                            ),
-                            "nested loops need different numbers (DO1, DO2, DO3); the same number may only be reused after its END",
-                        ));
-                    }
-                    open.push((*id, i));
-                }
-                Some(StmtKind::End { id }) => match open.last() {
-                    Some(&(m, j)) if m == *id => {
-                        open.pop();
-                        partner[i] = j;
-                        partner[j] = i;
-                        loops.push((j, i));
-                    }
-                    Some(&(m, j)) if open.iter().any(|(k, _)| k == id) => {
-                        return Err(MacroError::new(
-                            ErrorKind::LoopCrossing,
-                            line.span,
-                            format!(
-                                "END{id} while DO{m} of line {} is still open: loops must not cross",
-                                lines[j].span.line
-                            ),
-                            format!("close DO{m} with END{m} before END{id}"),
-                        ))
-                    }
-                    _ => {
-                        return Err(MacroError::new(
-                            ErrorKind::EndWithoutDo,
-                            line.span,
-                            format!("END{id} without DO{id}"),
-                            format!("open the loop with WHILE [cond] DO{id} before END{id}, or remove END{id}"),
-                        ))
-                    }
-                },
-                Some(StmtKind::IfBlock { .. }) => {
-                    ifs.push((i, None));
-                    warnings.push(Warning {
-                        span: line.span,
-                        message: "block-form IF is not on older controls".into(),
-                    });
-                }
-                Some(StmtKind::Else) => match ifs.last_mut() {
-                    Some((_, e @ None)) => *e = Some(i),
-                    _ => {
-                        return Err(MacroError::new(
-                            ErrorKind::IfStructure,
-                            line.span,
-                            "ELSE without IF [cond] THEN",
-                            "ELSE belongs between a block-form IF [cond] THEN and its ENDIF",
-                        ))
-                    }
-                },
-                Some(StmtKind::EndIf) => match ifs.pop() {
-                    Some((j, e)) => {
-                        partner[j] = e.unwrap_or(i);
-                        if let Some(e) = e {
-                            partner[e] = i;
-                        }
-                        partner[i] = j;
-                    }
-                    None => {
-                        return Err(MacroError::new(
-                            ErrorKind::IfStructure,
-                            line.span,
-                            "ENDIF without IF [cond] THEN",
-                            "open the block with IF [cond] THEN, or remove ENDIF",
-                        ))
-                    }
-                },
-                _ => {}
+            Some(StmtKind::End { id }) => self.end_loop(*id, i, lines),
+            Some(StmtKind::IfBlock { .. }) => {
+                self.ifs.push((i, None));
+                self.warnings.push(Warning {
+                    span: line.span,
+                    message: "block-form IF is not on older controls".into(),
+                });
+                Ok(())
             }
+            Some(StmtKind::Else) => match self.ifs.last_mut() {
+                Some((_, e @ None)) => {
+                    *e = Some(i);
+                    Ok(())
+                }
+                _ => Err(MacroError::new(
+                    ErrorKind::IfStructure,
+                    line.span,
+                    "ELSE without IF [cond] THEN",
+                    "ELSE belongs between a block-form IF [cond] THEN and its ENDIF",
+                )),
+            },
+            Some(StmtKind::EndIf) => self.end_if(i, line.span),
+            _ => Ok(()),
         }
-        if let Some(&(id, j)) = open.last() {
+    }
+
+    fn open_loop<B>(&mut self, id: u8, i: usize, lines: &[Line<B>], limits: &Limits) -> Result<()> {
+        let line = &lines[i];
+        if self.open.len() >= limits.loop_depth {
+            return Err(MacroError::new(
+                ErrorKind::LoopNesting,
+                line.span,
+                format!("DO{id} nests loops {} deep", self.open.len() + 1),
+                format!("loops may nest at most {} deep", limits.loop_depth),
+            ));
+        }
+        if let Some(&(_, j)) = self.open.iter().find(|(m, _)| *m == id) {
+            return Err(MacroError::new(
+                ErrorKind::LoopNesting,
+                line.span,
+                format!(
+                    "DO{id} inside the DO{id} opened at line {}",
+                    lines[j].span.line
+                ),
+                "nested loops need different numbers (DO1, DO2, DO3); the same number may only be reused after its END",
+            ));
+        }
+        self.open.push((id, i));
+        Ok(())
+    }
+
+    fn end_loop<B>(&mut self, id: u8, i: usize, lines: &[Line<B>]) -> Result<()> {
+        let line = &lines[i];
+        match self.open.last() {
+            Some(&(m, j)) if m == id => {
+                self.open.pop();
+                self.partner[i] = j;
+                self.partner[j] = i;
+                self.loops.push((j, i));
+                Ok(())
+            }
+            Some(&(m, j)) if self.open.iter().any(|(k, _)| *k == id) => Err(MacroError::new(
+                ErrorKind::LoopCrossing,
+                line.span,
+                format!(
+                    "END{id} while DO{m} of line {} is still open: loops must not cross",
+                    lines[j].span.line
+                ),
+                format!("close DO{m} with END{m} before END{id}"),
+            )),
+            _ => Err(MacroError::new(
+                ErrorKind::EndWithoutDo,
+                line.span,
+                format!("END{id} without DO{id}"),
+                format!("open the loop with WHILE [cond] DO{id} before END{id}, or remove END{id}"),
+            )),
+        }
+    }
+
+    fn end_if(&mut self, i: usize, span: Span) -> Result<()> {
+        let Some((j, e)) = self.ifs.pop() else {
+            return Err(MacroError::new(
+                ErrorKind::IfStructure,
+                span,
+                "ENDIF without IF [cond] THEN",
+                "open the block with IF [cond] THEN, or remove ENDIF",
+            ));
+        };
+        self.partner[j] = e.unwrap_or(i);
+        if let Some(e) = e {
+            self.partner[e] = i;
+        }
+        self.partner[i] = j;
+        Ok(())
+    }
+
+    /// Every loop and IF block ended by the program's end.
+    fn all_closed<B>(&self, lines: &[Line<B>]) -> Result<()> {
+        if let Some(&(id, j)) = self.open.last() {
             return Err(MacroError::new(
                 ErrorKind::DoWithoutEnd,
                 lines[j].span,
@@ -185,7 +199,7 @@ impl<B> MacroProgram<B> {
                 format!("close the loop with END{id}"),
             ));
         }
-        if let Some(&(j, _)) = ifs.last() {
+        if let Some(&(j, _)) = self.ifs.last() {
             return Err(MacroError::new(
                 ErrorKind::IfStructure,
                 lines[j].span,
@@ -193,14 +207,34 @@ impl<B> MacroProgram<B> {
                 "close the block with ENDIF",
             ));
         }
+        Ok(())
+    }
+}
+
+impl<B> MacroProgram<B> {
+    /// Prepare a program. `number` is its O number (`None` for a main program without
+    /// one); `limits.loop_depth` is the `DO` nesting limit.
+    pub fn new(number: Option<u32>, lines: Vec<Line<B>>, limits: &Limits) -> Result<Self> {
+        let mut pairing = Pairing {
+            partner: vec![usize::MAX; lines.len()],
+            ..Pairing::default()
+        };
+        let mut seqs: Vec<(u32, usize)> = Vec::new();
+        for (i, line) in lines.iter().enumerate() {
+            if let Some(n) = line.seq {
+                seqs.push((n, i));
+            }
+            pairing.line(i, &lines, limits)?;
+        }
+        pairing.all_closed(&lines)?;
         seqs.sort_unstable();
         Ok(Self {
             number,
             lines,
-            partner,
-            loops,
+            partner: pairing.partner,
+            loops: pairing.loops,
             seqs,
-            warnings,
+            warnings: pairing.warnings,
         })
     }
 
