@@ -231,17 +231,7 @@ pub(crate) fn load_program(
         text: decoded.text.as_str().into(),
     };
     let macros = args.macros(machine.control);
-    let vars = match &args.vars {
-        Some(path) if macros.is_some() => load_vars(path)?,
-        Some(_) => {
-            diag::print_plain(
-                "--vars sets macro variables, and custom macro B is off",
-                "run with --macro on, or a FANUC or Haas --control",
-            );
-            return Err(());
-        }
-        None => vec![],
-    };
+    let vars = macro_vars(args, macros.is_some())?;
     // LinuxCNC switches between G7 and G8 in the program: its interpreter doubles a radius
     // X block by block, the reader reads X as written
     let x_radius =
@@ -251,41 +241,9 @@ pub(crate) fn load_program(
         macros,
         x_radius,
     };
-    let program = gcode::parse_shared(Arc::clone(&source.text), read).map_err(|e| {
-        diag::print_at(
-            &source,
-            e.span.offset as usize,
-            e.span.len as usize,
-            "parse",
-            &e.message,
-            &e.help,
-            false,
-        );
-    })?;
+    let program = parse(&source, read)?;
     let blocks = program.block_count();
-    if blocks == 0 {
-        diag::print_plain(
-            &format!(
-                "{}: nothing to simulate, the file has no blocks",
-                source.name
-            ),
-            "give a program file with at least one block",
-        );
-        return Err(());
-    }
-    // Haas `M98 (path)` looks next to the main program even without --lib
-    let library = if args.lib.is_empty() && machine.control != expander::Control::Haas {
-        None
-    } else {
-        let home = path.parent().unwrap_or(Path::new("."));
-        match Folders::scan(&args.lib, home, source.text.len(), read) {
-            Ok(f) => Some(Arc::new(f)),
-            Err(e) => {
-                diag::print_plain(&e, "give --lib the folder that holds the subprogram files");
-                return Err(());
-            }
-        }
-    };
+    let library = library(args, &machine, path, source.text.len(), read)?;
     let opts = Options {
         block_delete: args.block_delete,
         tools: tools.facts(),
@@ -296,15 +254,7 @@ pub(crate) fn load_program(
         max_blocks: args.max_steps,
         max_segments: args.max_moves,
         vars,
-        macros: macros.map(|d| {
-            let mut o = match d {
-                macro_b::Dialect::Haas => macro_b::Options::haas(),
-                macro_b::Dialect::Fanuc => macro_b::Options::fanuc(),
-                macro_b::Dialect::LinuxCnc => macro_b::Options::linuxcnc(),
-            };
-            o.limits.max_blocks = args.max_steps as u64;
-            o
-        }),
+        macros: macros.map(|d| macro_options(d, args.max_steps)),
     };
     let mut toolpath = expander::expand(&program, &machine, &opts);
     if toolpath.segments.is_empty() {
@@ -322,6 +272,81 @@ pub(crate) fn load_program(
         read,
         opts,
     })
+}
+
+/// The `--vars` file's variables (only with macro B on).
+fn macro_vars(args: &ProgramArgs, macros_on: bool) -> Result<Vec<(u32, f64)>, ()> {
+    match &args.vars {
+        Some(path) if macros_on => load_vars(path),
+        Some(_) => {
+            diag::print_plain(
+                "--vars sets macro variables, and custom macro B is off",
+                "run with --macro on, or a FANUC or Haas --control",
+            );
+            Err(())
+        }
+        None => Ok(vec![]),
+    }
+}
+
+/// The program read into blocks; a parse error printed at its place; a file with no
+/// blocks is an error too.
+fn parse(source: &Source, read: gcode::ReadOptions) -> Result<gcode::Program, ()> {
+    let program = gcode::parse_shared(Arc::clone(&source.text), read).map_err(|e| {
+        diag::print_at(
+            source,
+            e.span.offset as usize,
+            e.span.len as usize,
+            "parse",
+            &e.message,
+            &e.help,
+            false,
+        );
+    })?;
+    if program.block_count() == 0 {
+        diag::print_plain(
+            &format!(
+                "{}: nothing to simulate, the file has no blocks",
+                source.name
+            ),
+            "give a program file with at least one block",
+        );
+        return Err(());
+    }
+    Ok(program)
+}
+
+/// The subprogram files of `--lib` (Haas `M98 (path)` looks next to the main program even
+/// without it).
+fn library(
+    args: &ProgramArgs,
+    machine: &Machine,
+    path: &Path,
+    main_len: usize,
+    read: gcode::ReadOptions,
+) -> Result<Option<Arc<Folders>>, ()> {
+    if args.lib.is_empty() && machine.control != expander::Control::Haas {
+        return Ok(None);
+    }
+    let home = path.parent().unwrap_or(Path::new("."));
+    match Folders::scan(&args.lib, home, main_len, read) {
+        Ok(f) => Ok(Some(Arc::new(f))),
+        Err(e) => {
+            diag::print_plain(&e, "give --lib the folder that holds the subprogram files");
+            Err(())
+        }
+    }
+}
+
+/// Macro B's options for a dialect, with the block budget.
+fn macro_options(d: macro_b::Dialect, max_steps: usize) -> macro_b::Options {
+    let mut o = match d {
+        macro_b::Dialect::Haas => macro_b::Options::haas(),
+        macro_b::Dialect::Fanuc => macro_b::Options::fanuc(),
+        macro_b::Dialect::LinuxCnc => macro_b::Options::linuxcnc(),
+    };
+    o.limits.max_blocks = max_steps as u64;
+    o
 }
 
 /// Warnings that say how the file was read when it is not the usual: its encoding when
