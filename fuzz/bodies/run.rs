@@ -26,37 +26,78 @@ holder = "SVJBR 2525M16"
 /// Programs expanding to more moves are not simulated here.
 const MAX_MOVES: usize = 20_000;
 
+/// Blocks a program may execute here (a macro loop): the CLI's budget is 10^7, the
+/// instrumented build runs ~30× slower than release.
+const MAX_BLOCKS: usize = 200_000;
+
 /// Programs stamping a thread tool more often are not simulated here.
 const MAX_STAMPS: f64 = 300.0;
 
 /// A Φ30 shaft with a Φ20 neck: the part every program is compared with.
 const TARGET: &[[f64; 2]] = &[[0.0, 0.0], [0.0, 15.0], [-10.0, 15.0], [-10.0, 10.0], [-20.0, 10.0], [-20.0, 15.0], [-30.0, 15.0], [-30.0, 0.0]];
 
-fn fixtures() -> &'static (expander::Machine, stock::Blank, stock::ToolTable, Vec<stock::Shape>) {
-    static F: OnceLock<(expander::Machine, stock::Blank, stock::ToolTable, Vec<stock::Shape>)> =
-        OnceLock::new();
+/// A chuck gripping the bar's last 10 mm and a tailstock centre on its face (`--chuck`).
+const CHUCK: &str = "grip=10,jaw=15,od=160,depth=60,tail=1,quill=30,quill_length=80";
+
+struct Fixtures {
+    machine: expander::Machine,
+    blank: stock::Blank,
+    tools: stock::ToolTable,
+    part: Vec<stock::Shape>,
+    fixture: analysis::Fixture,
+}
+
+fn fixtures() -> &'static Fixtures {
+    static F: OnceLock<Fixtures> = OnceLock::new();
     F.get_or_init(|| {
-        let machine = expander::Machine::from_toml("power_on_feed = 100.0").expect("a valid profile");
         let blank = stock::Blank::bar(40.0, 30.0, 0.0, None).expect("a valid blank");
-        let tools = stock::ToolTable::from_toml(TOOLS).expect("a valid tool table");
-        let outer: Vec<[f64; 2]> = TARGET.to_vec(); // counter-clockwise in (z, r)
-        let part = vec![stock::Shape { outer, holes: vec![] }];
-        (machine, blank, tools, part)
+        let holding = expander::Workholding::from_compact(CHUCK).expect("a valid chuck");
+        let fixture = analysis::Fixture::new(&holding, &blank)
+            .expect("the chuck grips the bar")
+            .expect("a chuck is given");
+        Fixtures {
+            machine: expander::Machine::from_toml("power_on_feed = 100.0").expect("a valid profile"),
+            blank,
+            tools: stock::ToolTable::from_toml(TOOLS).expect("a valid tool table"),
+            // counter-clockwise in (z, r)
+            part: vec![stock::Shape { outer: TARGET.to_vec(), holes: vec![] }],
+            fixture,
+        }
     })
 }
 
-/// One fuzz input: the whole pipeline after reading, as `latsim run` wires it
-/// (`analysis::pipeline`: removal, intents, deviation, workholding, threads, verdict),
-/// against the program's own shapes or, when the input's length is odd, a drawn part.
+/// One fuzz input: the whole run as `latsim run` wires it, after reading — the interpreter
+/// told the tool table's noses and blades, then `analysis::pipeline` (removal, intents,
+/// deviation, crashes and scrapes, workholding, threads, verdict). The input's length picks
+/// the settings, so that every combination is reached: bit 0 the intended part (a drawn
+/// shaft or the program's own shapes), bit 1 the workholding (a chuck and tailstock or
+/// none), bit 2 custom macro B (FANUC rules) on.
 pub(crate) fn body(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
-    let Ok(program) = gcode::parse(&text) else {
+    let f = fixtures();
+    let macros = data.len() & 4 != 0;
+    let read = gcode::ReadOptions {
+        macros: macros.then_some(macro_b::Dialect::Fanuc),
+        ..Default::default()
+    };
+    let Ok(program) = gcode::parse_with(&text, read) else {
         return;
     };
-    let (machine, blank, tools, part) = fixtures();
-    let tp = expander::expand(&program, machine, &Default::default());
+    let opts = expander::Options {
+        tools: f.tools.facts(),
+        start_tool: f.tools.numbers().first().copied(),
+        max_segments: MAX_MOVES + 1,
+        max_blocks: MAX_BLOCKS,
+        macros: macros.then(|| {
+            let mut o = macro_b::Options::fanuc();
+            o.limits.max_blocks = MAX_BLOCKS as u64;
+            o
+        }),
+        ..Default::default()
+    };
+    let tp = expander::expand(&program, &f.machine, &opts);
     // a move budget, like `interpret`'s: long legitimate programs (a G75 with a 0.002 mm
-    // step: 58 510 moves, 0.5 s in release) exceed the 10 s timeout only under coverage
+    // step: 58 510 moves, 0.5 s in release) exceed the timeout only under coverage
     // instrumentation; the benches and the found inputs cover large programs
     if tp.segments.len() > MAX_MOVES {
         return;
@@ -72,12 +113,18 @@ pub(crate) fn body(data: &[u8]) {
     if stamps > MAX_STAMPS {
         return;
     }
-    let intents = if data.len() % 2 == 1 {
-        analysis::Intents::Target(part.clone())
+    let intents = if data.len() & 1 != 0 {
+        analysis::Intents::Target(f.part.clone())
     } else {
         analysis::Intents::Program
     };
-    let settings = analysis::Settings { blank, tools, machine, fixture: None, tol: 0.01 };
+    let settings = analysis::Settings {
+        blank: &f.blank,
+        tools: &f.tools,
+        machine: &f.machine,
+        fixture: (data.len() & 2 != 0).then_some(&f.fixture),
+        tol: 0.01,
+    };
     let (sim, findings) =
         analysis::pipeline(&tp, &intents, &settings, &Default::default(), &mut |_| {});
     let _ = stock::area(&sim.final_shapes);
