@@ -14,8 +14,9 @@ where each came from and how it was triaged:
 - source: github:owner/repo@commit:path;
 - triage: what the reading must be today: `clean` (exit 0), `own` (the program's own
   error: latsim stops at its line with a clear message), `unsupported` (a construct of a
-  control latsim does not read: an alarm at the word naming it), `bug` (a wrong reading of
-  a supported control, not fixed yet; the note names the root cause).
+  control latsim does not read: an alarm at the word naming it, or a refusal saying whose
+  syntax it is), `bug` (a wrong reading of a supported control, not fixed yet; the note
+  names the root cause).
 
     scripts/field-test.py gather   # copy each program out of the fetched mirrors (/work/.mirror)
     scripts/field-test.py run      # run latsim check on each and print the table; exit 1
@@ -63,7 +64,11 @@ def gather():
             continue
         owner, repo, commit, path = m.groups()
         git_dir = MIRRORS / f"{owner}+{repo}" / "repo"
+        if (git_dir / ".git").exists():
+            git_dir = git_dir / ".git"
         if not git_dir.exists():
+            if (PROGRAMS / r["id"]).exists():
+                continue  # copied by hand from the stored file (no snapshot to fetch)
             print(f"not fetched: {owner}/{repo} (fetch it with the search tool's fetch)")
             missing += 1
             continue
@@ -94,17 +99,27 @@ def summary(stderr):
     for i, l in enumerate(lines):
         if l.strip().startswith("×"):
             code = lines[i - 2].strip() if i >= 2 else ""
-            place = next((re.search(r":(\d+:\d+)\]", m).group(1) for m in lines[i + 1:i + 3]
+            message = l.strip()[1:].strip()
+            j = i + 1
+            # the message wrapped over lines that start with │
+            while j < len(lines) and lines[j].strip().startswith("│"):
+                message += " " + lines[j].strip()[1:].strip()
+                j += 1
+            place = next((re.search(r":(\d+:\d+)\]", m).group(1) for m in lines[j:j + 2]
                           if re.search(r":(\d+:\d+)\]", m)), "")
-            return f"{code} {place} {l.strip()[1:].strip()}"
+            return f"{code} {place} {message}"
     return next((l.strip() for l in lines if l.strip()), "")
 
 
-def agrees(triage, reading):
-    """Whether a reading is what the recorded triage says it must be."""
+def agrees(triage, reading, first):
+    """Whether a reading is what the recorded triage says it must be. A construct of an
+    unsupported control must be named: an alarm at its word, or a refusal that says whose
+    syntax it is (not "unexpected character")."""
     if triage == "clean":
         return reading == "clean"
-    if triage in ("own", "unsupported", "bug"):
+    if triage == "unsupported":
+        return reading == "alarm" or (reading == "refused" and "syntax, not FANUC" in first)
+    if triage in ("own", "bug"):
         return reading in ("alarm", "refused")
     return False
 
@@ -119,7 +134,7 @@ def run(verbose):
         table[r["written"]][r["triage"]] += 1
         if r["triage"] == "bug":
             causes[r["note"].split(";")[0]] += 1
-        if not agrees(r["triage"], reading):
+        if not agrees(r["triage"], reading, first):
             differ.append((r, reading, first))
         if verbose:
             print(f"{r['id']:<44} {r['run_as']:<8} {reading:<8} {r['triage']:<11} {first[:110]}")

@@ -19,6 +19,18 @@ pub(crate) enum Command {
     Check(CheckArgs),
     /// Print the expanded toolpath, one row per segment.
     Expand(ExpandArgs),
+    /// What the part gained and lost between two programs (run with the same flags as
+    /// `run`) or two JSON reports of earlier runs: regions, times and findings. Exit 0
+    /// when the parts agree within --tol, 1 when they differ.
+    Diff(Box<DiffArgs>),
+}
+
+/// `latsim diff OLD NEW [run's flags]`: `--json`, `--svg`, `--png` and `--html` name the
+/// diff's own reports.
+#[derive(Debug, Args)]
+pub(crate) struct DiffArgs {
+    #[command(flatten)]
+    pub(crate) run: RunArgs,
 }
 
 /// Options that shape how a program is read and interpreted.
@@ -237,6 +249,19 @@ pub(crate) struct RunArgs {
     /// TOML file with those tables. A tool entering them, or cutting inside the jaws, crashes.
     #[arg(long, value_name = "SPEC|F", allow_hyphen_values = true)]
     pub(crate) chuck: Option<String>,
+    /// Write a `JUnit` XML report of the run here: one test case per program (a gouge, crash
+    /// or alarm fails it), for the CI's test reporter.
+    #[arg(long, value_name = "F")]
+    pub(crate) junit: Option<PathBuf>,
+    /// Write the run's findings as SARIF 2.1.0 here (alarms, crashes, gouges; leftovers and
+    /// warnings as notes), for code scanning.
+    #[arg(long, value_name = "F")]
+    pub(crate) sarif: Option<PathBuf>,
+    /// Compare the final part with a saved JSON report (`latsim diff`): a `.json` file for
+    /// one program, or a folder holding each program's `<prog>.json`. A part that differs
+    /// by more than --tol fails the run (exit 1); the verdict line says what changed.
+    #[arg(long, value_name = "F|DIR")]
+    pub(crate) baseline: Option<PathBuf>,
     /// Deviation tolerance in mm for gouges and leftovers.
     #[arg(long, value_name = "MM", default_value_t = 0.01, allow_hyphen_values = true, value_parser = positive_length)]
     pub(crate) tol: f64,

@@ -27,8 +27,11 @@ pub(crate) struct Loaded {
     pub(crate) blocks: usize,
     /// The encoding the program was read in (`UTF-8`, `GBK`, …; WHATWG names): for the
     /// report (its warning LS-ENCODING says it when it is not UTF-8).
-    #[allow(dead_code)] // read by the report once it has the field (coordinator)
     pub(crate) encoding: &'static str,
+    /// How the program was read and expanded: what a re-run of it with a change needs
+    /// (`rerun.rs`).
+    pub(crate) read: gcode::ReadOptions,
+    pub(crate) opts: Options,
 }
 
 /// Read a file whole, with a clear message when it is missing or too big.
@@ -308,6 +311,8 @@ pub(crate) fn load_program(
         toolpath,
         blocks,
         encoding: decoded.encoding.name(),
+        read,
+        opts,
     })
 }
 

@@ -5,15 +5,22 @@
 //! maps the findings onto `render`'s report (`report`) and owns progress, atomic writing
 //! and exit codes. It decides nothing about the part.
 
+mod baseline;
 mod cad;
+mod ci;
 mod cli;
 mod diag;
+mod diff_cmd;
 mod expand_cmd;
 mod input;
 mod job;
+mod junit;
 mod library;
+mod outcome;
 mod report;
+mod rerun;
 mod run;
+mod sarif;
 mod write;
 
 use clap::Parser;
@@ -43,6 +50,7 @@ fn main() -> ExitCode {
         cli::Command::Run(a) => run::run(&a),
         cli::Command::Check(a) => run::check(&a),
         cli::Command::Expand(a) => expand_cmd::expand(&a),
+        cli::Command::Diff(a) => diff_cmd::diff(&a),
     };
     ExitCode::from(code)
 }

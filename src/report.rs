@@ -140,6 +140,30 @@ fn note(n: &analysis::Note) -> Diagnostic {
     }
 }
 
+/// A cause of the analysis in the report's words.
+fn cause(c: &analysis::Cause) -> render::Cause {
+    render::Cause {
+        kind: c.kind.word().to_string(),
+        text: c.text.clone(),
+        numbers: c
+            .numbers
+            .iter()
+            .map(|(k, v)| ((*k).to_string(), *v))
+            .collect(),
+    }
+}
+
+/// A checked remedy of the analysis in the report's words.
+fn remedy(r: &analysis::Remedy) -> render::Remedy {
+    render::Remedy {
+        text: r.text.clone(),
+        tool: r.tool.clone(),
+        line: r.line,
+        edit: r.edit.clone(),
+        verified: r.verified,
+    }
+}
+
 /// A crash (or scrape) of the analysis at its move's line.
 fn crash(segments: &[Segment], c: &analysis::Crash) -> Crash {
     let span: Span = segments[c.segment].span;
@@ -154,6 +178,8 @@ fn crash(segments: &[Segment], c: &analysis::Crash) -> Crash {
         obstacle: c.obstacle.map(str::to_string),
         tool: c.tool.clone(),
         assumed: c.assumed,
+        cause: c.cause.as_ref().map(cause),
+        remedy: c.remedy.as_ref().map(remedy),
     }
 }
 
@@ -414,6 +440,8 @@ fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
             area_mm2: g.area,
             depth_mm: g.depth,
             assumed: g.assumed,
+            cause: g.cause.as_ref().map(cause),
+            remedy: g.remedy.as_ref().map(remedy),
         })
         .collect();
     report.gouge_shapes = d
@@ -444,6 +472,16 @@ fn add_deviation(report: &mut Report, loaded: &Loaded, findings: &Findings) {
             }
         });
     report.leftovers = leftovers.iter().map(|l| shape(&l.shape)).collect();
+    report.leftover_list = leftovers
+        .iter()
+        .map(|l| render::Leftover {
+            z: l.at[0],
+            r: l.at[1],
+            area_mm2: l.area,
+            depth_mm: l.depth,
+            cause: l.cause.as_ref().map(cause),
+        })
+        .collect();
     report.deviation = Some(render::Deviation {
         overcut_area_mm2: d.overcut_area(),
         undercut_area_mm2: d.undercut_area(),

@@ -4,6 +4,7 @@ use crate::cli::{CheckArgs, ReportKind, RunArgs};
 use crate::diag;
 use crate::input;
 use crate::job::Job;
+use crate::outcome::Outcome;
 use crate::write;
 use crate::{EXIT_CLEAN, EXIT_FINDINGS, EXIT_UNUSABLE};
 use analysis::{Findings, MAX_LISTED};
@@ -195,25 +196,24 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         );
         return EXIT_UNUSABLE;
     }
+    if !crate::baseline::usable(args, files.len()) {
+        return EXIT_UNUSABLE;
+    }
     let stems = output_stems(&files);
-    let mut inputs = files.clone();
-    inputs.extend(args.tools.clone());
-    inputs.extend(args.stock_file.clone());
-    inputs.extend(args.program.machine.clone());
-    inputs.extend(args.target.clone());
-    inputs.extend(
-        args.chuck
-            .as_ref()
-            .filter(|c| !c.contains('='))
-            .map(PathBuf::from),
-    );
+    let inputs = inputs_of(args, &files, &stems);
+    let started = std::time::Instant::now();
     let job = |i: usize| {
-        guarded(&files[i], files.len() > 1, || {
+        let t = std::time::Instant::now();
+        let mut outcome = guarded(&files[i], files.len() > 1, || {
             run_one(args, &files[i], &stems[i], &inputs, files.len() > 1)
-        })
+        });
+        outcome.seconds = t.elapsed().as_secs_f64();
+        outcome
     };
     if files.len() == 1 {
-        return job(0);
+        let outcome = job(0);
+        let code = outcome.code;
+        return crate::ci::write(args, &[outcome], code, started, &inputs);
     }
     if args.svg.is_some()
         || args.png.is_some()
@@ -227,24 +227,58 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
         );
         return EXIT_UNUSABLE;
     }
+    let outcomes = in_parallel(files.len(), job);
+    let worst = outcomes.iter().map(|o| o.code).max().unwrap_or(EXIT_CLEAN);
+    crate::ci::write(args, &outcomes, worst, started, &inputs)
+}
+
+/// The files a run reads, which no report may replace: the programs, the tables and
+/// profiles, and the baselines (`--out` naming the baseline folder is refused).
+fn inputs_of(args: &RunArgs, files: &[PathBuf], stems: &[String]) -> Vec<PathBuf> {
+    let mut inputs = files.to_vec();
+    inputs.extend(
+        stems
+            .iter()
+            .filter_map(|s| crate::baseline::path_for(args, s)),
+    );
+    inputs.extend(args.tools.clone());
+    inputs.extend(args.stock_file.clone());
+    inputs.extend(args.program.machine.clone());
+    inputs.extend(args.target.clone());
+    inputs.extend(
+        args.chuck
+            .as_ref()
+            .filter(|c| !c.contains('='))
+            .map(PathBuf::from),
+    );
+    inputs
+}
+
+/// `job(0)`, …, `job(n - 1)` on as many threads as there are cores, their outcomes in
+/// program order.
+fn in_parallel(n: usize, job: impl Fn(usize) -> Outcome + Sync) -> Vec<Outcome> {
     let next = std::sync::atomic::AtomicUsize::new(0);
-    let worst = std::sync::atomic::AtomicU8::new(EXIT_CLEAN);
+    let outcomes = std::sync::Mutex::new(Vec::with_capacity(n));
     let workers = std::thread::available_parallelism()
-        .map_or(2, |n| n.get())
-        .min(files.len());
+        .map_or(2, |c| c.get())
+        .min(n);
     std::thread::scope(|scope| {
         for _ in 0..workers {
             scope.spawn(|| loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                if i >= files.len() {
+                if i >= n {
                     break;
                 }
-                let code = job(i);
-                worst.fetch_max(code, std::sync::atomic::Ordering::Relaxed);
+                let outcome = job(i);
+                // (a job's panic is caught inside it: the lock is never poisoned)
+                let mut all = outcomes.lock().unwrap_or_else(|e| e.into_inner());
+                all.push((i, outcome));
             });
         }
     });
-    worst.into_inner()
+    let mut outcomes = outcomes.into_inner().unwrap_or_else(|e| e.into_inner());
+    outcomes.sort_by_key(|(i, _)| *i);
+    outcomes.into_iter().map(|(_, o)| o).collect()
 }
 
 /// The name each program's reports take: its file stem, or its whole file name where two
@@ -274,9 +308,9 @@ fn output_stems(files: &[PathBuf]) -> Vec<String> {
 
 /// Runs one program's job; a panic (a bug in latsim) becomes that program's own verdict,
 /// exit 2, instead of ending the whole batch.
-fn guarded(path: &Path, batch: bool, job: impl FnOnce() -> u8) -> u8 {
+fn guarded(path: &Path, batch: bool, job: impl FnOnce() -> Outcome) -> Outcome {
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(job)) {
-        Ok(code) => code,
+        Ok(outcome) => outcome,
         Err(payload) => {
             let what = payload
                 .downcast_ref::<&str>()
@@ -292,16 +326,17 @@ fn guarded(path: &Path, batch: bool, job: impl FnOnce() -> u8) -> u8 {
                     "this is a bug in latsim: please report it with the program",
                 );
             }
-            EXIT_UNUSABLE
+            Outcome::unusable(path.to_path_buf(), Some(message))
         }
     }
 }
 
 /// Simulate one program and write its reports. In a batch, the terminal gets only the
 /// verdict line (diagnostics are in the reports).
-fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: bool) -> u8 {
+fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: bool) -> Outcome {
+    let unusable = || Outcome::unusable(path.to_path_buf(), None);
     let Ok(mut job) = Job::load(args, path, batch) else {
-        return EXIT_UNUSABLE;
+        return unusable();
     };
     input::print_diagnostics(&job.loaded, args.program.quiet || batch);
     let targets = outputs(args, stem);
@@ -324,7 +359,7 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         }
     };
     let settings = job.settings(args.tol);
-    let (mut sim, findings) = analysis::pipeline(
+    let (mut sim, mut findings) = analysis::pipeline(
         &job.loaded.toolpath,
         &job.intents,
         &settings,
@@ -334,6 +369,11 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
+    let rerun = crate::rerun::Rerunner {
+        job: &job,
+        tol: args.tol,
+    };
+    analysis::diagnose::diagnose(&mut findings, &job.loaded.toolpath, &settings, &rerun);
     // the player does not show the stock the intents were read against (the epoch
     // snapshots of a long program are labelled with their own counts, not the marks)
     let stock_marks = analysis::stock_marks(&job.loaded.toolpath, &job.tools);
@@ -359,22 +399,22 @@ fn run_one(args: &RunArgs, path: &Path, stem: &str, inputs: &[PathBuf], batch: b
         report.snapshots = crate::report::snapshots(&job.blank, moves, &sim);
     }
     let places = (!batch).then(|| Places::of(&job.loaded, &findings));
+    let Ok(against) = crate::baseline::against(args, stem, &report, &job) else {
+        return unusable();
+    };
+    let items = crate::outcome::items(&job.loaded, &sim, &findings, args.tol, against.as_ref());
     if targets.iter().any(|(_, kind)| shows_picture(kind)) {
         let segments = std::mem::take(&mut job.loaded.toolpath.segments);
         crate::report::add_toolpath(&mut report, segments);
     }
     if write_reports(&report, &targets, args.dxf_x, inputs).is_err() {
-        return EXIT_UNUSABLE;
+        return unusable();
     }
     if let Some(places) = places {
         print_findings(&job.loaded.source.name, &places, &report);
     }
-    print_verdict(&name, &report, &job.loaded, &findings);
-    if findings.verdict == analysis::Verdict::Clean {
-        EXIT_CLEAN
-    } else {
-        EXIT_FINDINGS
-    }
+    let line = verdict_line(&name, &report, &job.loaded, &findings);
+    crate::outcome::finish(path, line, items, against, findings.verdict, batch)
 }
 
 /// Renders every report first, then writes them all to disk, then makes them visible: a
@@ -401,8 +441,13 @@ fn write_reports(
 }
 
 /// The verdict line: program, verdict, moves, removal, cycle time and the counts.
-fn print_verdict(name: &str, report: &render::Report, loaded: &input::Loaded, f: &Findings) {
-    println!(
+fn verdict_line(
+    name: &str,
+    report: &render::Report,
+    loaded: &input::Loaded,
+    f: &Findings,
+) -> String {
+    format!(
         "{}: {} — {} segments, removed {:.1} mm² / {:.0} mm³, cycle time {:.1} s, {} alarm(s), {} crash(es), {} gouge(s)",
         name,
         render::verdict_word(report.verdict).to_uppercase(),
@@ -416,7 +461,7 @@ fn print_verdict(name: &str, report: &render::Report, loaded: &input::Loaded, f:
         f.deviation
             .as_ref()
             .map_or(0, |d| d.gouges.iter().filter(|g| !g.assumed).count())
-    );
+    )
 }
 
 /// Where each crash and gouge is, `file:line` (the file a subprogram came from), for the
@@ -458,19 +503,7 @@ const MAX_PRINTED: usize = 20;
 /// at most [`MAX_PRINTED`] of each.
 fn print_findings(name: &str, places: &Places, report: &render::Report) {
     for (c, at) in report.crashes.iter().zip(&places.crashes).take(MAX_PRINTED) {
-        let what = match (&c.obstacle, &c.body) {
-            (Some(o), _) if o == analysis::GRIPPED_LENGTH => {
-                "the tool cuts the blank inside the chuck jaws (gripped length)".to_string()
-            }
-            (Some(o), Some(body)) => format!("the tool's {body} meets the {o}"),
-            (Some(o), None) => format!("the tool's cutting edge meets the {o}"),
-            (None, Some(body)) => format!("the tool's {body} meets stock"),
-            (None, None) => "rapid into stock".to_string(),
-        };
-        let of = match c.obstacle.as_deref() {
-            None | Some(analysis::GRIPPED_LENGTH) => "of stock",
-            Some(_) => "of overlap",
-        };
+        let (what, of) = crate::outcome::crash_words(c.body.as_deref(), c.obstacle.as_deref());
         let kind = if c.assumed {
             "possible crash (tool size assumed, not in the verdict)"
         } else {
@@ -484,6 +517,7 @@ fn print_findings(name: &str, places: &Places, report: &render::Report) {
             c.depth_mm,
             c.area_mm2
         );
+        print_why(c.cause.as_ref(), c.remedy.as_ref());
     }
     for (g, at) in report.gouges.iter().zip(&places.gouges).take(MAX_PRINTED) {
         let kind = if g.assumed {
@@ -498,6 +532,7 @@ fn print_findings(name: &str, places: &Places, report: &render::Report) {
             g.z,
             2.0 * g.r
         );
+        print_why(g.cause.as_ref(), g.remedy.as_ref());
     }
     for (what, n) in [
         ("crash(es)", report.crashes.len()),
@@ -509,6 +544,16 @@ fn print_findings(name: &str, places: &Places, report: &render::Report) {
                 n - MAX_PRINTED
             );
         }
+    }
+}
+
+/// The cause and the checked remedy of a finding, indented under its line.
+fn print_why(cause: Option<&render::Cause>, remedy: Option<&render::Remedy>) {
+    if let Some(c) = cause {
+        eprintln!("    why: {}", c.text);
+    }
+    if let Some(r) = remedy {
+        eprintln!("    fix (checked by re-running): {}", r.text);
     }
 }
 

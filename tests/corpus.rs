@@ -275,6 +275,25 @@ fn misses(report: &Json, expect: &Toml) -> Vec<String> {
                     None => m.push(format!("{kind} line {line}: the report gives no depth")),
                 }
             }
+            // issue 33: the cause's kind, and whether a checked remedy is given
+            if let Some(want) = f.get("cause").and_then(Toml::as_str) {
+                let got = hit["cause"]["kind"].as_str().unwrap_or("none");
+                if got != want {
+                    m.push(format!("{kind} line {line}: cause {got} (expected {want})"));
+                }
+            }
+            if let Some(want) = f.get("remedy").and_then(Toml::as_str) {
+                let got = if hit["remedy"]["verified"].as_bool() == Some(true) {
+                    "verified"
+                } else {
+                    "none"
+                };
+                if got != want {
+                    m.push(format!(
+                        "{kind} line {line}: remedy {got} (expected {want})"
+                    ));
+                }
+            }
         }
     }
     if let Some(a) = expect.get("removed_area_mm2").and_then(num) {

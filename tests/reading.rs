@@ -144,3 +144,55 @@ fn haas_g53_with_g01_feeds_and_fanuc_g53_rapids() {
     assert!(moves("haas").contains("feed"), "{}", moves("haas"));
     assert!(moves("fanuc-a").contains("rapid"), "{}", moves("fanuc-a"));
 }
+
+/// Okuma OSP programs (the field test's `$NAME.MIN%` files) stopped at "unexpected
+/// character '$'"; they are named, at the line, as Okuma syntax.
+#[test]
+fn okuma_programs_are_named() {
+    let (_dir, path) = temp_program("o.min", b"$PART.MIN%\nDEF WORK\nEND\nG50 S2000\nM02\n");
+    let out = latsim(&["check", path.to_str().unwrap(), "--control", "fanuc-a"]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("Okuma OSP syntax"), "{}", out.stderr);
+    assert!(out.stderr.contains("o.min:1:1"), "{}", out.stderr);
+    // a variable of another control's language (Okuma's PRES=1, Philips' N1=8001)
+    let (_dir, path) = temp_program("p.nc", b"G0 X100 Z2\nN180 G13 N1=8001 N2=8011\nM30\n");
+    let out = latsim(&["check", path.to_str().unwrap(), "--control", "fanuc-a"]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(
+        out.stderr
+            .contains("the assignment N1=8001 is another control's language"),
+        "{}",
+        out.stderr
+    );
+    assert!(out.stderr.contains("p.nc:2:1"), "{}", out.stderr);
+}
+
+/// A LinuxCNC named parameter assigned on a line of its own (`#<_depth> = 0.5`, the
+/// field test's LatheEasyStep output) stopped at "unexpected character '<' in a macro
+/// expression" under a control with macro B on; it is named as LinuxCNC's.
+#[test]
+fn linuxcnc_named_parameter_statements_are_named() {
+    let (_dir, path) = temp_program("n.ngc", b"G18 G21\n#<_depth> = 0.500\nG0 X10\nM2\n");
+    let out = latsim(&["check", path.to_str().unwrap(), "--control", "fanuc-a"]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(
+        out.stderr.contains("LinuxCNC (rs274ngc) syntax"),
+        "{}",
+        out.stderr
+    );
+    assert!(out.stderr.contains("n.ngc:2:1"), "{}", out.stderr);
+}
+
+/// LinuxCNC's G7 (diameter mode) is an alarm at its word that says whose code it is.
+#[test]
+fn linuxcnc_g7_is_named_in_its_alarm() {
+    let (_dir, path) = temp_program("g7.ngc", b"G18 G7 G90 G40\nG0 X10 Z2\nM2\n");
+    let out = latsim(&["check", path.to_str().unwrap(), "--control", "fanuc-a"]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert!(out.stderr.contains("g7.ngc:1:5"), "{}", out.stderr);
+    assert!(
+        out.stderr.contains("diameter mode in LinuxCNC"),
+        "{}",
+        out.stderr
+    );
+}

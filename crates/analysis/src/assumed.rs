@@ -89,8 +89,21 @@ impl Region {
         at(lo)..at(hi) + 1
     }
 
+    /// How far `p` is from the set's edges, up to `within` (only the edges of the bins
+    /// within that distance along Z are looked at).
+    pub(crate) fn depth_at(&self, p: P, within: f64) -> f64 {
+        let mut best = within;
+        for b in self.bin_range(p[0] - within, p[0] + within) {
+            for &k in &self.bins[b] {
+                let [u, v] = self.edges[k as usize];
+                best = best.min(crate::diagnose::segment_distance(p, u, v));
+            }
+        }
+        best
+    }
+
     /// Even-odd containment: the crossings of the ray from `p` toward +r.
-    fn contains(&self, p: P) -> bool {
+    pub(crate) fn contains(&self, p: P) -> bool {
         let mut c = false;
         for b in self.bin_range(p[0], p[0]) {
             for &k in &self.bins[b] {
@@ -106,7 +119,7 @@ impl Region {
     }
 
     /// The parameter intervals (0 at `a`, 1 at `b`) of the chord inside the set.
-    fn inside(&self, a: P, b: P) -> Vec<(f64, f64)> {
+    pub(crate) fn inside(&self, a: P, b: P) -> Vec<(f64, f64)> {
         let mut ts = vec![0.0, 1.0];
         let mut seen = Vec::new();
         for bin in self.bin_range(a[0].min(b[0]), a[0].max(b[0])) {
@@ -329,19 +342,76 @@ pub(crate) fn path_box(s: &Segment) -> geom::Rect {
 }
 
 /// Whether `seg`'s reference path enters `region` (a gouge: part material the intended part
-/// keeps; a piece of workholding) by more than [`ENTERS`].
+/// keeps; a piece of workholding): more than [`ENTERS`] of it inside, reaching deeper than
+/// [`ENTER_DEPTH`] from the region's edges (a path run along the edge, as a tip run on the
+/// contour is, does not enter).
 pub(crate) fn path_enters(seg: &Segment, region: &Region, chord_tol: f64) -> bool {
     section_chords(seg, chord_tol).into_iter().any(|[a, b]| {
         let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
-        region
-            .inside(a, b)
-            .iter()
-            .map(|(t0, t1)| t1 - t0)
-            .sum::<f64>()
-            * len
-            > ENTERS
+        region.inside(a, b).iter().any(|&(t0, t1)| {
+            let mid = (t0 + t1) / 2.0;
+            let p = [a[0] + (b[0] - a[0]) * mid, a[1] + (b[1] - a[1]) * mid];
+            (t1 - t0) * len > ENTERS && region.depth_at(p, ENTER_DEPTH) >= ENTER_DEPTH
+        })
     })
 }
+
+/// How near a gouge a point of the reference path that enters the intended part must lie
+/// to have made it, mm: an imaginary tip stands off its nose's cut by r(√2 − 1), 0.25 mm
+/// for a nose up to r0.6.
+const NEAR_GOUGE: f64 = 0.25;
+
+/// Whether `seg`'s reference path enters the intended `part` (deeper than [`ENTER_DEPTH`])
+/// where it touches the gouge `region` (within [`NEAR_GOUGE`]): the programmed point itself
+/// goes into the part there, whatever the tool. The path runs on the edge of what its tool
+/// removed (a tip on a straight cut bounds the cut), so entering the gouge region itself
+/// is not the test. Each stretch inside the part is looked at in up to 64 points.
+pub(crate) fn path_enters_part_at(
+    seg: &Segment,
+    part: &Region,
+    region: &Region,
+    chord_tol: f64,
+) -> bool {
+    section_chords(seg, chord_tol).into_iter().any(|[a, b]| {
+        let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
+        part.inside(a, b).into_iter().any(|(t0, t1)| {
+            let n = (((t1 - t0) * len / 0.05).ceil() as usize).clamp(1, 64);
+            (t1 - t0) * len > ENTERS
+                && (0..=n).any(|k| {
+                    let t = t0 + (t1 - t0) * k as f64 / n as f64;
+                    let p = [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
+                    part.depth_at(p, ENTER_DEPTH) >= ENTER_DEPTH
+                        && (region.contains(p) || region.depth_at(p, NEAR_GOUGE) < NEAR_GOUGE)
+                })
+        })
+    })
+}
+
+/// The places where `seg`'s reference path runs inside `region` (stretches longer than
+/// [`ENTERS`]), each with its depth there (the distance to the region's edges, up to
+/// `cap`): (midpoint, depth).
+pub(crate) fn inside_depths(
+    seg: &Segment,
+    region: &Region,
+    cap: f64,
+    chord_tol: f64,
+) -> Vec<(P, f64)> {
+    let mut out = Vec::new();
+    for [a, b] in section_chords(seg, chord_tol) {
+        let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
+        for (t0, t1) in region.inside(a, b) {
+            if (t1 - t0) * len > ENTERS {
+                let mid = (t0 + t1) / 2.0;
+                let p = [a[0] + (b[0] - a[0]) * mid, a[1] + (b[1] - a[1]) * mid];
+                out.push((p, region.depth_at(p, cap)));
+            }
+        }
+    }
+    out
+}
+
+/// How deep into a region a path must reach to enter it, mm.
+const ENTER_DEPTH: f64 = 0.005;
 
 /// The warning of a possible finding (`what`: "gouge", "crash") `depth` mm deep made by
 /// `seg`, naming the tool to state.

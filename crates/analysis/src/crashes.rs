@@ -52,6 +52,8 @@ pub(crate) fn crashes(removal: Vec<Crash>, fixture: &[FixtureCrash]) -> Vec<Cras
         obstacle: Some(f.obstacle),
         tool: vec![],
         assumed: false,
+        cause: None,
+        remedy: None,
     }));
     // stable: at one move, the stock's crash before the workholding's
     out.sort_by_key(|c| c.segment);

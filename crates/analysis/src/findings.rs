@@ -59,6 +59,78 @@ pub struct Crash {
     /// outline is a guess and its reference point alone meets nothing. No effect on the
     /// verdict.
     pub assumed: bool,
+    /// Why it happened ([`crate::diagnose`]); `None` before the diagnosis.
+    pub cause: Option<Cause>,
+    /// How to fix it, checked by simulating the fix; `None` when no fix was found.
+    pub remedy: Option<Remedy>,
+}
+
+/// Why a finding happened, from the geometry: which part of the tool met what, with the
+/// measured numbers that show it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cause {
+    /// The kind of cause.
+    pub kind: CauseKind,
+    /// One sentence for a machinist.
+    pub text: String,
+    /// The measured numbers it rests on (`flank_deg`, `clearance_deg`, `nose_radius`, …).
+    pub numbers: Vec<(&'static str, f64)>,
+}
+
+/// The kinds of cause (issue 33's contract; JSON `cause.kind`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CauseKind {
+    /// A turning tool's trailing edge on a descending flank steeper than its clearance.
+    TrailingEdge,
+    /// The leading edge on a wall that leans back further than the holder allows.
+    LeadingEdge,
+    /// The nose: in an inside corner smaller than its radius.
+    Nose,
+    /// The nose radius left uncompensated (or compensated for another nose).
+    Compensation,
+    /// The tool's body (holder, bar) reached what the edge could not.
+    Body,
+    /// A rapid into uncut stock.
+    Rapid,
+    /// The chuck, its jaws or the tailstock.
+    Workholding,
+    /// Another tool or operation cut it.
+    OtherTool,
+    /// The program itself: the programmed point goes there, or no pass reaches it.
+    Program,
+}
+
+impl CauseKind {
+    /// The JSON word.
+    pub fn word(self) -> &'static str {
+        match self {
+            Self::TrailingEdge => "trailing-edge",
+            Self::LeadingEdge => "leading-edge",
+            Self::Nose => "nose",
+            Self::Compensation => "compensation",
+            Self::Body => "body",
+            Self::Rapid => "rapid",
+            Self::Workholding => "workholding",
+            Self::OtherTool => "other-tool",
+            Self::Program => "program",
+        }
+    }
+}
+
+/// A fix latsim has checked: the program re-run with it (in memory, same blank) loses the
+/// finding and gains none.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Remedy {
+    /// One sentence for a machinist.
+    pub text: String,
+    /// The tool to use instead (an ISO designation or a table entry), for a tool change.
+    pub tool: Option<String>,
+    /// The program line to change, for a program change.
+    pub line: Option<u32>,
+    /// The block(s) as they should read there, for a program change.
+    pub edit: Option<String>,
+    /// Whether the re-run confirmed it (only confirmed remedies are given).
+    pub verified: bool,
 }
 
 /// A thread, checked in the final section.
@@ -171,6 +243,8 @@ mod tests {
             nearest: [0.0, 0.0],
             made_by: None,
             assumed: false,
+            cause: None,
+            remedy: None,
         }
     }
 

@@ -11,6 +11,8 @@
 mod assumed;
 mod crashes;
 mod deviation;
+pub mod diagnose;
+pub mod diff;
 mod findings;
 mod fixture;
 mod intent;
@@ -21,7 +23,9 @@ mod threads;
 
 pub use crashes::MAX_TOOL_POSES;
 pub use deviation::{deviation, Deviation, Finding};
-pub use findings::{Crash, Findings, GrooveCheck, Note, ThreadCheck, Verdict};
+pub use findings::{
+    Cause, CauseKind, Crash, Findings, GrooveCheck, Note, Remedy, ThreadCheck, Verdict,
+};
 pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH, TAILSTOCK_CENTRE};
 pub use intent::program::stock_marks;
 pub use intent::Intent;
@@ -64,7 +68,7 @@ pub struct Settings<'a> {
 
 /// Chord tolerance of the moves' arcs in every check, mm: the removal's
 /// (`stock::SimOptions::chord_tol`), so a check sees the sweep the removal cut.
-const CHORD_TOL: f64 = 0.001;
+pub(crate) const CHORD_TOL: f64 = 0.001;
 
 /// What the moves alone tell, worked out beside the removal (each is a pass over the moves).
 #[derive(Debug, Clone, PartialEq, Default)]

@@ -25,33 +25,9 @@ pub fn tool_at_crash(
     chord_tol: f64,
 ) -> Vec<Vec<[f64; 2]>> {
     let m = Mounted::new(tools, seg.tool, seg.hint, rear.contains(&seg.tool));
-    let path = move_path(seg, chord_tol);
-    if path.iter().flatten().any(|v| !v.is_finite()) {
+    let Some(p) = first_reach(m.part(body), seg, at, chord_tol, NEAR) else {
         return Vec::new();
-    }
-    let hit = m.part(body);
-    // the sweep up to t reaches the contact point (or its mirror: sweeps are folded)
-    let reaches = |t: f64| {
-        let sub = prefix(&path, t);
-        [at, [at[0], -at[1]]]
-            .iter()
-            .any(|&q| swept_near(hit, &sub, q))
     };
-    let (mut lo, mut hi) = (0.0, 1.0);
-    if reaches(0.0) {
-        hi = 0.0;
-    } else {
-        for _ in 0..STEPS {
-            let mid = 0.5 * (lo + hi);
-            if reaches(mid) {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-    }
-    let sub = prefix(&path, hi);
-    let p = sub[sub.len() - 1];
     let below = p[1] < 0.0;
     let place = |part: &Vec<P>| -> Vec<P> {
         let placed: Vec<P> = part
@@ -69,6 +45,46 @@ pub fn tool_at_crash(
         .chain(m.body.iter().flat_map(|b| b.outline.parts.iter()))
         .map(place)
         .collect()
+}
+
+/// Where the reference point of move `seg` is (as programmed, not folded) when `outline`,
+/// swept along the move, first reaches `at` (a point of the section, r ≥ 0, or its mirror:
+/// sweeps are folded); `None` for a move with no finite coordinates, or when `at` is not
+/// reached at all (within `near`) by the end of the move.
+pub(crate) fn first_reach(
+    outline: &Outline,
+    seg: &Segment,
+    at: P,
+    chord_tol: f64,
+    near: f64,
+) -> Option<P> {
+    let path = move_path(seg, chord_tol);
+    if path.iter().flatten().any(|v| !v.is_finite()) {
+        return None;
+    }
+    let reaches = |t: f64| {
+        let sub = prefix(&path, t);
+        [at, [at[0], -at[1]]]
+            .iter()
+            .any(|&q| swept_near(outline, &sub, q, near))
+    };
+    let (mut lo, mut hi) = (0.0, 1.0);
+    if reaches(0.0) {
+        hi = 0.0;
+    } else if !reaches(1.0) {
+        return None;
+    } else {
+        for _ in 0..STEPS {
+            let mid = 0.5 * (lo + hi);
+            if reaches(mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+    }
+    let sub = prefix(&path, hi);
+    Some(sub[sub.len() - 1])
 }
 
 /// The outline of each move's tool as mounted, for drawing the tool as it moves: the
@@ -133,24 +149,24 @@ fn prefix(path: &[P], t: f64) -> Vec<P> {
     out
 }
 
-/// Whether the sweep of `outline` along `path` comes within [`NEAR`] of `q`.
-fn swept_near(outline: &Outline, path: &[P], q: P) -> bool {
-    chord_sweeps(outline, path).any(|hull| inside_convex(&hull, q))
+/// Whether the sweep of `outline` along `path` comes within `near` of `q`.
+fn swept_near(outline: &Outline, path: &[P], q: P, near: f64) -> bool {
+    chord_sweeps(outline, path).any(|hull| inside_convex(&hull, q, near))
 }
 
-/// `q` inside the counter-clockwise convex polygon or within [`NEAR`] of its edges.
-fn inside_convex(poly: &[P], q: P) -> bool {
+/// `q` inside the counter-clockwise convex polygon or within `near` of its edges.
+fn inside_convex(poly: &[P], q: P, near: f64) -> bool {
     let n = poly.len();
     if n < 3 {
         return poly
             .iter()
-            .any(|p| (p[0] - q[0]).hypot(p[1] - q[1]) <= NEAR);
+            .any(|p| (p[0] - q[0]).hypot(p[1] - q[1]) <= near);
     }
     (0..n).all(|i| {
         let (a, b) = (poly[i], poly[(i + 1) % n]);
         let len = (b[0] - a[0]).hypot(b[1] - a[1]);
         let cross = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]);
-        len == 0.0 || cross >= -NEAR * len
+        len == 0.0 || cross >= -near * len
     })
 }
 

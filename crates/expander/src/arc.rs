@@ -5,7 +5,7 @@ use gcode::Word;
 
 /// Why an arc cannot be made.
 #[derive(Debug, Clone, PartialEq)]
-pub enum ArcError {
+pub(crate) enum ArcError {
     /// R is shorter than half the chord by more than the tolerance.
     RadiusTooSmall {
         /// Programmed R.
@@ -33,7 +33,7 @@ const END_TOL_REL: f64 = 0.001;
 
 /// Centre of an arc of radius `r` (≤ 180°) from `from` to `to`.
 /// Counter-clockwise arcs of at most a half turn have their centre left of the chord.
-pub fn centre_from_radius(from: Pt, to: Pt, r: f64, ccw: bool) -> Result<Pt, ArcError> {
+pub(crate) fn centre_from_radius(from: Pt, to: Pt, r: f64, ccw: bool) -> Result<Pt, ArcError> {
     if r <= 0.0 {
         return Err(ArcError::NonPositiveRadius);
     }
@@ -61,7 +61,7 @@ pub fn centre_from_radius(from: Pt, to: Pt, r: f64, ccw: bool) -> Result<Pt, Arc
 }
 
 /// Check an I/K centre: the end must lie on the circle through the start.
-pub fn check_centre(from: Pt, to: Pt, centre: Pt) -> Result<(), ArcError> {
+pub(crate) fn check_centre(from: Pt, to: Pt, centre: Pt) -> Result<(), ArcError> {
     let (r_start, r_end) = (centre.dist(from), centre.dist(to));
     let diff = (r_start - r_end).abs();
     if diff > END_TOL_MM && diff > END_TOL_REL * r_start {

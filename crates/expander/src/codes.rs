@@ -92,6 +92,8 @@ pub(crate) fn g_name(t: i32) -> String {
     }
 }
 
+/// G07: no FANUC, GSK or Haas lathe code; `LinuxCNC`'s diameter mode (named in its alarm).
+pub(crate) const G07: i32 = 70;
 /// G10 data setting (offsets; `G10 L50` parameter input until G11).
 pub(crate) const G10: i32 = 100;
 /// G11 end of parameter input.

@@ -8,7 +8,7 @@
 //! assert_eq!(tp.segments.last().unwrap().to, expander::Pt::new(-20.0, 20.0));
 //! ```
 mod alarm;
-pub mod arc;
+mod arc;
 mod codes;
 mod corner;
 mod cycles;
@@ -17,15 +17,14 @@ mod interp;
 mod library;
 mod machine;
 mod mcodes;
+mod text_place;
 pub mod timing;
-pub mod tnrc;
-pub mod toolpath;
+mod tnrc;
+mod toolpath;
 mod words;
-pub mod workholding;
+mod workholding;
 
 pub use alarm::Diagnostic;
-pub use cycles::contour::{FinishingShape, ShapeElement, ShapeModes};
-pub use cycles::g75_1::{groove_shape, Corner, Trapezoid};
 pub use interp::{expand, Options, Toolpath};
 pub use library::{Library, LibraryRef};
 pub use machine::{

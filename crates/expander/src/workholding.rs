@@ -20,13 +20,13 @@
 use toml::Spanned;
 
 /// Default radial height of hard jaws above the gripped diameter, mm.
-pub const DEFAULT_JAW: f64 = 25.0;
+pub(crate) const DEFAULT_JAW: f64 = 25.0;
 /// Default chuck body length behind the face, mm.
-pub const DEFAULT_DEPTH: f64 = 100.0;
+pub(crate) const DEFAULT_DEPTH: f64 = 100.0;
 /// Default quill diameter of the tailstock, mm.
-pub const DEFAULT_QUILL: f64 = 40.0;
+pub(crate) const DEFAULT_QUILL: f64 = 40.0;
 /// Default quill length behind the centre's cone, mm.
-pub const DEFAULT_QUILL_LENGTH: f64 = 150.0;
+pub(crate) const DEFAULT_QUILL_LENGTH: f64 = 150.0;
 /// Largest length or coordinate accepted, mm (no lathe travels 10 m).
 const MAX_MM: f64 = 10_000.0;
 
@@ -249,7 +249,7 @@ impl Workholding {
     /// profile's keys (see the module documentation).
     pub fn from_toml(text: &str) -> Result<Self, WorkholdingError> {
         let at = |span: std::ops::Range<usize>, message: String| {
-            let (line, column) = crate::machine::line_col(text, span.start);
+            let (line, column) = crate::text_place::line_col(text, span.start);
             WorkholdingError {
                 line,
                 column,
@@ -259,7 +259,7 @@ impl Workholding {
         let f: WorkholdingFile = toml::from_str(text).map_err(|e| {
             let (line, column) = e
                 .span()
-                .map(|s| crate::machine::line_col(text, s.start))
+                .map(|s| crate::text_place::line_col(text, s.start))
                 .unwrap_or((0, 0));
             WorkholdingError {
                 line,

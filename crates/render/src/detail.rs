@@ -58,6 +58,8 @@ enum Kind<'a> {
 
 struct Finding<'a> {
     title: String,
+    /// Lines under the inset: the cause and the checked remedy of a finding.
+    why: Vec<String>,
     z: f64,
     r: f64,
     half: f64,
@@ -123,6 +125,7 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     let mut out = Vec::new();
     for c in &report.crashes {
         out.push(Finding {
+            why: why_lines(c.cause.as_ref(), c.remedy.as_ref()),
             title: format!(
                 "{}, {}",
                 if c.assumed { "possible crash" } else { "crash" },
@@ -136,6 +139,7 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
     }
     for g in &report.gouges {
         out.push(Finding {
+            why: why_lines(g.cause.as_ref(), g.remedy.as_ref()),
             title: format!(
                 "{}, {}, depth {} mm",
                 if g.assumed { "possible gouge" } else { "gouge" },
@@ -165,6 +169,7 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
             None => format!("groove line {}", g.line),
         };
         out.push(Finding {
+            why: Vec::new(),
             title,
             z: 0.0,
             r: 0.0,
@@ -183,6 +188,7 @@ fn findings<'a>(report: &'a Report, main: &View) -> Vec<Finding<'a>> {
         }
         if let Some(window) = thread_window(t) {
             out.push(Finding {
+                why: Vec::new(),
                 title: thread_title(t),
                 z: 0.0,
                 r: 0.0,
@@ -281,7 +287,13 @@ fn leftover_finding<'a>(report: &Report, clampf: &dyn Fn(f64, f64) -> f64) -> Op
         None => "leftover".to_string(),
     };
     let [z, r] = spot.centre;
+    let why = report
+        .leftover_list
+        .get(spot.leftover)
+        .map(|l| why_lines(l.cause.as_ref(), None))
+        .unwrap_or_default();
     (z.is_finite() && r.is_finite()).then(|| Finding {
+        why,
         title,
         z,
         r,
@@ -292,6 +304,17 @@ fn leftover_finding<'a>(report: &Report, clampf: &dyn Fn(f64, f64) -> f64) -> Op
 
 /// Each inset's title, tick labels and gap, px.
 const OVERHEAD: f64 = 58.0;
+/// Each line of cause or remedy under an inset, px.
+const WHY_LINE: f64 = 15.0;
+
+/// The lines under a finding's inset: why, and the fix latsim checked.
+fn why_lines(cause: Option<&crate::Cause>, remedy: Option<&crate::Remedy>) -> Vec<String> {
+    cause
+        .map(|c| format!("why: {}", c.text))
+        .into_iter()
+        .chain(remedy.map(|r| format!("fix (checked): {}", r.text)))
+        .collect()
+}
 /// Smallest useful inset plot height.
 const MIN_PLOT_H: f64 = 80.0;
 
@@ -304,7 +327,8 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
         if list.is_empty() {
             return RIGHT_TOP;
         }
-        let h = ((bottom - RIGHT_TOP) / list.len() as f64 - OVERHEAD).min(230.0);
+        let lines: f64 = list.iter().map(|f| f.why.len() as f64 * WHY_LINE).sum();
+        let h = ((bottom - RIGHT_TOP - lines) / list.len() as f64 - OVERHEAD).min(230.0);
         if h >= MIN_PLOT_H {
             break h;
         }
@@ -365,7 +389,17 @@ pub(crate) fn details(doc: &mut Doc, report: &Report, main: &View, bottom: f64) 
             corner_labels(doc, &v, ring);
         }
         doc.rect(rect, "none", "#2b2f36", 1.0);
-        top += h + OVERHEAD;
+        for (k, line) in f.why.iter().enumerate() {
+            doc.text(
+                RIGHT_X,
+                top + 10.0 + h + 34.0 + k as f64 * WHY_LINE,
+                FS_SMALL,
+                "start",
+                colour::INK,
+                &truncate(line, max),
+            );
+        }
+        top += h + OVERHEAD + f.why.len() as f64 * WHY_LINE;
     }
     doc.close();
     top

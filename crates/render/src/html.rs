@@ -512,7 +512,7 @@ fn crash_table(out: &mut String, id: &str, title: &str, list: &[Crash]) {
         out.push_str("<p class=\"none\">none</p>\n");
         return;
     }
-    out.push_str("<table class=\"list crash\"><thead><tr><th>line</th><th>col</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>what</th></tr></thead><tbody>\n");
+    out.push_str("<table class=\"list crash\"><thead><tr><th>line</th><th>col</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>what</th><th>why, and the fix latsim checked</th></tr></thead><tbody>\n");
     for (i, c) in list.iter().take(MAX_ROWS).enumerate() {
         let part = c.body.as_deref().unwrap_or("cutting edge");
         let what = match &c.obstacle {
@@ -527,7 +527,7 @@ fn crash_table(out: &mut String, id: &str, title: &str, list: &[Crash]) {
         };
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
+            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td><td>{}</td></tr>",
             c.line,
             extra(i),
             c.line,
@@ -536,11 +536,21 @@ fn crash_table(out: &mut String, id: &str, title: &str, list: &[Crash]) {
             pos(2.0 * c.r),
             esc(&quantity(c.area_mm2)),
             esc(&quantity(c.depth_mm)),
-            esc(&what)
+            esc(&what),
+            why(c.cause.as_ref(), c.remedy.as_ref())
         );
     }
     out.push_str("</tbody></table>\n");
     more(out, list.len());
+}
+
+/// A finding's cause and checked remedy for a table cell (escaped HTML).
+fn why(cause: Option<&crate::Cause>, remedy: Option<&crate::Remedy>) -> String {
+    let mut cell = cause.map_or_else(String::new, |c| esc(&c.text));
+    if let Some(r) = remedy {
+        let _ = write!(cell, "<br><b>fix (checked):</b> {}", esc(&r.text));
+    }
+    cell
 }
 
 fn gouge_table(out: &mut String, list: &[Gouge]) {
@@ -554,7 +564,7 @@ fn gouge_table(out: &mut String, list: &[Gouge]) {
         out.push_str("<p class=\"none\">none</p>\n");
         return;
     }
-    out.push_str("<table class=\"list gouge\"><thead><tr><th>line</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>certainty</th></tr></thead><tbody>\n");
+    out.push_str("<table class=\"list gouge\"><thead><tr><th>line</th><th>Z (mm)</th><th>X Ø (mm)</th><th>area (mm²)</th><th>depth (mm)</th><th>certainty</th><th>why, and the fix latsim checked</th></tr></thead><tbody>\n");
     for (i, g) in list.iter().take(MAX_ROWS).enumerate() {
         let certainty = if g.assumed {
             "possible: tool size assumed, not in the verdict"
@@ -563,7 +573,7 @@ fn gouge_table(out: &mut String, list: &[Gouge]) {
         };
         let _ = writeln!(
             out,
-            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
+            "<tr data-line=\"{}\"{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td><td>{}</td></tr>",
             g.line,
             extra(i),
             g.line,
@@ -571,7 +581,8 @@ fn gouge_table(out: &mut String, list: &[Gouge]) {
             pos(2.0 * g.r),
             esc(&quantity(g.area_mm2)),
             pos(g.depth_mm),
-            certainty
+            certainty,
+            why(g.cause.as_ref(), g.remedy.as_ref())
         );
     }
     out.push_str("</tbody></table>\n");

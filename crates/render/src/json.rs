@@ -77,6 +77,59 @@ struct CrashJ {
     /// A possible crash of a tool the table does not state (additive, only when true).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     assumed_tool: bool,
+    /// Why it happened (additive): `{kind, text, <numbers>}`, `null` when not diagnosed.
+    cause: Option<CauseJ>,
+    /// A checked fix (additive): `{text, tool, line, edit, verified}`, or `null`.
+    remedy: Option<RemedyJ>,
+}
+
+#[derive(Serialize)]
+struct CauseJ {
+    kind: String,
+    text: String,
+    #[serde(flatten)]
+    numbers: std::collections::BTreeMap<String, Option<f64>>,
+}
+
+impl From<&crate::Cause> for CauseJ {
+    fn from(c: &crate::Cause) -> Self {
+        Self {
+            kind: c.kind.clone(),
+            text: c.text.clone(),
+            numbers: c.numbers.iter().map(|(k, v)| (k.clone(), r6(*v))).collect(),
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct RemedyJ {
+    text: String,
+    tool: Option<String>,
+    line: Option<u32>,
+    edit: Option<String>,
+    verified: bool,
+}
+
+impl From<&crate::Remedy> for RemedyJ {
+    fn from(r: &crate::Remedy) -> Self {
+        Self {
+            text: r.text.clone(),
+            tool: r.tool.clone(),
+            line: r.line,
+            edit: r.edit.clone(),
+            verified: r.verified,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct LeftoverJ {
+    z: Option<f64>,
+    x: Option<f64>,
+    area_mm2: Option<f64>,
+    depth_mm: Option<f64>,
+    cause: Option<CauseJ>,
+    remedy: Option<RemedyJ>,
 }
 
 impl From<&crate::Crash> for CrashJ {
@@ -91,6 +144,8 @@ impl From<&crate::Crash> for CrashJ {
             body: c.body.clone(),
             obstacle: c.obstacle.clone(),
             assumed_tool: c.assumed,
+            cause: c.cause.as_ref().map(CauseJ::from),
+            remedy: c.remedy.as_ref().map(RemedyJ::from),
         }
     }
 }
@@ -105,6 +160,10 @@ struct GougeJ {
     /// A possible gouge of a tool the table does not state (additive, only when true).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     assumed_tool: bool,
+    /// Why it happened (additive), or `null`.
+    cause: Option<CauseJ>,
+    /// A checked fix (additive), or `null`.
+    remedy: Option<RemedyJ>,
 }
 
 #[derive(Serialize)]
@@ -166,6 +225,8 @@ struct Doc<'a> {
     crashes: Vec<CrashJ>,
     rapid_cuts: Vec<CrashJ>,
     gouges: Vec<GougeJ>,
+    /// The leftovers as findings (additive): place, size, cause.
+    leftovers: Vec<LeftoverJ>,
     deviation: Option<DeviationJ>,
     grooves: Vec<GrooveJ>,
     /// Custom macro B's variables at the end of the run (additive field).
@@ -231,6 +292,20 @@ pub(crate) fn json(report: &Report) -> String {
                 area_mm2: r6(g.area_mm2),
                 depth_mm: r6(g.depth_mm),
                 assumed_tool: g.assumed,
+                cause: g.cause.as_ref().map(CauseJ::from),
+                remedy: g.remedy.as_ref().map(RemedyJ::from),
+            })
+            .collect(),
+        leftovers: report
+            .leftover_list
+            .iter()
+            .map(|l| LeftoverJ {
+                z: r6(l.z),
+                x: r6(2.0 * l.r),
+                area_mm2: r6(l.area_mm2),
+                depth_mm: r6(l.depth_mm),
+                cause: l.cause.as_ref().map(CauseJ::from),
+                remedy: None,
             })
             .collect(),
         deviation: report.deviation.as_ref().map(|d| DeviationJ {

@@ -22,6 +22,7 @@
 //! move slider drawing on a `<canvas>` from a compact JSON block embedded in the page.
 mod block;
 mod detail;
+mod diff;
 mod doc;
 mod fixture;
 mod fonts;
@@ -38,6 +39,9 @@ mod scale;
 mod svg;
 mod text;
 
+pub use diff::{
+    diff_html, diff_json, diff_png, diff_svg, DiffFinding, DiffRegion, DiffReport, ToolTime,
+};
 pub use report::*;
 
 /// Width of the SVG and PNG, px.

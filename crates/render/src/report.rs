@@ -93,6 +93,52 @@ pub struct Crash {
     pub tool: Vec<Vec<[f64; 2]>>,
     /// A possible crash: its tool's outline is assumed (not in the verdict); drawn hollow.
     pub assumed: bool,
+    /// Why it happened (the analysis's diagnosis); `None`: not diagnosed.
+    pub cause: Option<Cause>,
+    /// A fix the analysis has checked by re-running the program with it.
+    pub remedy: Option<Remedy>,
+}
+
+/// Why a finding happened.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Cause {
+    /// `trailing-edge`, `leading-edge`, `nose`, `compensation`, `body`, `rapid`,
+    /// `workholding`, `other-tool` or `program`.
+    pub kind: String,
+    /// One sentence for a machinist.
+    pub text: String,
+    /// The measured numbers it rests on, e.g. `("flank_deg", 41.0)`.
+    pub numbers: Vec<(String, f64)>,
+}
+
+/// A fix the analysis has checked by re-running the program with it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Remedy {
+    /// One sentence for a machinist.
+    pub text: String,
+    /// The tool to use instead, for a tool change.
+    pub tool: Option<String>,
+    /// The program line to change, for a program change.
+    pub line: Option<u32>,
+    /// The block(s) as they should read, for a program change.
+    pub edit: Option<String>,
+    /// Whether the re-run confirmed it.
+    pub verified: bool,
+}
+
+/// Material left that should be gone, with why.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Leftover {
+    /// Its thickest place, z.
+    pub z: f64,
+    /// Its thickest place, r.
+    pub r: f64,
+    /// Area, mm² of the half section.
+    pub area_mm2: f64,
+    /// Its thickness there, mm.
+    pub depth_mm: f64,
+    /// Why it stayed.
+    pub cause: Option<Cause>,
 }
 
 /// A piece of workholding drawn in the picture (light grey, labelled).
@@ -120,6 +166,10 @@ pub struct Gouge {
     /// A possible gouge: the tool that made it has an assumed outline (not in the
     /// verdict); drawn hatched instead of filled red.
     pub assumed: bool,
+    /// Why it happened (the analysis's diagnosis); `None`: not diagnosed.
+    pub cause: Option<Cause>,
+    /// A fix the analysis has checked by re-running the program with it.
+    pub remedy: Option<Remedy>,
 }
 
 /// Summary of final part versus intended shape.
@@ -189,6 +239,9 @@ pub struct Report {
     /// attribution); the one [`Report::leftover_spot`] names gets a detail view after the
     /// findings and grooves, as room allows.
     pub leftovers: Vec<Shape>,
+    /// The leftovers as findings (place, size, cause), in the order of
+    /// [`Report::leftovers`].
+    pub leftover_list: Vec<Leftover>,
     /// The largest leftover's thickest place (measured by the simulator), where its
     /// detail view looks; `None`: no leftover view.
     pub leftover_spot: Option<LeftoverSpot>,

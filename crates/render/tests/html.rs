@@ -92,7 +92,7 @@ fn tables_list_verdict_summary_and_findings() {
     // The gouge row: line 11, Z −22.5, X Ø28 (r 14), 1 mm², 0.2 mm deep, certain.
     assert!(
         page.contains(
-            "<tr data-line=\"11\"><td class=\"n\">11</td><td class=\"n\">-22.5</td><td class=\"n\">28</td><td class=\"n\">1.00</td><td class=\"n\">0.2</td><td>certain</td></tr>"
+            "<tr data-line=\"11\"><td class=\"n\">11</td><td class=\"n\">-22.5</td><td class=\"n\">28</td><td class=\"n\">1.00</td><td class=\"n\">0.2</td><td>certain</td><td></td></tr>"
         ),
         "gouge row"
     );

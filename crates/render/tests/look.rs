@@ -169,6 +169,8 @@ fn write_big_part_picture() {
             area_mm2: 0.0004,
             depth_mm: 0.004,
             assumed: false,
+            cause: None,
+            remedy: None,
         }],
         gouge_shapes: vec![sq(-18.05, -17.95, 56.996, 57.0)],
         warnings: (0..3)

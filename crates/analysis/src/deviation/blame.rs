@@ -51,17 +51,19 @@ pub(super) fn blame(
 /// Which of `regions` (gouges of guessed tools) do not depend on what the table leaves out
 /// (spec/simulation.md, "Findings from assumed tools"): those the stated core of a guessed
 /// tool (`stock::Mounted::core`: an insert's nose, a blade's tip) sweeps over on some move,
-/// or whose reference path enters them ([`crate::assumed`]). One pass over the moves for
-/// all of them; each move's path and core sweep made once, where a region's box is near.
-/// `from[g]`: the move that made region `g` (the first whose sweep overlaps it): no move
-/// before it can have entered it.
+/// or where the reference path enters the intended `part` ([`crate::assumed`]). One pass
+/// over the moves for all of them; each move's path and core sweep made once, where a
+/// region's box is near. `from[g]`: the move that made region `g` (the first whose sweep
+/// overlaps it): no move before it can have entered it.
 pub(crate) fn certain(
     regions: &[&Shape],
     from: &[usize],
+    part: &[Shape],
     segments: &[Segment],
     mounts: &mut Mounts,
     chord_tol: f64,
 ) -> Vec<bool> {
+    let part = crate::assumed::Region::new(part);
     let boxes: Vec<Rect> = regions.iter().map(|r| Rect::of(pts(&r.outer))).collect();
     let indexes: Vec<crate::assumed::Region> = regions
         .iter()
@@ -99,7 +101,7 @@ pub(crate) fn certain(
             let by_core = core
                 .as_ref()
                 .is_some_and(|sweep| overlaps(regions[g], &boxes[g], sweep));
-            if by_core || crate::assumed::path_enters(seg, &indexes[g], chord_tol) {
+            if by_core || crate::assumed::path_enters_part_at(seg, &part, &indexes[g], chord_tol) {
                 certain[g] = true;
                 open.retain(|&o| o != g);
             }
@@ -190,4 +192,60 @@ fn holds_all(hull: &[P], ring: &[P]) -> bool {
             cross * sign >= 0.0
         })
     })
+}
+
+/// For each of `regions`, every move whose tool sweep overlaps it by more than a sliver, in
+/// move order: the moves that made a region of `crate::diff` (the blame above stops at the
+/// first). With `margin` > 0 each sweep is grown by it first (its Minkowski sum with a
+/// square): the moves that ran within `margin` of a region, which left its edge where it
+/// is. One pass over the moves; a move's sweep is built only when its box may reach one.
+pub(crate) fn moves_over(
+    regions: &[Shape],
+    segments: &[Segment],
+    mounts: &mut Mounts,
+    chord_tol: f64,
+    margin: f64,
+) -> Vec<Vec<usize>> {
+    let margin = margin.max(0.0);
+    let boxes: Vec<Rect> = regions
+        .iter()
+        .map(|g| Rect::of(pts(&g.outer)).grown(margin))
+        .collect();
+    let mut out = vec![vec![]; regions.len()];
+    for (i, seg) in segments.iter().enumerate() {
+        let mounted = mounts.of(seg);
+        let near: Vec<usize> = (0..regions.len())
+            .filter(|&g| may_sweep_over(&boxes[g], seg, &mounted.edge))
+            .collect();
+        if near.is_empty() {
+            continue;
+        }
+        let mut sweep = float_sweep(&mounted.edge, &move_path(seg, chord_tol));
+        if margin > 0.0 {
+            sweep = sweep.iter().map(|part| grown(part, margin)).collect();
+        }
+        for g in near {
+            if overlaps(&regions[g], &boxes[g], &sweep) {
+                out[g].push(i);
+            }
+        }
+    }
+    out
+}
+
+/// The convex `part` grown by `m` along both axes (its Minkowski sum with a square of side
+/// 2·`m`): convex again.
+fn grown(part: &[P], m: f64) -> Vec<P> {
+    let corners: Vec<P> = part
+        .iter()
+        .flat_map(|p| {
+            [
+                [p[0] - m, p[1] - m],
+                [p[0] + m, p[1] - m],
+                [p[0] + m, p[1] + m],
+                [p[0] - m, p[1] + m],
+            ]
+        })
+        .collect();
+    geom::flat::convex_hull(&corners)
 }

@@ -3,6 +3,7 @@
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
 mod blame;
+pub(crate) use blame::moves_over;
 #[cfg(test)]
 mod tests;
 
@@ -34,6 +35,10 @@ pub struct Finding {
     /// that made it cuts with an outline the table does not state, and the tool's
     /// reference point alone does not enter the region. No effect on the verdict.
     pub assumed: bool,
+    /// Why it happened ([`crate::diagnose`]); `None` before the diagnosis.
+    pub cause: Option<crate::Cause>,
+    /// How to fix it, checked by simulating the fix; `None` when none was found.
+    pub remedy: Option<crate::Remedy>,
 }
 
 /// Gouges and leftovers beyond the tolerance.
@@ -129,14 +134,20 @@ pub fn deviation(
         .partition(|g| cut_later(g, intents, segments, tools, &world_box));
     out.gouges = gouges;
     out.later_cuts = later;
-    mark_assumed(&mut out.gouges, segments, &mut mounts, chord_tol);
+    mark_assumed(&mut out.gouges, &part, segments, &mut mounts, chord_tol);
     out
 }
 
 /// Marks the gouges made by a guessed tool that only its assumed extent explains as
 /// possible (the first [`crate::assumed::MAX_TESTED`] of them are tested, the rest stay
 /// possible).
-fn mark_assumed(gouges: &mut [Finding], segments: &[Segment], mounts: &mut Mounts, chord_tol: f64) {
+fn mark_assumed(
+    gouges: &mut [Finding],
+    part: &[Shape],
+    segments: &[Segment],
+    mounts: &mut Mounts,
+    chord_tol: f64,
+) {
     let guessed: Vec<usize> = (0..gouges.len())
         .filter(|&g| {
             gouges[g]
@@ -150,7 +161,7 @@ fn mark_assumed(gouges: &mut [Finding], segments: &[Segment], mounts: &mut Mount
         .iter()
         .map(|&g| gouges[g].made_by.unwrap_or(0))
         .collect();
-    let certain = blame::certain(&regions, &from, segments, mounts, chord_tol);
+    let certain = blame::certain(&regions, &from, part, segments, mounts, chord_tol);
     for (k, &g) in guessed.iter().enumerate() {
         gouges[g].assumed = !certain.get(k).copied().unwrap_or(false);
     }
@@ -263,6 +274,8 @@ fn findings(region: Vec<Shape>, part: &[Shape], tol: f64) -> Vec<Finding> {
                 nearest,
                 made_by: None,
                 assumed: false,
+                cause: None,
+                remedy: None,
             })
         })
         .collect()

@@ -19,6 +19,7 @@
 
 use super::Cycle;
 use crate::arc::ArcWords;
+use crate::codes::{G00, G01, G02, G03, G04, G40, G41, G42, G96, G97, G98, G99};
 use crate::corner::{self, Ask};
 use crate::tnrc::Side;
 use crate::{Arc, Diagnostic, Pt, Span};
@@ -27,7 +28,7 @@ use std::borrow::Cow;
 
 /// One element of a finishing shape: a line or an arc from `from` to `to` (G54 frame).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ShapeElement {
+pub(crate) struct ShapeElement {
     /// Start point.
     pub from: Pt,
     /// End point.
@@ -46,7 +47,7 @@ pub struct ShapeElement {
 
 impl ShapeElement {
     /// This element moved by `d` (a translated arc keeps its radius and direction).
-    pub fn shifted(&self, d: Pt) -> Self {
+    pub(crate) fn shifted(&self, d: Pt) -> Self {
         let m = |p: Pt| Pt::new(p.z + d.z, p.r + d.r);
         Self {
             from: m(self.from),
@@ -63,7 +64,7 @@ impl ShapeElement {
 /// Spindle, tool and feed-mode words written inside a finishing shape, as in force at an
 /// element (`None`: not written in the shape so far).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ShapeModes {
+pub(crate) struct ShapeModes {
     /// S value.
     pub s: Option<f64>,
     /// G96 (true) or G97 (false).
@@ -79,8 +80,8 @@ pub struct ShapeModes {
 /// Exposed for the gouge analysis: the part lies on the side of the shape away from the
 /// start point (spec/simulation.md, "The intended shape").
 #[derive(Debug, Clone, PartialEq)]
-pub struct FinishingShape {
-    /// The cycle that read it, in tenths (700, 710, 720, 730).
+pub(crate) struct FinishingShape {
+    /// The cycle that read it, in tenths (G70, G71, G72, G73).
     pub cycle: i32,
     /// The cycle's start point A = the start of the ns block, G54 frame.
     pub start: Pt,
@@ -121,7 +122,7 @@ impl FinishingShape {
     }
 
     /// The intended contour for the analysis: A, then B … C with arcs chorded at `tol`.
-    pub fn intended_path(&self, tol: f64) -> Vec<Pt> {
+    pub(crate) fn intended_path(&self, tol: f64) -> Vec<Pt> {
         let mut pts = vec![self.start];
         for e in &self.elements {
             let seg = crate::Segment {
@@ -142,12 +143,12 @@ impl FinishingShape {
     }
 
     /// Point B, the end of the ns block.
-    pub fn b(&self) -> Pt {
+    pub(crate) fn b(&self) -> Pt {
         self.elements[0].to
     }
 
     /// Point C, the end of the nf block.
-    pub fn c(&self) -> Pt {
+    pub(crate) fn c(&self) -> Pt {
         self.elements[self.elements.len() - 1].to
     }
 }
@@ -235,7 +236,7 @@ pub(crate) fn read(c: &mut Cycle) -> Result<FinishingShape, Diagnostic> {
         pos: c.start,
         shift: c.shift,
         unit: c.unit,
-        mode: 0,
+        mode: G00,
         feed: None,
         modes: ShapeModes::default(),
         elements: vec![],
@@ -286,7 +287,7 @@ struct Reader {
     pos: Pt,
     shift: Pt,
     unit: f64,
-    /// Motion code in tenths: 0, 10, 20, 30.
+    /// Motion code in tenths: G00, G01, G02, G03.
     mode: i32,
     feed: Option<f64>,
     modes: ShapeModes,
@@ -313,8 +314,77 @@ fn forbidden(w: &Word, what: String) -> Diagnostic {
     )
 }
 
+/// The motion code a shape block writes (with its word), and whether G04 makes it a dwell.
+struct BlockCodes<'b> {
+    motion: Option<(i32, &'b Word)>,
+    dwell: bool,
+}
+
+/// The axis, arc and corner words of one shape block, read.
+struct Target<'b> {
+    /// The end point (the position when the block gives no axis word).
+    to: Pt,
+    /// X/U and Z/W given.
+    x_given: bool,
+    z_given: bool,
+    arc_words: ArcWords<'b>,
+    /// `,C` `,R`, plain `C` `R` (system A's), and `,A`.
+    comma: [Option<&'b Word>; 2],
+    plain: [Option<&'b Word>; 2],
+    angle: Option<&'b Word>,
+}
+
 impl Reader {
+    /// Read one block of the shape (`first`: the ns block): its codes, its words, and the
+    /// element it adds (with the corner a previous block asked for).
     fn block(&mut self, b: &Block, first: bool) -> Result<(), Diagnostic> {
+        let BlockCodes { motion, dwell } = self.codes(b)?;
+        if first {
+            ns_motion(b, motion)?;
+        }
+        if let Some((t, _)) = motion {
+            self.mode = t;
+        }
+        let mut t = self.words(b, dwell)?;
+        if first {
+            self.ns_moves = (t.x_given, t.z_given);
+            self.ns_span = b.span;
+        }
+        if let Some(w) = t.angle {
+            t.to = corner::line_at_angle(self.pos, t.to, w, (t.x_given, t.z_given))?;
+            (t.x_given, t.z_given) = (true, true);
+        }
+        let corner = corner::ask(t.comma, t.plain, self.unit)?;
+        if let (Some(ask), true) = (corner, t.to.dist(self.pos) < 1e-12) {
+            return Err(corner::standing_still(ask.word));
+        }
+        if !t.x_given && !t.z_given {
+            if let Some(alarm) = t.arc_words.without_end_point() {
+                return Err(alarm);
+            }
+            return Ok(());
+        }
+        let from = self.pos;
+        let arc = if matches!(self.mode, G02 | G03) {
+            let ccw = self.mode == G03;
+            let centre = t.arc_words.centre(from, t.to, ccw, self.unit, b.span)?;
+            Some(Arc {
+                center: centre,
+                ccw,
+            })
+        } else {
+            None
+        };
+        if t.to.dist(from) > 1e-12 {
+            self.add(b, from, t.to, arc, corner)?;
+        }
+        self.pos = t.to;
+        Ok(())
+    }
+
+    /// The block's G and M codes: the motion code written (with its word), whether G04
+    /// makes it a dwell; G96–G99 and G41/G42 put in force; any other code is an alarm.
+    fn codes<'b>(&mut self, b: &'b Block) -> Result<BlockCodes<'b>, Diagnostic> {
         let mut motion: Option<(i32, &Word)> = None;
         let mut dwell = false;
         for w in b.words.iter() {
@@ -322,16 +392,16 @@ impl Reader {
                 'G' => {
                     let t = w.code_tenths().unwrap_or(-1);
                     match t {
-                        0 | 10 | 20 | 30 => motion = Some((t, w)),
-                        40 => dwell = true,
-                        400 => {}
-                        960 | 970 => self.modes.css = Some(t == 960),
-                        980 | 990 => self.modes.per_rev = Some(t == 990),
-                        410 | 420 if self.comp.is_none() => {
-                            self.comp = Some(if t == 410 { Side::Left } else { Side::Right });
+                        G00 | G01 | G02 | G03 => motion = Some((t, w)),
+                        G04 => dwell = true,
+                        G40 => {}
+                        G96 | G97 => self.modes.css = Some(t == G96),
+                        G98 | G99 => self.modes.per_rev = Some(t == G99),
+                        G41 | G42 if self.comp.is_none() => {
+                            self.comp = Some(if t == G41 { Side::Left } else { Side::Right });
                             self.comp_from = self.elements.len();
                         }
-                        410 | 420 => {}
+                        G41 | G42 => {}
                         _ => return Err(forbidden(w, format!("G{}", w.value))),
                     }
                 }
@@ -341,144 +411,139 @@ impl Reader {
                 _ => {}
             }
         }
-        if first {
-            match motion {
-                Some((0 | 10, _)) => {}
-                Some((_, w)) => {
-                    return Err(Diagnostic::new(
-                        w.span,
-                        "PS065",
-                        "the first block of the finishing shape (ns) must be G00 or G01",
-                        "start the shape with a straight G00 or G01 move from the start point",
-                    ))
-                }
-                None => {
-                    return Err(Diagnostic::new(
-                        b.seq_span.unwrap_or(b.span),
-                        "PS065",
-                        "the first block of the finishing shape (ns) must be G00 or G01",
-                        "write G00 or G01 in the ns block",
-                    ))
-                }
-            }
-        }
-        if let Some((t, _)) = motion {
-            self.mode = t;
-        }
-        let mut to = self.pos;
-        let (mut x_given, mut z_given) = (false, false);
-        let mut arc_words = ArcWords::default();
-        let (mut comma, mut plain, mut angle) = ([None; 2], [None; 2], None);
+        Ok(BlockCodes { motion, dwell })
+    }
+
+    /// The block's other words: the end point, the arc's, the corners', and S, T, F, which
+    /// stay in force inside the shape; a word with no meaning here is an alarm.
+    fn words<'b>(&mut self, b: &'b Block, dwell: bool) -> Result<Target<'b>, Diagnostic> {
+        let mut t = Target {
+            to: self.pos,
+            x_given: false,
+            z_given: false,
+            arc_words: ArcWords::default(),
+            comma: [None; 2],
+            plain: [None; 2],
+            angle: None,
+        };
+        let line = self.mode == G01;
+        let arc = matches!(self.mode, G02 | G03);
         for w in b.words.iter() {
             let v = w.value * self.unit;
             match w.letter {
-                'c' if self.mode == 10 => comma[0] = Some(w),
-                'r' if self.mode == 10 => comma[1] = Some(w),
-                'a' if self.mode == 10 => angle = Some(w),
-                'C' if self.plain && self.mode == 10 => plain[0] = Some(w),
-                'R' if self.plain && self.mode == 10 => plain[1] = Some(w),
+                'c' if line => t.comma[0] = Some(w),
+                'r' if line => t.comma[1] = Some(w),
+                'a' if line => t.angle = Some(w),
+                'C' if self.plain && line => t.plain[0] = Some(w),
+                'R' if self.plain && line => t.plain[1] = Some(w),
                 'G' | 'M' => {}
                 'S' => self.modes.s = Some(w.value),
                 'T' if !w.has_point && (0.0..=9999.0).contains(&w.value) => {
                     self.modes.tool = Some(w.value as u32)
                 }
-                'T' => {
-                    return Err(Diagnostic::new(
-                        w.span,
-                        "LS-T-WORD",
-                        "T must be four digits Tttoo",
-                        "write e.g. T0101: tool 01 with offset 01",
-                    ));
-                }
+                'T' => return Err(t_word(w)),
                 'F' => self.feed = Some(w.value),
                 'P' if dwell => {}
                 'X' | 'U' if dwell => {}
-                'X' => (to.r, x_given) = (v / 2.0 + self.shift.r, true),
-                'U' => (to.r, x_given) = (self.pos.r + v / 2.0, true),
-                'Z' => (to.z, z_given) = (v + self.shift.z, true),
-                'W' => (to.z, z_given) = (self.pos.z + v, true),
-                'R' if self.mode >= 20 => arc_words.r = Some(w),
-                'I' if self.mode >= 20 => arc_words.i = Some(w),
-                'K' if self.mode >= 20 => arc_words.k = Some(w),
-                _ => {
-                    return Err(Diagnostic::new(
-                        w.span,
-                        "LS-WORD-UNUSED",
-                        format!(
-                            "address {} has no meaning in this block of the finishing shape",
-                            gcode::address(w.letter)
-                        ),
-                        "remove the word, or use the code that takes it (e.g. R with G02/G03)",
-                    ))
-                }
+                'X' => (t.to.r, t.x_given) = (v / 2.0 + self.shift.r, true),
+                'U' => (t.to.r, t.x_given) = (self.pos.r + v / 2.0, true),
+                'Z' => (t.to.z, t.z_given) = (v + self.shift.z, true),
+                'W' => (t.to.z, t.z_given) = (self.pos.z + v, true),
+                'R' if arc => t.arc_words.r = Some(w),
+                'I' if arc => t.arc_words.i = Some(w),
+                'K' if arc => t.arc_words.k = Some(w),
+                _ => return Err(unused(w)),
             }
         }
-        if first {
-            self.ns_moves = (x_given, z_given);
-            self.ns_span = b.span;
-        }
-        if let Some(w) = angle {
-            to = corner::line_at_angle(self.pos, to, w, (x_given, z_given))?;
-            (x_given, z_given) = (true, true);
-        }
-        let corner = corner::ask(comma, plain, self.unit)?;
-        if let (Some(ask), true) = (corner, to.dist(self.pos) < 1e-12) {
-            return Err(corner::standing_still(ask.word));
-        }
-        if !x_given && !z_given {
-            if let Some(alarm) = arc_words.without_end_point() {
-                return Err(alarm);
-            }
-            return Ok(());
-        }
-        let from = self.pos;
-        let arc = if self.mode >= 20 {
-            let ccw = self.mode == 30;
-            let centre = arc_words.centre(from, to, ccw, self.unit, b.span)?;
-            Some(Arc {
-                center: centre,
-                ccw,
-            })
-        } else {
-            None
+        Ok(t)
+    }
+
+    /// Add the element `from`..`to` of block `b`; the corner a previous line asked for is cut
+    /// between that line and this one, and the corner this block asks for waits for the next.
+    fn add(
+        &mut self,
+        b: &Block,
+        from: Pt,
+        to: Pt,
+        arc: Option<Arc>,
+        corner: Option<Ask>,
+    ) -> Result<(), Diagnostic> {
+        let mut element = ShapeElement {
+            from,
+            to,
+            arc,
+            rapid: self.mode == G00,
+            feed: self.feed,
+            modes: self.modes,
+            span: b.span,
         };
-        if to.dist(from) > 1e-12 {
-            let mut element = ShapeElement {
-                from,
-                to,
-                arc,
-                rapid: self.mode == 0,
-                feed: self.feed,
-                modes: self.modes,
-                span: b.span,
-            };
-            if let Some((k, ask, line)) = self.corner.take() {
-                if element.rapid || element.arc.is_some() {
-                    let what = if element.rapid { "a rapid" } else { "an arc" };
-                    return Err(corner::without_line(
-                        ask.word,
-                        line,
-                        &format!("{what} comes (line {})", b.span.line),
-                    ));
-                }
-                // the line before ends where the piece starts; the piece is of its block
-                let before = self.elements[k];
-                let piece = corner::make(before.from, before.to, element.to, &ask, line)?;
-                self.elements[k].to = piece.start;
-                self.elements.push(ShapeElement {
-                    from: piece.start,
-                    to: piece.end,
-                    arc: piece.arc,
-                    ..before
-                });
-                element.from = piece.end;
+        if let Some((k, ask, line)) = self.corner.take() {
+            if element.rapid || element.arc.is_some() {
+                let what = if element.rapid { "a rapid" } else { "an arc" };
+                return Err(corner::without_line(
+                    ask.word,
+                    line,
+                    &format!("{what} comes (line {})", b.span.line),
+                ));
             }
-            self.elements.push(element);
-            if let Some(ask) = corner {
-                self.corner = Some((self.elements.len() - 1, ask, b.span.line));
-            }
+            // the line before ends where the piece starts; the piece is of its block
+            let before = self.elements[k];
+            let piece = corner::make(before.from, before.to, element.to, &ask, line)?;
+            self.elements[k].to = piece.start;
+            self.elements.push(ShapeElement {
+                from: piece.start,
+                to: piece.end,
+                arc: piece.arc,
+                ..before
+            });
+            element.from = piece.end;
         }
-        self.pos = to;
+        self.elements.push(element);
+        if let Some(ask) = corner {
+            self.corner = Some((self.elements.len() - 1, ask, b.span.line));
+        }
         Ok(())
     }
+}
+
+/// The ns block must be G00 or G01 (PS065).
+fn ns_motion(b: &Block, motion: Option<(i32, &Word)>) -> Result<(), Diagnostic> {
+    match motion {
+        Some((G00 | G01, _)) => Ok(()),
+        Some((_, w)) => Err(Diagnostic::new(
+            w.span,
+            "PS065",
+            "the first block of the finishing shape (ns) must be G00 or G01",
+            "start the shape with a straight G00 or G01 move from the start point",
+        )),
+        None => Err(Diagnostic::new(
+            b.seq_span.unwrap_or(b.span),
+            "PS065",
+            "the first block of the finishing shape (ns) must be G00 or G01",
+            "write G00 or G01 in the ns block",
+        )),
+    }
+}
+
+/// The alarm for a T word that is not `Tttoo`.
+fn t_word(w: &Word) -> Diagnostic {
+    Diagnostic::new(
+        w.span,
+        "LS-T-WORD",
+        "T must be four digits Tttoo",
+        "write e.g. T0101: tool 01 with offset 01",
+    )
+}
+
+/// The alarm for a word with no meaning in a shape block.
+fn unused(w: &Word) -> Diagnostic {
+    Diagnostic::new(
+        w.span,
+        "LS-WORD-UNUSED",
+        format!(
+            "address {} has no meaning in this block of the finishing shape",
+            gcode::address(w.letter)
+        ),
+        "remove the word, or use the code that takes it (e.g. R with G02/G03)",
+    )
 }

@@ -60,27 +60,54 @@ pub(crate) fn is_drill(t: i32) -> bool {
 /// Expand one drilling block (the first of the cycle, or a modal repeat).
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     let haas = c.machine.control == Control::Haas;
+    check_code(c, haas)?;
+    check_on_axis(c)?;
+    let hole = read(c, haas)?;
+    c.retained.drill = Some(hole.words);
+    let mut out = Output {
+        moves: moves(c, &hole),
+        // 3. the dwell at the bottom, each time (summed as the times are drilled)
+        dwell_s: (0..hole.times).fold(0.0, |sum, _| sum + hole.words.dwell),
+        ..Output::default()
+    };
+    if c.code == G84 && c.g.is_some() {
+        out.warnings.push(c.alarm(
+            "LS-TAP",
+            "G84 taps with the drill outline of the tool table (the tap's major diameter); the thread form is not drawn",
+            "",
+        ));
+    }
+    Ok(out)
+}
+
+/// The drilling codes of this control; the other control's are alarms naming it.
+fn check_code(c: &Cycle, haas: bool) -> Result<(), Diagnostic> {
     let name = crate::codes::g_name(c.code);
     let accepted = if haas {
         matches!(c.code, G81 | G82 | G83 | G84)
     } else {
         matches!(c.code, G83 | G84 | G85)
     };
-    if !accepted {
-        return Err(c.alarm(
-            "LS-DRILL-CODE",
-            if haas {
-                format!("{name} is not a Haas lathe drilling cycle on the spindle axis")
-            } else {
-                format!("{name} is the Haas drilling code; this control is {}", c.machine.control.key())
-            },
-            if haas {
-                "Haas drills on the axis with G81 (drill), G82 (dwell), G83 (peck), G84 (tap)"
-            } else {
-                "FANUC lathes drill on the axis with G83 (drill/peck), G84 (tap), G85 (bore); or run with --control haas"
-            },
-        ));
+    if accepted {
+        return Ok(());
     }
+    Err(c.alarm(
+        "LS-DRILL-CODE",
+        if haas {
+            format!("{name} is not a Haas lathe drilling cycle on the spindle axis")
+        } else {
+            format!("{name} is the Haas drilling code; this control is {}", c.machine.control.key())
+        },
+        if haas {
+            "Haas drills on the axis with G81 (drill), G82 (dwell), G83 (peck), G84 (tap)"
+        } else {
+            "FANUC lathes drill on the axis with G83 (drill/peck), G84 (tap), G85 (bore); or run with --control haas"
+        },
+    ))
+}
+
+/// C and H (the C axis) are alarms: an off-axis hole is not axisymmetric.
+fn check_on_axis(c: &Cycle) -> Result<(), Diagnostic> {
     for letter in ['C', 'H'] {
         if let Some(w) = c.words.block.get(letter) {
             return Err(Diagnostic::new(
@@ -91,121 +118,33 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
             ));
         }
     }
+    Ok(())
+}
+
+/// One hole as the block gives it: its retained words, how many times it is drilled, and
+/// the number of pecks of each.
+struct Hole {
+    words: DrillWords,
+    times: u32,
+    pecks: usize,
+}
+
+/// Read the block's words, the retained ones of the same cycle filling what it omits, and
+/// check the levels: initial, R point, bottom in that order along Z.
+fn read(c: &mut Cycle, haas: bool) -> Result<Hole, Diagnostic> {
+    let name = crate::codes::g_name(c.code);
     let prev = c
         .retained
         .drill
         .filter(|d| d.code == c.code || c.g.is_none());
-    // X: on the axis only
-    let x_word = c.words.block.get('X').or_else(|| c.words.block.get('U'));
-    let x = c.x_target()?.unwrap_or(c.start.r);
-    if x.abs() > 1e-6 {
-        return Err(Diagnostic::new(
-            x_word.map_or(c.span(), |w| w.span),
-            "LS-OFF-AXIS",
-            format!(
-                "{name} at X{:.3}: a hole off the spindle axis is not axisymmetric",
-                2.0 * x
-            ),
-            "drill on the axis: position at X0 before the cycle (or give X0)",
-        ));
-    }
+    x_on_axis(c, &name)?;
     let initial = prev.map_or(c.start.z, |p| p.initial);
-    // R point
-    let r = match c.words.take('R') {
-        Some(w) if haas => w.value * c.unit + c.shift.z,
-        Some(w) => initial + w.value * c.unit,
-        None => match prev {
-            Some(p) => p.r,
-            None if haas => {
-                return Err(c.alarm(
-                    "LS-DRILL-R",
-                    format!("{name} without R (the R plane)"),
-                    "give the R plane's Z, e.g. R2.",
-                ))
-            }
-            None => initial,
-        },
-    };
-    // bottom
+    let r = r_point(c, haas, &name, initial, prev)?;
     let w_word = c.words.block.get('W');
-    let bottom = match (c.words.take('Z'), c.words.take('W')) {
-        (Some(z), None) => z.value * c.unit + c.shift.z,
-        (None, Some(w)) => r + w.value * c.unit,
-        (Some(_), Some(w)) => {
-            return Err(Diagnostic::new(
-                w.span,
-                "LS-AXIS-TWICE",
-                "Z and W both given",
-                "give the hole bottom either absolute (Z) or from the R point (W)",
-            ))
-        }
-        (None, None) => match prev {
-            Some(p) => p.bottom,
-            None => {
-                return Err(c.alarm(
-                    "LS-DRILL-Z",
-                    format!("{name} without the hole bottom Z"),
-                    "give the depth of the hole as Z (absolute) or W (from the R point)",
-                ))
-            }
-        },
-    };
-    // peck
-    let q = if c.code == G83 {
-        let q = if haas {
-            c.words.mm('Q', c.unit)
-        } else {
-            c.words.increments('Q', c.machine.increment.mm())?
-        };
-        match q {
-            Some(q) if q <= 0.0 => {
-                return Err(c.alarm(
-                    "LS-DRILL-Q",
-                    format!("{name}: the peck depth Q must be positive"),
-                    "give the depth of each peck, or leave Q out to drill in one feed",
-                ))
-            }
-            Some(q) => q,
-            None => prev.map_or(0.0, |p| p.q),
-        }
-    } else {
-        0.0
-    };
-    // dwell
-    let dwell = match c.words.take('P') {
-        Some(p) if haas && p.has_point => p.value,
-        Some(p) if p.has_point => {
-            return Err(Diagnostic::new(
-                p.span,
-                "LS-VALUE",
-                format!("{name} P is the dwell in milliseconds and takes no decimal point"),
-                "write e.g. P500 for 0.5 s",
-            ))
-        }
-        Some(p) if p.value < 0.0 => {
-            return Err(Diagnostic::new(
-                p.span,
-                "LS-VALUE",
-                "a negative dwell",
-                "give the dwell at the bottom in milliseconds",
-            ))
-        }
-        Some(p) => p.value / 1000.0,
-        None => prev.map_or(0.0, |p| p.dwell),
-    };
-    let k_word = if haas { None } else { c.words.take('K') };
-    let times = match k_word {
-        None => 1,
-        Some(k) if !k.has_point && (1.0..=9999.0).contains(&k.value) => k.value as u32,
-        Some(k) => {
-            return Err(Diagnostic::new(
-                k.span,
-                "LS-VALUE",
-                "K must be a repeat count 1 … 9999",
-                "write e.g. K2",
-            ))
-        }
-    };
+    let bottom = bottom(c, &name, r, prev)?;
+    let q = peck(c, haas, &name, prev)?;
+    let dwell = dwell(c, haas, &name, prev)?;
+    let times = repeats(c, haas)?;
     if times > 1 {
         if let Some(w) = w_word {
             return Err(Diagnostic::new(
@@ -246,29 +185,174 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         q,
         dwell,
     };
-    c.retained.drill = Some(words);
+    Ok(Hole {
+        words,
+        times,
+        pecks: pecks as usize,
+    })
+}
+
+/// X: on the axis only.
+fn x_on_axis(c: &mut Cycle, name: &str) -> Result<(), Diagnostic> {
+    let x_word = c.words.block.get('X').or_else(|| c.words.block.get('U'));
+    let x = c.x_target()?.unwrap_or(c.start.r);
+    if x.abs() <= 1e-6 {
+        return Ok(());
+    }
+    Err(Diagnostic::new(
+        x_word.map_or(c.span(), |w| w.span),
+        "LS-OFF-AXIS",
+        format!(
+            "{name} at X{:.3}: a hole off the spindle axis is not axisymmetric",
+            2.0 * x
+        ),
+        "drill on the axis: position at X0 before the cycle (or give X0)",
+    ))
+}
+
+/// The R point, G54 frame Z: Haas R the plane's Z, FANUC R from the initial level.
+fn r_point(
+    c: &mut Cycle,
+    haas: bool,
+    name: &str,
+    initial: f64,
+    prev: Option<DrillWords>,
+) -> Result<f64, Diagnostic> {
+    Ok(match c.words.take('R') {
+        Some(w) if haas => w.value * c.unit + c.shift.z,
+        Some(w) => initial + w.value * c.unit,
+        None => match prev {
+            Some(p) => p.r,
+            None if haas => {
+                return Err(c.alarm(
+                    "LS-DRILL-R",
+                    format!("{name} without R (the R plane)"),
+                    "give the R plane's Z, e.g. R2.",
+                ))
+            }
+            None => initial,
+        },
+    })
+}
+
+/// The hole bottom, G54 frame Z: Z absolute, W from the R point.
+fn bottom(c: &mut Cycle, name: &str, r: f64, prev: Option<DrillWords>) -> Result<f64, Diagnostic> {
+    Ok(match (c.words.take('Z'), c.words.take('W')) {
+        (Some(z), None) => z.value * c.unit + c.shift.z,
+        (None, Some(w)) => r + w.value * c.unit,
+        (Some(_), Some(w)) => {
+            return Err(Diagnostic::new(
+                w.span,
+                "LS-AXIS-TWICE",
+                "Z and W both given",
+                "give the hole bottom either absolute (Z) or from the R point (W)",
+            ))
+        }
+        (None, None) => match prev {
+            Some(p) => p.bottom,
+            None => {
+                return Err(c.alarm(
+                    "LS-DRILL-Z",
+                    format!("{name} without the hole bottom Z"),
+                    "give the depth of the hole as Z (absolute) or W (from the R point)",
+                ))
+            }
+        },
+    })
+}
+
+/// The peck depth Q of G83, mm (0: one feed): Haas in mm, FANUC in increments.
+fn peck(
+    c: &mut Cycle,
+    haas: bool,
+    name: &str,
+    prev: Option<DrillWords>,
+) -> Result<f64, Diagnostic> {
+    if c.code != G83 {
+        return Ok(0.0);
+    }
+    let q = if haas {
+        c.words.mm('Q', c.unit)
+    } else {
+        c.words.increments('Q', c.machine.increment.mm())?
+    };
+    match q {
+        Some(q) if q <= 0.0 => Err(c.alarm(
+            "LS-DRILL-Q",
+            format!("{name}: the peck depth Q must be positive"),
+            "give the depth of each peck, or leave Q out to drill in one feed",
+        )),
+        Some(q) => Ok(q),
+        None => Ok(prev.map_or(0.0, |p| p.q)),
+    }
+}
+
+/// The dwell P at the bottom, s: FANUC milliseconds without a point; Haas `P1.5` seconds.
+fn dwell(
+    c: &mut Cycle,
+    haas: bool,
+    name: &str,
+    prev: Option<DrillWords>,
+) -> Result<f64, Diagnostic> {
+    match c.words.take('P') {
+        Some(p) if haas && p.has_point => Ok(p.value),
+        Some(p) if p.has_point => Err(Diagnostic::new(
+            p.span,
+            "LS-VALUE",
+            format!("{name} P is the dwell in milliseconds and takes no decimal point"),
+            "write e.g. P500 for 0.5 s",
+        )),
+        Some(p) if p.value < 0.0 => Err(Diagnostic::new(
+            p.span,
+            "LS-VALUE",
+            "a negative dwell",
+            "give the dwell at the bottom in milliseconds",
+        )),
+        Some(p) => Ok(p.value / 1000.0),
+        None => Ok(prev.map_or(0.0, |p| p.dwell)),
+    }
+}
+
+/// K: how many times the hole is drilled (FANUC; 1 on Haas).
+fn repeats(c: &mut Cycle, haas: bool) -> Result<u32, Diagnostic> {
+    let k_word = if haas { None } else { c.words.take('K') };
+    match k_word {
+        None => Ok(1),
+        Some(k) if !k.has_point && (1.0..=9999.0).contains(&k.value) => Ok(k.value as u32),
+        Some(k) => Err(Diagnostic::new(
+            k.span,
+            "LS-VALUE",
+            "K must be a repeat count 1 … 9999",
+            "write e.g. K2",
+        )),
+    }
+}
+
+/// Steps 1–5 of the module doc for each time the hole is drilled.
+fn moves(c: &Cycle, hole: &Hole) -> Vec<Move> {
+    let w = &hole.words;
     let ret = match c.drill_return {
-        DrillReturn::Initial => initial,
-        DrillReturn::RPoint => r,
+        DrillReturn::Initial => w.initial,
+        DrillReturn::RPoint => w.r,
     };
     let at = |z: f64| Pt::new(z, 0.0);
+    let dir = (w.bottom - w.r).signum();
     let delta = c.machine.drill_clearance;
     let mut moves = vec![];
-    let mut out = Output::default();
-    for _ in 0..times {
-        moves.push(Move::rapid(at(r))); // 1. to the R point
-        if q > 0.0 {
-            let n = pecks as usize;
+    for _ in 0..hole.times {
+        moves.push(Move::rapid(at(w.r))); // 1. to the R point
+        if w.q > 0.0 {
+            let n = hole.pecks;
             for i in 1..=n {
                 let depth = if i == n {
-                    bottom
+                    w.bottom
                 } else {
-                    r + dir * q * i as f64
+                    w.r + dir * w.q * i as f64
                 };
                 moves.push(Move::feed(at(depth))); // 2. one peck
                 if i < n {
                     if c.machine.g83_full_retract {
-                        moves.push(Move::rapid(at(r)));
+                        moves.push(Move::rapid(at(w.r)));
                         moves.push(Move::rapid(at(depth - dir * delta)));
                     } else {
                         moves.push(Move::rapid(at(depth - dir * delta)));
@@ -276,21 +360,12 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
                 }
             }
         } else {
-            moves.push(Move::feed(at(bottom))); // 2. one feed
+            moves.push(Move::feed(at(w.bottom))); // 2. one feed
         }
-        out.dwell_s += dwell; // 3.
         if matches!(c.code, G84 | G85) {
-            moves.push(Move::feed(at(r))); // 4. tap reversed / bore fed out
+            moves.push(Move::feed(at(w.r))); // 4. tap reversed / bore fed out
         }
         moves.push(Move::rapid(at(ret))); // 5.
     }
-    if c.code == G84 && c.g.is_some() {
-        out.warnings.push(c.alarm(
-            "LS-TAP",
-            "G84 taps with the drill outline of the tool table (the tap's major diameter); the thread form is not drawn",
-            "",
-        ));
-    }
-    out.moves = moves;
-    Ok(out)
+    moves
 }

@@ -34,6 +34,7 @@
 
 use super::contour::{self, FinishingShape};
 use super::{passes, Cycle, Move, Output};
+use crate::codes::G72;
 use crate::{Control, Diagnostic, Pt, Span};
 
 /// Most layers one cycle may cut (a microscopic Δd is an error, not a hang).
@@ -60,7 +61,7 @@ struct Removal {
 
 /// Expand one G71 or G72 block.
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
-    let g72 = c.code == 720;
+    let g72 = c.code == G72;
     let haas = c.machine.control == Control::Haas;
     if !c.words.has('P') && !c.words.has('Q') {
         if haas || c.words.has('D') {
@@ -68,33 +69,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         }
         return depth_block(c, g72);
     }
-    let removal = if let Some(d) = c.words.block.get('D') {
-        if !c.machine.one_block_cycles() {
-            return Err(Diagnostic::new(
-                d.span,
-                "LS-ONE-BLOCK-FORM",
-                format!(
-                    "{} with D in one block is the Haas/FS15 form: run with --control haas (this control is {})",
-                    code_name(g72),
-                    c.machine.control.key()
-                ),
-                format!(
-                    "under {} write the two-block form {}, or run with --control haas (or fs15_format = true in the machine profile)",
-                    c.machine.control.key(),
-                    if g72 { "G72 W(Δd) R(e); G72 P Q U W F" } else { "G71 U(Δd) R(e); G71 P Q U W F" }
-                ),
-            ));
-        }
-        one_block(c, g72)?
-    } else if haas {
-        return Err(c.alarm(
-            "PS062",
-            format!("Haas {} without D (depth of cut)", code_name(g72)),
-            "give the depth of each layer as D (mm); Setting 72, the machine's default depth, is not simulated",
-        ));
-    } else {
-        two_block(c, g72)?
-    };
+    let removal = removal_words(c, g72, haas)?;
     let shape = contour::read(c)?;
     let (shape, returns) = if haas {
         super::shape_return::trim(shape, g72)
@@ -111,28 +86,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
             "give a larger depth of cut Δd",
         ));
     }
-    let mut r = Rough {
-        poly: &poly,
-        dd: removal.dd,
-        e: removal.e,
-        ns_rapid: shape.elements[0].rapid,
-        cur: (0.0, 0.0),
-        out: vec![],
-    };
-    r.layers(removal.last_layer_at_shape);
-    let mut moves: Vec<Move> = r
-        .out
-        .iter()
-        .map(|&(rapid, p, span)| {
-            let mut m = if rapid {
-                Move::rapid(frame.to_pt(p))
-            } else {
-                Move::feed(frame.to_pt(p))
-            };
-            m.span = span;
-            m
-        })
-        .collect();
+    let mut moves = rough(&poly, &frame, &removal, shape.elements[0].rapid);
     // 4. the final pass along the moved shape, then back to A
     moves.extend(passes::moved(&shape, removal.final_off));
     moves.push(Move::rapid(shape.start));
@@ -153,6 +107,64 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     Ok(out)
 }
 
+/// The depth of cut and the allowances: the Haas/FS15 one-block form (D in the block), or
+/// the FANUC two-block form (the retained depth block); each form where the control does
+/// not read it is an alarm naming it.
+fn removal_words(c: &mut Cycle, g72: bool, haas: bool) -> Result<Removal, Diagnostic> {
+    if let Some(d) = c.words.block.get('D') {
+        if !c.machine.one_block_cycles() {
+            return Err(Diagnostic::new(
+                d.span,
+                "LS-ONE-BLOCK-FORM",
+                format!(
+                    "{} with D in one block is the Haas/FS15 form: run with --control haas (this control is {})",
+                    code_name(g72),
+                    c.machine.control.key()
+                ),
+                format!(
+                    "under {} write the two-block form {}, or run with --control haas (or fs15_format = true in the machine profile)",
+                    c.machine.control.key(),
+                    if g72 { "G72 W(Δd) R(e); G72 P Q U W F" } else { "G71 U(Δd) R(e); G71 P Q U W F" }
+                ),
+            ));
+        }
+        one_block(c, g72)
+    } else if haas {
+        Err(c.alarm(
+            "PS062",
+            format!("Haas {} without D (depth of cut)", code_name(g72)),
+            "give the depth of each layer as D (mm); Setting 72, the machine's default depth, is not simulated",
+        ))
+    } else {
+        two_block(c, g72)
+    }
+}
+
+/// 1.–3. the roughing layers in the frame of the cycle, mapped back to (z, r).
+fn rough(poly: &Poly, frame: &Frame, removal: &Removal, ns_rapid: bool) -> Vec<Move> {
+    let mut r = Rough {
+        poly,
+        dd: removal.dd,
+        e: removal.e,
+        ns_rapid,
+        cur: (0.0, 0.0),
+        out: vec![],
+    };
+    r.layers(removal.last_layer_at_shape);
+    r.out
+        .iter()
+        .map(|&(rapid, p, span)| {
+            let mut m = if rapid {
+                Move::rapid(frame.to_pt(p))
+            } else {
+                Move::feed(frame.to_pt(p))
+            };
+            m.span = span;
+            m
+        })
+        .collect()
+}
+
 fn code_name(g72: bool) -> &'static str {
     if g72 {
         "G72"
@@ -163,7 +175,7 @@ fn code_name(g72: bool) -> &'static str {
 
 /// The alarm for a first block (`G71 U R`) under a control that has only the one-block form.
 fn one_block_only(c: &Cycle) -> Diagnostic {
-    let g72 = c.code == 720;
+    let g72 = c.code == G72;
     c.alarm(
         "LS-ONE-BLOCK-FORM",
         format!(

@@ -3,9 +3,9 @@
 
 use super::flow::Flow;
 use super::Interp;
-use crate::cycles::{self, Cycle};
+use crate::cycles::{self, Cycle, Output};
 use crate::words::Words;
-use crate::{Diagnostic, Motion};
+use crate::{Diagnostic, Motion, Span};
 use gcode::{Block, Subprogram, Word};
 
 impl Interp<'_> {
@@ -45,11 +45,22 @@ impl Interp<'_> {
             };
             cycles::run(&mut c)?
         };
-        self.out.warnings.extend(out.warnings);
+        let mut out = out;
+        self.out.warnings.append(&mut out.warnings);
         self.out.dwell_s += out.dwell_s;
-        for (kind, points) in out.intended {
-            // G73 then G70 on one shape hand it over twice: keep it once, as the later
-            // cycle's (the one that finishes it: its tool owns the contour)
+        self.record_intended(std::mem::take(&mut out.intended), b.span);
+        self.emit_cycle(out, b.span)
+    }
+
+    /// The shapes a cycle intends, for the analysis. G73 then G70 on one shape hand it over
+    /// twice: it is kept once, as the later cycle's (the one that finishes it: its tool
+    /// owns the contour).
+    fn record_intended(
+        &mut self,
+        intended: Vec<(crate::IntendedKind, Vec<crate::Pt>)>,
+        span: Span,
+    ) {
+        for (kind, points) in intended {
             let after_move = self.out.segments.len();
             match self
                 .out
@@ -61,19 +72,23 @@ impl Interp<'_> {
                 None => self.out.intended.push(crate::Intended {
                     kind,
                     points,
-                    span: b.span,
+                    span,
                     after_move,
                 }),
             }
         }
-        // G70 runs its pass as one compensation section (start-up A → B, or the move of the
-        // block that wrote G41/G42 inside the shape; cancel back to A).
+    }
+
+    /// Emit a cycle's moves with the block's `span` (a move's own span wins): G70 runs its
+    /// pass as one compensation section (start-up A → B, or the move of the block that
+    /// wrote G41/G42 inside the shape; cancel back to A). Where the program goes next.
+    fn emit_cycle(&mut self, out: Output, span: Span) -> Result<Flow, Diagnostic> {
         let side = out.comp.and_then(|shape_side| shape_side.or(self.comp));
         let feed = self.feed;
         for (k, m) in out.moves.into_iter().enumerate() {
             if k == out.comp_from {
                 if let Some(side) = side {
-                    if let Some(nose) = self.nose_for_offset(b.span) {
+                    if let Some(nose) = self.nose_for_offset(span) {
                         self.section = Some((side, nose, vec![]));
                     }
                 }
@@ -84,7 +99,7 @@ impl Interp<'_> {
             if let Some(modes) = m.modes {
                 self.apply_shape_modes(modes);
             }
-            let span = m.span.unwrap_or(b.span);
+            let at = m.span.unwrap_or(span);
             if m.to.dist(self.pos) >= 1e-12 {
                 // a threading move's lead is the F in force (G92: F is the lead)
                 let lead = if m.motion == Motion::Thread {
@@ -93,7 +108,7 @@ impl Interp<'_> {
                     0.0
                 };
                 self.thread_phase = m.phase.unwrap_or(out.thread_phase);
-                self.push_at(span, m.motion, m.to, m.arc, lead, m.hint)?;
+                self.push_at(at, m.motion, m.to, m.arc, lead, m.hint)?;
             }
         }
         self.feed = feed;

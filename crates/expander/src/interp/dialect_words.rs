@@ -77,7 +77,7 @@ impl Interp<'_> {
         }
         // System B/C: G92 sets coordinates; an F is the system-A thread lead.
         if let Some((G50, w)) = g.one_shot {
-            if system != GCodeSystem::A && w.code_tenths() == Some(920) {
+            if system != GCodeSystem::A && w.code_tenths() == Some(G92) {
                 if let Some(f) = b.get('F') {
                     return Err(alarm(
                         f.span,

@@ -29,7 +29,8 @@ use crate::tnrc::{Nose, Side};
 use crate::words::Words;
 use crate::{Diagnostic, Machine, Pt, Segment, Span};
 use flow::{Exit, Flow};
-use gcode::{Block, Program, Subprogram};
+use gcode::{Block, Program, Subprogram, Word};
+use modal::GWords;
 pub(crate) use modal::MotionMode;
 
 /// Interpreter settings from the command line.
@@ -381,73 +382,14 @@ impl<'m> Interp<'m> {
             self.feed_speed_tool(&mut used, g.one_shot.map(|(t, _)| t), cancels)?;
         let after = self.m_codes_before(b, &mut used)?;
         self.set_compensation_mode(g.comp);
-        let modal_cycle = g
-            .motion
-            .map_or(matches!(self.motion, MotionMode::Cycle(_)), |(m, _)| {
-                matches!(m, MotionMode::Cycle(_))
-            });
-        let suspends = matches!(g.one_shot, Some((G28 | G50 | G50_3 | G52 | G53 | G27, _)))
-            || g.one_shot.is_some_and(|(t, _)| cycles::is_cycle(t))
-            || self.has_g(b, |t| {
-                codes::work_offset(t).is_some() || t == G54_1 || t == G154
-            })
-            || (modal_cycle && ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)));
-        if suspends {
+        if self.suspends_compensation(b, &g) {
             // Suspended by G28, G50, G54–G59 and the cycles; resumed at the next move.
             self.flush_compensation();
         }
-        let mut flow = Flow::Next;
-        match g.one_shot {
-            Some((G04, w)) => self.dwell(&mut used, w)?,
-            Some((G28, w)) => self.g28(b, &mut used, w)?,
-            Some((G50, _)) => self.g50(&mut used)?,
-            Some((G50_3, w)) => self.preset(w, &mut used)?,
-            Some((G52, _)) => self.g52(b, &mut used)?,
-            Some((G53, w)) => {
-                if let Some((m, _)) = g.motion {
-                    // G00/G01 with G53 sets the mode for the blocks after it too
-                    self.motion = m;
-                    self.retained.drill = None;
-                }
-                self.g53(b, &mut used, w)?
-            }
-            Some((G27, w)) => self.g27(b, &mut used, w)?,
-            Some((G10, w)) => self.g10(&mut used, w)?,
-            Some((t, w)) => {
-                flow = self
-                    .cycle(t, Some(w), sub, b, index, &mut used)
-                    .map_err(|e| self.in_written_terms(e, t))?
-            }
-            None => {
-                if let Some((m, _)) = g.motion {
-                    self.motion = m;
-                    // a group-01 code ends a drilling cycle
-                    self.retained.drill = None;
-                }
-                let drill = self.retained.drill.map(|d| d.code);
-                if let Some(t) =
-                    drill.filter(|_| ['X', 'Z', 'U', 'W', 'R', 'Q'].iter().any(|&l| b.has(l)))
-                {
-                    // the drilling cycle in force repeats with the block's words
-                    flow = self.cycle(t, None, sub, b, index, &mut used)?;
-                } else if let MotionMode::Cycle(t) = self.motion {
-                    if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
-                        let w = g.motion.map(|(_, w)| w);
-                        flow = self
-                            .cycle(t, w, sub, b, index, &mut used)
-                            .map_err(|e| self.in_written_terms(e, t))?;
-                    }
-                } else {
-                    self.start_compensation(b)?;
-                    self.motion_block(b, &mut used)?;
-                    self.moved = ['X', 'Z', 'U', 'W'].iter().any(|&l| b.has(l));
-                    if self.section.is_some() && (self.comp.is_none() || self.offset == 0) {
-                        // This block was the cancel block.
-                        self.flush_compensation();
-                    }
-                }
-            }
-        }
+        let flow = match g.one_shot {
+            Some((t, w)) => self.one_shot(t, w, &g, (sub, b, index), &mut used)?,
+            None => self.modal_block(&g, (sub, b, index), &mut used)?,
+        };
         if let Some(offset) = deferred_offset {
             self.offset = offset;
         }
@@ -455,5 +397,94 @@ impl<'m> Interp<'m> {
         used.check_all_used()?;
         self.used_buffer = used.into_buffer();
         Ok(flow)
+    }
+
+    /// Whether the block suspends tool nose radius compensation: G28, G50, G50.3, G52,
+    /// G53, G27, a cycle, a work offset, or a block repeating the modal cycle.
+    fn suspends_compensation(&self, b: &Block, g: &GWords) -> bool {
+        let modal_cycle = g
+            .motion
+            .map_or(matches!(self.motion, MotionMode::Cycle(_)), |(m, _)| {
+                matches!(m, MotionMode::Cycle(_))
+            });
+        matches!(g.one_shot, Some((G28 | G50 | G50_3 | G52 | G53 | G27, _)))
+            || g.one_shot.is_some_and(|(t, _)| cycles::is_cycle(t))
+            || self.has_g(b, |t| {
+                codes::work_offset(t).is_some() || t == G54_1 || t == G154
+            })
+            || (modal_cycle && ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)))
+    }
+
+    /// The block's one-shot code `t` (its word `w`): G04, G28, G50, G50.3, G52, G53, G27,
+    /// G10, or a cycle.
+    fn one_shot<'b>(
+        &mut self,
+        t: i32,
+        w: &'b Word,
+        g: &GWords,
+        (sub, b, index): (&'b Subprogram, &'b Block, usize),
+        used: &mut Words<'b>,
+    ) -> Result<Flow, Diagnostic> {
+        match t {
+            G04 => self.dwell(used, w)?,
+            G28 => self.g28(b, used, w)?,
+            G50 => self.g50(used)?,
+            G50_3 => self.preset(w, used)?,
+            G52 => self.g52(b, used)?,
+            G53 => {
+                if let Some((m, _)) = g.motion {
+                    // G00/G01 with G53 sets the mode for the blocks after it too
+                    self.motion = m;
+                    self.retained.drill = None;
+                }
+                self.g53(b, used, w)?
+            }
+            G27 => self.g27(b, used, w)?,
+            G10 => self.g10(used, w)?,
+            t => {
+                return self
+                    .cycle(t, Some(w), sub, b, index, used)
+                    .map_err(|e| self.in_written_terms(e, t))
+            }
+        }
+        Ok(Flow::Next)
+    }
+
+    /// A block without a one-shot code: its motion, or the drilling or modal cycle in
+    /// force repeated with its words.
+    fn modal_block<'b>(
+        &mut self,
+        g: &GWords<'b>,
+        (sub, b, index): (&'b Subprogram, &'b Block, usize),
+        used: &mut Words<'b>,
+    ) -> Result<Flow, Diagnostic> {
+        if let Some((m, _)) = g.motion {
+            self.motion = m;
+            // a group-01 code ends a drilling cycle
+            self.retained.drill = None;
+        }
+        let drill = self.retained.drill.map(|d| d.code);
+        if let Some(t) = drill.filter(|_| ['X', 'Z', 'U', 'W', 'R', 'Q'].iter().any(|&l| b.has(l)))
+        {
+            // the drilling cycle in force repeats with the block's words
+            return self.cycle(t, None, sub, b, index, used);
+        }
+        if let MotionMode::Cycle(t) = self.motion {
+            if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
+                let w = g.motion.map(|(_, w)| w);
+                return self
+                    .cycle(t, w, sub, b, index, used)
+                    .map_err(|e| self.in_written_terms(e, t));
+            }
+            return Ok(Flow::Next);
+        }
+        self.start_compensation(b)?;
+        self.motion_block(b, used)?;
+        self.moved = ['X', 'Z', 'U', 'W'].iter().any(|&l| b.has(l));
+        if self.section.is_some() && (self.comp.is_none() || self.offset == 0) {
+            // This block was the cancel block.
+            self.flush_compensation();
+        }
+        Ok(Flow::Next)
     }
 }

@@ -28,6 +28,71 @@ pub(super) struct GWords<'b> {
     pub(super) comp: Option<(i32, &'b Word)>,
 }
 
+impl<'b> GWords<'b> {
+    /// The block's motion code (group 01): one per block.
+    fn set_motion(&mut self, m: MotionMode, w: &'b Word) -> Result<(), Diagnostic> {
+        if let Some((_, first)) = self.motion {
+            return Err(alarm(
+                w.span,
+                "PS010",
+                format!(
+                    "{} and {} are both motion codes (group 01)",
+                    g_name(first),
+                    g_name(w)
+                ),
+                "keep one motion code per block",
+            ));
+        }
+        self.motion = Some((m, w));
+        Ok(())
+    }
+
+    /// The block's one-shot code: one per block.
+    fn set_one_shot(&mut self, t: i32, w: &'b Word) -> Result<(), Diagnostic> {
+        if let Some((_, first)) = self.one_shot {
+            return Err(alarm(
+                w.span,
+                "PS010",
+                format!("{} and {} in one block", g_name(first), g_name(w)),
+                "put each of them in a block of its own",
+            ));
+        }
+        self.one_shot = Some((t, w));
+        Ok(())
+    }
+
+    /// The block's G40/G41/G42: one per block.
+    fn set_comp(&mut self, t: i32, w: &'b Word) -> Result<(), Diagnostic> {
+        if let Some((_, first)) = self.comp {
+            return Err(alarm(
+                w.span,
+                "PS010",
+                format!("{} and {} in one block", g_name(first), g_name(w)),
+                "keep one of G40/G41/G42 per block",
+            ));
+        }
+        self.comp = Some((t, w));
+        Ok(())
+    }
+
+    /// A one-shot code shares no block with a motion code, but G53 moves at the block's
+    /// G00/G01 (spec/dialects.md §6.4; `G53 G00 X0`, the Haas and FANUC way home).
+    fn check_motion_with_one_shot(&self) -> Result<(), Diagnostic> {
+        let (Some((m, m_word)), Some((o_code, o))) = (self.motion, self.one_shot) else {
+            return Ok(());
+        };
+        if o_code == G53 && matches!(m, MotionMode::Rapid | MotionMode::Line) {
+            return Ok(());
+        }
+        Err(alarm(
+            o.span,
+            "PS010",
+            format!("{} cannot share a block with {}", g_name(o), g_name(m_word)),
+            "split the block in two",
+        ))
+    }
+}
+
 fn g_name(w: &Word) -> String {
     codes::g_name(w.code_tenths().unwrap_or(0))
 }
@@ -67,102 +132,69 @@ impl Interp<'_> {
                 }
                 continue;
             }
-            let mut set_motion = |m: MotionMode| {
-                if let Some((_, first)) = g.motion {
-                    return Err(alarm(
-                        w.span,
-                        "PS010",
-                        format!(
-                            "{} and {} are both motion codes (group 01)",
-                            g_name(first),
-                            g_name(w)
-                        ),
-                        "keep one motion code per block",
-                    ));
-                }
-                g.motion = Some((m, w));
-                Ok(())
-            };
             match t {
-                G00 => set_motion(MotionMode::Rapid)?,
-                G01 => set_motion(MotionMode::Line)?,
-                G02 => set_motion(MotionMode::Cw)?,
-                G03 => set_motion(MotionMode::Ccw)?,
-                G32 => set_motion(MotionMode::Thread)?,
-                t if cycles::is_modal(t) => set_motion(MotionMode::Cycle(t))?,
-                t if is_one_shot(t) => {
-                    if let Some((_, first)) = g.one_shot {
-                        return Err(alarm(
-                            w.span,
-                            "PS010",
-                            format!("{} and {} in one block", g_name(first), g_name(w)),
-                            "put each of them in a block of its own",
-                        ));
-                    }
-                    g.one_shot = Some((t, w));
-                }
-                G20 => self.inch = true,
-                G21 => self.inch = false,
-                G40 | G41 | G42 => {
-                    if let Some((_, first)) = g.comp {
-                        return Err(alarm(
-                            w.span,
-                            "PS010",
-                            format!("{} and {} in one block", g_name(first), g_name(w)),
-                            "keep one of G40/G41/G42 per block",
-                        ));
-                    }
-                    g.comp = Some((t, w));
-                }
-                G54 if b.has('P') => self.select_extra_offset(w, used)?,
-                G54_1 | G154 => self.select_extra_offset(w, used)?,
-                t if codes::work_offset(t).is_some() => {
-                    self.select_work_offset(codes::work_offset(t).unwrap_or(0));
-                }
-                G96 => self.css = true,
-                G97 => self.css = false,
-                G98 => self.per_rev = false,
-                G99 => self.per_rev = true,
-                dialect::ABSOLUTE => self.incremental = false,
-                dialect::INCREMENTAL => self.incremental = true,
-                dialect::DRILL_RETURN_INITIAL => self.drill_return = crate::DrillReturn::Initial,
-                dialect::DRILL_RETURN_R => self.drill_return = crate::DrillReturn::RPoint,
-                G18 => self.plane = None,
-                G17 | G19 => self.plane = Some((t, w.span)),
-                G80 => self.retained.drill = None,
-                G11 => {
-                    return Err(alarm(
-                        w.span,
-                        "PS010",
-                        "G11 ends parameter input, but no G10 L50 started it",
-                        "remove the G11, or start the parameter blocks with G10 L50",
-                    ))
-                }
-                _ => {
-                    return Err(alarm(
-                        w.span,
-                        "PS010",
-                        format!("{} is not a G code this lathe knows", g_name(w)),
-                        "see spec/language.md and spec/dialects.md §6.1 for the supported codes",
-                    ))
-                }
+                G00 => g.set_motion(MotionMode::Rapid, w)?,
+                G01 => g.set_motion(MotionMode::Line, w)?,
+                G02 => g.set_motion(MotionMode::Cw, w)?,
+                G03 => g.set_motion(MotionMode::Ccw, w)?,
+                G32 => g.set_motion(MotionMode::Thread, w)?,
+                t if cycles::is_modal(t) => g.set_motion(MotionMode::Cycle(t), w)?,
+                t if is_one_shot(t) => g.set_one_shot(t, w)?,
+                G40 | G41 | G42 => g.set_comp(t, w)?,
+                t => self.set_mode(t, w, b, used)?,
             }
         }
-        if let (Some((m, m_word)), Some((o_code, o))) = (g.motion, g.one_shot) {
-            // G53 moves at the block's G00/G01 (spec/dialects.md §6.4; `G53 G00 X0`, the
-            // Haas and FANUC way home)
-            if o_code == G53 && matches!(m, MotionMode::Rapid | MotionMode::Line) {
-                return Ok(g);
-            }
-            let m = m_word;
-            return Err(alarm(
-                o.span,
-                "PS010",
-                format!("{} cannot share a block with {}", g_name(o), g_name(m)),
-                "split the block in two",
-            ));
-        }
+        g.check_motion_with_one_shot()?;
         Ok(g)
+    }
+
+    /// A G code that sets a mode of the interpreter at once (units, work offset, spindle
+    /// and feed modes, B/C absolute/incremental and drill return, plane, drill cancel);
+    /// any other is an alarm.
+    fn set_mode(
+        &mut self,
+        t: i32,
+        w: &Word,
+        b: &Block,
+        used: &mut Words,
+    ) -> Result<(), Diagnostic> {
+        match t {
+            G20 => self.inch = true,
+            G21 => self.inch = false,
+            G54 if b.has('P') => self.select_extra_offset(w, used)?,
+            G54_1 | G154 => self.select_extra_offset(w, used)?,
+            t if codes::work_offset(t).is_some() => {
+                self.select_work_offset(codes::work_offset(t).unwrap_or(0));
+            }
+            G96 => self.css = true,
+            G97 => self.css = false,
+            G98 => self.per_rev = false,
+            G99 => self.per_rev = true,
+            dialect::ABSOLUTE => self.incremental = false,
+            dialect::INCREMENTAL => self.incremental = true,
+            dialect::DRILL_RETURN_INITIAL => self.drill_return = crate::DrillReturn::Initial,
+            dialect::DRILL_RETURN_R => self.drill_return = crate::DrillReturn::RPoint,
+            G18 => self.plane = None,
+            G17 | G19 => self.plane = Some((t, w.span)),
+            G80 => self.retained.drill = None,
+            G11 => {
+                return Err(alarm(
+                    w.span,
+                    "PS010",
+                    "G11 ends parameter input, but no G10 L50 started it",
+                    "remove the G11, or start the parameter blocks with G10 L50",
+                ))
+            }
+            _ => {
+                return Err(alarm(
+                    w.span,
+                    "PS010",
+                    format!("{} is not a G code this lathe knows", g_name(w)),
+                    unknown_code_help(t),
+                ))
+            }
+        }
+        Ok(())
     }
 
     /// The canonical meaning of a G word under the control (`crate::dialect`), or the alarm
@@ -431,5 +463,15 @@ impl Interp<'_> {
         if let Some(t) = m.tool {
             self.select_tool(t / 100);
         }
+    }
+}
+
+/// What to do about a G code no supported control knows; G07 is `LinuxCNC`'s diameter mode
+/// (issue 31: generated `LinuxCNC` lathe programs start `G18 G7 G90`).
+fn unknown_code_help(t: i32) -> &'static str {
+    if t == G07 {
+        "G7 selects diameter mode in LinuxCNC (rs274ngc): LinuxCNC programs are not supported (latsim reads X as a diameter by default; --x-mode radius for radii)"
+    } else {
+        "see spec/language.md and spec/dialects.md §6.1 for the supported codes"
     }
 }

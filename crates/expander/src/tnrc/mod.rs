@@ -22,7 +22,7 @@ mod section;
 
 /// Which side of the contour the tool keeps, looking along the direction of travel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Side {
+pub(crate) enum Side {
     /// G41.
     Left,
     /// G42.
@@ -31,7 +31,7 @@ pub enum Side {
 
 /// The nose of a tool offset: radius and imaginary tip number (FANUC numbering).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Nose {
+pub(crate) struct Nose {
     /// Nose radius, mm.
     pub radius: f64,
     /// Imaginary tip number 0–9.
@@ -40,7 +40,7 @@ pub struct Nose {
 
 impl Nose {
     /// The vector from the nose centre to the imaginary tip, (z, r) (spec/tnrc.md table).
-    pub fn tip_vector(&self) -> Pt {
+    pub(crate) fn tip_vector(&self) -> Pt {
         let r = self.radius;
         match self.tip {
             1 => Pt::new(r, r),
@@ -209,7 +209,6 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
     let rear = body.iter().map(|s| s.from.r + s.to.r).sum::<f64>() < 0.0;
     let tip = nose.tip_vector();
     let tip = if rear { Pt::new(tip.z, -tip.r) } else { tip };
-    let with_tip = |p: Pt| p + tip;
 
     if body.is_empty() {
         // Start-up straight into cancel: the nose touches nothing in between.
@@ -217,22 +216,57 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
         return out;
     }
 
-    let offsets: Vec<Offset> = body.iter().map(|s| offset_of(s, side, r)).collect();
-    // Perpendicular points at each element's ends.
-    let perp_start = |i: usize| (body[i].from) + (normal(side, tangent(&body[i], false)) * r);
-    let perp_end = |i: usize| (body[i].to) + (normal(side, tangent(&body[i], true)) * r);
-
+    let path = Path {
+        body,
+        offsets: body.iter().map(|s| offset_of(s, side, r)).collect(),
+        side,
+        r,
+        tip,
+    };
     // Start-up: ends perpendicular to the next block's start (type A).
-    let mut cur = perp_start(0);
+    let mut cur = path.perp(0, false);
     out.segments.push(Segment {
-        to: with_tip(cur),
+        to: cur + tip,
         arc: None,
         ..*first
     });
-
     for i in 0..body.len() {
-        let s = &body[i];
-        let o = offsets[i];
+        cur = path.element(i, cur, &mut out);
+    }
+    // Cancel: from the perpendicular point to the programmed end.
+    let cancel = &section[last];
+    out.segments.push(Segment {
+        from: cur + tip,
+        arc: None,
+        ..*cancel
+    });
+    out
+}
+
+/// The compensated body of a section: its elements, their offsets, the side, the nose
+/// radius and the tip vector (the programmed point's offset from the nose centre).
+struct Path<'s> {
+    body: &'s [Segment],
+    offsets: Vec<Offset>,
+    side: Side,
+    r: f64,
+    tip: Pt,
+}
+
+impl Path<'_> {
+    /// The perpendicular point at the start (or end) of element `i`.
+    fn perp(&self, i: usize, at_end: bool) -> Pt {
+        let s = &self.body[i];
+        let p = if at_end { s.to } else { s.from };
+        p + (normal(self.side, tangent(s, at_end)) * self.r)
+    }
+
+    /// Compensate element `i` from `cur`: its offset move, and at an outside corner the
+    /// roll round the programmed corner point. Where the nose centre is after it.
+    fn element(&self, i: usize, cur: Pt, out: &mut Compensated) -> Pt {
+        let s = &self.body[i];
+        let o = self.offsets[i];
+        let tip = self.tip;
         if let Offset::Circle { radius, .. } = o {
             if radius <= 1e-9 {
                 out.alarms.push(interference(
@@ -241,63 +275,9 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
                 ));
             }
         }
-        // Where this element ends: the joint with the next one, or perpendicular at the end.
-        let mut corner_arc: Option<(Pt, Pt)> = None; // (end of this element, start of the next)
-        let end = if i + 1 < body.len() {
-            let t1 = tangent(s, true);
-            let t2 = tangent(&body[i + 1], false);
-            let turn = t1.cross(t2);
-            // Tangency within the control's tolerance is tangency: programs carry 3-decimal
-            // coordinates, so a "tangent" arc end is off by a few µm and its tangent by
-            // ~0.001 rad. Where the two perpendicular points are closer than the arc end
-            // tolerance, the joint is smooth (an inside corner that small has offset paths
-            // that meet far away or not at all: a false PS041).
-            let smooth = turn.abs() * r < TANGENT_TOL_MM && t1.dot(t2) > 0.0;
-            let outside = !smooth
-                && ((t1.dot(t2)) < 0.0 && turn.abs() < 1e-9
-                    || (side == Side::Left) == (turn < 0.0));
-            if smooth {
-                perp_start(i + 1)
-            } else if outside {
-                corner_arc = Some((perp_end(i), perp_start(i + 1)));
-                perp_end(i)
-            } else {
-                let near = perp_end(i);
-                match intersect(o, offsets[i + 1])
-                    .into_iter()
-                    .min_by(|a, b| a.dist(near).total_cmp(&b.dist(near)))
-                {
-                    Some(p) => p,
-                    None => {
-                        out.alarms.push(interference(
-                            s,
-                            "the offset paths of this block and the next do not meet",
-                        ));
-                        near
-                    }
-                }
-            }
-        } else {
-            perp_end(i)
-        };
+        let (end, corner_arc) = self.joint(i, &mut out.alarms);
         // The element must still run forward from `cur` to `end`.
-        let nominal_end = perp_end(i);
-        let nominal_start = perp_start(i);
-        // (a joint made smooth within TANGENT_TOL_MM may end that much past the element)
-        let forward = match o {
-            Offset::Line { .. } => progress(o, cur, end) > -TANGENT_TOL_MM,
-            Offset::Circle { radius, .. } => {
-                let slack = 1e-9 + TANGENT_TOL_MM / radius.max(TANGENT_TOL_MM);
-                let full = progress(o, nominal_start, nominal_end);
-                let a = progress(o, nominal_start, cur);
-                let b = progress(o, nominal_start, end);
-                let tau = std::f64::consts::TAU;
-                let norm = |x: f64| if x > tau - slack { x - tau } else { x };
-                let (a, b) = (norm(a), norm(b));
-                b + slack >= a && b <= full.max(1e-12) + slack || full < 1e-12
-            }
-        };
-        if !forward {
+        if !runs_forward(o, cur, end, self.perp(i, false), self.perp(i, true)) {
             out.alarms.push(interference(s, "the nose radius is too large for this element: the offset path would run backwards"));
         }
         let arc = match (s.arc, o) {
@@ -309,39 +289,96 @@ pub(crate) fn compensate(section: &[Segment], side: Side, nose: Nose) -> Compens
         };
         if cur.dist(end) > 1e-12 {
             out.segments.push(Segment {
-                from: with_tip(cur),
-                to: with_tip(end),
+                from: cur + tip,
+                to: end + tip,
                 arc,
                 ..*s
             });
         }
-        cur = end;
-        if let Some((a, b)) = corner_arc {
-            // Roll round the outside corner about the programmed corner point.
-            if a.dist(b) > 1e-12 {
-                let corner = s.to;
-                let ccw = side == Side::Right;
-                out.segments.push(Segment {
-                    from: with_tip(a),
-                    to: with_tip(b),
-                    arc: Some(Arc {
-                        center: (corner + tip),
-                        ccw,
-                    }),
-                    ..*s
-                });
+        let Some((a, b)) = corner_arc else {
+            return end;
+        };
+        // Roll round the outside corner about the programmed corner point.
+        if a.dist(b) > 1e-12 {
+            let corner = s.to;
+            let ccw = self.side == Side::Right;
+            out.segments.push(Segment {
+                from: a + tip,
+                to: b + tip,
+                arc: Some(Arc {
+                    center: (corner + tip),
+                    ccw,
+                }),
+                ..*s
+            });
+        }
+        b
+    }
+
+    /// Where element `i` ends: the joint with the next one (the offsets' intersection at an
+    /// inside corner, the perpendicular point at an outside one, which the corner arc then
+    /// leaves from its end to the next start), or perpendicular at the end of the last.
+    fn joint(&self, i: usize, alarms: &mut Vec<Diagnostic>) -> (Pt, Option<(Pt, Pt)>) {
+        let s = &self.body[i];
+        if i + 1 >= self.body.len() {
+            return (self.perp(i, true), None);
+        }
+        let t1 = tangent(s, true);
+        let t2 = tangent(&self.body[i + 1], false);
+        let turn = t1.cross(t2);
+        // Tangency within the control's tolerance is tangency: programs carry 3-decimal
+        // coordinates, so a "tangent" arc end is off by a few µm and its tangent by
+        // ~0.001 rad. Where the two perpendicular points are closer than the arc end
+        // tolerance, the joint is smooth (an inside corner that small has offset paths
+        // that meet far away or not at all: a false PS041).
+        let smooth = turn.abs() * self.r < TANGENT_TOL_MM && t1.dot(t2) > 0.0;
+        let outside = !smooth
+            && ((t1.dot(t2)) < 0.0 && turn.abs() < 1e-9
+                || (self.side == Side::Left) == (turn < 0.0));
+        if smooth {
+            return (self.perp(i + 1, false), None);
+        }
+        if outside {
+            return (
+                self.perp(i, true),
+                Some((self.perp(i, true), self.perp(i + 1, false))),
+            );
+        }
+        let near = self.perp(i, true);
+        let end = match intersect(self.offsets[i], self.offsets[i + 1])
+            .into_iter()
+            .min_by(|a, b| a.dist(near).total_cmp(&b.dist(near)))
+        {
+            Some(p) => p,
+            None => {
+                alarms.push(interference(
+                    s,
+                    "the offset paths of this block and the next do not meet",
+                ));
+                near
             }
-            cur = b;
+        };
+        (end, None)
+    }
+}
+
+/// Whether an offset element still runs forward from `cur` to `end` (a joint made smooth
+/// within `TANGENT_TOL_MM` may end that much past the element); `nominal_*`: its
+/// perpendicular points.
+fn runs_forward(o: Offset, cur: Pt, end: Pt, nominal_start: Pt, nominal_end: Pt) -> bool {
+    match o {
+        Offset::Line { .. } => progress(o, cur, end) > -TANGENT_TOL_MM,
+        Offset::Circle { radius, .. } => {
+            let slack = 1e-9 + TANGENT_TOL_MM / radius.max(TANGENT_TOL_MM);
+            let full = progress(o, nominal_start, nominal_end);
+            let a = progress(o, nominal_start, cur);
+            let b = progress(o, nominal_start, end);
+            let tau = std::f64::consts::TAU;
+            let norm = |x: f64| if x > tau - slack { x - tau } else { x };
+            let (a, b) = (norm(a), norm(b));
+            b + slack >= a && b <= full.max(1e-12) + slack || full < 1e-12
         }
     }
-    // Cancel: from the perpendicular point to the programmed end.
-    let cancel = &section[last];
-    out.segments.push(Segment {
-        from: with_tip(cur),
-        arc: None,
-        ..*cancel
-    });
-    out
 }
 
 fn interference(s: &Segment, what: &str) -> Diagnostic {

@@ -63,7 +63,7 @@ pub(crate) fn groove_bar() -> Report {
         ],
         crashes: vec![Crash { line: 14, column: 1, z: -46.667, r: 18.0, area_mm2: 21.5 , depth_mm: 1.0, body: None, ..Default::default()}],
         rapid_cuts: vec![],
-        gouges: vec![Gouge { line: 11, z: -22.5, r: 14.0, area_mm2: 1.0, depth_mm: 0.2, assumed: false }],
+        gouges: vec![Gouge { line: 11, z: -22.5, r: 14.0, area_mm2: 1.0, depth_mm: 0.2, assumed: false, cause: None, remedy: None }],
         gouge_shapes: vec![shape(&[[-25.0, 14.0], [-20.0, 14.0], [-20.0, 14.2], [-25.0, 14.2]])],
         leftovers: vec![],
         leftover_spot: None,

@@ -47,7 +47,8 @@ impl Insert {
         }
     }
 
-    pub(super) fn letter(self) -> char {
+    /// The ISO shape letter (`C`, `D`, …).
+    pub fn letter(self) -> char {
         match self {
             Self::C => 'C',
             Self::D => 'D',
@@ -251,6 +252,46 @@ impl Tool {
                     }
                 )
             }
+        }
+    }
+
+    /// The tool as `[[tool]]` fields (TOML, without `t`), every size stated: what reads back
+    /// as this tool (a remedy's tool, re-run in a table).
+    pub fn toml_fields(&self) -> String {
+        match *self {
+            Self::Turning {
+                insert,
+                nose_radius,
+                tip,
+                entering_angle,
+                edge,
+            } => format!(
+                "kind = \"turning\"\ninsert = \"{}\"\nnose_radius = {nose_radius:?}\ntip = {tip}\nentering_angle = {entering_angle:?}\nedge = {edge:?}\n",
+                insert.letter()
+            ),
+            Self::Grooving(b) => format!(
+                "kind = \"grooving\"\nwidth = {:?}\nwidth_dir = \"{}\"\nshank_dir = \"{}\"\nreach = {:?}\ncorner_radius = {:?}\n",
+                b.width,
+                b.width_dir.text(),
+                b.shank_dir.text(),
+                b.reach,
+                b.corner_radius
+            ),
+            Self::Drill {
+                diameter,
+                point_angle,
+                reach,
+            } => format!(
+                "kind = \"drill\"\ndiameter = {diameter:?}\npoint_angle = {point_angle:?}\nreach = {reach:?}\n"
+            ),
+            Self::Threading {
+                angle,
+                tip_flat,
+                side,
+            } => format!(
+                "kind = \"threading\"\nangle = {angle:?}\ntip_flat = {tip_flat:?}\nside = \"{}\"\n",
+                if side == ThreadSide::Id { "id" } else { "od" }
+            ),
         }
     }
 }

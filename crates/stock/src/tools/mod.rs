@@ -50,6 +50,33 @@ impl ToolTable {
         }
     }
 
+    /// The table with tool `t` given by `fields` (a `[[tool]]` entry's TOML without `t`)
+    /// instead of its own entry (or beside the others, when it has none).
+    pub fn replaced(&self, t: u32, fields: &str) -> Result<Self, StockError> {
+        let one = Self::from_toml(&format!("[[tool]]\nt = {t}\n{fields}"))?;
+        let mut out = self.clone();
+        // in place: the first entry is the tool before the first T word
+        match (
+            out.tools.iter().position(|(n, _)| *n == t),
+            one.tools.first(),
+        ) {
+            (Some(k), Some(new)) => out.tools[k] = new.clone(),
+            (None, Some(new)) => out.tools.push(new.clone()),
+            _ => {}
+        }
+        out.designations.retain(|(n, _)| *n != t);
+        out.sizes.retain(|(n, _)| *n != t);
+        out.assumed.retain(|n| *n != t);
+        out.noses.retain(|n| *n != t);
+        out.widths.retain(|n| *n != t);
+        out.designations.extend(one.designations);
+        out.sizes.extend(one.sizes);
+        out.assumed.extend(one.assumed);
+        out.noses.extend(one.noses);
+        out.widths.extend(one.widths);
+        Ok(out)
+    }
+
     /// Parses the `[[tool]]` TOML format of the simulation spec.
     pub fn from_toml(text: &str) -> Result<Self, StockError> {
         let entries = schema::read(text)?;

@@ -7,7 +7,7 @@ use geom::arc::Arc;
 
 /// How one corner of the groove is broken.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub enum Corner {
+pub(crate) enum Corner {
     /// A sharp corner.
     #[default]
     Sharp,
@@ -19,7 +19,7 @@ pub enum Corner {
 /// The G75.1 groove as drawn: mouth corner P1, depth, floor width, flank angles, mouth
 /// slope and the four corners (mouth start, mouth far, floor start, floor far).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Trapezoid {
+pub(crate) struct Trapezoid {
     /// P1, the mouth corner on the start side, G54 frame (z, r).
     pub start: Pt,
     /// H: depth mouth to floor, diameter, signed (sign = X infeed direction).
@@ -223,40 +223,8 @@ impl Trapezoid {
             (uv(1.0, 0.0), p4.sub(p3).unit()),
             (p4.sub(p3).unit(), fr.mouth),
         ];
-        let names = [
-            "A (mouth, start side)",
-            "B (mouth, far side)",
-            "D (floor, start side)",
-            "E (floor, far side)",
-        ];
-        // the corners in path order: P1 (r1 = A), P2 (r3 = D), P3 (r4 = E), P4 (r2 = B)
-        let order = [(p1, 0usize), (p2, 2), (p3, 3), (p4, 1)];
-        let mut cuts = [0.0; 4];
-        for (k, &(_, ci)) in order.iter().enumerate() {
-            let (din, dout) = dirs[k];
-            let cosang = -(din.u * dout.u + din.v * dout.v);
-            let theta = cosang.clamp(-1.0, 1.0).acos(); // interior angle between the edges
-            cuts[k] = match self.corners[ci] {
-                Corner::Sharp => 0.0,
-                Corner::Chamfer(r) => r,
-                Corner::Round(r) => r / (theta / 2.0).tan(),
-            };
-        }
-        for (edge, (a, b), len) in [
-            ("start flank", (0, 1), p2.sub(p1).len()),
-            ("floor", (1, 2), p3.sub(p2).len()),
-            ("far flank", (2, 3), p4.sub(p3).len()),
-        ] {
-            if cuts[a] + cuts[b] > len + 1e-9 {
-                return Err(format!(
-                    "the corners {} and {} cut {:.4} mm of the {edge}, which is only {:.4} mm long",
-                    names[order[a].1],
-                    names[order[b].1],
-                    cuts[a] + cuts[b],
-                    len
-                ));
-            }
-        }
+        let cuts = self.corner_cuts(&fr, &dirs)?;
+        let order = Self::ORDER.map(|(i, ci)| (fr.p[i], ci));
         let mut els = Vec::new();
         let mut first = p1;
         let (mut far_from, mut idx2a, mut idx4a) = (0, 0, 0);
@@ -304,20 +272,59 @@ impl Trapezoid {
         })
     }
 
+    /// How much of its two edges each corner takes (path order P1, P2, P3, P4; `dirs`: the
+    /// edge directions into and out of each): a chamfer its size, a round its tangent
+    /// length. Corners that together take more than an edge is long are an error.
+    fn corner_cuts(&self, fr: &Frame, dirs: &[(Uv, Uv); 4]) -> Result<[f64; 4], String> {
+        let [p1, p2, p3, p4] = fr.p;
+        let names = [
+            "A (mouth, start side)",
+            "B (mouth, far side)",
+            "D (floor, start side)",
+            "E (floor, far side)",
+        ];
+        let order = Self::ORDER;
+        let mut cuts = [0.0; 4];
+        for (k, &(_, ci)) in order.iter().enumerate() {
+            let (din, dout) = dirs[k];
+            let cosang = -(din.u * dout.u + din.v * dout.v);
+            let theta = cosang.clamp(-1.0, 1.0).acos(); // interior angle between the edges
+            cuts[k] = match self.corners[ci] {
+                Corner::Sharp => 0.0,
+                Corner::Chamfer(r) => r,
+                Corner::Round(r) => r / (theta / 2.0).tan(),
+            };
+        }
+        for (edge, (a, b), len) in [
+            ("start flank", (0, 1), p2.sub(p1).len()),
+            ("floor", (1, 2), p3.sub(p2).len()),
+            ("far flank", (2, 3), p4.sub(p3).len()),
+        ] {
+            if cuts[a] + cuts[b] > len + 1e-9 {
+                return Err(format!(
+                    "the corners {} and {} cut {:.4} mm of the {edge}, which is only {:.4} mm long",
+                    names[order[a].1],
+                    names[order[b].1],
+                    cuts[a] + cuts[b],
+                    len
+                ));
+            }
+        }
+        Ok(cuts)
+    }
+
+    /// The corners in path order: P1 (r1 = A), P2 (r3 = D), P3 (r4 = E), P4 (r2 = B), as
+    /// (index of the point in the frame, index of its corner in `corners`).
+    const ORDER: [(usize, usize); 4] = [(0, 0), (1, 2), (2, 3), (3, 1)];
+
     /// The groove as a closed ring in (z, r): the finishing contour with its chamfers and
     /// rounds (arcs chorded within `chord_tol` mm), closed along the mouth line.
-    pub fn ring(&self, chord_tol: f64) -> Result<Vec<Pt>, String> {
+    pub(crate) fn ring(&self, chord_tol: f64) -> Result<Vec<Pt>, String> {
         let k = self.contour()?;
         let mut ring = vec![k.first];
         chord(k.first, &k.els, chord_tol, &mut ring);
         Ok(ring.into_iter().map(|q| self.to_pt(q)).collect())
     }
-}
-
-/// The G75.1 groove's intended shape as a closed ring in (z, r) (arcs chorded within
-/// `chord_tol` mm), or why the words do not make a groove.
-pub fn groove_shape(t: &Trapezoid, chord_tol: f64) -> Result<Vec<Pt>, String> {
-    t.ring(chord_tol)
 }
 
 pub(super) fn tan_deg(a: f64) -> f64 {

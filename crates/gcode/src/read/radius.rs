@@ -8,7 +8,8 @@
 //! without P). Every later reading of the block (a finishing shape, a subprogram) goes
 //! through the same reader, so the whole program is read one way.
 
-use crate::{ParseError, Word};
+use super::reading::ParseError;
+use crate::Word;
 
 /// Double the X-axis words of one block in place.
 pub(crate) fn to_diameter(words: &mut [Word]) -> Result<(), ParseError> {

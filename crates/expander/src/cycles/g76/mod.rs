@@ -25,16 +25,21 @@
 //! s is the one-flank infeed shift t·tan(a/2) toward A (the final passes have s = 0);
 //! alternating infeed (P2/P4) flips its side pass by pass (**Interpretation**, §4.3).
 
-use super::Move;
-use crate::{Diagnostic, Motion, Pt, Span};
+mod error;
+mod plan;
+mod read;
+
+use crate::{Diagnostic, Pt, Span};
 use gcode::Word;
+use plan::{first_depth_exceeds_height, moves};
+use read::{classify, read_first, read_one_block, read_second, Form};
 
 /// Most passes one G76 may cut: a microscopic Δd is an error, not a hang.
 pub(crate) const MAX_PASSES: usize = 10_000;
 /// Tool angles the FANUC two-block P(a) digits accept (§4.4).
 pub(crate) const TOOL_ANGLES: [u32; 6] = [0, 29, 30, 55, 60, 80];
 /// Geometric tolerance, mm.
-const EPS: f64 = 1e-9;
+pub(crate) const EPS: f64 = 1e-9;
 
 // ---------------------------------------------------------------------------------------------
 // Parameters
@@ -293,671 +298,6 @@ impl OneBlockConfig {
     }
 }
 
-// ---------------------------------------------------------------------------------------------
-// Errors
-// ---------------------------------------------------------------------------------------------
-
-/// What is wrong with a G76.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) enum G76ErrorKind {
-    /// `G76 P(pitch) … J … H …`: LinuxCNC/Mach G76, a different dialect (§4.5).
-    LinuxCnc,
-    /// A block that reads as a second block (F, or one-block K/D) without X/Z/U/W.
-    NoEndPoint,
-    /// A required word is absent.
-    Missing {
-        /// What the word gives.
-        what: &'static str,
-    },
-    /// A least-increment word written with a decimal point (language.md).
-    DecimalPoint {
-        /// mm per increment.
-        mm_per_unit: f64,
-    },
-    /// First-block P is not six digits mm rr aa (negative, fractional, > 999999).
-    PDigits {
-        /// The value written.
-        value: f64,
-    },
-    /// m = 0 (first-block P digits 1–2, or the profile).
-    NoFinishingPass,
-    /// a not in {0, 29, 30, 55, 60, 80} (two-block) or A outside 0–120 (one-block).
-    ToolAngle {
-        /// The angle.
-        a: f64,
-        /// The one-block form (0–120) rather than the two-block list.
-        one_block: bool,
-    },
-    /// One-block P not 1–4.
-    InfeedType {
-        /// The value written.
-        value: f64,
-    },
-    /// One-block Q not a whole number 0–360000 (0.001°).
-    StartAngle {
-        /// The value written.
-        value: f64,
-    },
-    /// k ≤ 0.
-    Height {
-        /// k, mm.
-        k: f64,
-    },
-    /// Δd ≤ 0.
-    FirstDepth {
-        /// Δd, mm.
-        dd: f64,
-    },
-    /// Haas: both F and E give the lead.
-    LeadTwice,
-    /// L ≤ 0.
-    Lead {
-        /// L, mm.
-        lead: f64,
-    },
-    /// Δdmin < 0.
-    MinDepth {
-        /// Δdmin, mm.
-        dmin: f64,
-    },
-    /// d < 0 or d ≥ k: no depth is left for the rough passes.
-    Allowance {
-        /// d, mm.
-        d: f64,
-        /// k, mm.
-        k: f64,
-    },
-    /// The chamfer angle is not strictly between 0° and 90°.
-    ChamferAngle {
-        /// Degrees from Z.
-        angle: f64,
-    },
-    /// The thread has no Z travel (Za = Z).
-    NoZTravel,
-    /// γ = r·L/10 is not shorter than the thread's Z travel.
-    ChamferTooLong {
-        /// γ, mm.
-        gamma: f64,
-        /// |Za − Z|, mm.
-        travel: f64,
-    },
-    /// The radial travel |U/2| from A to the end point is not larger than the pull-out.
-    RadialTravel {
-        /// |U/2|, mm.
-        half_u: f64,
-        /// The pull-out's radial size γ·tanθ, mm.
-        pull_out: f64,
-    },
-    /// |i| > |U/2| with i and U/2 of opposite signs.
-    Taper {
-        /// i, mm.
-        i: f64,
-        /// U/2, mm.
-        half_u: f64,
-    },
-    /// More passes than [`MAX_PASSES`].
-    TooManyPasses {
-        /// About how many the words ask for.
-        estimate: f64,
-    },
-}
-
-/// An alarm of a G76, with the word at fault.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct G76Error {
-    /// What is wrong.
-    pub(crate) kind: G76ErrorKind,
-    /// The word at fault: its letter and, when a word gave the value, its span (`None`: point
-    /// at the G76 word). `None` entirely: the block as a whole (no end point, `LinuxCNC` form).
-    pub(crate) at: Option<At>,
-}
-
-impl G76Error {
-    fn new(kind: G76ErrorKind, at: At) -> Self {
-        Self { kind, at: Some(at) }
-    }
-
-    /// The span to show: the faulty word's, else `fallback` (the G76 word).
-    pub(crate) fn span(&self, fallback: Span) -> Span {
-        self.at.and_then(|a| a.span).unwrap_or(fallback)
-    }
-
-    /// The stable diagnostic code.
-    pub(crate) fn code(&self) -> &'static str {
-        use G76ErrorKind as K;
-        match self.kind {
-            K::LinuxCnc => "LS-G76-LINUXCNC",
-            K::NoEndPoint | K::Missing { .. } | K::LeadTwice => "LS-G76-WORD",
-            K::DecimalPoint { .. } => "LS-INCREMENT",
-            K::ChamferAngle { .. } => "LS-G76-CHAMFER-ANGLE",
-            K::NoZTravel | K::ChamferTooLong { .. } => "LS-G76-CHAMFER",
-            K::RadialTravel { .. } => "LS-G76-TRAVEL",
-            K::Taper { .. } => "LS-G76-TAPER",
-            K::TooManyPasses { .. } => "LS-G76-PASSES",
-            K::PDigits { .. }
-            | K::NoFinishingPass
-            | K::ToolAngle { .. }
-            | K::InfeedType { .. }
-            | K::StartAngle { .. }
-            | K::Height { .. }
-            | K::FirstDepth { .. }
-            | K::Lead { .. }
-            | K::MinDepth { .. }
-            | K::Allowance { .. } => "PS062",
-        }
-    }
-
-    /// What happened.
-    pub(crate) fn message(&self) -> String {
-        use G76ErrorKind as K;
-        let l = self.at.map_or('?', |a| a.letter);
-        match self.kind {
-            K::LinuxCnc => "LinuxCNC-style G76 (P pitch, J, H …) is not supported".into(),
-            K::NoEndPoint => "G76 block with thread words but no end point X/Z (U/W)".into(),
-            K::Missing { what } => format!("G76: {l} ({what}) is missing"),
-            K::DecimalPoint { mm_per_unit } => format!(
-                "{l} is in least input increments ({mm_per_unit} mm) and takes no decimal point"
-            ),
-            K::PDigits { value } => {
-                format!("G76 first block P{value} is not six digits m m r r a a")
-            }
-            K::NoFinishingPass => "G76: m, the number of finishing passes, is 0".into(),
-            K::ToolAngle { a, one_block: false } => {
-                format!("G76 tool angle a = {a} is not one of 0, 29, 30, 55, 60, 80")
-            }
-            K::ToolAngle { a, one_block: true } => {
-                format!("G76 A{a}: the tool angle must be a whole number 0 … 120")
-            }
-            K::InfeedType { value } => {
-                format!("G76 P{value}: a one-block G76 takes P1 … P4 (infeed type)")
-            }
-            K::StartAngle { value } => {
-                format!("G76 Q{value}: the start angle is a whole number 0 … 360000 (0.001°)")
-            }
-            K::Height { k } => format!("G76 thread height k = {k} mm is not positive"),
-            K::FirstDepth { dd } => format!("G76 first depth Δd = {dd} mm is not positive"),
-            K::LeadTwice => "G76: F and E both give the lead".into(),
-            K::Lead { lead } => format!("G76 lead L = {lead} mm is not positive"),
-            K::MinDepth { dmin } => format!("G76 minimum depth Δdmin = {dmin} mm is negative"),
-            K::Allowance { d, k } if d < 0.0 => {
-                format!("G76 finishing allowance d = {d} mm is negative (k = {k} mm)")
-            }
-            K::Allowance { d, k } => format!(
-                "G76 finishing allowance d = {d} mm is not smaller than the thread height k = {k} mm"
-            ),
-            K::ChamferAngle { angle } => {
-                format!("G76 chamfer angle {angle}° is not between 0° and 90°")
-            }
-            K::NoZTravel => "G76 end Z equals the start Z: the thread has no length".into(),
-            K::ChamferTooLong { gamma, travel } => format!(
-                "G76 pull-out chamfer γ = {gamma:.3} mm is not shorter than the thread's Z travel {travel:.3} mm"
-            ),
-            K::RadialTravel { half_u, pull_out } => format!(
-                "G76 radial travel |U/2| = {half_u:.3} mm is not larger than the pull-out {pull_out:.3} mm"
-            ),
-            K::Taper { i, half_u } => format!(
-                "G76 taper {l}{i} is larger than the X travel U/2 = {half_u:.3} with the opposite sign"
-            ),
-            K::TooManyPasses { estimate } => format!(
-                "G76 would cut about {estimate:.0} passes (at most {MAX_PASSES})"
-            ),
-        }
-    }
-
-    /// What to change.
-    pub(crate) fn help(&self) -> String {
-        use G76ErrorKind as K;
-        let l = self.at.map_or('?', |a| a.letter);
-        match self.kind {
-            K::LinuxCnc => "write the FANUC two-block G76 (P m r a Q R / X Z R P Q F) or the one-block form of the control (--control)".into(),
-            K::NoEndPoint => "the second G76 block (or a one-block G76) needs the thread end point X(U) Z(W)".into(),
-            K::Missing { .. } => format!("give {l}"),
-            K::DecimalPoint { mm_per_unit } => format!(
-                "write {l} as a whole number of increments, e.g. {l}{} for 1 mm",
-                (1.0 / mm_per_unit).round()
-            ),
-            K::PDigits { .. } => "write P as m m r r a a, e.g. P021060: 2 finishing passes, chamfer 1.0 lead, 60° tool (the old 0T layout P01-0260 is not accepted)".into(),
-            K::NoFinishingPass => "give at least one finishing pass: P01rraa".into(),
-            K::ToolAngle { one_block: false, .. } => "the last two digits of P are the tool angle: 00, 29, 30, 55, 60 or 80".into(),
-            K::ToolAngle { one_block: true, .. } => "write A as the included tool angle without a decimal point, e.g. A60".into(),
-            K::InfeedType { .. } => "P1 one edge constant amount, P2 alternating constant amount, P3 one edge constant depth, P4 alternating constant depth; a two-block G76 height P with K/D in the same block mixes the two forms".into(),
-            K::StartAngle { .. } => "write Q in 0.001° without a decimal point, e.g. Q180000 for 180°".into(),
-            K::Height { .. } => format!("give the thread height (crest to root, radius) in {l}"),
-            K::FirstDepth { .. } => format!("give the first depth of cut (radius) in {l}"),
-            K::LeadTwice => "give the lead once, in F or in E".into(),
-            K::Lead { .. } => "give the lead in F".into(),
-            K::MinDepth { .. } => format!("{l} (minimum depth of cut) is unsigned"),
-            K::Allowance { .. } => "the finishing allowance must be at least 0 and smaller than the thread height".into(),
-            K::ChamferAngle { .. } => "set the chamfer angle (parameter 5131 / Haas setting 96) between 0° and 90°, 45° usually".into(),
-            K::NoZTravel => "give the thread end Z away from the start point's Z".into(),
-            K::ChamferTooLong { .. } => "reduce the chamfer (r digits of P, Haas setting 95 or M24) or start the thread further away".into(),
-            K::RadialTravel { .. } => "start the cycle further outside the thread (OD) or inside the bore (ID), beyond the pull-out".into(),
-            K::Taper { .. } => "when the taper and U have different signs, |taper| must not exceed |U/2|; check the sign of the taper".into(),
-            K::TooManyPasses { .. } => "give a larger first depth Δd or a minimum depth Δdmin".into(),
-        }
-    }
-
-    /// The diagnostic, at the faulty word or else at `fallback` (the G76 word).
-    pub(crate) fn diagnostic(&self, fallback: Span) -> Diagnostic {
-        Diagnostic::new(
-            self.span(fallback),
-            self.code(),
-            self.message(),
-            self.help(),
-        )
-    }
-}
-
-impl std::fmt::Display for G76Error {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "[{}] {}", self.code(), self.message())
-    }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Reading the words
-// ---------------------------------------------------------------------------------------------
-
-/// Which layout a G76 block is written in.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Form {
-    /// `G76 P(m r a) Q(Δdmin) R(d)`: only stores values.
-    First,
-    /// `G76 X(U) Z(W) R(i) P(k) Q(Δd) F(L)`.
-    Second,
-    /// `G76 X(U) Z(W) K D …` (Haas, FS15).
-    OneBlock,
-}
-
-/// The layout of a G76 block. `get` looks a word up by letter without consuming it
-/// (`Block::get`). J or H: `LinuxCNC`; K or D: one-block; X/Z/U/W: second block; F without an
-/// end point: a second block missing it; else a first block. Whether the dialect admits the
-/// form (`fs15_format`, `haas`, `gsk980`) is the caller's check.
-pub(crate) fn classify<'w>(get: impl Fn(char) -> Option<&'w Word>) -> Result<Form, G76Error> {
-    if let Some(w) = get('J').or_else(|| get('H')) {
-        return Err(G76Error::new(
-            G76ErrorKind::LinuxCnc,
-            At::word(w.letter, Some(w)),
-        ));
-    }
-    let end = ['X', 'Z', 'U', 'W'].iter().any(|&l| get(l).is_some());
-    let one = get('K').is_some() || get('D').is_some();
-    match (end, one) {
-        (true, true) => Ok(Form::OneBlock),
-        (true, false) => Ok(Form::Second),
-        (false, true) => Err(G76Error {
-            kind: G76ErrorKind::NoEndPoint,
-            at: None,
-        }),
-        (false, false) if get('F').is_some() => Err(G76Error {
-            kind: G76ErrorKind::NoEndPoint,
-            at: None,
-        }),
-        (false, false) => Ok(Form::First),
-    }
-}
-
-/// A least-increment word (no decimal point when `mm_per_unit` < 1) in mm.
-fn increments(letter: char, w: Option<&Word>, mm_per_unit: f64) -> Result<Option<f64>, G76Error> {
-    let Some(w) = w else { return Ok(None) };
-    if mm_per_unit < 1.0 && w.has_point {
-        return Err(G76Error::new(
-            G76ErrorKind::DecimalPoint { mm_per_unit },
-            At::word(letter, Some(w)),
-        ));
-    }
-    Ok(Some(w.value * mm_per_unit))
-}
-
-/// Read `G76 P(m)(r)(a) Q(Δdmin) R(d)`. Absent words keep `prev` (the retained values).
-/// `pq_mm`: mm per P/Q unit (`Machine::pq_mm`, times 25.4 under G20 for inch increments);
-/// `unit`: 1, or 25.4 under G20, for R.
-pub(crate) fn read_first<'w>(
-    mut get: impl FnMut(char) -> Option<&'w Word>,
-    prev: &FirstBlock,
-    pq_mm: f64,
-    unit: f64,
-) -> Result<FirstBlock, G76Error> {
-    let mut f = *prev;
-    if let Some(p) = get('P') {
-        let at = At::word('P', Some(p));
-        let v = p.value;
-        if p.has_point || v.fract() != 0.0 || !(0.0..=999_999.0).contains(&v) {
-            return Err(G76Error::new(G76ErrorKind::PDigits { value: v }, at));
-        }
-        let v = v as u32;
-        let (m, r, a) = (v / 10_000, v / 100 % 100, v % 100);
-        if m == 0 {
-            return Err(G76Error::new(G76ErrorKind::NoFinishingPass, at));
-        }
-        if !TOOL_ANGLES.contains(&a) {
-            return Err(G76Error::new(
-                G76ErrorKind::ToolAngle {
-                    a: f64::from(a),
-                    one_block: false,
-                },
-                at,
-            ));
-        }
-        (f.m, f.r, f.a, f.p_at) = (m, r, a, Some(p.span));
-    }
-    if let Some(q) = get('Q') {
-        let dmin = increments('Q', Some(q), pq_mm)?.unwrap_or(0.0);
-        if dmin < 0.0 {
-            return Err(G76Error::new(
-                G76ErrorKind::MinDepth { dmin },
-                At::word('Q', Some(q)),
-            ));
-        }
-        (f.dmin, f.q_at) = (dmin, Some(q.span));
-    }
-    if let Some(r) = get('R') {
-        (f.d, f.r_at) = (r.value * unit, Some(r.span));
-    }
-    Ok(f)
-}
-
-/// The lead: F (or Haas E) of the block, else the F in force (mm/rev, already in mm).
-fn lead<'w>(
-    f: Option<&'w Word>,
-    e: Option<&'w Word>,
-    in_force: Option<f64>,
-    unit: f64,
-) -> Result<(f64, At), G76Error> {
-    match (f, e) {
-        (Some(_), Some(w)) => Err(G76Error::new(
-            G76ErrorKind::LeadTwice,
-            At::word('E', Some(w)),
-        )),
-        (Some(w), None) => Ok((w.value * unit, At::word('F', Some(w)))),
-        (None, Some(w)) => Ok((w.value * unit, At::word('E', Some(w)))),
-        (None, None) => match in_force {
-            Some(l) => Ok((l, At::letter('F'))),
-            None => Err(G76Error::new(
-                G76ErrorKind::Missing { what: "the lead" },
-                At::letter('F'),
-            )),
-        },
-    }
-}
-
-/// The letters of the end point that were written.
-fn end_at<'w>(get: &mut impl FnMut(char) -> Option<&'w Word>) -> (At, At) {
-    let x = match get('X') {
-        Some(w) => At::word('X', Some(w)),
-        None => At::word('U', get('U')),
-    };
-    let z = match get('Z') {
-        Some(w) => At::word('Z', Some(w)),
-        None => At::word('W', get('W')),
-    };
-    (x, z)
-}
-
-/// Read `G76 X(U) Z(W) R(i) P(k) Q(Δd) F(L)` with the retained first block. `end`: the end
-/// point resolved by the caller (G54 frame, radius); `f_in_force`: the modal F in mm when the
-/// block has none; `chamfer_angle`: parameter No. 5131 (45°).
-pub(crate) fn read_second<'w>(
-    mut get: impl FnMut(char) -> Option<&'w Word>,
-    first: &FirstBlock,
-    end: Pt,
-    f_in_force: Option<f64>,
-    pq_mm: f64,
-    unit: f64,
-    chamfer_angle: f64,
-) -> Result<G76Params, G76Error> {
-    let (x, z) = end_at(&mut get);
-    let r = get('R');
-    let p = get('P');
-    let q = get('Q');
-    let k = increments('P', p, pq_mm)?.ok_or_else(|| {
-        G76Error::new(
-            G76ErrorKind::Missing {
-                what: "the thread height k, radius, in least increments",
-            },
-            At::letter('P'),
-        )
-    })?;
-    let dd = increments('Q', q, pq_mm)?.ok_or_else(|| {
-        G76Error::new(
-            G76ErrorKind::Missing {
-                what: "the first depth Δd, radius, in least increments",
-            },
-            At::letter('Q'),
-        )
-    })?;
-    let (lead, lead_at) = lead(get('F'), None, f_in_force, unit)?;
-    let first_p = At {
-        letter: 'P',
-        span: first.p_at,
-    };
-    Ok(G76Params {
-        m: first.m,
-        chamfer_leads: f64::from(first.r) / 10.0,
-        chamfer_angle,
-        a: f64::from(first.a),
-        dmin: first.dmin,
-        d: first.d,
-        end,
-        i: r.map_or(0.0, |w| w.value * unit),
-        k,
-        dd,
-        lead,
-        law: DepthLaw::ConstantAmount,
-        edges: Edges::One,
-        start_angle: 0.0,
-        at: Sources {
-            m: first_p,
-            chamfer: first_p,
-            a: first_p,
-            dmin: At {
-                letter: 'Q',
-                span: first.q_at,
-            },
-            d: At {
-                letter: 'R',
-                span: first.r_at,
-            },
-            x,
-            z,
-            i: At::word('R', r),
-            k: At::word('P', p),
-            dd: At::word('Q', q),
-            lead: lead_at,
-        },
-    })
-}
-
-/// Read the one-block form `G76 X(U) Z(W) K D [I] [A] [P] [Q] F(E)` (Haas §3.5, FS15 §4.5).
-/// `end`, `f_in_force`, `unit` as for [`read_second`]; the rest comes from `cfg`.
-pub(crate) fn read_one_block<'w>(
-    mut get: impl FnMut(char) -> Option<&'w Word>,
-    end: Pt,
-    f_in_force: Option<f64>,
-    unit: f64,
-    cfg: &OneBlockConfig,
-) -> Result<G76Params, G76Error> {
-    let (x, z) = end_at(&mut get);
-    let length = |letter: char, w: Option<&Word>| -> Result<Option<f64>, G76Error> {
-        match cfg.kd_mm_per_unit {
-            Some(mm) => increments(letter, w, mm),
-            None => Ok(w.map(|w| w.value * unit)),
-        }
-    };
-    let kw = get('K');
-    let dw = get('D');
-    let k = length('K', kw)?.ok_or_else(|| {
-        G76Error::new(
-            G76ErrorKind::Missing {
-                what: "the thread height, radius",
-            },
-            At::letter('K'),
-        )
-    })?;
-    let dd = length('D', dw)?.ok_or_else(|| {
-        G76Error::new(
-            G76ErrorKind::Missing {
-                what: "the first depth of cut, radius",
-            },
-            At::letter('D'),
-        )
-    })?;
-    let iw = get('I');
-    let i = iw.map_or(0.0, |w| w.value * unit);
-    let aw = get('A');
-    let a = match aw {
-        None => cfg.a,
-        Some(w) if w.value.fract() == 0.0 && (0.0..=120.0).contains(&w.value) => w.value,
-        Some(w) => {
-            return Err(G76Error::new(
-                G76ErrorKind::ToolAngle {
-                    a: w.value,
-                    one_block: true,
-                },
-                At::word('A', Some(w)),
-            ))
-        }
-    };
-    let pw = get('P');
-    let (law, edges) = match pw.map(|w| (w.value, w.has_point)) {
-        None => (DepthLaw::ConstantAmount, Edges::One),
-        Some((1.0, false)) => (DepthLaw::ConstantAmount, Edges::One),
-        Some((2.0, false)) => (DepthLaw::ConstantAmount, Edges::Alternating),
-        Some((3.0, false)) => (DepthLaw::ConstantDepth, Edges::One),
-        Some((4.0, false)) => (DepthLaw::ConstantDepth, Edges::Alternating),
-        Some((value, _)) => {
-            return Err(G76Error::new(
-                G76ErrorKind::InfeedType { value },
-                At::word('P', pw),
-            ))
-        }
-    };
-    let qw = get('Q');
-    let start_angle = match qw {
-        None => 0.0,
-        Some(w)
-            if !w.has_point && w.value.fract() == 0.0 && (0.0..=360_000.0).contains(&w.value) =>
-        {
-            w.value / 1000.0
-        }
-        Some(w) => {
-            return Err(G76Error::new(
-                G76ErrorKind::StartAngle { value: w.value },
-                At::word('Q', Some(w)),
-            ))
-        }
-    };
-    let e = if cfg.flavor == Flavor::Haas {
-        get('E')
-    } else {
-        None
-    };
-    let (lead, lead_at) = lead(get('F'), e, f_in_force, unit)?;
-    let at = Sources {
-        x,
-        z,
-        i: At::word('I', iw),
-        k: At::word('K', kw),
-        dd: At::word('D', dw),
-        a: At::word('A', aw),
-        d: At::word('K', kw),
-        dmin: At::word('D', dw),
-        chamfer: z,
-        lead: lead_at,
-        ..Sources::one_block()
-    };
-    Ok(G76Params {
-        m: cfg.m,
-        chamfer_leads: cfg.chamfer_leads,
-        chamfer_angle: cfg.chamfer_angle,
-        a,
-        dmin: cfg.dmin,
-        d: cfg.d,
-        end,
-        i,
-        k,
-        dd,
-        lead,
-        law,
-        edges,
-        start_angle,
-        at,
-    })
-}
-
-// ---------------------------------------------------------------------------------------------
-// Planning
-// ---------------------------------------------------------------------------------------------
-
-/// The depth (radius, from the crest) of every pass, rough passes then the m passes at k
-/// (§4.2). Checks the values that do not depend on the start point.
-pub(crate) fn passes(p: &G76Params) -> Result<Vec<f64>, G76Error> {
-    use G76ErrorKind as K;
-    let at = &p.at;
-    if !p.k.is_finite() || p.k <= 0.0 {
-        return Err(G76Error::new(K::Height { k: p.k }, at.k));
-    }
-    if !p.dd.is_finite() || p.dd <= 0.0 {
-        return Err(G76Error::new(K::FirstDepth { dd: p.dd }, at.dd));
-    }
-    if !p.lead.is_finite() || p.lead <= 0.0 {
-        return Err(G76Error::new(K::Lead { lead: p.lead }, at.lead));
-    }
-    if !p.dmin.is_finite() || p.dmin < 0.0 {
-        return Err(G76Error::new(K::MinDepth { dmin: p.dmin }, at.dmin));
-    }
-    if !p.d.is_finite() || p.d < 0.0 || p.d >= p.k {
-        return Err(G76Error::new(K::Allowance { d: p.d, k: p.k }, at.d));
-    }
-    if p.m == 0 {
-        return Err(G76Error::new(K::NoFinishingPass, at.m));
-    }
-    let m = p.m as usize;
-    let target = p.k - p.d;
-    let mut out = Vec::new();
-    let mut prev = 0.0;
-    for n in 1.. {
-        if out.len() + m >= MAX_PASSES {
-            return Err(G76Error::new(
-                K::TooManyPasses {
-                    estimate: estimate(p, target),
-                },
-                at.dd,
-            ));
-        }
-        let nf = f64::from(n);
-        let mut h = match p.law {
-            DepthLaw::ConstantAmount => p.dd * nf.sqrt(),
-            DepthLaw::ConstantDepth => p.dd * nf,
-        };
-        if h - prev < p.dmin {
-            h = prev + p.dmin;
-        }
-        if h >= target - EPS {
-            out.push(target);
-            break;
-        }
-        out.push(h);
-        prev = h;
-    }
-    out.extend(std::iter::repeat_n(p.k, m));
-    Ok(out)
-}
-
-/// About how many passes the words ask for (for the message only).
-fn estimate(p: &G76Params, target: f64) -> f64 {
-    let by_dd = match p.law {
-        DepthLaw::ConstantAmount => (target / p.dd).powi(2),
-        DepthLaw::ConstantDepth => target / p.dd,
-    };
-    let by_min = if p.dmin > 0.0 {
-        target / p.dmin
-    } else {
-        f64::INFINITY
-    };
-    by_dd.min(by_min).ceil() + f64::from(p.m)
-}
-
 /// Run a G76 block in the interpreter. FANUC/GSK two-block form: the first block only
 /// stores m r a, Δdmin and d (retained as the control keeps them); the second cuts the
 /// passes from the cycle's start point. One-block form (Haas §3.5; FANUC FS15 §4.5 with
@@ -999,16 +339,7 @@ pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
                 .map_err(|e| e.diagnostic(g_span))?
         }
         Form::OneBlock if !c.machine.one_block_cycles() => {
-            let w = block.get('K').or_else(|| block.get('D'));
-            return Err(Diagnostic::new(
-                w.map_or(g_span, |w| w.span),
-                "LS-ONE-BLOCK-FORM",
-                format!(
-                    "G76 with K and D in one block is the Haas/FS15 form: run with --control haas (this control is {})",
-                    c.machine.control.key()
-                ),
-                "write the two-block form G76 P(m)(r)(a) Q R / G76 X Z R P Q F, or run with --control haas (FANUC with the FS15 format: fs15_format = true)",
-            ));
+            return Err(one_block_refused(c, g_span));
         }
         Form::OneBlock => {
             let h = c.machine.haas;
@@ -1036,102 +367,45 @@ pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
         ..super::Output::default()
     };
     if first_depth_exceeds_height(&params) {
-        out.warnings.push(c.alarm(
-            "LS-G76-DEPTH",
-            format!(
-                "the first depth {:.4} mm is larger than the thread height {:.4} mm: one rough pass at the height less d",
-                params.dd, params.k
-            ),
-            "check the first depth and the height (swapped?)",
-        ));
+        out.warnings.push(first_depth_warning(c, &params));
     }
     Ok(out)
 }
 
-/// A thread move to `to`.
-fn thread(to: Pt) -> Move {
-    let mut m = Move::feed(to);
-    m.motion = Motion::Thread;
-    m
+/// The one-block G76 under a control that reads only the two-block form.
+fn one_block_refused(c: &super::Cycle, g_span: Span) -> Diagnostic {
+    let block = c.words.block;
+    let w = block.get('K').or_else(|| block.get('D'));
+    Diagnostic::new(
+        w.map_or(g_span, |w| w.span),
+        "LS-ONE-BLOCK-FORM",
+        format!(
+            "G76 with K and D in one block is the Haas/FS15 form: run with --control haas (this control is {})",
+            c.machine.control.key()
+        ),
+        "write the two-block form G76 P(m)(r)(a) Q R / G76 X Z R P Q F, or run with --control haas (FANUC with the FS15 format: fs15_format = true)",
+    )
 }
 
-/// The moves of the whole cycle from the start point `start` (G54 frame), §4.3: five (four
-/// without a chamfer) per pass, in the order of [`passes`].
-pub(crate) fn moves(start: Pt, p: &G76Params) -> Result<Vec<Move>, G76Error> {
-    use G76ErrorKind as K;
-    let depths = passes(p)?;
-    let at = &p.at;
-    let theta = p.chamfer_angle;
-    if !theta.is_finite() || theta <= 0.0 || theta >= 90.0 {
-        return Err(G76Error::new(K::ChamferAngle { angle: theta }, at.chamfer));
-    }
-    // Z travel and the side of A (the shift and the chamfer point toward A).
-    let dz = start.z - p.end.z;
-    let travel = dz.abs();
-    if travel < EPS {
-        return Err(G76Error::new(K::NoZTravel, at.z));
-    }
-    let zeta = dz.signum();
-    let gamma = p.chamfer_leads * p.lead;
-    if gamma > 0.0 && gamma >= travel - EPS {
-        return Err(G76Error::new(
-            K::ChamferTooLong { gamma, travel },
-            at.chamfer,
-        ));
-    }
-    // Radial travel: larger than the pull-out's radial size (§4.4). With no chamfer it must
-    // still be non-zero, or OD and ID cannot be told apart.
-    let half_u = p.end.r - start.r;
-    let pull_out = gamma * theta.to_radians().tan();
-    if half_u.abs() <= pull_out + EPS {
-        return Err(G76Error::new(
-            K::RadialTravel {
-                half_u: half_u.abs(),
-                pull_out,
-            },
-            at.x,
-        ));
-    }
-    if p.i != 0.0 && p.i.signum() != half_u.signum() && p.i.abs() > half_u.abs() + EPS {
-        return Err(G76Error::new(K::Taper { i: p.i, half_u }, at.i));
-    }
-    // σ: +1 OD (the start point is outside the end point), −1 ID.
-    let sigma = if start.r > p.end.r { 1.0 } else { -1.0 };
-    let tan_half = (p.a / 2.0).to_radians().tan();
-    let mut out = Vec::with_capacity(depths.len() * 5);
-    for (n, h) in depths.iter().enumerate() {
-        let t = p.k - h;
-        let side = match p.edges {
-            Edges::One => 1.0,
-            Edges::Alternating if n % 2 == 0 => 1.0,
-            Edges::Alternating => -1.0,
-        };
-        let s = zeta * side * t * tan_half;
-        let r_end = p.end.r + sigma * t;
-        let z_end = p.end.z + s;
-        out.push(Move::rapid(Pt::new(start.z + s, r_end + p.i))); // ① to the pass start
-        if gamma > 0.0 {
-            let r_c = r_end + p.i * gamma / travel; // on the taper, γ before the end
-            out.push(thread(Pt::new(z_end + zeta * gamma, r_c))); // ② thread
-            out.push(thread(Pt::new(z_end, r_end + sigma * pull_out))); // ③ chamfer
-        } else {
-            out.push(thread(Pt::new(z_end, r_end))); // ② thread to the end
-        }
-        out.push(Move::rapid(Pt::new(z_end, start.r))); // ④ out in X
-        out.push(Move::rapid(start)); // ⑤ back in Z
-    }
-    Ok(out)
-}
-
-/// Advice that does not stop the program: a first depth larger than the whole thread height
-/// (P and Q of the second block swapped?). The pass law caps it at k − d (§4.2).
-pub(crate) fn first_depth_exceeds_height(p: &G76Params) -> bool {
-    p.dd > p.k
+/// A first depth larger than the thread height cuts one rough pass at the height less d.
+fn first_depth_warning(c: &super::Cycle, params: &G76Params) -> Diagnostic {
+    c.alarm(
+        "LS-G76-DEPTH",
+        format!(
+            "the first depth {:.4} mm is larger than the thread height {:.4} mm: one rough pass at the height less d",
+            params.dd, params.k
+        ),
+        "check the first depth and the height (swapped?)",
+    )
 }
 
 #[cfg(test)]
 mod tests {
+    use super::error::{G76Error, G76ErrorKind};
+    use super::plan::passes;
     use super::*;
+    use crate::cycles::Move;
+    use crate::Motion;
     use gcode::Block;
 
     const IS_B: f64 = 0.001;
@@ -1640,19 +914,29 @@ mod tests {
         assert!(e.message().contains("passes"));
     }
 
-    /// Start inside the pull-out, no radial travel at all, and a taper against U.
+    /// No radial travel at all, and a taper against U, are alarms; a start inside the
+    /// pull-out is not (the HUST rule [S19] is no FANUC, GSK or Haas alarm): the pull-out
+    /// climbs past the start X and the pass rapids back to it.
     #[test]
     fn alarm_travel_and_taper() {
         let p = G76Params {
             chamfer_leads: 1.0,
             ..sample()
         };
-        // |U/2| = 9.5 − 8.9175 = 0.5825 < γ·tan45 = 1.5.
-        let e = moves(Pt::new(5.0, 9.5), &p).unwrap_err();
-        assert!(matches!(e.kind, G76ErrorKind::RadialTravel { .. }), "{e}");
-        assert_eq!(e.at.unwrap().letter, 'X');
+        // |U/2| = 9.5 − 8.9175 = 0.5825 < γ·tan45 = 1.5: runs.
+        let mv = moves(Pt::new(5.0, 9.5), &p).unwrap();
+        let last = p.end.r + 1.5; // the final pass's pull-out ends at root + γ·tan45
+        assert!(mv
+            .iter()
+            .any(|m| close(m.to.r, last, 1e-9) && close(m.to.z, p.end.z, 1e-9)));
+        assert!(
+            close(mv[mv.len() - 2].to.r, 9.5, 1e-12)
+                && close(mv[mv.len() - 2].to.z, p.end.z, 1e-12)
+        );
         let e = moves(Pt::new(5.0, p.end.r), &sample()).unwrap_err();
-        assert!(matches!(e.kind, G76ErrorKind::RadialTravel { .. }), "{e}");
+        assert_eq!(e.kind, G76ErrorKind::NoRadialTravel, "{e}");
+        assert_eq!(e.at.unwrap().letter, 'X');
+        assert_eq!(e.code(), "LS-G76-TRAVEL");
         // OD: U/2 = 8.9175 − 11 = −2.0825; i = +2.5 opposite and larger.
         let p = G76Params { i: 2.5, ..sample() };
         let e = moves(Pt::new(5.0, 11.0), &p).unwrap_err();

@@ -1,0 +1,344 @@
+//! The cause of a crash, a gouge or a leftover, from the geometry.
+
+use super::insert::{Facts, Part};
+use crate::deviation::Finding;
+use crate::findings::{Cause, CauseKind, Crash};
+use crate::{Intent, Settings};
+use expander::{Motion, Segment};
+use geom::flat::P;
+use stock::{Mounts, Tool};
+
+/// How near a move's sweep must come to a gouge's deepest point to have reached it, mm (the
+/// removal's grid and chords put the region's edge within this of the float sweep).
+const REACH: f64 = 1e-3;
+
+/// Most moves after the one that made a gouge looked at for the one that reached its
+/// deepest point.
+const MAX_LOOKED_AT: usize = 20_000;
+
+/// A program's X (a diameter) and Z, as a machinist reads them.
+fn place(p: P) -> String {
+    format!("Z{:.3} X{:.3}", p[0], 2.0 * p[1])
+}
+
+/// The tool that cuts `seg`, as the table (or its default) has it.
+fn tool_of(seg: &Segment, s: &Settings) -> Tool {
+    let t = if seg.tool == 0 {
+        s.tools.numbers().first().copied().unwrap_or(0)
+    } else {
+        seg.tool
+    };
+    s.tools.get(t).cloned().unwrap_or(Tool::DEFAULT)
+}
+
+/// The cause of a crash: the workholding, the tool's body, or a rapid into uncut stock
+/// (with the stock's edge it met: the face, or a diameter).
+pub(crate) fn crash(c: &Crash, segments: &[Segment], s: &Settings, _rear: &[u32]) -> Cause {
+    let seg = &segments[c.segment];
+    let part = c.body.unwrap_or("cutting edge");
+    let numbers = vec![("depth_mm", c.depth), ("area_mm2", c.area)];
+    if let Some(o) = c.obstacle {
+        return Cause {
+            kind: CauseKind::Workholding,
+            text: format!(
+                "the tool's {part} enters the {o} at {} ({:.3} mm)",
+                place(c.at),
+                c.depth
+            ),
+            numbers,
+        };
+    }
+    if let Some(body) = c.body {
+        return Cause {
+            kind: CauseKind::Body,
+            text: format!(
+                "the {body} reaches what the edge does not: it meets stock at {}, {:.3} mm deep ({})",
+                place(c.at),
+                c.depth,
+                s.tools.describe(seg.tool)
+            ),
+            numbers,
+        };
+    }
+    let what = if seg.motion == Motion::Rapid {
+        "a rapid"
+    } else {
+        "the move"
+    };
+    Cause {
+        kind: CauseKind::Rapid,
+        text: format!(
+            "{what} from {} to {} runs into uncut stock: it meets {} at {}, {:.3} mm deep",
+            place([seg.from.z, seg.from.r]),
+            place([seg.to.z, seg.to.r]),
+            stock_edge(c.at, s),
+            place(c.at),
+            c.depth
+        ),
+        numbers,
+    }
+}
+
+/// Which edge of the blank a point lies on: its face, or a diameter.
+fn stock_edge(at: P, s: &Settings) -> String {
+    let face = s
+        .blank
+        .shapes
+        .iter()
+        .flat_map(|sh| sh.outer.iter())
+        .map(|p| p[0])
+        .fold(f64::NEG_INFINITY, f64::max);
+    if (at[0] - face).abs() < 1e-3 {
+        format!("the face at Z{face:.3}")
+    } else {
+        format!("the stock at Ø{:.3}", 2.0 * at[1])
+    }
+}
+
+/// The cause of a gouge: another tool's cut into a finished contour, the programmed point
+/// going into the part, or the part of the turning insert that reached it.
+pub(crate) fn gouge(
+    g: &Finding,
+    intents: &[Intent],
+    segments: &[Segment],
+    s: &Settings,
+    mounts: &mut Mounts,
+) -> Option<Cause> {
+    let i = g.made_by?;
+    let seg = &segments[i];
+    if let Some((owner, from)) = other_owner(g, intents, seg, i) {
+        return Some(Cause {
+            kind: CauseKind::OtherTool,
+            text: format!(
+                "T{:02} (line {}) cuts into the contour T{owner:02} finished (from line {})",
+                seg.tool,
+                seg.span.line,
+                segments.get(from).map_or(0, |f| f.span.line)
+            ),
+            numbers: vec![("depth_mm", g.depth)],
+        });
+    }
+    let radius = Facts::of(&tool_of(seg, s)).map_or(0.0, |f| f.nose_radius);
+    if let Some(j) = program_enters(g, intents, segments, i, radius) {
+        return Some(Cause {
+            kind: CauseKind::Program,
+            text: format!(
+                "line {} moves the tool's reference point into the part: the programmed path itself cuts {:.3} mm below the intended surface",
+                segments[j].span.line, g.depth
+            ),
+            numbers: vec![("depth_mm", g.depth)],
+        });
+    }
+    // the move whose sweep reaches the deepest point (the one that made the region may
+    // only have touched its edge, a compensation corner's arc; a later tool may have cut it
+    // deeper, a finishing pass with a bigger nose)
+    let (seg, p) = (i..segments.len())
+        .take(MAX_LOOKED_AT)
+        .filter(|&j| segments[j].motion != Motion::Rapid)
+        .find_map(|j| {
+            let m = mounts.of(&segments[j]);
+            let near = crate::assumed::path_box(&segments[j]);
+            let bb = m.bbox();
+            let reach = bb.max.z.abs().max(bb.min.z.abs()) + bb.max.r.abs().max(bb.min.r.abs());
+            if !near.grown(reach + REACH).contains(geom::Pt::from(g.at)) {
+                return None;
+            }
+            crate::pose::first_reach(&m.edge, &segments[j], g.at, crate::CHORD_TOL, REACH)
+                .map(|p| (&segments[j], p))
+        })?;
+    let facts = Facts::of(&tool_of(seg, s))?;
+    // the deepest point relative to the reference, as mounted on the front post
+    let below = p[1] < 0.0;
+    let at = if below { [g.at[0], -g.at[1]] } else { g.at };
+    let mut q = [at[0] - p[0], at[1] - p[1]];
+    if mounts.is_rear(seg.tool) {
+        q[1] = -q[1];
+    }
+    Some(match facts.part_at(q) {
+        Part::Trailing => trailing(g, intents, &facts, seg),
+        Part::Leading => leading(g, intents, &facts, seg),
+        Part::Nose => nose(g, &facts, seg, segments, i),
+    })
+}
+
+/// The first move of the gouge's tool (from the one that made it) whose reference point goes
+/// into the intended part near the gouge deeper than the nose radius `nose` (under
+/// compensation the imaginary tip lies up to about the nose radius inside a wall it
+/// follows: that is no programming error).
+fn program_enters(
+    g: &Finding,
+    intents: &[Intent],
+    segments: &[Segment],
+    i: usize,
+    nose: f64,
+) -> Option<usize> {
+    let near = geom::Rect::of(g.shape.outer.iter().map(|&p| geom::Pt::from(p)))
+        .grown(g.depth + nose + 1.0);
+    let deeper = nose + 0.005;
+    let parts: Vec<(crate::assumed::Region, crate::assumed::Region)> = intents
+        .iter()
+        .map(|it| {
+            (
+                crate::assumed::Region::new(&it.part),
+                crate::assumed::Region::new(&it.zone),
+            )
+        })
+        .collect();
+    let tool = segments[i].tool;
+    (i..segments.len())
+        .take(MAX_LOOKED_AT)
+        .take_while(|&j| segments[j].tool == tool)
+        .find(|&j| {
+            parts.iter().any(|(part, zone)| {
+                crate::assumed::inside_depths(&segments[j], part, deeper, crate::CHORD_TOL)
+                    .into_iter()
+                    .any(|(p, d)| {
+                        d >= deeper && zone.contains(p) && near.contains(geom::Pt::from(p))
+                    })
+            })
+        })
+}
+
+/// The tool and first move of a contour that claims the gouge's place and was finished by
+/// another tool than the one that made the gouge.
+fn other_owner(g: &Finding, intents: &[Intent], seg: &Segment, i: usize) -> Option<(u32, usize)> {
+    intents
+        .iter()
+        .filter(|it| crate::assumed::Region::new(&it.zone).contains(g.at))
+        .filter_map(|it| it.owner)
+        .find(|&(tool, from)| tool != seg.tool && i >= from)
+}
+
+/// The steepness of the intended part's boundary nearest `p`, degrees from the Z axis (0: a
+/// diameter, 90: a face).
+fn flank_deg(intents: &[Intent], p: P) -> Option<f64> {
+    let mut best: Option<(f64, f64)> = None;
+    for it in intents {
+        for (line, closed) in &it.outline {
+            let n = line.len();
+            let edges = if *closed { n } else { n.saturating_sub(1) };
+            for k in 0..edges {
+                let (a, b) = (line[k], line[(k + 1) % n]);
+                let d = super::insert::segment_distance(p, a, b);
+                let dz = (b[0] - a[0]).abs();
+                let dr = (b[1] - a[1]).abs();
+                if dz + dr > 0.0 && best.is_none_or(|(bd, _)| d < bd) {
+                    best = Some((d, dr.atan2(dz).to_degrees()));
+                }
+            }
+        }
+    }
+    best.map(|(_, deg)| deg)
+}
+
+fn trailing(g: &Finding, intents: &[Intent], f: &Facts, seg: &Segment) -> Cause {
+    let clearance = f.trailing_clearance();
+    let flank = flank_deg(intents, g.nearest).unwrap_or(f64::NAN);
+    Cause {
+        kind: CauseKind::TrailingEdge,
+        text: format!(
+            "the trailing edge of the {} {}° insert on a {}° holder ({:.0}° clearance) cannot descend this {:.0}° flank: it cuts {:.3} mm into it (line {})",
+            f.insert.letter(),
+            f.included,
+            f.entering,
+            clearance,
+            flank,
+            g.depth,
+            seg.span.line
+        ),
+        numbers: vec![
+            ("flank_deg", flank),
+            ("clearance_deg", clearance),
+            ("depth_mm", g.depth),
+        ],
+    }
+}
+
+fn leading(g: &Finding, intents: &[Intent], f: &Facts, seg: &Segment) -> Cause {
+    let lean = f.leading_lean();
+    let wall = flank_deg(intents, g.nearest).map_or(f64::NAN, |d| 90.0 - d);
+    Cause {
+        kind: CauseKind::LeadingEdge,
+        text: format!(
+            "the leading edge of the {}° holder leans back {:.0}°: this wall leans back {:.0}°, and the edge cuts {:.3} mm into it (line {})",
+            f.entering, lean, wall, g.depth, seg.span.line
+        ),
+        numbers: vec![
+            ("wall_lean_deg", wall),
+            ("holder_lean_deg", lean),
+            ("depth_mm", g.depth),
+        ],
+    }
+}
+
+/// A gouge the nose made: its radius not compensated as this tool needs. The side the part
+/// lies on, against the direction of travel, says G41 or G42.
+fn nose(g: &Finding, f: &Facts, seg: &Segment, segments: &[Segment], i: usize) -> Cause {
+    let d = seg.to - seg.from;
+    let side = d.z * (g.at[1] - seg.from.r) - d.r * (g.at[0] - seg.from.z);
+    // the part on the left of travel puts the tool on the right: G42
+    let code = if side > 0.0 { "G42" } else { "G41" };
+    let first = (0..=i)
+        .rev()
+        .take_while(|&k| segments[k].tool == seg.tool && segments[k].motion != Motion::Rapid)
+        .last()
+        .map_or(seg.span.line, |k| segments[k].span.line);
+    Cause {
+        kind: CauseKind::Compensation,
+        text: format!(
+            "the r{} nose cuts {:.3} mm into the part at line {}: its radius is not compensated as this tool needs ({code} from line {first} with the offset's radius {} and tip {}, the tool's)",
+            f.nose_radius, g.depth, seg.span.line, f.nose_radius, f.tip
+        ),
+        numbers: vec![("nose_radius", f.nose_radius), ("depth_mm", g.depth)],
+    }
+}
+
+/// The cause of a leftover: the nose in an inside corner sharper than it, or no pass that
+/// reaches it.
+pub(crate) fn leftover(
+    l: &Finding,
+    intents: &[Intent],
+    segments: &[Segment],
+    s: &Settings,
+) -> Cause {
+    let nose = segments
+        .iter()
+        .filter(|seg| seg.motion != Motion::Rapid)
+        .filter_map(|seg| Facts::of(&tool_of(seg, s)))
+        .map(|f| f.nose_radius)
+        .fold(0.0, f64::max);
+    let corner = at_corner(intents, l.nearest, nose);
+    if nose > 0.0 && corner && l.depth <= nose * (1.0 - std::f64::consts::FRAC_1_SQRT_2) + 0.01 {
+        return Cause {
+            kind: CauseKind::Nose,
+            text: format!(
+                "the r{nose} nose cannot fill this inside corner sharper than its radius: {:.3} mm stays",
+                l.depth
+            ),
+            numbers: vec![("nose_radius", nose), ("depth_mm", l.depth)],
+        };
+    }
+    Cause {
+        kind: CauseKind::Program,
+        text: format!(
+            "no pass reaches it: {:.3} mm² stays, {:.3} mm thick at {}",
+            l.area,
+            l.depth,
+            place(l.at)
+        ),
+        numbers: vec![("area_mm2", l.area), ("depth_mm", l.depth)],
+    }
+}
+
+/// Whether `p` lies within `within` of a vertex of an intended outline (an inside corner
+/// of the part is a vertex of its drawn outline; a leftover the nose leaves there lies
+/// within its radius of it).
+fn at_corner(intents: &[Intent], p: P, within: f64) -> bool {
+    intents
+        .iter()
+        .flat_map(|it| it.outline.iter())
+        .any(|(line, _)| {
+            line.iter()
+                .any(|v| (v[0] - p[0]).hypot(v[1] - p[1]) <= within)
+        })
+}

@@ -1,0 +1,252 @@
+//! Remedies, each checked by re-running the program with it: a tool of the table (or an
+//! ISO tool) with the geometry the cause asks for, or a program change (a rapid split in
+//! two). Only a change that removes the finding and adds none is given.
+
+use super::insert::Facts;
+use crate::deviation::Finding;
+use crate::findings::{CauseKind, Crash, Remedy};
+use crate::Findings;
+use expander::Segment;
+use geom::flat::P;
+use stock::{Tool, ToolTable};
+
+/// A change to try on the program or its tools.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Change {
+    /// Tool `t` given by this `[[tool]]` entry's fields (TOML, without `t`) instead of the
+    /// table's.
+    Tool {
+        /// The T number.
+        t: u32,
+        /// The entry's fields, e.g. `kind = "turning"\ninsert = "VBMT 160404"\n…`.
+        entry: String,
+    },
+    /// Line `line`'s rapid (`G00`/`G0`) made a feed (`G01`, at the feed in force).
+    Feed {
+        /// 1-based line of the main program.
+        line: u32,
+    },
+    /// These blocks inserted before line `line` of the main program.
+    Insert {
+        /// 1-based line of the main program.
+        line: u32,
+        /// The blocks, one a line.
+        text: String,
+    },
+}
+
+/// What a re-run with a change concluded.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rerunning {
+    /// Its findings (not diagnosed).
+    pub findings: Findings,
+    /// The controller alarms of its toolpath.
+    pub alarms: usize,
+}
+
+/// Re-runs the program with a change: the caller knows the program's text and how it was
+/// read; `None` when the changed program cannot be read or run.
+pub trait Rerun {
+    /// The run of the program with `change`, on the same blank, machine and tolerance.
+    fn rerun(&self, change: &Change) -> Option<Rerunning>;
+}
+
+/// How near a finding of a re-run must be to one of the original to be the same, mm.
+const SAME_PLACE: f64 = 0.5;
+
+/// The remedies tried for one program, within a budget of re-runs.
+pub(crate) struct Tries<'a> {
+    pub(crate) original: &'a Findings,
+    pub(crate) alarms: usize,
+    pub(crate) segments: &'a [Segment],
+    pub(crate) tools: &'a ToolTable,
+    /// The Z of the blank's face, where a retract is clear of the part (plus a margin).
+    pub(crate) face: f64,
+    pub(crate) rerun: &'a dyn Rerun,
+    pub(crate) budget: &'a mut usize,
+}
+
+fn near(p: P, q: P) -> bool {
+    (p[0] - q[0]).hypot(p[1] - q[1]) <= SAME_PLACE
+}
+
+fn gouges(f: &Findings) -> &[Finding] {
+    f.deviation.as_ref().map_or(&[], |d| d.gouges.as_slice())
+}
+
+/// Whether two regions share more than a sliver.
+fn overlap(a: &stock::Shape, b: &stock::Shape) -> bool {
+    let both = stock::boolean(
+        std::slice::from_ref(a),
+        std::slice::from_ref(b),
+        stock::BoolOp::Intersection,
+    );
+    stock::area(&both) > 1e-6
+}
+
+impl Tries<'_> {
+    /// Whether the run with `change` has no crash (`crash`) or gouge near `at` any more and
+    /// no crash, gouge or alarm the original did not have.
+    fn fixes(&mut self, change: &Change, crash: bool, at: P) -> bool {
+        if *self.budget == 0 {
+            return false;
+        }
+        *self.budget -= 1;
+        let Some(run) = self.rerun.rerun(change) else {
+            return false;
+        };
+        let (oc, rc) = (&self.original.crashes, &run.findings.crashes);
+        let (og, rg) = (gouges(self.original), gouges(&run.findings));
+        // gone: nothing of its kind is left where it was deepest
+        let gone = if crash {
+            !rc.iter().any(|c| near(c.at, at))
+        } else {
+            !rg.iter().any(|g| near(g.at, at))
+        };
+        // nothing new: every crash of the re-run is near one of the original, every gouge
+        // lies in one of the original's regions (what is left of them is not new)
+        let nothing_new = rc.iter().all(|c| oc.iter().any(|o| near(c.at, o.at)))
+            && rg
+                .iter()
+                .all(|g| og.iter().any(|o| overlap(&g.shape, &o.shape)));
+        gone && nothing_new && run.alarms <= self.alarms
+    }
+
+    /// A checked remedy for a gouge: for the trailing edge, a tool with the clearance the
+    /// flank needs (of the table first, else an ISO one).
+    pub(crate) fn for_gouge(&mut self, g: &Finding) -> Option<Remedy> {
+        let cause = g.cause.as_ref()?;
+        if cause.kind != CauseKind::TrailingEdge {
+            return None;
+        }
+        let flank = cause.numbers.iter().find(|(k, _)| *k == "flank_deg")?.1;
+        let seg = &self.segments[g.made_by?];
+        let f = Facts::of(&self.tools.get(seg.tool).cloned().unwrap_or(Tool::DEFAULT))?;
+        for (name, entry, clearance) in candidates(self.tools, seg.tool, &f, flank) {
+            let change = Change::Tool { t: seg.tool, entry };
+            if self.fixes(&change, false, g.at) {
+                return Some(Remedy {
+                    text: format!(
+                        "use {name} for T{:02}: {clearance:.0}° trailing clearance for this {flank:.0}° flank",
+                        seg.tool
+                    ),
+                    tool: Some(name),
+                    line: None,
+                    edit: None,
+                    verified: true,
+                });
+            }
+        }
+        None
+    }
+
+    /// A checked remedy for a rapid crash: the rapid split in two (X first, Z first, or
+    /// out past the face first), else fed (`G01`) into the cut.
+    pub(crate) fn for_crash(&mut self, c: &Crash) -> Option<Remedy> {
+        let cause = c.cause.as_ref()?;
+        if cause.kind != CauseKind::Rapid {
+            return None;
+        }
+        let seg = &self.segments[c.segment];
+        let line = seg.span.line;
+        let (x, z) = (2.0 * seg.to.r, seg.to.z);
+        let clear = self.face + CLEAR;
+        let splits = [
+            (
+                format!("G00 X{}", num(x)),
+                format!("rapid to X{} first, then Z{}", num(x), num(z)),
+            ),
+            (
+                format!("G00 Z{}", num(z)),
+                format!("rapid to Z{} first, then X{}", num(z), num(x)),
+            ),
+            (
+                format!("G00 Z{}", num(clear)),
+                format!("retract to Z{} (clear of the face) first", num(clear)),
+            ),
+        ];
+        for (block, text) in splits {
+            let change = Change::Insert {
+                line,
+                text: block.clone(),
+            };
+            if self.fixes(&change, true, c.at) {
+                return Some(Remedy {
+                    text: format!("{text}: insert `{block}` before line {line}"),
+                    tool: None,
+                    line: Some(line),
+                    edit: Some(block),
+                    verified: true,
+                });
+            }
+        }
+        if self.fixes(&Change::Feed { line }, true, c.at) {
+            return Some(Remedy {
+                text: format!("feed into the cut: G01 instead of G00 at line {line}"),
+                tool: None,
+                line: Some(line),
+                edit: Some("G01".into()),
+                verified: true,
+            });
+        }
+        None
+    }
+}
+
+/// How far past the blank's face a retract is clear of it, mm.
+const CLEAR: f64 = 2.0;
+
+/// A length as a program writes it: at most three decimals, a point always (`X42.`).
+fn num(v: f64) -> String {
+    format!("{v:.3}").trim_end_matches('0').to_string()
+}
+
+/// Tools with more trailing clearance than `flank` (plus 1°) for the same tip: the table's
+/// turning tools first, then ISO ones (a 35° V on 93°: 52°; on 72.5°: 72.5°), as
+/// (name, entry fields, clearance).
+fn candidates(tools: &ToolTable, t: u32, f: &Facts, flank: f64) -> Vec<(String, String, f64)> {
+    let mut out = Vec::new();
+    for n in tools.numbers() {
+        if n == t {
+            continue;
+        }
+        let Some(tool) = tools.get(n) else { continue };
+        let Some(other) = Facts::of(tool) else {
+            continue;
+        };
+        if other.tip == f.tip && other.trailing_clearance() > flank + 1.0 {
+            out.push((
+                format!(
+                    "T{n:02} ({})",
+                    tools.describe(n).split_once(' ').map_or("", |x| x.1)
+                ),
+                tool.toml_fields(),
+                other.trailing_clearance(),
+            ));
+        }
+    }
+    let hand = match f.tip {
+        3 => Some('R'),
+        4 => Some('L'),
+        _ => None,
+    };
+    if let Some(h) = hand {
+        for (holder, clearance) in [
+            (format!("SVJB{h} 2525M16"), 52.0),
+            ("SVVBN 2525M16".to_string(), 72.5),
+        ] {
+            if clearance > flank + 1.0 {
+                out.push((
+                    format!("VBMT 160404 in {holder}"),
+                    format!(
+                        "kind = \"turning\"\ninsert = \"VBMT 160404\"\nholder = \"{holder}\"\ntip = {}\n",
+                        f.tip
+                    ),
+                    clearance,
+                ));
+            }
+        }
+    }
+    out.truncate(3);
+    out
+}

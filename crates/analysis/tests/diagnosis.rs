@@ -1,0 +1,282 @@
+//! Issue 33: every gouge, crash and leftover explained from the geometry, with a remedy
+//! latsim has checked by re-running the program with it. Hand-built cases, numbers by hand.
+
+use analysis::diagnose::{Change, Rerun, Rerunning};
+use analysis::{CauseKind, Findings, Intents, Settings};
+use expander::Machine;
+use stock::{Blank, SimOptions, ToolTable};
+
+/// A program, its tools and blank, run like `latsim run` and re-runnable with a change.
+struct Job {
+    text: String,
+    tools: ToolTable,
+    blank: Blank,
+    machine: Machine,
+    intents: Intents,
+}
+
+impl Job {
+    fn new(text: &str, tools: &str, blank: Blank) -> Self {
+        Self {
+            text: text.into(),
+            tools: ToolTable::from_toml(tools).expect("tool table"),
+            blank,
+            machine: Machine::default(),
+            intents: Intents::Program,
+        }
+    }
+
+    /// Judged against a drawn part (a profile TOML, as `--target` reads it).
+    fn target(mut self, profile: &str) -> Self {
+        self.intents = Intents::Target(stock::profile_from_toml(profile, 0.0001).unwrap());
+        self
+    }
+
+    fn run(&self, text: &str, tools: &ToolTable) -> (expander::Toolpath, Findings) {
+        let program = gcode::parse(text).expect("program parses");
+        let opts = expander::Options {
+            tools: tools.facts(),
+            start_tool: tools.numbers().first().copied(),
+            ..Default::default()
+        };
+        let tp = expander::expand(&program, &self.machine, &opts);
+        let (_, f) = analysis::pipeline(
+            &tp,
+            &self.intents,
+            &self.settings(tools),
+            &SimOptions::default(),
+            &mut |_| {},
+        );
+        (tp, f)
+    }
+
+    fn settings<'a>(&'a self, tools: &'a ToolTable) -> Settings<'a> {
+        Settings {
+            blank: &self.blank,
+            tools,
+            machine: &self.machine,
+            fixture: None,
+            tol: 0.01,
+        }
+    }
+
+    /// The run, diagnosed.
+    fn diagnosed(&self) -> (expander::Toolpath, Findings) {
+        let (tp, mut f) = self.run(&self.text, &self.tools);
+        analysis::diagnose::diagnose(&mut f, &tp, &self.settings(&self.tools), self);
+        (tp, f)
+    }
+}
+
+impl Rerun for Job {
+    fn rerun(&self, change: &Change) -> Option<Rerunning> {
+        let (text, tools) = match change {
+            Change::Tool { t, entry } => (self.text.clone(), self.tools.replaced(*t, entry).ok()?),
+            Change::Insert { line, text } => {
+                let mut lines: Vec<&str> = self.text.lines().collect();
+                lines.insert(*line as usize - 1, text);
+                (lines.join("\n") + "\n", self.tools.clone())
+            }
+            Change::Feed { line } => {
+                let mut lines: Vec<String> = self.text.lines().map(String::from).collect();
+                let l = &mut lines[*line as usize - 1];
+                *l = l.replacen("G00", "G01", 1);
+                (lines.join("\n") + "\n", self.tools.clone())
+            }
+        };
+        let (tp, findings) = self.run(&text, &tools);
+        Some(Rerunning {
+            findings,
+            alarms: tp.alarms.len(),
+        })
+    }
+}
+
+fn bar(d: f64, l: f64) -> Blank {
+    Blank::bar(d, l, 0.0, None).unwrap()
+}
+
+const D55: &str =
+    "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"DNMG 150404\"\nholder = \"PDJNR 2525M15\"\n";
+
+/// A D 55° insert on a 93° holder (PDJNR) finishing, under G42, a 41° flank descending
+/// from Φ40 at Z-10 to Φ29.569 at Z-16 (5.216 mm over 6: tan 41°). Its trailing edge has
+/// 180 − 93 − 55 = 32° of clearance: it cuts into the flank. Remedy: a 35° V on 93°
+/// (VBMT 160404 in SVJBR 2525M16: 180 − 93 − 35 = 52°), checked by the re-run.
+#[test]
+fn a_d55_trailing_edge_on_a_41_degree_flank_gets_a_v35() {
+    let text = "G99 M03 S600 T0101\nG00 X52 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U0 W0 F0.2\nN10 G00 G42 X40 Z2\nG01 Z-10 F0.1\nX29.569 Z-16\nZ-30\nN20 G40 X52\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let (_, f) = Job::new(text, D55, bar(50.0, 60.0)).diagnosed();
+    let g = &f.deviation.as_ref().unwrap().gouges[0];
+    let c = g.cause.as_ref().expect("a cause");
+    assert_eq!(c.kind, CauseKind::TrailingEdge, "{}", c.text);
+    let num = |k: &str| c.numbers.iter().find(|(n, _)| *n == k).unwrap().1;
+    assert!((num("clearance_deg") - 32.0).abs() < 1e-9);
+    assert!(
+        (num("flank_deg") - 41.0).abs() < 0.01,
+        "{}",
+        num("flank_deg")
+    );
+    let r = g.remedy.as_ref().expect("a checked remedy");
+    assert!(r.verified);
+    assert_eq!(r.tool.as_deref(), Some("VBMT 160404 in SVJBR 2525M16"));
+    assert!(r.text.contains("52°"), "{}", r.text);
+}
+
+/// The same flank with the table's own sharper tool (T02 a V 35° on 93°): the remedy names
+/// it.
+#[test]
+fn the_tables_own_tool_comes_first() {
+    let text = "G99 M03 S600 T0101\nG00 X52 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U0 W0 F0.2\nN10 G00 G42 X40 Z2\nG01 Z-10 F0.1\nX29.569 Z-16\nZ-30\nN20 G40 X52\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let tools = format!("{D55}[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"V\"\nnose_radius = 0.4\ntip = 3\nentering_angle = 93\nedge = 16\n");
+    let (_, f) = Job::new(text, &tools, bar(50.0, 60.0)).diagnosed();
+    let r = f.deviation.as_ref().unwrap().gouges[0]
+        .remedy
+        .clone()
+        .expect("a checked remedy");
+    assert!(
+        r.tool.as_deref().is_some_and(|t| t.starts_with("T02")),
+        "{r:?}"
+    );
+}
+
+/// A leading edge on a wall that leans toward it: the drawn part's shoulder rises from Φ30
+/// at Z-20 to Φ40 at Z-19.118 (10° from square: its run is 5 tan 10° = 0.882 over its 5 mm
+/// rise), turned straight to Z-20 with a 93° holder (its leading edge 3° from square): at
+/// the end of the pass the edge stands in the wall.
+#[test]
+fn a_leading_edge_in_a_wall_leaning_more_than_the_holder() {
+    let text =
+        "G99 M03 S600 T0101\nG00 X30 Z2\nG01 Z-20 F0.1\nX40 Z-19.1184\nG00 X42\nG00 Z2\nM30\n";
+    let part = "start = [0.0, 0.0]\npath = [\n { to = [0.0, 30.0] },\n { to = [-20.0, 30.0] },\n { to = [-19.1184, 40.0] },\n { to = [-60.0, 40.0] },\n { to = [-60.0, 0.0] },\n]\n";
+    let (_, f) = Job::new(text, D55, bar(40.0, 60.0))
+        .target(part)
+        .diagnosed();
+    let g = &f.deviation.as_ref().expect("intents").gouges;
+    let c = g
+        .iter()
+        .filter_map(|g| g.cause.as_ref())
+        .find(|c| c.kind == CauseKind::LeadingEdge);
+    let c = c.unwrap_or_else(|| panic!("{:?}", g.iter().map(|g| &g.cause).collect::<Vec<_>>()));
+    let num = |k: &str| c.numbers.iter().find(|(n, _)| *n == k).unwrap().1;
+    assert!((num("holder_lean_deg") - 3.0).abs() < 1e-9);
+    assert!(
+        (num("wall_lean_deg") - 10.0).abs() < 0.01,
+        "{}",
+        num("wall_lean_deg")
+    );
+}
+
+/// The nose left uncompensated: the same finish without G42 on a 30° taper (Φ40 at Z-10
+/// down to Φ34.226 at Z-15: 2.887 = 5 tan 30°) with an r0.4 D insert. Cause: compensation,
+/// G42 named (OD, toward the chuck: the part on the left of travel).
+#[test]
+fn a_nose_left_uncompensated_names_g42() {
+    let text = "G99 M03 S600 T0101\nG00 X52 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U0 W0 F0.2\nN10 G00 X40 Z2\nG01 Z-10 F0.1\nX34.226 Z-15\nZ-30\nN20 X52\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let (_, f) = Job::new(text, D55, bar(50.0, 60.0)).diagnosed();
+    let gouges = &f.deviation.as_ref().unwrap().gouges;
+    let c = gouges[0].cause.as_ref().expect("a cause");
+    assert_eq!(c.kind, CauseKind::Compensation, "{}", c.text);
+    assert!(c.text.contains("G42"), "{}", c.text);
+    assert!(c
+        .numbers
+        .iter()
+        .any(|(k, v)| *k == "nose_radius" && (*v - 0.4).abs() < 1e-9));
+}
+
+/// A leftover in a sharp inside corner the r0.4 nose cannot fill: the Φ30 shoulder at
+/// Z-20 (up to Φ36) turned under G42 leaves 0.4² (1 − π/4) = 0.0343 mm² there.
+#[test]
+fn a_nose_leaves_a_sharp_inside_corner() {
+    let text = "G99 M03 S600 T0101\nG00 X42 Z2\nG71 U1 R0.5\nG71 P10 Q20 U0 W0 F0.2\nN10 G00 G42 X30\nG01 Z-20 F0.1\nX36\nZ-30\nX42\nN20 G40 X44\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let (_, f) = Job::new(text, D55, bar(40.0, 60.0)).diagnosed();
+    let d = f.deviation.as_ref().unwrap();
+    let l = d
+        .leftovers
+        .iter()
+        .find(|l| (l.area - 0.0343).abs() < 0.002)
+        .unwrap_or_else(|| {
+            panic!(
+                "{:?}",
+                d.leftovers.iter().map(|l| l.area).collect::<Vec<_>>()
+            )
+        });
+    assert_eq!(l.cause.as_ref().unwrap().kind, CauseKind::Nose);
+}
+
+/// The program itself: a last pass at X19 where the drawn part is Φ20: the programmed point
+/// goes 0.5 mm into the part (more than the 0.4 nose: no compensation puts it there). And a
+/// G73 whose roughing passes, the shape moved out by U, run into a wall that leans toward
+/// the tool: the roughing path itself enters the part.
+#[test]
+fn the_programmed_point_into_the_part_is_the_program() {
+    let text = "G99 M03 S600 T0101\nG00 X42 Z2\nG71 U1.5 R0.5\nG71 P10 Q20 U0 W0 F0.25\nN10 G00 X20\nG01 Z0 F0.12\nZ-20\nX30\nZ-35\nN20 X41\nG00 X19 Z2\nG01 Z-19.8 F0.1\nG00 X42\nM30\n";
+    let (_, f) = Job::new(text, D55, bar(40.0, 60.0)).diagnosed();
+    let g = &f.deviation.as_ref().unwrap().gouges[0];
+    let c = g.cause.as_ref().expect("a cause");
+    assert_eq!(c.kind, CauseKind::Program, "{}", c.text);
+    assert!(c.text.contains("line 12"), "{}", c.text);
+    let text = "G99 M03 S600 T0101\nG00 X42 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U0 W0 F0.2\nN10 G00 G42 X30 Z2\nG01 Z-20 F0.1\nX40 Z-19.1184\nZ-40\nN20 G40 X42\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let (_, f) = Job::new(text, D55, bar(40.0, 60.0)).diagnosed();
+    let c = f.deviation.as_ref().unwrap().gouges[0]
+        .cause
+        .clone()
+        .unwrap();
+    assert_eq!(c.kind, CauseKind::Program, "{}", c.text);
+}
+
+/// Another tool cut it: T01 finishes Φ30 to Z-30, then T02 (a stated turning tool) feeds
+/// to X28 over Z-5 … -10: a gouge of T01's contour by another tool.
+#[test]
+fn another_tool_into_a_finished_contour() {
+    let text = "G99 M03 S600\nT0101\nG00 X42 Z2\nG71 U1 R0.5\nG71 P10 Q20 U0 W0 F0.2\nN10 G00 X30\nG01 Z-30\nN20 X42\nG70 P10 Q20\nG00 X100 Z100\nT0202\nG00 X32 Z-5\nG01 X28 F0.1\nZ-10\nX32\nG00 X100 Z100\nM30\n";
+    let tools = format!("{D55}[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n");
+    let (_, f) = Job::new(text, &tools, bar(40.0, 60.0)).diagnosed();
+    let g = &f.deviation.as_ref().unwrap().gouges[0];
+    let c = g.cause.as_ref().expect("a cause");
+    assert_eq!(c.kind, CauseKind::OtherTool, "{}", c.text);
+    assert!(
+        c.text.contains("T02") && c.text.contains("T01"),
+        "{}",
+        c.text
+    );
+}
+
+/// A rapid into uncut bar, from a safe point diagonally to X42 Z-30 past a Φ40 bar's
+/// shoulder it meets at the face: cause rapid (the face named), and a remedy checked by the
+/// re-run: rapid to X42 first, then Z-30.
+#[test]
+fn a_diagonal_rapid_into_the_bar_is_split() {
+    let text =
+        "G99 M03 S600 T0101\nG00 X100 Z2\nG00 X30 Z2\nG00 X42 Z-30\nG01 X38 F0.1\nG00 X100\nM30\n";
+    let (tp, f) = Job::new(text, D55, bar(40.0, 60.0)).diagnosed();
+    let c = &f.crashes[0];
+    assert_eq!(tp.segments[c.segment].span.line, 4);
+    let cause = c.cause.as_ref().unwrap();
+    assert_eq!(cause.kind, CauseKind::Rapid);
+    assert!(cause.text.contains("the face at Z0"), "{}", cause.text);
+    let r = c.remedy.as_ref().expect("a checked remedy");
+    assert_eq!((r.line, r.edit.as_deref()), (Some(4), Some("G00 X42.")));
+    assert!(
+        r.text.contains("rapid to X42. first, then Z-30."),
+        "{}",
+        r.text
+    );
+}
+
+/// A body crash: a Φ20 boring bar (S20R-SCLCR09) sent into a Φ16 bore: cause body, naming
+/// the bar.
+#[test]
+fn a_bar_too_thick_for_the_bore_is_the_body() {
+    let text = "G99 M03 S600 T0101\nG00 X18 Z2\nG01 Z-20 F0.1\nG00 X16\nG00 Z5\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CCMT 09T304\"\nholder = \"S20R-SCLCR09\"\n";
+    let (_, f) = Job::new(
+        text,
+        tools,
+        Blank::bar(40.0, 40.0, 0.0, Some(16.0)).unwrap(),
+    )
+    .diagnosed();
+    let c = f.crashes[0].cause.as_ref().unwrap();
+    assert_eq!(c.kind, CauseKind::Body, "{}", c.text);
+    assert!(c.text.contains("boring bar"), "{}", c.text);
+}
