@@ -197,15 +197,14 @@ M30
     assert!(!out.stderr.contains("panicked"), "{}", out.stderr);
 }
 
-/// Found by the `decode` fuzz target's body on a damaged sample: the byte a decoding error names is the first byte of
-/// the malformed sequence. A GBK lead byte 0xA0 before the ASCII `2` is malformed at the
-/// 0xA0 (the decoder reads the `2` too, then gives it back as a character), and a GB18030
-/// four-byte start 0x81 0x30 0x81 before a space is malformed at its first byte; the error
-/// named the byte after (the `2`) and two bytes after. `latsim run --encoding gbk` meets it
-/// (a guessed encoding is one the bytes decode in). Reported to the coordinator
-/// (`first_error` in `crates/gcode/src/encoding.rs` drops `Malformed`'s second count).
+/// Found by the `decode` fuzz target's body on a damaged sample: the byte a decoding error
+/// names is the first byte of the malformed sequence. A GBK lead byte 0xA0 before the ASCII
+/// `2` is malformed at the 0xA0 (the decoder reads the `2` too, then gives it back as a
+/// character), and a GB18030 four-byte start 0x81 0x30 0x81 before a space is malformed at
+/// its first byte; the error named the byte after (the `2`) and two bytes after, as
+/// `first_error` dropped the bytes read past the sequence (`Malformed`'s second count).
+/// `latsim run --encoding gbk` meets it.
 #[test]
-#[ignore = "reported: gcode::encoding::first_error names a byte past the malformed sequence"]
 fn decode_error_names_the_first_bad_byte() {
     let label = |l| gcode::encoding::encoding_for_label(l);
     let e = gcode::decode(b"G0 X1 (\xa02)", label("gbk")).unwrap_err();

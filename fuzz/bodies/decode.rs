@@ -42,15 +42,9 @@ pub(crate) fn body(data: &[u8]) {
     }
 }
 
-/// Bytes the byte named may lie past the start of the first malformed sequence, until
-/// `first_error` in `crates/gcode/src/encoding.rs` counts the bytes the decoder read after
-/// that sequence (`Malformed(bad, after)`: a GBK lead byte before an ASCII byte names the
-/// ASCII byte, GB18030 up to two bytes on). Reported with issue 37's fuzzing; 0 once fixed
-/// (the ignored test `decode_error_names_the_first_bad_byte` in `tests/robustness.rs`).
-const KNOWN_OVERSHOOT: usize = 3;
-
 /// The bytes before `offset` are characters in `encoding`: the byte named is where the
-/// first malformed sequence starts (within [`KNOWN_OVERSHOOT`]), not past it.
+/// first malformed sequence starts, not past it (it was up to two bytes past it until
+/// `first_error` in `crates/gcode/src/encoding.rs` counted the bytes read after the sequence).
 fn assert_prefix_decodes(data: &[u8], encoding: &'static gcode::encoding::Encoding, offset: usize) {
     let clean = |end: usize| {
         encoding
@@ -58,7 +52,7 @@ fn assert_prefix_decodes(data: &[u8], encoding: &'static gcode::encoding::Encodi
             .is_some()
     };
     assert!(
-        (0..=KNOWN_OVERSHOOT.min(offset)).any(|back| clean(offset - back)),
+        clean(offset),
         "{}: the bytes before byte {offset}, the one named, hold a malformed sequence: {:?}",
         encoding.name(),
         &data[offset.saturating_sub(8)..(offset + 8).min(data.len())]

@@ -66,53 +66,25 @@ fn fixtures() -> &'static Fixtures {
     })
 }
 
-/// One fuzz input: the whole run as `latsim run` wires it, after reading — the interpreter
-/// told the tool table's noses and blades, then `analysis::pipeline` (removal, intents,
-/// deviation, crashes and scrapes, workholding, threads, verdict). The input's length picks
-/// the settings, so that every combination is reached: bit 0 the intended part (a drawn
-/// shaft or the program's own shapes), bit 1 the workholding (a chuck and tailstock or
-/// none), bit 2 custom macro B (FANUC rules) on.
+/// Re-runs the diagnosis may make per input (of its 12): each is a whole run, and the first
+/// two reach every kind of change (a tool, a split rapid, a fed rapid).
+const MAX_RERUNS: usize = 2;
+
+/// One fuzz input: the whole run as `latsim run` wires it (`src/run.rs` `run_one`,
+/// `src/job.rs`, `src/rerun.rs`), after reading — the interpreter told the tool table's
+/// noses and blades, then `analysis::pipeline` (removal, intents, deviation, crashes and
+/// scrapes, workholding, threads, verdict) and `analysis::diagnose::diagnose` (causes, and
+/// remedies checked by re-running the changed program). The input's length picks the
+/// settings, so that every combination is reached: bit 0 the intended part (a drawn shaft
+/// or the program's own shapes), bit 1 the workholding (a chuck and tailstock or none),
+/// bit 2 custom macro B (FANUC rules) on.
 pub(crate) fn body(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
     let f = fixtures();
     let macros = data.len() & 4 != 0;
-    let read = gcode::ReadOptions {
-        macros: macros.then_some(macro_b::Dialect::Fanuc),
-        ..Default::default()
-    };
-    let Ok(program) = gcode::parse_with(&text, read) else {
+    let Some(tp) = expanded(&text, macros, &f.tools) else {
         return;
     };
-    let opts = expander::Options {
-        tools: f.tools.facts(),
-        start_tool: f.tools.numbers().first().copied(),
-        max_segments: MAX_MOVES + 1,
-        max_blocks: MAX_BLOCKS,
-        macros: macros.then(|| {
-            let mut o = macro_b::Options::fanuc();
-            o.limits.max_blocks = MAX_BLOCKS as u64;
-            o
-        }),
-        ..Default::default()
-    };
-    let tp = expander::expand(&program, &f.machine, &opts);
-    // a move budget, like `interpret`'s: long legitimate programs (a G75 with a 0.002 mm
-    // step: 58 510 moves, 0.5 s in release) exceed the timeout only under coverage
-    // instrumentation; the benches and the found inputs cover large programs
-    if tp.segments.len() > MAX_MOVES {
-        return;
-    }
-    // and a stamp budget: 1 680 stamps of an 80° insert (G92 passes at the modal F0.1 of a
-    // G01: lead 0.1 over 28 mm) take 2.2 s in release, > 10 s instrumented
-    let stamps: f64 = tp
-        .segments
-        .iter()
-        .filter(|s| s.motion == expander::Motion::Thread && s.lead > 0.0)
-        .map(|s| (s.to.z - s.from.z).abs() / s.lead)
-        .sum();
-    if stamps > MAX_STAMPS {
-        return;
-    }
     let intents = if data.len() & 1 != 0 {
         analysis::Intents::Target(f.part.clone())
     } else {
@@ -125,8 +97,121 @@ pub(crate) fn body(data: &[u8]) {
         fixture: (data.len() & 2 != 0).then_some(&f.fixture),
         tol: 0.01,
     };
-    let (sim, findings) =
+    let (sim, mut findings) =
         analysis::pipeline(&tp, &intents, &settings, &Default::default(), &mut |_| {});
+    let rerun = Rerunner {
+        text: &text,
+        macros,
+        intents: &intents,
+        settings: &settings,
+        left: std::cell::Cell::new(MAX_RERUNS),
+    };
+    analysis::diagnose::diagnose(&mut findings, &tp, &settings, &rerun);
     let _ = stock::area(&sim.final_shapes);
     let _ = findings.verdict;
+}
+
+/// The program read and expanded as `src/input.rs` `load_program` does, with this target's
+/// budgets: `None` when it cannot be read or is past them.
+fn expanded(text: &str, macros: bool, tools: &stock::ToolTable) -> Option<expander::Toolpath> {
+    let read = gcode::ReadOptions {
+        macros: macros.then_some(macro_b::Dialect::Fanuc),
+        ..Default::default()
+    };
+    let program = gcode::parse_with(text, read).ok()?;
+    let opts = expander::Options {
+        tools: tools.facts(),
+        start_tool: tools.numbers().first().copied(),
+        max_segments: MAX_MOVES + 1,
+        max_blocks: MAX_BLOCKS,
+        macros: macros.then(|| {
+            let mut o = macro_b::Options::fanuc();
+            o.limits.max_blocks = MAX_BLOCKS as u64;
+            o
+        }),
+        ..Default::default()
+    };
+    let tp = expander::expand(&program, &fixtures().machine, &opts);
+    // a move budget, like `interpret`'s: long legitimate programs (a G75 with a 0.002 mm
+    // step: 58 510 moves, 0.5 s in release) exceed the timeout only under coverage
+    // instrumentation; the benches and the found inputs cover large programs
+    if tp.segments.len() > MAX_MOVES {
+        return None;
+    }
+    // and a stamp budget: 1 680 stamps of an 80° insert (G92 passes at the modal F0.1 of a
+    // G01: lead 0.1 over 28 mm) take 2.2 s in release, > 10 s instrumented
+    let stamps: f64 = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread && s.lead > 0.0)
+        .map(|s| (s.to.z - s.from.z).abs() / s.lead)
+        .sum();
+    (stamps <= MAX_STAMPS).then_some(tp)
+}
+
+/// `src/rerun.rs`'s re-run: the program's text changed, or the table with one tool
+/// replaced, read and run again on the same blank, machine and intents.
+struct Rerunner<'a> {
+    text: &'a str,
+    macros: bool,
+    intents: &'a analysis::Intents,
+    settings: &'a analysis::Settings<'a>,
+    /// Re-runs left for this input ([`MAX_RERUNS`]).
+    left: std::cell::Cell<usize>,
+}
+
+impl analysis::diagnose::Rerun for Rerunner<'_> {
+    fn rerun(&self, change: &analysis::diagnose::Change) -> Option<analysis::diagnose::Rerunning> {
+        use analysis::diagnose::Change;
+        self.left.set(self.left.get().checked_sub(1)?);
+        let tools = self.settings.tools;
+        let (text, tools) = match change {
+            Change::Tool { t, entry } => (self.text.to_string(), tools.replaced(*t, entry).ok()?),
+            Change::Insert { line, text } => (inserted(self.text, *line, text)?, tools.clone()),
+            Change::Feed { line } => (fed(self.text, *line)?, tools.clone()),
+        };
+        let toolpath = expanded(&text, self.macros, &tools)?;
+        let settings = analysis::Settings {
+            tools: &tools,
+            ..*self.settings
+        };
+        let (_, findings) =
+            analysis::pipeline(&toolpath, self.intents, &settings, &Default::default(), &mut |_| {});
+        Some(analysis::diagnose::Rerunning {
+            findings,
+            alarms: toolpath.alarms.len(),
+        })
+    }
+}
+
+/// `source` with `blocks` inserted before its 1-based line `line` (`src/rerun.rs`).
+fn inserted(source: &str, line: u32, blocks: &str) -> Option<String> {
+    let at = line_start(source, line)?;
+    Some(format!("{}{blocks}\n{}", &source[..at], &source[at..]))
+}
+
+/// `source` with the first rapid word (`G0`, `G00`) of its 1-based line `line` made `G01`
+/// (`src/rerun.rs`).
+fn fed(source: &str, line: u32) -> Option<String> {
+    let at = line_start(source, line)?;
+    let end = source[at..].find('\n').map_or(source.len(), |e| at + e);
+    let text = &source.as_bytes()[at..end];
+    let (word, len) = (0..text.len()).find_map(|k| {
+        let digits = text[k + 1..].iter().take_while(|b| b.is_ascii_digit()).count();
+        let rapid = text[k].eq_ignore_ascii_case(&b'G')
+            && digits > 0
+            && text[k + 1..k + 1 + digits].iter().all(|&b| b == b'0')
+            && text.get(k + 1 + digits) != Some(&b'.');
+        rapid.then_some((k, 1 + digits))
+    })?;
+    Some(format!("{}G01{}", &source[..at + word], &source[at + word + len..]))
+}
+
+/// The byte where 1-based line `line` of `source` starts.
+fn line_start(source: &str, line: u32) -> Option<usize> {
+    let mut at = 0;
+    for _ in 1..line {
+        at += source[at..].find('\n')? + 1;
+    }
+    Some(at)
 }
