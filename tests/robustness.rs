@@ -212,3 +212,15 @@ fn decode_error_names_the_first_bad_byte() {
     let e = gcode::decode(b"(\x81\x30\x81 )", label("gb18030")).unwrap_err();
     assert_eq!(e.offset, 1, "the 0x81 that starts the four bytes");
 }
+
+/// Found by the `decode` fuzz target (a program decoded as Windows-1252, 0xFF read as `ÿ`):
+/// an unreadable word before a non-ASCII character and `=` made the reader look for
+/// another control's assignment, and slicing one byte past the `ÿ` panicked ("not a char
+/// boundary", `crates/gcode/src/read/foreign.rs`). Now a reading error at the word.
+#[test]
+fn another_controls_assignment_after_a_non_ascii_character_is_an_error() {
+    for text in ["G01 F0.Gÿ=1\n", "Gÿ=\n", "G1 Xÿ=2\n"] {
+        let read = std::panic::catch_unwind(|| gcode::parse(text));
+        assert!(read.is_ok_and(|r| r.is_err()), "{text:?}");
+    }
+}
