@@ -167,9 +167,9 @@ fn okuma_programs_are_named() {
     assert!(out.stderr.contains("p.nc:2:1"), "{}", out.stderr);
 }
 
-/// A LinuxCNC named parameter assigned on a line of its own (`#<_depth> = 0.5`, the
-/// field test's LatheEasyStep output) stopped at "unexpected character '<' in a macro
-/// expression" under a control with macro B on; it is named as LinuxCNC's.
+/// A `LinuxCNC` named parameter assigned on a line of its own (`#<_depth> = 0.5`, the
+/// field test's `LatheEasyStep` output) stopped at "unexpected character '<' in a macro
+/// expression" under a control with macro B on; it is named as `LinuxCNC`'s.
 #[test]
 fn linuxcnc_named_parameter_statements_are_named() {
     let (_dir, path) = temp_program("n.ngc", b"G18 G21\n#<_depth> = 0.500\nG0 X10\nM2\n");
@@ -183,7 +183,7 @@ fn linuxcnc_named_parameter_statements_are_named() {
     assert!(out.stderr.contains("n.ngc:2:1"), "{}", out.stderr);
 }
 
-/// LinuxCNC's G7 (diameter mode) is an alarm at its word that says whose code it is.
+/// `LinuxCNC`'s G7 (diameter mode) is an alarm at its word that says whose code it is.
 #[test]
 fn linuxcnc_g7_is_named_in_its_alarm() {
     let (_dir, path) = temp_program("g7.ngc", b"G18 G7 G90 G40\nG0 X10 Z2\nM2\n");
