@@ -153,6 +153,9 @@ fn a_goto_back_over_a_cycle_is_an_alarm_at_the_goto() {
         ],
     );
     assert!(tp.alarms[0].help.contains("way out"), "{:?}", tp.alarms[0]);
+    // at once: the 14 blocks before the loop and a few times round it, not the block
+    // budget's 10⁷
+    assert!(tp.blocks < 14 + 3 * 4, "{} blocks", tp.blocks);
 }
 
 /// A counter to 1 000 whose body moves the tool to the same places every time runs to

@@ -196,3 +196,31 @@ M30
     assert_eq!(out.code, 2, "{}", out.stderr);
     assert!(!out.stderr.contains("panicked"), "{}", out.stderr);
 }
+
+/// Found by the `decode` fuzz target's body on a damaged sample: the byte a decoding error
+/// names is the first byte of the malformed sequence. A GBK lead byte 0xA0 before the ASCII
+/// `2` is malformed at the 0xA0 (the decoder reads the `2` too, then gives it back as a
+/// character), and a GB18030 four-byte start 0x81 0x30 0x81 before a space is malformed at
+/// its first byte; the error named the byte after (the `2`) and two bytes after, as
+/// `first_error` dropped the bytes read past the sequence (`Malformed`'s second count).
+/// `latsim run --encoding gbk` meets it.
+#[test]
+fn decode_error_names_the_first_bad_byte() {
+    let label = |l| gcode::encoding::encoding_for_label(l);
+    let e = gcode::decode(b"G0 X1 (\xa02)", label("gbk")).unwrap_err();
+    assert_eq!(e.offset, 7, "the 0xA0");
+    let e = gcode::decode(b"(\x81\x30\x81 )", label("gb18030")).unwrap_err();
+    assert_eq!(e.offset, 1, "the 0x81 that starts the four bytes");
+}
+
+/// Found by the `decode` fuzz target (a program decoded as Windows-1252, 0xFF read as `ÿ`):
+/// an unreadable word before a non-ASCII character and `=` made the reader look for
+/// another control's assignment, and slicing one byte past the `ÿ` panicked ("not a char
+/// boundary", `crates/gcode/src/read/foreign.rs`). Now a reading error at the word.
+#[test]
+fn another_controls_assignment_after_a_non_ascii_character_is_an_error() {
+    for text in ["G01 F0.Gÿ=1\n", "Gÿ=\n", "G1 Xÿ=2\n"] {
+        let read = std::panic::catch_unwind(|| gcode::parse(text));
+        assert!(read.is_ok_and(|r| r.is_err()), "{text:?}");
+    }
+}

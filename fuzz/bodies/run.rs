@@ -26,40 +26,117 @@ holder = "SVJBR 2525M16"
 /// Programs expanding to more moves are not simulated here.
 const MAX_MOVES: usize = 20_000;
 
+/// Blocks a program may execute here (a macro loop): the CLI's budget is 10^7, the
+/// instrumented build runs ~30× slower than release.
+const MAX_BLOCKS: usize = 200_000;
+
 /// Programs stamping a thread tool more often are not simulated here.
 const MAX_STAMPS: f64 = 300.0;
 
 /// A Φ30 shaft with a Φ20 neck: the part every program is compared with.
 const TARGET: &[[f64; 2]] = &[[0.0, 0.0], [0.0, 15.0], [-10.0, 15.0], [-10.0, 10.0], [-20.0, 10.0], [-20.0, 15.0], [-30.0, 15.0], [-30.0, 0.0]];
 
-fn fixtures() -> &'static (expander::Machine, stock::Blank, stock::ToolTable, Vec<stock::Shape>) {
-    static F: OnceLock<(expander::Machine, stock::Blank, stock::ToolTable, Vec<stock::Shape>)> =
-        OnceLock::new();
+/// A chuck gripping the bar's last 10 mm and a tailstock centre on its face (`--chuck`).
+const CHUCK: &str = "grip=10,jaw=15,od=160,depth=60,tail=1,quill=30,quill_length=80";
+
+struct Fixtures {
+    machine: expander::Machine,
+    blank: stock::Blank,
+    tools: stock::ToolTable,
+    part: Vec<stock::Shape>,
+    fixture: analysis::Fixture,
+}
+
+fn fixtures() -> &'static Fixtures {
+    static F: OnceLock<Fixtures> = OnceLock::new();
     F.get_or_init(|| {
-        let machine = expander::Machine::from_toml("power_on_feed = 100.0").expect("a valid profile");
         let blank = stock::Blank::bar(40.0, 30.0, 0.0, None).expect("a valid blank");
-        let tools = stock::ToolTable::from_toml(TOOLS).expect("a valid tool table");
-        let outer: Vec<[f64; 2]> = TARGET.to_vec(); // counter-clockwise in (z, r)
-        let part = vec![stock::Shape { outer, holes: vec![] }];
-        (machine, blank, tools, part)
+        let holding = expander::Workholding::from_compact(CHUCK).expect("a valid chuck");
+        let fixture = analysis::Fixture::new(&holding, &blank)
+            .expect("the chuck grips the bar")
+            .expect("a chuck is given");
+        Fixtures {
+            machine: expander::Machine::from_toml("power_on_feed = 100.0").expect("a valid profile"),
+            blank,
+            tools: stock::ToolTable::from_toml(TOOLS).expect("a valid tool table"),
+            // counter-clockwise in (z, r)
+            part: vec![stock::Shape { outer: TARGET.to_vec(), holes: vec![] }],
+            fixture,
+        }
     })
 }
 
-/// One fuzz input: the whole pipeline after reading, as `latsim run` wires it
-/// (`analysis::pipeline`: removal, intents, deviation, workholding, threads, verdict),
-/// against the program's own shapes or, when the input's length is odd, a drawn part.
+/// Re-runs the diagnosis may make per input (of its 12): each is a whole run, and the first
+/// two reach every kind of change (a tool, a split rapid, a fed rapid).
+const MAX_RERUNS: usize = 2;
+
+/// One fuzz input: the whole run as `latsim run` wires it (`src/run.rs` `run_one`,
+/// `src/job.rs`, `src/rerun.rs`), after reading — the interpreter told the tool table's
+/// noses and blades, then `analysis::pipeline` (removal, intents, deviation, crashes and
+/// scrapes, workholding, threads, verdict) and `analysis::diagnose::diagnose` (causes, and
+/// remedies checked by re-running the changed program). The input's length picks the
+/// settings, so that every combination is reached: bit 0 the intended part (a drawn shaft
+/// or the program's own shapes), bit 1 the workholding (a chuck and tailstock or none),
+/// bit 2 custom macro B (FANUC rules) on.
 pub(crate) fn body(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
-    let Ok(program) = gcode::parse(&text) else {
+    let f = fixtures();
+    let macros = data.len() & 4 != 0;
+    let Some(tp) = expanded(&text, macros, &f.tools) else {
         return;
     };
-    let (machine, blank, tools, part) = fixtures();
-    let tp = expander::expand(&program, machine, &Default::default());
+    let intents = if data.len() & 1 != 0 {
+        analysis::Intents::Target(f.part.clone())
+    } else {
+        analysis::Intents::Program
+    };
+    let settings = analysis::Settings {
+        blank: &f.blank,
+        tools: &f.tools,
+        machine: &f.machine,
+        fixture: (data.len() & 2 != 0).then_some(&f.fixture),
+        tol: 0.01,
+    };
+    let (sim, mut findings) =
+        analysis::pipeline(&tp, &intents, &settings, &Default::default(), &mut |_| {});
+    let rerun = Rerunner {
+        text: &text,
+        macros,
+        intents: &intents,
+        settings: &settings,
+        left: std::cell::Cell::new(MAX_RERUNS),
+    };
+    analysis::diagnose::diagnose(&mut findings, &tp, &settings, &rerun);
+    let _ = stock::area(&sim.final_shapes);
+    let _ = findings.verdict;
+}
+
+/// The program read and expanded as `src/input.rs` `load_program` does, with this target's
+/// budgets: `None` when it cannot be read or is past them.
+fn expanded(text: &str, macros: bool, tools: &stock::ToolTable) -> Option<expander::Toolpath> {
+    let read = gcode::ReadOptions {
+        macros: macros.then_some(macro_b::Dialect::Fanuc),
+        ..Default::default()
+    };
+    let program = gcode::parse_with(text, read).ok()?;
+    let opts = expander::Options {
+        tools: tools.facts(),
+        start_tool: tools.numbers().first().copied(),
+        max_segments: MAX_MOVES + 1,
+        max_blocks: MAX_BLOCKS,
+        macros: macros.then(|| {
+            let mut o = macro_b::Options::fanuc();
+            o.limits.max_blocks = MAX_BLOCKS as u64;
+            o
+        }),
+        ..Default::default()
+    };
+    let tp = expander::expand(&program, &fixtures().machine, &opts);
     // a move budget, like `interpret`'s: long legitimate programs (a G75 with a 0.002 mm
-    // step: 58 510 moves, 0.5 s in release) exceed the 10 s timeout only under coverage
+    // step: 58 510 moves, 0.5 s in release) exceed the timeout only under coverage
     // instrumentation; the benches and the found inputs cover large programs
     if tp.segments.len() > MAX_MOVES {
-        return;
+        return None;
     }
     // and a stamp budget: 1 680 stamps of an 80° insert (G92 passes at the modal F0.1 of a
     // G01: lead 0.1 over 28 mm) take 2.2 s in release, > 10 s instrumented
@@ -69,17 +146,72 @@ pub(crate) fn body(data: &[u8]) {
         .filter(|s| s.motion == expander::Motion::Thread && s.lead > 0.0)
         .map(|s| (s.to.z - s.from.z).abs() / s.lead)
         .sum();
-    if stamps > MAX_STAMPS {
-        return;
+    (stamps <= MAX_STAMPS).then_some(tp)
+}
+
+/// `src/rerun.rs`'s re-run: the program's text changed, or the table with one tool
+/// replaced, read and run again on the same blank, machine and intents.
+struct Rerunner<'a> {
+    text: &'a str,
+    macros: bool,
+    intents: &'a analysis::Intents,
+    settings: &'a analysis::Settings<'a>,
+    /// Re-runs left for this input ([`MAX_RERUNS`]).
+    left: std::cell::Cell<usize>,
+}
+
+impl analysis::diagnose::Rerun for Rerunner<'_> {
+    fn rerun(&self, change: &analysis::diagnose::Change) -> Option<analysis::diagnose::Rerunning> {
+        use analysis::diagnose::Change;
+        self.left.set(self.left.get().checked_sub(1)?);
+        let tools = self.settings.tools;
+        let (text, tools) = match change {
+            Change::Tool { t, entry } => (self.text.to_string(), tools.replaced(*t, entry).ok()?),
+            Change::Insert { line, text } => (inserted(self.text, *line, text)?, tools.clone()),
+            Change::Feed { line } => (fed(self.text, *line)?, tools.clone()),
+        };
+        let toolpath = expanded(&text, self.macros, &tools)?;
+        let settings = analysis::Settings {
+            tools: &tools,
+            ..*self.settings
+        };
+        let (_, findings) =
+            analysis::pipeline(&toolpath, self.intents, &settings, &Default::default(), &mut |_| {});
+        Some(analysis::diagnose::Rerunning {
+            findings,
+            alarms: toolpath.alarms.len(),
+        })
     }
-    let intents = if data.len() % 2 == 1 {
-        analysis::Intents::Target(part.clone())
-    } else {
-        analysis::Intents::Program
-    };
-    let settings = analysis::Settings { blank, tools, machine, fixture: None, tol: 0.01 };
-    let (sim, findings) =
-        analysis::pipeline(&tp, &intents, &settings, &Default::default(), &mut |_| {});
-    let _ = stock::area(&sim.final_shapes);
-    let _ = findings.verdict;
+}
+
+/// `source` with `blocks` inserted before its 1-based line `line` (`src/rerun.rs`).
+fn inserted(source: &str, line: u32, blocks: &str) -> Option<String> {
+    let at = line_start(source, line)?;
+    Some(format!("{}{blocks}\n{}", &source[..at], &source[at..]))
+}
+
+/// `source` with the first rapid word (`G0`, `G00`) of its 1-based line `line` made `G01`
+/// (`src/rerun.rs`).
+fn fed(source: &str, line: u32) -> Option<String> {
+    let at = line_start(source, line)?;
+    let end = source[at..].find('\n').map_or(source.len(), |e| at + e);
+    let text = &source.as_bytes()[at..end];
+    let (word, len) = (0..text.len()).find_map(|k| {
+        let digits = text[k + 1..].iter().take_while(|b| b.is_ascii_digit()).count();
+        let rapid = text[k].eq_ignore_ascii_case(&b'G')
+            && digits > 0
+            && text[k + 1..k + 1 + digits].iter().all(|&b| b == b'0')
+            && text.get(k + 1 + digits) != Some(&b'.');
+        rapid.then_some((k, 1 + digits))
+    })?;
+    Some(format!("{}G01{}", &source[..at + word], &source[at + word + len..]))
+}
+
+/// The byte where 1-based line `line` of `source` starts.
+fn line_start(source: &str, line: u32) -> Option<usize> {
+    let mut at = 0;
+    for _ in 1..line {
+        at += source[at..].find('\n')? + 1;
+    }
+    Some(at)
 }

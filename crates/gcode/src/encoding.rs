@@ -63,13 +63,17 @@ pub fn decode(bytes: &[u8], forced: Option<&'static Encoding>) -> Result<Decoded
     })
 }
 
-/// The offset of the first byte the encoding cannot decode.
+/// The offset of the first byte the encoding cannot decode: where the malformed sequence
+/// starts, before the bytes the decoder read past it to see it was malformed (a GBK lead
+/// byte before an ASCII byte: the lead byte, not the ASCII one).
 fn first_error(bytes: &[u8], encoding: &'static Encoding) -> usize {
     let mut decoder = encoding.new_decoder_without_bom_handling();
     let mut out = vec![0u8; bytes.len() * 3 + 16];
     let (result, read, _) = decoder.decode_to_utf8_without_replacement(bytes, &mut out, true);
     match result {
-        encoding_rs::DecoderResult::Malformed(bad, _) => read.saturating_sub(bad as usize),
+        encoding_rs::DecoderResult::Malformed(bad, after) => {
+            read.saturating_sub(bad as usize + after as usize)
+        }
         _ => read,
     }
 }

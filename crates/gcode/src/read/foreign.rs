@@ -62,9 +62,14 @@ fn assignment(line: &str) -> Option<String> {
     let bytes = code.as_bytes();
     let eq = code.find('=')?;
     let before = code[..eq].trim_end();
-    let name_start = before
-        .rfind(|c: char| !c.is_ascii_alphanumeric())
-        .map_or(0, |i| i + 1);
+    // counted in bytes: an ASCII letter or digit is one byte, so this is a character's
+    // start even after a non-ASCII one (`ÿ=`)
+    let name_start = before.len()
+        - before
+            .bytes()
+            .rev()
+            .take_while(u8::is_ascii_alphanumeric)
+            .count();
     let name = &before[name_start..];
     let is_name = name.starts_with(|c: char| c.is_ascii_alphabetic());
     let after_hash = name_start > 0 && bytes[name_start - 1] == b'#';
