@@ -282,7 +282,8 @@ pub(crate) fn enters_uncut(
 
 /// Whether the stated core of move `i`'s tool (`core`: an insert's nose, a blade's tip) cuts
 /// uncut stock on that move: its sweep less the blank's outside and the earlier moves'
-/// sweeps (those whose boxes meet it) has more than [`CORE_AREA`] left.
+/// sweeps (those whose boxes meet what is left of it in the blank) has more than
+/// [`CORE_AREA`] left.
 pub(crate) fn core_enters_uncut(
     i: usize,
     core: &Outline,
@@ -301,8 +302,12 @@ pub(crate) fn core_enters_uncut(
             .collect()
     };
     let swept = as_shapes(float_sweep(core, &move_path(&segments[i], chord_tol)));
+    let inside = stock::boolean(&swept, blank, stock::BoolOp::Intersection);
+    if stock::area(&inside) <= CORE_AREA {
+        return false;
+    }
     let bb = geom::Rect::of(
-        swept
+        inside
             .iter()
             .flat_map(|s| s.outer.iter().map(|&p| geom::Pt::from(p))),
     );
@@ -322,8 +327,10 @@ pub(crate) fn core_enters_uncut(
             }));
         }
     }
-    let inside = stock::boolean(&swept, blank, stock::BoolOp::Intersection);
-    let uncut = stock::boolean(&inside, &as_shapes(earlier), stock::BoolOp::Difference);
+    // the earlier sweeps joined first (half by half: many overlapping sweeps in one call
+    // split every edge at every other's ends, a G75.1's pecks took gigabytes)
+    let cover = stock::boolean(&as_shapes(earlier), &[], stock::BoolOp::Union);
+    let uncut = stock::boolean(&inside, &cover, stock::BoolOp::Difference);
     stock::area(&uncut) > CORE_AREA
 }
 
