@@ -675,6 +675,22 @@ fn player_legend(out: &mut String, report: &Report) {
     out.push_str("</p>\n");
 }
 
+/// The start of a latsim page up to its header: the document head with the stylesheet,
+/// then the title and the verdict in its colour (the report's page and the diff's).
+pub(crate) fn page_head(out: &mut String, title: &str, verdict: &str, colour: &str) {
+    out.push_str("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
+    out.push_str("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
+    out.push_str("<meta name=\"generator\" content=\"latsim\">\n");
+    let _ = writeln!(out, "<title>{}</title>", esc(title));
+    let _ = writeln!(out, "<style>\n{STYLE}</style>\n</head>\n<body>");
+    let _ = writeln!(
+        out,
+        "<header><h1>{}</h1><p class=\"verdict\" style=\"color:{colour}\">{}</p></header>",
+        esc(title),
+        esc(verdict)
+    );
+}
+
 /// The whole page, showing `svg`, the report picture of `report`.
 pub(crate) fn html(report: &Report, svg: &str) -> String {
     let (data, moves) = data_json(report);
@@ -692,17 +708,7 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
     let (verdict, vc) = verdict_text(report);
 
     let mut out = String::with_capacity(svg.len() + data.len() + 64 * 1024);
-    out.push_str("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
-    out.push_str("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
-    out.push_str("<meta name=\"generator\" content=\"latsim\">\n");
-    let _ = writeln!(out, "<title>{}</title>", esc(&title));
-    let _ = writeln!(out, "<style>\n{STYLE}</style>\n</head>\n<body>");
-    let _ = writeln!(
-        out,
-        "<header><h1>{}</h1><p class=\"verdict\" style=\"color:{vc}\">{}</p></header>",
-        esc(&title),
-        esc(&verdict)
-    );
+    page_head(&mut out, &title, &verdict, vc);
     out.push_str("<nav><a href=\"#ls-sheet\">setup sheet</a> · <a href=\"#ls-picture\">picture</a> · <a href=\"#ls-solid-view\">3D</a> · <a href=\"#ls-player\">moves</a> · <a href=\"#ls-tables\">tables</a> · <a href=\"#ls-findings\">findings</a></nav>\n");
 
     // 1. The setup sheet.

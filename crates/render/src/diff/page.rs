@@ -8,9 +8,6 @@ use super::{DiffFinding, DiffReport};
 use crate::layout::colour;
 use crate::text::{duration, esc, num};
 
-/// The run report's style sheet: the same tables and picture frame.
-const STYLE: &str = include_str!("../html/page.css");
-
 /// The page, with `svg` (the diff picture) inline.
 pub(super) fn html(d: &DiffReport, svg: &str) -> String {
     let title = format!("latsim diff — {} → {}", d.old, d.new);
@@ -23,17 +20,7 @@ pub(super) fn html(d: &DiffReport, svg: &str) -> String {
         )
     };
     let mut out = String::with_capacity(svg.len() + 16 * 1024);
-    out.push_str("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
-    out.push_str("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
-    out.push_str("<meta name=\"generator\" content=\"latsim\">\n");
-    let _ = writeln!(out, "<title>{}</title>", esc(&title));
-    let _ = writeln!(out, "<style>\n{STYLE}</style>\n</head>\n<body>");
-    let _ = writeln!(
-        out,
-        "<header><h1>{}</h1><p class=\"verdict\" style=\"color:{vc}\">{}</p></header>",
-        esc(&title),
-        esc(&verdict)
-    );
+    crate::html::page_head(&mut out, &title, &verdict, vc);
     out.push_str("<section id=\"ls-picture\"><h2>Both sections</h2>\n<div class=\"picture\">\n");
     out.push_str(svg);
     out.push_str("</div></section>\n");
