@@ -186,7 +186,7 @@ impl At<'_> {
                 .f
                 .threads
                 .iter()
-                .any(|t| t.span == n.span && t.depth_error_mm.is_some_and(|e| e > self.tol))
+                .any(|t| t.span == n.span && t.too_deep(self.tol))
     }
 
     /// The findings that fail the run (alarms, crashes, gouges, threads too deep), and the

@@ -159,6 +159,14 @@ pub struct ThreadCheck {
     pub z_end_mm: f64,
 }
 
+impl ThreadCheck {
+    /// Whether this thread is cut deeper than `tol` past its expected depth: a gouge (the
+    /// verdict's rule, and the CI reports' too).
+    pub fn too_deep(&self, tol: f64) -> bool {
+        self.depth_error_mm.is_some_and(|e| e > tol)
+    }
+}
+
 /// A G75.1 groove the program defines, and how far the final part strays from it.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct GrooveCheck {
@@ -207,10 +215,7 @@ impl Findings {
             .deviation
             .as_ref()
             .is_some_and(|d| d.gouges.iter().any(|g| !g.assumed));
-        let too_deep = self
-            .threads
-            .iter()
-            .any(|t| t.depth_error_mm.is_some_and(|e| e > tol));
+        let too_deep = self.threads.iter().any(|t| t.too_deep(tol));
         if toolpath_alarms > 0 || !self.alarms.is_empty() {
             Verdict::Alarm
         } else if self.crashes.iter().any(|c| !c.assumed) {
