@@ -3,6 +3,7 @@
 //! own deepest point, `Finding::at` and `nearest`.)
 
 mod groove;
+mod surface;
 mod thread;
 
 pub use groove::groove_deviation;

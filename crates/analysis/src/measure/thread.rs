@@ -2,6 +2,7 @@
 //! (OD) or bore (ID) at a given Z, and its extreme over the thread's length — the achieved
 //! minor diameter of an OD thread, the major diameter of an ID thread.
 
+use super::surface::radii_at;
 use expander::{Motion, Segment, Span};
 use stock::{Shape, ToolTable};
 
@@ -17,23 +18,7 @@ pub enum Surface {
 /// The radius of `surface` at `z`: where the line Z = `z` crosses the section's boundaries,
 /// the largest crossing (outer) or the smallest (bore); `None` where no material is.
 pub fn surface_radius_at(shapes: &[Shape], z: f64, surface: Surface) -> Option<f64> {
-    let crossings = shapes
-        .iter()
-        .flat_map(|s| std::iter::once(&s.outer).chain(s.holes.iter()))
-        .flat_map(|ring| {
-            (0..ring.len()).filter_map(move |i| {
-                let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
-                let (lo, hi) = (a[0].min(b[0]), a[0].max(b[0]));
-                if z < lo || z > hi || hi - lo < 1e-12 {
-                    return None;
-                }
-                Some(a[1] + (z - a[0]) / (b[0] - a[0]) * (b[1] - a[1]))
-            })
-        });
-    match surface {
-        Surface::Outer => crossings.reduce(f64::max),
-        Surface::Bore => crossings.reduce(f64::min),
-    }
+    radii_at(shapes, &[z], surface)[0]
 }
 
 /// The deepest point of `surface` between `z0` and `z1` (either order): the smallest outer
@@ -50,11 +35,12 @@ pub fn deepest_radius(shapes: &[Shape], z0: f64, z1: f64, surface: Surface) -> O
         .map(|p| p[0])
         .filter(|z| (lo..=hi).contains(z))
         .flat_map(|z| [z - eps, z, z + eps]);
-    let radii = [lo, hi]
+    let zs: Vec<f64> = [lo, hi]
         .into_iter()
         .chain(vertices)
         .filter(|z| (lo..=hi).contains(z))
-        .filter_map(|z| surface_radius_at(shapes, z, surface));
+        .collect();
+    let radii = radii_at(shapes, &zs, surface).into_iter().flatten();
     match surface {
         Surface::Outer => radii.reduce(f64::min),
         Surface::Bore => radii.reduce(f64::max),
@@ -75,18 +61,13 @@ pub fn least_gap(
     z1: f64,
     surface: Surface,
 ) -> Option<f64> {
-    least_gap_where(shapes, reference, z0, z1, surface, &|_| true)
+    let zs = gap_places(shapes, reference, z0, z1);
+    least_gap_at(shapes, reference, &zs, surface)
 }
 
-/// [`least_gap`] over the places `z` where `keep(z)`.
-fn least_gap_where(
-    shapes: &[Shape],
-    reference: Reference,
-    z0: f64,
-    z1: f64,
-    surface: Surface,
-    keep: &dyn Fn(f64) -> bool,
-) -> Option<f64> {
+/// The places [`least_gap`] looks at over `z0..z1`: 1e-7 mm inside both ends and beside
+/// every vertex of either section.
+fn gap_places(shapes: &[Shape], reference: Reference, z0: f64, z1: f64) -> Vec<f64> {
     let (lo, hi) = (z0.min(z1), z0.max(z1));
     let eps = 1e-7;
     let ref_shapes: &[Shape] = match reference {
@@ -100,26 +81,45 @@ fn least_gap_where(
         .flatten()
         .map(|p| p[0])
         .flat_map(|z| [z - eps, z + eps]);
-    let reference_at = |z: f64| match reference {
-        Reference::Line(a, b) => Some(if (b[0] - a[0]).abs() < 1e-12 {
-            a[1]
-        } else {
-            a[1] + (z - a[0]) / (b[0] - a[0]) * (b[1] - a[1])
-        }),
-        Reference::Shapes(r) => surface_radius_at(r, z, surface),
-    };
     [lo + eps, hi - eps]
         .into_iter()
         .chain(vertices)
-        .filter(|z| (lo..=hi).contains(z) && keep(*z))
-        .filter_map(|z| {
-            let (s, r) = (surface_radius_at(shapes, z, surface)?, reference_at(z)?);
+        .filter(|z| (lo..=hi).contains(z))
+        .collect()
+}
+
+/// The least gap between `surface` of `shapes` and `reference` at the places `zs`.
+fn least_gap_at(
+    shapes: &[Shape],
+    reference: Reference,
+    zs: &[f64],
+    surface: Surface,
+) -> Option<f64> {
+    let references = match reference {
+        Reference::Line(a, b) => zs.iter().map(|&z| Some(line_at(a, b, z))).collect(),
+        Reference::Shapes(r) => radii_at(r, zs, surface),
+    };
+    radii_at(shapes, zs, surface)
+        .into_iter()
+        .zip(references)
+        .filter_map(|(s, r)| {
+            let (s, r) = (s?, r?);
             Some(match surface {
                 Surface::Outer => s - r,
                 Surface::Bore => r - s,
             })
         })
         .reduce(f64::min)
+}
+
+/// The radius at `z` of the line through the (z, r) points `a` and `b` (`a`'s on a radial
+/// line).
+fn line_at(a: [f64; 2], b: [f64; 2], z: f64) -> f64 {
+    if (b[0] - a[0]).abs() < 1e-12 {
+        a[1]
+    } else {
+        a[1] + (z - a[0]) / (b[0] - a[0]) * (b[1] - a[1])
+    }
 }
 
 /// What [`least_gap`] measures from.
@@ -191,29 +191,23 @@ impl Thread {
     /// in it) is not the thread's depth.
     pub fn achieved_x(&self, shapes: &[Shape], before: Option<&[Shape]>) -> Option<f64> {
         let [a, b] = self.root;
-        let root_at = |z: f64| {
-            if (b[0] - a[0]).abs() < 1e-12 {
-                a[1]
-            } else {
-                a[1] + (z - a[0]) / (b[0] - a[0]) * (b[1] - a[1])
-            }
-        };
-        let cut_here = |z: f64| {
-            before.is_none_or(|before| {
-                surface_radius_at(before, z, self.surface).is_some_and(|s| match self.surface {
-                    Surface::Outer => s >= root_at(z) - 1e-6,
-                    Surface::Bore => s <= root_at(z) + 1e-6,
+        let mut zs = gap_places(shapes, Reference::Line(a, b), a[0], b[0]);
+        if let Some(before) = before {
+            let cut = radii_at(before, &zs, self.surface);
+            let came_up = |z: f64, s: Option<f64>| {
+                s.is_some_and(|s| match self.surface {
+                    Surface::Outer => s >= line_at(a, b, z) - 1e-6,
+                    Surface::Bore => s <= line_at(a, b, z) + 1e-6,
                 })
-            })
-        };
-        let gap = least_gap_where(
-            shapes,
-            Reference::Line(a, b),
-            a[0],
-            b[0],
-            self.surface,
-            &cut_here,
-        )?;
+            };
+            zs = zs
+                .into_iter()
+                .zip(cut)
+                .filter(|&(z, s)| came_up(z, s))
+                .map(|(z, _)| z)
+                .collect();
+        }
+        let gap = least_gap_at(shapes, Reference::Line(a, b), &zs, self.surface)?;
         Some(match self.surface {
             Surface::Outer => self.x() + 2.0 * gap,
             Surface::Bore => self.x() - 2.0 * gap,
@@ -251,14 +245,18 @@ impl Thread {
         };
         let root_at = move |z: f64| b[1] + slope * (z - b[0]);
         // the crest's height above the root line over the window (on a cone too)
-        let crest = shapes
+        let zs: Vec<f64> = shapes
             .iter()
             .flat_map(|s| std::iter::once(&s.outer).chain(s.holes.iter()))
             .flatten()
             .map(|p| p[0])
             .filter(|z| (window.0..=window.1).contains(z))
             .chain([window.0, window.1])
-            .filter_map(|z| Some(surface_radius_at(shapes, z, self.surface)? - root_at(z)))
+            .collect();
+        let crest = radii_at(shapes, &zs, self.surface)
+            .into_iter()
+            .zip(&zs)
+            .filter_map(|(r, &z)| Some(r? - root_at(z)))
             .reduce(match self.surface {
                 Surface::Outer => f64::max,
                 Surface::Bore => f64::min,
@@ -475,14 +473,17 @@ fn thread_groups(segments: &[Segment], tools: &ToolTable) -> Vec<(Surface, Vec<u
 fn crest_radius(shapes: &[Shape], z0: f64, z1: f64, surface: Surface) -> Option<f64> {
     // piecewise linear: the extreme lies at a vertex or an end
     let (lo, hi) = (z0.min(z1), z0.max(z1));
-    shapes
+    let zs: Vec<f64> = shapes
         .iter()
         .flat_map(|s| std::iter::once(&s.outer).chain(s.holes.iter()))
         .flatten()
         .map(|p| p[0])
         .filter(|z| (lo..=hi).contains(z))
         .chain([lo, hi])
-        .filter_map(|z| surface_radius_at(shapes, z, surface))
+        .collect();
+    radii_at(shapes, &zs, surface)
+        .into_iter()
+        .flatten()
         .reduce(match surface {
             Surface::Outer => f64::max,
             Surface::Bore => f64::min,
