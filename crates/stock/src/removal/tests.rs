@@ -259,6 +259,84 @@ fn flank_infeed_passes_leave_no_zigzag_along_the_flank() {
     assert!(sim.crashes.is_empty() && sim.removed_area > 5.0);
 }
 
+/// Issue 32's CAM thread: single thread passes 0.0005 mm apart on the radius with a round
+/// nose (a V insert, r0.4, 93°), each followed by its rapids. Stamped pass by pass
+/// (`merge_tol` 0), every pass leaves a notch of 10⁻⁵ mm where its nose meets the last
+/// pass's on a flank of each tooth (576 vertices for 120 passes), which the tiles split
+/// on. Swept from where the run of passes began, the part has the few vertices of its
+/// teeth (72), lies within the stated `merge_tol / 2` (0.00025 mm) of the pass-by-pass
+/// part (8·10⁻⁶ mm: the notches' depth), and the rapids crash alike.
+#[test]
+fn repeated_thread_passes_leave_no_notch_a_pass() {
+    let blank = Blank::bar(20.0, 40.0, 0.0, None).unwrap();
+    let pass = |d: f64| {
+        let r = 8.5 - d;
+        let mut t = seg(Motion::Thread, [0.5, r], [-4.0, r]);
+        t.lead = 1.5;
+        [
+            seg(Motion::Rapid, [0.5, 10.0], [0.5, r]),
+            t,
+            seg(Motion::Rapid, [-4.0, r], [-4.0, 10.0]),
+            seg(Motion::Rapid, [-4.0, 10.0], [0.5, 10.0]),
+        ]
+    };
+    let segs: Vec<Segment> = (0..120).flat_map(|k| pass(0.0005 * f64::from(k))).collect();
+    let opts = SimOptions::default();
+    let exact_opts = SimOptions {
+        merge_tol: 0.0,
+        ..SimOptions::default()
+    };
+    let swept = simulate(&blank, &v35(), &segs, &opts, &mut |_| {});
+    let exact = simulate(&blank, &v35(), &segs, &exact_opts, &mut |_| {});
+    let vertices = |s: &Simulation| -> usize {
+        s.final_shapes
+            .iter()
+            .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
+            .sum()
+    };
+    let (n, n_exact) = (vertices(&swept), vertices(&exact));
+    assert!(n < 100, "{n} vertices ({n_exact} pass by pass)");
+    assert!(
+        n_exact > 400,
+        "{n_exact} vertices pass by pass: no notches to fill"
+    );
+    let h = hausdorff(&swept.final_shapes, &exact.final_shapes);
+    assert!(h <= opts.merge_tol / 2.0, "Hausdorff {h} mm");
+    // what the notches held (10⁻⁵ mm deep), filled: removed, never left
+    let extra = swept.removed_area - exact.removed_area;
+    let xor = symmetric_difference_area(&swept.final_shapes, &exact.final_shapes);
+    assert!((0.0..1e-5).contains(&extra) && xor < 1e-5, "{extra} {xor}");
+    // the same crash: the first retract, its insert leaning over the last tooth
+    assert_eq!(swept.crashes.len(), 1);
+    assert_eq!(swept.crashes.len(), exact.crashes.len());
+    for (a, b) in swept.crashes.iter().zip(&exact.crashes) {
+        assert_eq!(a.segment, b.segment);
+        assert!((a.area - b.area).abs() < 1e-6, "{} {}", a.area, b.area);
+    }
+}
+
+/// Passes more than `merge_tol` apart are stamped pass by pass: a deeper cut's notches are
+/// real geometry (the run restarts; the same part as with `merge_tol` 0).
+#[test]
+fn thread_passes_further_apart_than_merge_tol_are_stamped_each() {
+    let blank = Blank::bar(20.0, 40.0, 0.0, None).unwrap();
+    let segs: Vec<Segment> = (0..6)
+        .map(|k| {
+            let r = 8.5 - 0.05 * f64::from(k);
+            let mut t = seg(Motion::Thread, [0.5, r], [-4.0, r]);
+            t.lead = 1.5;
+            t
+        })
+        .collect();
+    let exact_opts = SimOptions {
+        merge_tol: 0.0,
+        ..SimOptions::default()
+    };
+    let swept = run(&blank, &v35(), &segs);
+    let exact = simulate(&blank, &v35(), &segs, &exact_opts, &mut |_| {});
+    assert_eq!(swept.final_shapes, exact.final_shapes);
+}
+
 #[test]
 fn grooving_hints_choose_the_blade() {
     let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();

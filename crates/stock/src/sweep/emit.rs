@@ -138,13 +138,35 @@ impl SweepBuilder<'_> {
         }
     }
 
-    /// The outline stamped at each of `at`, one sweep of move `idx` (a thread pass).
-    pub(super) fn emit_stamps(&mut self, idx: usize, outline: &Outline, at: &[P], start: P) {
+    /// The outline stamped at each of `at`, one sweep of move `idx` (a thread pass). When
+    /// the move repeats earlier passes whose run began at `first` (see
+    /// [`super::thread::ThreadStamps::repeats`]), each stamp is swept from there instead:
+    /// `outline ⊕ [first, at]`, the region the run's stamps cover with the notches between
+    /// them filled (a chorded nose moved by 0.0005 mm leaves a notch of 10⁻⁵ mm on each
+    /// flank, every pass: thousands of vertices for the tiles to split on), within
+    /// `merge_tol / 2` of them. Each pass's sweep then covers the one before it, so a tile
+    /// keeps one of them in its batch, not one boolean call every two passes.
+    pub(super) fn emit_stamps(
+        &mut self,
+        idx: usize,
+        outline: &Outline,
+        (at, first): (&[P], Option<&[P]>),
+        start: P,
+    ) {
         self.close_group();
         let item = self.begin();
-        for p in at {
+        for (i, p) in at.iter().enumerate() {
             for part in &outline.parts {
-                let poly: Vec<P> = part.iter().map(|v| [v[0] + p[0], v[1] + p[1]]).collect();
+                let moved = |at: P| -> Vec<P> {
+                    part.iter().map(|v| [v[0] + at[0], v[1] + at[1]]).collect()
+                };
+                let poly: Vec<P> = match first {
+                    Some(first) => {
+                        let from = first[i];
+                        sweep_convex(&moved(from), [p[0] - from[0], p[1] - from[1]])
+                    }
+                    None => moved(*p),
+                };
                 self.add(&poly, PolyKind::Hull, outline.past_axis);
             }
         }

@@ -334,7 +334,10 @@ impl<'a> SweepBuilder<'a> {
                 .thread
                 .stamps((idx, seg), self.tol, continues, &mut self.warnings);
             if let Some(stamps) = stamps {
-                self.emit_stamps(idx, outline, &stamps, [seg.from.z, seg.from.r]);
+                let key = hint_key(seg.tool, seg.hint);
+                let prev = self.thread.repeats(key, &stamps, self.merge_tol);
+                let at = (&stamps[..], prev.as_deref());
+                self.emit_stamps(idx, outline, at, [seg.from.z, seg.from.r]);
                 return;
             }
         }
