@@ -259,15 +259,44 @@ fn flank_infeed_passes_leave_no_zigzag_along_the_flank() {
     assert!(sim.crashes.is_empty() && sim.removed_area > 5.0);
 }
 
-/// Issue 32's CAM thread: single thread passes 0.0005 mm apart on the radius with a round
-/// nose (a V insert, r0.4, 93°), each followed by its rapids. Stamped pass by pass
-/// (`merge_tol` 0), every pass leaves a notch of 10⁻⁵ mm where its nose meets the last
-/// pass's on a flank of each tooth (576 vertices for 120 passes), which the tiles split
-/// on. Swept from where the run of passes began, the part has the few vertices of its
-/// teeth (72), lies within the stated `merge_tol / 2` (0.00025 mm) of the pass-by-pass
-/// part (8·10⁻⁶ mm: the notches' depth), and the rapids crash alike.
+/// Issue 32's CAM thread: single thread passes 0.0005 mm apart on the radius (0.001 on the
+/// diameter; and 0.001 mm, a G76's least depth of cut) with a round nose (a V insert,
+/// r0.4, 93°), each followed by its rapids. Stamped pass by pass (`merge_tol` 0), every
+/// pass leaves a notch of 10⁻⁵ mm where its nose meets the last pass's on a flank of each
+/// tooth (576 vertices for 120 passes), which the tiles split on. Swept from where the run
+/// of passes began, the part has the few vertices of its teeth (72), lies within the
+/// stated `merge_tol / 5` (10⁻⁴ mm) of the pass-by-pass part (8·10⁻⁶ and 1.6·10⁻⁵ mm: the
+/// notches' depth), and the rapids crash alike.
 #[test]
 fn repeated_thread_passes_leave_no_notch_a_pass() {
+    for step in [0.0005, 0.001] {
+        let (swept, exact) = thread_passes_both_ways(step);
+        let (n, n_exact) = (vertices(&swept), vertices(&exact));
+        assert!(n < 100, "{step}: {n} vertices ({n_exact} pass by pass)");
+        assert!(n_exact > 400, "{step}: {n_exact} vertices pass by pass");
+        let h = hausdorff(&swept.final_shapes, &exact.final_shapes);
+        let bound = SimOptions::default().merge_tol / 5.0;
+        assert!(h <= bound + 1e-6, "{step}: Hausdorff {h} mm");
+        // what the notches held (10⁻⁵ mm deep), filled: removed, never left
+        let extra = swept.removed_area - exact.removed_area;
+        let xor = symmetric_difference_area(&swept.final_shapes, &exact.final_shapes);
+        assert!(
+            (0.0..2e-5).contains(&extra) && xor < 2e-5,
+            "{step}: {extra} {xor}"
+        );
+        // the same crash: the first retract, its insert leaning over the last tooth
+        assert_eq!(swept.crashes.len(), 1);
+        assert_eq!(swept.crashes.len(), exact.crashes.len());
+        for (a, b) in swept.crashes.iter().zip(&exact.crashes) {
+            assert_eq!(a.segment, b.segment);
+            assert!((a.area - b.area).abs() < 1e-6, "{} {}", a.area, b.area);
+        }
+    }
+}
+
+/// 120 passes `step` apart (see [`repeated_thread_passes_leave_no_notch_a_pass`]), cut
+/// with the default options and pass by pass (`merge_tol` 0).
+fn thread_passes_both_ways(step: f64) -> (Simulation, Simulation) {
     let blank = Blank::bar(20.0, 40.0, 0.0, None).unwrap();
     let pass = |d: f64| {
         let r = 8.5 - d;
@@ -280,45 +309,28 @@ fn repeated_thread_passes_leave_no_notch_a_pass() {
             seg(Motion::Rapid, [-4.0, 10.0], [0.5, 10.0]),
         ]
     };
-    let segs: Vec<Segment> = (0..120).flat_map(|k| pass(0.0005 * f64::from(k))).collect();
-    let opts = SimOptions::default();
+    let segs: Vec<Segment> = (0..120).flat_map(|k| pass(step * f64::from(k))).collect();
     let exact_opts = SimOptions {
         merge_tol: 0.0,
         ..SimOptions::default()
     };
-    let swept = simulate(&blank, &v35(), &segs, &opts, &mut |_| {});
+    let swept = run(&blank, &v35(), &segs);
     let exact = simulate(&blank, &v35(), &segs, &exact_opts, &mut |_| {});
-    let vertices = |s: &Simulation| -> usize {
-        s.final_shapes
-            .iter()
-            .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
-            .sum()
-    };
-    let (n, n_exact) = (vertices(&swept), vertices(&exact));
-    assert!(n < 100, "{n} vertices ({n_exact} pass by pass)");
-    assert!(
-        n_exact > 400,
-        "{n_exact} vertices pass by pass: no notches to fill"
-    );
-    let h = hausdorff(&swept.final_shapes, &exact.final_shapes);
-    assert!(h <= opts.merge_tol / 2.0, "Hausdorff {h} mm");
-    // what the notches held (10⁻⁵ mm deep), filled: removed, never left
-    let extra = swept.removed_area - exact.removed_area;
-    let xor = symmetric_difference_area(&swept.final_shapes, &exact.final_shapes);
-    assert!((0.0..1e-5).contains(&extra) && xor < 1e-5, "{extra} {xor}");
-    // the same crash: the first retract, its insert leaning over the last tooth
-    assert_eq!(swept.crashes.len(), 1);
-    assert_eq!(swept.crashes.len(), exact.crashes.len());
-    for (a, b) in swept.crashes.iter().zip(&exact.crashes) {
-        assert_eq!(a.segment, b.segment);
-        assert!((a.area - b.area).abs() < 1e-6, "{} {}", a.area, b.area);
-    }
+    (swept, exact)
 }
 
-/// Passes more than `merge_tol` apart are stamped pass by pass: a deeper cut's notches are
-/// real geometry (the run restarts; the same part as with `merge_tol` 0).
+/// Vertices of a run's part.
+fn vertices(s: &Simulation) -> usize {
+    s.final_shapes
+        .iter()
+        .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
+        .sum()
+}
+
+/// Passes more than `2·merge_tol` apart are stamped pass by pass: a deeper cut's notches
+/// are real geometry (the same part as with `merge_tol` 0).
 #[test]
-fn thread_passes_further_apart_than_merge_tol_are_stamped_each() {
+fn thread_passes_further_apart_than_twice_merge_tol_are_stamped_each() {
     let blank = Blank::bar(20.0, 40.0, 0.0, None).unwrap();
     let segs: Vec<Segment> = (0..6)
         .map(|k| {

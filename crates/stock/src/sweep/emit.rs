@@ -144,8 +144,9 @@ impl SweepBuilder<'_> {
     /// `outline ⊕ [first, at]`, the region the run's stamps cover with the notches between
     /// them filled (a chorded nose moved by 0.0005 mm leaves a notch of 10⁻⁵ mm on each
     /// flank, every pass: thousands of vertices for the tiles to split on), within
-    /// `merge_tol / 2` of them. Each pass's sweep then covers the one before it, so a tile
-    /// keeps one of them in its batch, not one boolean call every two passes.
+    /// `merge_tol / 5` of them (see `thread_step`). Each pass's sweep then covers the one
+    /// before it, so a tile keeps one of them in its batch, not one boolean call every two
+    /// passes.
     pub(super) fn emit_stamps(
         &mut self,
         idx: usize,

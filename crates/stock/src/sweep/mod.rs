@@ -8,6 +8,7 @@
 //! clips and stores what comes out.
 
 mod emit;
+mod notch;
 mod run;
 mod thread;
 
@@ -335,8 +336,9 @@ impl<'a> SweepBuilder<'a> {
                 .stamps((idx, seg), self.tol, continues, &mut self.warnings);
             if let Some(stamps) = stamps {
                 let key = hint_key(seg.tool, seg.hint);
-                let prev = self.thread.repeats(key, &stamps, self.merge_tol);
-                let at = (&stamps[..], prev.as_deref());
+                let accept = thread_step(&outline.parts, self.merge_tol);
+                let first = self.thread.repeats(key, &stamps, accept);
+                let at = (&stamps[..], first.as_deref());
                 self.emit_stamps(idx, outline, at, [seg.from.z, seg.from.r]);
                 return;
             }
@@ -384,6 +386,28 @@ impl<'a> SweepBuilder<'a> {
     pub(crate) fn take(&mut self) -> Sweeps {
         self.close_group();
         std::mem::take(&mut self.out)
+    }
+}
+
+/// Which steps between a thread's passes (of a tool whose outline has the convex `parts`)
+/// are swept as one ([`thread::ThreadStamps::repeats`]): up to `2·merge_tol` long (a step
+/// of 0.001 mm: a G76's least depth of cut), filling notches at most `merge_tol / 5` deep
+/// (10⁻⁴ mm by default; [`notch::notch_depth`]); none when `merge_tol` is 0. The last
+/// step asked for is remembered: a pass's stamps all move alike.
+fn thread_step(parts: &[Vec<P>], merge_tol: f64) -> impl FnMut(P) -> bool + '_ {
+    let mut last: Option<(P, bool)> = None;
+    move |w| {
+        if let Some((_, ok)) = last.filter(|(seen, _)| *seen == w) {
+            return ok;
+        }
+        // a step written as 0.002 mm on the diameter is 0.001 mm give or take 10⁻¹⁶
+        let ok = merge_tol > 0.0
+            && w[0].hypot(w[1]) <= 2.0 * merge_tol * (1.0 + 1e-9)
+            && parts
+                .iter()
+                .all(|p| notch::notch_depth(p, w) <= merge_tol / 5.0);
+        last = Some((w, ok));
+        ok
     }
 }
 

@@ -90,21 +90,26 @@ impl ThreadStamps {
     }
 
     /// Where the passes this thread move repeats began, when it repeats the latest
-    /// remembered thread move of tool `key` stamped as often: each of its stamps `at`
-    /// within `step` of that move's, and on the line from where their run of passes began
-    /// (within [`OFF_LINE`], moving on); `None` when it repeats none (`step` 0: never).
-    /// Each stamp of the run then lies within `step` of the one before, along one line,
-    /// so `outline ⊕ [first, at]` lies within `step / 2 + OFF_LINE` of the stamps of the
-    /// run's passes. Off that line, the run starts again from the move it repeats.
-    pub(super) fn repeats(&mut self, key: ToolKey, at: &[P], step: f64) -> Option<Vec<P>> {
-        // a step written as 0.001 mm on the diameter is 0.0005 mm give or take 10⁻¹⁶
-        let near = |a: &P, b: &P| dist(*a, *b) <= step * (1.0 + 1e-9);
+    /// remembered thread move of tool `key` stamped as often: each of its stamps `at` a
+    /// step `w` from that move's that `accept(w)` takes, and on the line from where their
+    /// run of passes began (within [`OFF_LINE`], moving on); `None` when it repeats none.
+    /// A point of `outline ⊕ [first, at]` then lies between two consecutive passes' stamps
+    /// on that line: within the notch depth `accept` bounds (plus [`OFF_LINE`]) of one of
+    /// them ([`super::notch::notch_depth`]). Off that line, the run starts again from the
+    /// move it repeats.
+    pub(super) fn repeats(
+        &mut self,
+        key: ToolKey,
+        at: &[P],
+        mut accept: impl FnMut(P) -> bool,
+    ) -> Option<Vec<P>> {
+        let mut near = |a: &P, b: &P| accept([b[0] - a[0], b[1] - a[1]]);
         let found = self.recent.iter().rposition(|r| {
             r.key == key
                 && r.last.len() == at.len()
                 && r.last.iter().zip(at).all(|(a, b)| near(a, b))
         });
-        let Some(i) = found.filter(|_| step > 0.0) else {
+        let Some(i) = found else {
             if self.recent.len() == RECENT_PASSES {
                 self.recent.remove(0);
             }
@@ -185,6 +190,11 @@ mod tests {
 
     const KEY: ToolKey = (1, 0, 0);
 
+    /// Steps of at most `step` (with the slack of a step written to 0.001 mm).
+    fn upto(step: f64) -> impl FnMut(P) -> bool {
+        move |w| w[0].hypot(w[1]) <= step * (1.0 + 1e-9)
+    }
+
     /// A pass stamped at `z` (three stamps) and radius `r`.
     fn pass(z: f64, r: f64) -> Vec<P> {
         vec![[z, r], [z - 1.5, r], [z - 3.0, r]]
@@ -195,23 +205,26 @@ mod tests {
     #[test]
     fn a_run_of_passes_is_swept_from_where_it_began() {
         let mut t = ThreadStamps::default();
-        assert_eq!(t.repeats(KEY, &pass(0.0, 8.5), 0.0005), None);
+        assert_eq!(t.repeats(KEY, &pass(0.0, 8.5), upto(0.0005)), None);
         assert_eq!(
-            t.repeats(KEY, &pass(0.0, 8.4995), 0.0005),
+            t.repeats(KEY, &pass(0.0, 8.4995), upto(0.0005)),
             Some(pass(0.0, 8.5))
         );
         assert_eq!(
-            t.repeats(KEY, &pass(0.0, 8.499), 0.0005),
+            t.repeats(KEY, &pass(0.0, 8.499), upto(0.0005)),
             Some(pass(0.0, 8.5))
         );
         // off the run's line (a flank infeed's step): from the pass it repeats
         let off = pass(-0.0003, 8.4986);
-        assert_eq!(t.repeats(KEY, &off, 0.0005), Some(pass(0.0, 8.499)));
+        assert_eq!(t.repeats(KEY, &off, upto(0.0005)), Some(pass(0.0, 8.499)));
         // a step of 0.05 mm: stamped on its own
-        assert_eq!(t.repeats(KEY, &pass(-0.0003, 8.45), 0.0005), None);
-        // another tool, or as many stamps but 0 step: never
-        assert_eq!(t.repeats((2, 0, 0), &pass(-0.0003, 8.45), 0.0005), None);
-        assert_eq!(t.repeats(KEY, &pass(-0.0003, 8.45), 0.0), None);
+        assert_eq!(t.repeats(KEY, &pass(-0.0003, 8.45), upto(0.0005)), None);
+        // another tool, or no step taken: never
+        assert_eq!(
+            t.repeats((2, 0, 0), &pass(-0.0003, 8.45), upto(0.0005)),
+            None
+        );
+        assert_eq!(t.repeats(KEY, &pass(-0.0003, 8.45), |_| false), None);
     }
 
     /// A pass of two moves (a thread and its chamfer): each move repeats its own.
@@ -222,8 +235,8 @@ mod tests {
         for k in 0..3 {
             let r = 8.5 - 0.0005 * f64::from(k);
             let (a, b) = (
-                t.repeats(KEY, &pass(0.0, r), 0.0005),
-                t.repeats(KEY, &chamfer(r), 0.0005),
+                t.repeats(KEY, &pass(0.0, r), upto(0.0005)),
+                t.repeats(KEY, &chamfer(r), upto(0.0005)),
             );
             assert_eq!(a, (k > 0).then(|| pass(0.0, 8.5)));
             assert_eq!(b, (k > 0).then(|| chamfer(8.5)));
