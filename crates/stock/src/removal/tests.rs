@@ -327,6 +327,62 @@ fn vertices(s: &Simulation) -> usize {
         .sum()
 }
 
+/// A zig-zag written with X to 0.0001 mm (`scripts/zigzag.py cut` at 10⁵ moves): each feed
+/// 0.00002 mm lower on the radius as computed, 0 or 0.00005 mm as written, so its steps are
+/// uneven and its passes never group; a back-and-forth at one X is one run. Cut feed by
+/// feed, the 93° side of the sharp insert leaves a notch of 3·10⁻⁶ mm at the turning
+/// point for each X written (the part of 5 200 moves: 4 243 vertices). Each feed that
+/// repeats an earlier one within `merge_tol` sweeps from where that run of passes began:
+/// 9 vertices, within the stated `merge_tol / 2` of the part cut feed by feed (2.6·10⁻⁶
+/// mm: the notches' depth), the same area to 10⁻⁵ mm² (+1.4·10⁻⁷), the same crashes.
+#[test]
+fn a_zig_zag_written_rounded_sweeps_its_repeated_feeds_as_one() {
+    let blank = Blank::bar(20.0, 10.0, 0.0, None).unwrap();
+    // the bench's tool: a sharp V 35°, 93°
+    let tools = ToolTable::from_tools(vec![(
+        1,
+        Tool::Turning {
+            insert: Insert::V,
+            nose_radius: 0.0,
+            tip: 3,
+            entering_angle: 93.0,
+            edge: 11.0,
+        },
+    )]);
+    let n = 5_200;
+    let mut segs = vec![
+        seg(Motion::Rapid, [1.0, 10.5], [1.0, 9.9]),
+        seg(Motion::Feed, [1.0, 9.9], [-1.0, 9.9]),
+    ];
+    let mut at = [-1.0, 9.9];
+    for k in 0..n {
+        let x = ((19.8 - 0.00004 * f64::from(k + 1)) * 1e4).round() / 1e4;
+        let to = [if k % 2 == 0 { -6.0 } else { -1.0 }, x / 2.0];
+        segs.push(seg(Motion::Feed, at, to));
+        at = to;
+    }
+    segs.push(seg(Motion::Rapid, at, [at[0], 10.5]));
+    assert!(segs.len() > crate::snapshot::EXACT_MAX_MOVES);
+    let single_opts = SimOptions {
+        pass_groups: false,
+        ..SimOptions::default()
+    };
+    let ruled = run(&blank, &tools, &segs);
+    let single = simulate(&blank, &tools, &segs, &single_opts, &mut |_| {});
+    let (v, v_single) = (vertices(&ruled), vertices(&single));
+    assert!(v < 40, "{v} vertices ({v_single} feed by feed)");
+    assert!(v_single > 1_000, "{v_single} vertices feed by feed");
+    let h = hausdorff(&ruled.final_shapes, &single.final_shapes);
+    assert!(
+        h <= SimOptions::default().merge_tol / 2.0,
+        "Hausdorff {h} mm"
+    );
+    let extra = ruled.removed_area - single.removed_area;
+    assert!((0.0..1e-5).contains(&extra), "{extra} mm²");
+    let crashes = |s: &Simulation| -> Vec<usize> { s.crashes.iter().map(|c| c.segment).collect() };
+    assert_eq!(crashes(&ruled), crashes(&single));
+}
+
 /// Passes more than `2·merge_tol` apart are stamped pass by pass: a deeper cut's notches
 /// are real geometry (the same part as with `merge_tol` 0).
 #[test]

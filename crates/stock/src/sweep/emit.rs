@@ -8,7 +8,7 @@ use crate::overlay::{inscribed_box, ring_perimeter, IBox};
 use crate::pass_group::{Lane, Offer, PassGroups};
 use crate::Shape;
 use expander::{Motion, Segment};
-use geom::flat::{bounds, clip_convex, pts, sweep_chain, sweep_convex, P};
+use geom::flat::{bounds, clip_convex, minkowski, pts, sweep_chain, sweep_convex, P};
 use std::sync::atomic::AtomicU32;
 use std::sync::Arc;
 
@@ -172,6 +172,18 @@ impl SweepBuilder<'_> {
             }
         }
         self.end(item, Origin::cut(idx), start, [0.0, 0.0]);
+    }
+
+    /// The sweep of a straight feed (move `idx`, from `start` along `dir`) that repeats
+    /// earlier passes: the outline's convex parts swept over the convex `region` the
+    /// passes' segments rule (see [`super::repeat`]), one convex polygon each.
+    pub(super) fn emit_ruled(&mut self, idx: usize, outline: &Outline, region: &[P], dir: (P, P)) {
+        self.close_group();
+        let item = self.begin();
+        for part in &outline.parts {
+            self.add(&minkowski(part, region), PolyKind::Hull, outline.past_axis);
+        }
+        self.end(item, Origin::cut(idx), dir.0, dir.1);
     }
 
     /// Offers a run's path to the pass groups: true when the open group took it; else the
@@ -427,7 +439,7 @@ impl SweepBuilder<'_> {
 }
 
 /// The unit vector of `d` (zero for a zero vector).
-fn unit(d: P) -> P {
+pub(super) fn unit(d: P) -> P {
     let len = d[0].hypot(d[1]);
     if len > 0.0 {
         [d[0] / len, d[1] / len]

@@ -9,6 +9,7 @@
 
 mod emit;
 mod notch;
+mod repeat;
 mod run;
 mod thread;
 
@@ -21,6 +22,7 @@ use emit::Origin;
 use expander::{Motion, Segment, ToolHint};
 use geom::flat::P;
 use geom::Rect;
+use repeat::Repeats;
 use run::Run;
 use std::ops::Range;
 use std::sync::atomic::AtomicU32;
@@ -192,6 +194,10 @@ pub(crate) struct SweepBuilder<'a> {
     scratch: Vec<P>,
     /// Where the stamps of a thread pass fall, carried from move to move.
     thread: ThreadStamps,
+    /// Thread moves that repeat an earlier pass ([`repeat::Repeats`]).
+    thread_runs: Repeats,
+    /// Single straight feeds that repeat an earlier pass, in long programs.
+    feed_runs: Repeats,
     /// Repeated passes merged into one sweep (see [`crate::pass_group`]); `None`: off.
     groups: Option<PassGroups>,
     /// (first segment index, message) for skipped moves and defaulted tools.
@@ -223,6 +229,8 @@ impl<'a> SweepBuilder<'a> {
             held: Sweeps::default(),
             scratch: Vec::new(),
             thread: ThreadStamps::default(),
+            thread_runs: Repeats::default(),
+            feed_runs: Repeats::default(),
             groups: None,
             warnings: Vec::new(),
             out: Sweeps::default(),
@@ -337,7 +345,7 @@ impl<'a> SweepBuilder<'a> {
             if let Some(stamps) = stamps {
                 let key = hint_key(seg.tool, seg.hint);
                 let accept = thread_step(&outline.parts, self.merge_tol);
-                let first = self.thread.repeats(key, &stamps, accept);
+                let first = self.thread_runs.repeats(key, &stamps, accept);
                 let at = (&stamps[..], first.as_deref());
                 self.emit_stamps(idx, outline, at, [seg.from.z, seg.from.r]);
                 return;
