@@ -4,8 +4,10 @@
 //! ends (a Minkowski sum with the move); arcs are chorded and their chords swept as one ring
 //! ([`geom::flat::sweep_chain`]); thread moves stamp the outline once per lead
 //! (`thread.rs`). Feeds merge into runs and paths (`run.rs`, with the bound on a merged
-//! chain's error); repeated passes into one group ([`crate::pass_group`]); `emit.rs` folds,
-//! clips and stores what comes out.
+//! chain's error); repeated passes into one group ([`crate::pass_group`]); a thread pass or
+//! a single feed that repeats an earlier one a little moved sweeps from where that run of
+//! passes began (`repeat.rs`, the notches between passes bounded in `notch.rs`); `emit.rs`
+//! folds, clips and stores what comes out.
 
 mod emit;
 mod notch;
