@@ -259,6 +259,152 @@ fn flank_infeed_passes_leave_no_zigzag_along_the_flank() {
     assert!(sim.crashes.is_empty() && sim.removed_area > 5.0);
 }
 
+/// Issue 32's CAM thread: single thread passes 0.0005 mm apart on the radius (0.001 on the
+/// diameter; and 0.001 mm, a G76's least depth of cut) with a round nose (a V insert,
+/// r0.4, 93°), each followed by its rapids. Stamped pass by pass (`merge_tol` 0), every
+/// pass leaves a notch of 10⁻⁵ mm where its nose meets the last pass's on a flank of each
+/// tooth (576 vertices for 120 passes), which the tiles split on. Swept from where the run
+/// of passes began, the part has the few vertices of its teeth (72), lies within the
+/// stated `merge_tol / 5` (10⁻⁴ mm) of the pass-by-pass part (8·10⁻⁶ and 1.6·10⁻⁵ mm: the
+/// notches' depth), and the rapids crash alike.
+#[test]
+fn repeated_thread_passes_leave_no_notch_a_pass() {
+    for step in [0.0005, 0.001] {
+        let (swept, exact) = thread_passes_both_ways(step);
+        let (n, n_exact) = (vertices(&swept), vertices(&exact));
+        assert!(n < 100, "{step}: {n} vertices ({n_exact} pass by pass)");
+        assert!(n_exact > 400, "{step}: {n_exact} vertices pass by pass");
+        let h = hausdorff(&swept.final_shapes, &exact.final_shapes);
+        let bound = SimOptions::default().merge_tol / 5.0;
+        assert!(h <= bound + 1e-6, "{step}: Hausdorff {h} mm");
+        // what the notches held (10⁻⁵ mm deep), filled: removed, never left
+        let extra = swept.removed_area - exact.removed_area;
+        let xor = symmetric_difference_area(&swept.final_shapes, &exact.final_shapes);
+        assert!(
+            (0.0..2e-5).contains(&extra) && xor < 2e-5,
+            "{step}: {extra} {xor}"
+        );
+        // the same crash: the first retract, its insert leaning over the last tooth
+        assert_eq!(swept.crashes.len(), 1);
+        assert_eq!(swept.crashes.len(), exact.crashes.len());
+        for (a, b) in swept.crashes.iter().zip(&exact.crashes) {
+            assert_eq!(a.segment, b.segment);
+            assert!((a.area - b.area).abs() < 1e-6, "{} {}", a.area, b.area);
+        }
+    }
+}
+
+/// 120 passes `step` apart (see [`repeated_thread_passes_leave_no_notch_a_pass`]), cut
+/// with the default options and pass by pass (`merge_tol` 0).
+fn thread_passes_both_ways(step: f64) -> (Simulation, Simulation) {
+    let blank = Blank::bar(20.0, 40.0, 0.0, None).unwrap();
+    let pass = |d: f64| {
+        let r = 8.5 - d;
+        let mut t = seg(Motion::Thread, [0.5, r], [-4.0, r]);
+        t.lead = 1.5;
+        [
+            seg(Motion::Rapid, [0.5, 10.0], [0.5, r]),
+            t,
+            seg(Motion::Rapid, [-4.0, r], [-4.0, 10.0]),
+            seg(Motion::Rapid, [-4.0, 10.0], [0.5, 10.0]),
+        ]
+    };
+    let segs: Vec<Segment> = (0..120).flat_map(|k| pass(step * f64::from(k))).collect();
+    let exact_opts = SimOptions {
+        merge_tol: 0.0,
+        ..SimOptions::default()
+    };
+    let swept = run(&blank, &v35(), &segs);
+    let exact = simulate(&blank, &v35(), &segs, &exact_opts, &mut |_| {});
+    (swept, exact)
+}
+
+/// Vertices of a run's part.
+fn vertices(s: &Simulation) -> usize {
+    s.final_shapes
+        .iter()
+        .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
+        .sum()
+}
+
+/// A zig-zag written with X to 0.0001 mm (`scripts/zigzag.py cut` at 10⁵ moves): each feed
+/// 0.00002 mm lower on the radius as computed, 0 or 0.00005 mm as written, so its steps are
+/// uneven and its passes never group; a back-and-forth at one X is one run. Cut feed by
+/// feed, the 93° side of the sharp insert leaves a notch of 3·10⁻⁶ mm at the turning
+/// point for each X written (the part of 5 200 moves: 4 243 vertices). Each feed that
+/// repeats an earlier one within `merge_tol` sweeps from where that run of passes began:
+/// 9 vertices, within the stated `merge_tol / 2` of the part cut feed by feed (2.6·10⁻⁶
+/// mm: the notches' depth), the same area to 10⁻⁵ mm² (+1.4·10⁻⁷), the same crashes.
+#[test]
+fn a_zig_zag_written_rounded_sweeps_its_repeated_feeds_as_one() {
+    let blank = Blank::bar(20.0, 10.0, 0.0, None).unwrap();
+    // the bench's tool: a sharp V 35°, 93°
+    let tools = ToolTable::from_tools(vec![(
+        1,
+        Tool::Turning {
+            insert: Insert::V,
+            nose_radius: 0.0,
+            tip: 3,
+            entering_angle: 93.0,
+            edge: 11.0,
+        },
+    )]);
+    let n = 5_200;
+    let mut segs = vec![
+        seg(Motion::Rapid, [1.0, 10.5], [1.0, 9.9]),
+        seg(Motion::Feed, [1.0, 9.9], [-1.0, 9.9]),
+    ];
+    let mut at = [-1.0, 9.9];
+    for k in 0..n {
+        let x = ((19.8 - 0.00004 * f64::from(k + 1)) * 1e4).round() / 1e4;
+        let to = [if k % 2 == 0 { -6.0 } else { -1.0 }, x / 2.0];
+        segs.push(seg(Motion::Feed, at, to));
+        at = to;
+    }
+    segs.push(seg(Motion::Rapid, at, [at[0], 10.5]));
+    assert!(segs.len() > crate::snapshot::EXACT_MAX_MOVES);
+    let single_opts = SimOptions {
+        pass_groups: false,
+        ..SimOptions::default()
+    };
+    let ruled = run(&blank, &tools, &segs);
+    let single = simulate(&blank, &tools, &segs, &single_opts, &mut |_| {});
+    let (v, v_single) = (vertices(&ruled), vertices(&single));
+    assert!(v < 40, "{v} vertices ({v_single} feed by feed)");
+    assert!(v_single > 1_000, "{v_single} vertices feed by feed");
+    let h = hausdorff(&ruled.final_shapes, &single.final_shapes);
+    assert!(
+        h <= SimOptions::default().merge_tol / 2.0,
+        "Hausdorff {h} mm"
+    );
+    let extra = ruled.removed_area - single.removed_area;
+    assert!((0.0..1e-5).contains(&extra), "{extra} mm²");
+    let crashes = |s: &Simulation| -> Vec<usize> { s.crashes.iter().map(|c| c.segment).collect() };
+    assert_eq!(crashes(&ruled), crashes(&single));
+}
+
+/// Passes more than `2·merge_tol` apart are stamped pass by pass: a deeper cut's notches
+/// are real geometry (the same part as with `merge_tol` 0).
+#[test]
+fn thread_passes_further_apart_than_twice_merge_tol_are_stamped_each() {
+    let blank = Blank::bar(20.0, 40.0, 0.0, None).unwrap();
+    let segs: Vec<Segment> = (0..6)
+        .map(|k| {
+            let r = 8.5 - 0.05 * f64::from(k);
+            let mut t = seg(Motion::Thread, [0.5, r], [-4.0, r]);
+            t.lead = 1.5;
+            t
+        })
+        .collect();
+    let exact_opts = SimOptions {
+        merge_tol: 0.0,
+        ..SimOptions::default()
+    };
+    let swept = run(&blank, &v35(), &segs);
+    let exact = simulate(&blank, &v35(), &segs, &exact_opts, &mut |_| {});
+    assert_eq!(swept.final_shapes, exact.final_shapes);
+}
+
 #[test]
 fn grooving_hints_choose_the_blade() {
     let blank = Blank::bar(50.0, 110.0, 0.0, None).unwrap();

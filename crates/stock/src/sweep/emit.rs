@@ -8,7 +8,7 @@ use crate::overlay::{inscribed_box, ring_perimeter, IBox};
 use crate::pass_group::{Lane, Offer, PassGroups};
 use crate::Shape;
 use expander::{Motion, Segment};
-use geom::flat::{bounds, clip_convex, pts, sweep_chain, sweep_convex, P};
+use geom::flat::{bounds, clip_convex, minkowski, pts, sweep_chain, sweep_convex, P};
 use std::sync::atomic::AtomicU32;
 use std::sync::Arc;
 
@@ -138,17 +138,52 @@ impl SweepBuilder<'_> {
         }
     }
 
-    /// The outline stamped at each of `at`, one sweep of move `idx` (a thread pass).
-    pub(super) fn emit_stamps(&mut self, idx: usize, outline: &Outline, at: &[P], start: P) {
+    /// The outline stamped at each of `at`, one sweep of move `idx` (a thread pass). When
+    /// the move repeats earlier passes whose run began at `first` (see
+    /// [`super::thread::ThreadStamps::repeats`]), each stamp is swept from there instead:
+    /// `outline ⊕ [first, at]`, the region the run's stamps cover with the notches between
+    /// them filled (a chorded nose moved by 0.0005 mm leaves a notch of 10⁻⁵ mm on each
+    /// flank, every pass: thousands of vertices for the tiles to split on), within
+    /// `merge_tol / 5` of them (see `thread_step`). Each pass's sweep then covers the one
+    /// before it, so a tile keeps one of them in its batch, not one boolean call every two
+    /// passes.
+    pub(super) fn emit_stamps(
+        &mut self,
+        idx: usize,
+        outline: &Outline,
+        (at, first): (&[P], Option<&[P]>),
+        start: P,
+    ) {
         self.close_group();
         let item = self.begin();
-        for p in at {
+        for (i, p) in at.iter().enumerate() {
             for part in &outline.parts {
-                let poly: Vec<P> = part.iter().map(|v| [v[0] + p[0], v[1] + p[1]]).collect();
+                let moved = |at: P| -> Vec<P> {
+                    part.iter().map(|v| [v[0] + at[0], v[1] + at[1]]).collect()
+                };
+                let poly: Vec<P> = match first {
+                    Some(first) => {
+                        let from = first[i];
+                        sweep_convex(&moved(from), [p[0] - from[0], p[1] - from[1]])
+                    }
+                    None => moved(*p),
+                };
                 self.add(&poly, PolyKind::Hull, outline.past_axis);
             }
         }
         self.end(item, Origin::cut(idx), start, [0.0, 0.0]);
+    }
+
+    /// The sweep of a straight feed (move `idx`, from `start` along `dir`) that repeats
+    /// earlier passes: the outline's convex parts swept over the convex `region` the
+    /// passes' segments rule (see [`super::repeat`]), one convex polygon each.
+    pub(super) fn emit_ruled(&mut self, idx: usize, outline: &Outline, region: &[P], dir: (P, P)) {
+        self.close_group();
+        let item = self.begin();
+        for part in &outline.parts {
+            self.add(&minkowski(part, region), PolyKind::Hull, outline.past_axis);
+        }
+        self.end(item, Origin::cut(idx), dir.0, dir.1);
     }
 
     /// Offers a run's path to the pass groups: true when the open group took it; else the
@@ -404,7 +439,7 @@ impl SweepBuilder<'_> {
 }
 
 /// The unit vector of `d` (zero for a zero vector).
-fn unit(d: P) -> P {
+pub(super) fn unit(d: P) -> P {
     let len = d[0].hypot(d[1]);
     if len > 0.0 {
         [d[0] / len, d[1] / len]

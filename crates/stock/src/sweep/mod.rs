@@ -4,10 +4,14 @@
 //! ends (a Minkowski sum with the move); arcs are chorded and their chords swept as one ring
 //! ([`geom::flat::sweep_chain`]); thread moves stamp the outline once per lead
 //! (`thread.rs`). Feeds merge into runs and paths (`run.rs`, with the bound on a merged
-//! chain's error); repeated passes into one group ([`crate::pass_group`]); `emit.rs` folds,
-//! clips and stores what comes out.
+//! chain's error); repeated passes into one group ([`crate::pass_group`]); a thread pass or
+//! a single feed that repeats an earlier one a little moved sweeps from where that run of
+//! passes began (`repeat.rs`, the notches between passes bounded in `notch.rs`); `emit.rs`
+//! folds, clips and stores what comes out.
 
 mod emit;
+mod notch;
+mod repeat;
 mod run;
 mod thread;
 
@@ -20,6 +24,7 @@ use emit::Origin;
 use expander::{Motion, Segment, ToolHint};
 use geom::flat::P;
 use geom::Rect;
+use repeat::Repeats;
 use run::Run;
 use std::ops::Range;
 use std::sync::atomic::AtomicU32;
@@ -191,6 +196,10 @@ pub(crate) struct SweepBuilder<'a> {
     scratch: Vec<P>,
     /// Where the stamps of a thread pass fall, carried from move to move.
     thread: ThreadStamps,
+    /// Thread moves that repeat an earlier pass ([`repeat::Repeats`]).
+    thread_runs: Repeats,
+    /// Single straight feeds that repeat an earlier pass, in long programs.
+    feed_runs: Repeats,
     /// Repeated passes merged into one sweep (see [`crate::pass_group`]); `None`: off.
     groups: Option<PassGroups>,
     /// (first segment index, message) for skipped moves and defaulted tools.
@@ -222,6 +231,8 @@ impl<'a> SweepBuilder<'a> {
             held: Sweeps::default(),
             scratch: Vec::new(),
             thread: ThreadStamps::default(),
+            thread_runs: Repeats::default(),
+            feed_runs: Repeats::default(),
             groups: None,
             warnings: Vec::new(),
             out: Sweeps::default(),
@@ -334,7 +345,11 @@ impl<'a> SweepBuilder<'a> {
                 .thread
                 .stamps((idx, seg), self.tol, continues, &mut self.warnings);
             if let Some(stamps) = stamps {
-                self.emit_stamps(idx, outline, &stamps, [seg.from.z, seg.from.r]);
+                let key = hint_key(seg.tool, seg.hint);
+                let accept = thread_step(&outline.parts, self.merge_tol);
+                let first = self.thread_runs.repeats(key, &stamps, accept);
+                let at = (&stamps[..], first.as_deref());
+                self.emit_stamps(idx, outline, at, [seg.from.z, seg.from.r]);
                 return;
             }
         }
@@ -381,6 +396,28 @@ impl<'a> SweepBuilder<'a> {
     pub(crate) fn take(&mut self) -> Sweeps {
         self.close_group();
         std::mem::take(&mut self.out)
+    }
+}
+
+/// Which steps between a thread's passes (of a tool whose outline has the convex `parts`)
+/// are swept as one ([`thread::ThreadStamps::repeats`]): up to `2·merge_tol` long (a step
+/// of 0.001 mm: a G76's least depth of cut), filling notches at most `merge_tol / 5` deep
+/// (10⁻⁴ mm by default; [`notch::notch_depth`]); none when `merge_tol` is 0. The last
+/// step asked for is remembered: a pass's stamps all move alike.
+fn thread_step(parts: &[Vec<P>], merge_tol: f64) -> impl FnMut(P) -> bool + '_ {
+    let mut last: Option<(P, bool)> = None;
+    move |w| {
+        if let Some((_, ok)) = last.filter(|(seen, _)| *seen == w) {
+            return ok;
+        }
+        // a step written as 0.002 mm on the diameter is 0.001 mm give or take 10⁻¹⁶
+        let ok = merge_tol > 0.0
+            && w[0].hypot(w[1]) <= 2.0 * merge_tol * (1.0 + 1e-9)
+            && parts
+                .iter()
+                .all(|p| notch::notch_depth(p, w) <= merge_tol / 5.0);
+        last = Some((w, ok));
+        ok
     }
 }
 

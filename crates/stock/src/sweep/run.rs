@@ -379,6 +379,9 @@ impl SweepBuilder<'_> {
             if self.offer_to_group(exact, &outline, &run) {
                 return;
             }
+            if exact && !run.flip && self.emit_repeated_feed(&outline, &run) {
+                return;
+            }
             self.emit_path(Origin::cut(run.last), &outline, &run.path);
         }
     }

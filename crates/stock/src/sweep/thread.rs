@@ -3,6 +3,9 @@
 use expander::Segment;
 use geom::flat::P;
 
+/// A tool as mounted under its hint ([`crate::tools::hint_key`]).
+pub(super) type ToolKey = (u32, u8, u64);
+
 /// Most stamps one thread move may make before it is swept continuously instead, with a
 /// warning (a real thread has a few hundred: 200 mm at 0.5 mm lead is 400; stamps that all
 /// overlap their neighbours cost the boolean engine about k², so 4 000 took 10 s).
