@@ -432,19 +432,27 @@ impl ThreadPasses {
     }
 }
 
-/// The threads' passes, each by the index of its first thread move (a chamfer pull-out
-/// continues it), grouped as [`Thread`] says.
+/// The threads' passes, each by the index of its main thread move (of a run of thread
+/// moves, the one that travels farthest in Z: a chamfer pull-out or a `LinuxCNC` G76 taper
+/// before or after it belongs to the same pass), grouped as [`Thread`] says.
 fn thread_groups(segments: &[Segment], tools: &ToolTable) -> Vec<(Surface, Vec<usize>)> {
     let mut groups: Vec<(Surface, Vec<usize>)> = vec![];
     let mut open = false;
-    for (i, s) in segments.iter().enumerate() {
-        match s.motion {
-            Motion::Rapid => {}
-            Motion::Feed => open = false,
+    let mut i = 0;
+    while i < segments.len() {
+        match segments[i].motion {
+            Motion::Rapid => i += 1,
+            Motion::Feed => {
+                open = false;
+                i += 1;
+            }
             Motion::Thread => {
-                if i > 0 && segments[i - 1].motion == Motion::Thread {
-                    continue; // the pull-out of the same pass
-                }
+                let run = segments[i..]
+                    .iter()
+                    .position(|s| s.motion != Motion::Thread)
+                    .map_or(segments.len(), |k| i + k);
+                let main = main_move(segments, i, run);
+                let s = &segments[main];
                 let surface = match tools.outline_for(s.tool, s.hint).0.bbox() {
                     Some((lo, hi)) if hi[1] < -lo[1] => Surface::Bore,
                     _ => Surface::Outer,
@@ -460,15 +468,23 @@ fn thread_groups(segments: &[Segment], tools: &ToolTable) -> Vec<(Surface, Vec<u
                             && s.from.z.min(s.to.z) < b
                     });
                 if joins {
-                    groups.last_mut().expect("joins an open group").1.push(i);
+                    groups.last_mut().expect("joins an open group").1.push(main);
                 } else {
-                    groups.push((surface, vec![i]));
+                    groups.push((surface, vec![main]));
                 }
                 open = true;
+                i = run;
             }
         }
     }
     groups
+}
+
+/// Of the thread moves `from..to` (one pass), the one that travels farthest in Z (the
+/// first of equals).
+fn main_move(segments: &[Segment], from: usize, to: usize) -> usize {
+    let dz = |k: usize| (segments[k].to.z - segments[k].from.z).abs();
+    (from..to).fold(from, |best, k| if dz(k) > dz(best) { k } else { best })
 }
 
 /// The crest of a thread between `z0` and `z1`: the highest outside or the lowest bore.
