@@ -50,8 +50,9 @@ pub(crate) struct Params {
     pub(crate) spring: u32,
     /// E: the taper's length along the drive line, 0 or more.
     pub(crate) taper: f64,
-    /// L bit 1 and bit 2: taper at the entry, at the exit.
+    /// L bit 1: a taper at the entry.
     pub(crate) entry_taper: bool,
+    /// L bit 2: a taper at the exit.
     pub(crate) exit_taper: bool,
 }
 

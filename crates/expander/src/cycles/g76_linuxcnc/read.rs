@@ -19,10 +19,11 @@ pub(super) fn params(
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Params, Diagnostic> {
     let at = c.span();
-    refuse_modes(c, modes)?;
     let unit = c.unit;
+    // LinuxCNC's order: the words first (a modal repeat without P says so), then the modes
     let pitch = pitch(c, at)?;
     let (i, j, k) = depths(c, at, modes.x_diameter)?;
+    refuse_modes(c, modes)?;
     let end_z = c.z_target()?.unwrap_or(c.start.z);
     let end_x = c.x_target()?;
     let degression = degression(c, warnings);
