@@ -304,3 +304,38 @@ fn what_linuxcnc_refuses_in_g76_is_an_alarm_at_its_word() {
     assert_eq!(code, 0, "{err}");
     assert!(err.contains("LinuxCNC cuts with R1"), "{err}");
 }
+
+/// The reference's own example (inch, G8): `G0 Z-0.5 X0.2` / `G76 P0.05 Z-1 I-.075 J0.008
+/// K0.045 Q29.5 L2 E0.045`. Without R the depth grows by J a pass: 0.008·n < 0.045 for
+/// n ≤ 5, then one pass at K (no H): 6 passes, each threading to E before its end and tapering
+/// out to the peak. Under G91 its Z is from the start: the same cycle.
+#[test]
+fn the_references_inch_example_and_its_incremental_twin() {
+    let abs = "G20 G18 G8 G90\nT4 M6\nS800 M3\nG0 Z-0.5 X0.2\nG76 P0.05 Z-1 I-.075 J0.008 K0.045 Q29.5 L2 E0.045\nM2\n";
+    let tp = toolpath(abs, Control::LinuxCnc);
+    let t = threads(&tp);
+    assert_eq!(t.len(), 12, "6 passes, each a thread and its exit taper");
+    let inch = 25.4;
+    let (over, out) = (t[10], t[11]);
+    assert!((over.to.z - (-1.0 + 0.045) * inch).abs() < 1e-9, "{over:?}");
+    assert!(
+        (over.to.r - (0.2 - 0.075 - 0.045) * inch).abs() < 1e-9,
+        "{over:?}"
+    );
+    assert!((out.to.z + inch).abs() < 1e-9 && (out.to.r - 0.125 * inch).abs() < 1e-9);
+    // the straight threads at P, the tapers at P·K/E along X (E = K: 45°, also P)
+    assert!(t.iter().all(|s| (s.lead - 0.05 * inch).abs() < 1e-12));
+    // pass 2 is 0.016 below the peak, shifted 0.016·tan 29.5° toward −Z from Z−0.5
+    let shift = 0.016 * 29.5f64.to_radians().tan();
+    assert!(
+        (t[2].from.z - (-0.5 - shift) * inch).abs() < 1e-9,
+        "{:?}",
+        t[2]
+    );
+    assert!((t[2].from.r - (0.2 - 0.075 - 0.016) * inch).abs() < 1e-9);
+    let inc = abs.replace("G76 P0.05 Z-1", "G91 G76 P0.05 Z-0.5");
+    let ends = |tp: &Toolpath| -> Vec<(f64, f64)> {
+        tp.segments.iter().map(|s| (s.to.z, s.to.r)).collect()
+    };
+    assert_eq!(ends(&toolpath(&inc, Control::LinuxCnc)), ends(&tp));
+}
