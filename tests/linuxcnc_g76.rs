@@ -199,6 +199,33 @@ fn the_same_thread_written_for_fanuc_g76_cuts_the_same_passes_and_section() {
         area(&sl),
         area(&sf)
     );
+    // LinuxCNC's usual Q29.5 against FANUC's 30° infeed (A at Z3 − 0.9·tan 29.5°): the rough
+    // passes differ by (K − depth)·(tan 30° − tan 29.5°) in Z, the last ones coincide, and
+    // every rough groove lies inside its last one: the same section
+    let (t29, s29) = simulate_with(OD, &Machine::for_control(Control::LinuxCnc), &blank, &tools);
+    let a29 = format!("Z{:.6}", 3.0 - 0.9 * 29.5f64.to_radians().tan());
+    let (tf29, sf29) = simulate_with(
+        &fanuc.replace("Z2.480385", &a29),
+        &Machine::for_control(Control::FanucA),
+        &blank,
+        &tools,
+    );
+    let (p29, pf29) = (threads(&t29), threads(&tf29));
+    assert!(
+        p29[0].from.dist(pf29[0].from) > 1e-4,
+        "the first passes differ"
+    );
+    assert!(
+        p29[13].from.dist(pf29[13].from) < 1e-6,
+        "the last passes coincide"
+    );
+    let h = stock::hausdorff(&s29.final_shapes, &sf29.final_shapes);
+    let h30 = stock::hausdorff(&sl.final_shapes, &sf.final_shapes);
+    eprintln!("Hausdorff to FANUC's section: Q30 {h30:.2e} mm, Q29.5 {h:.2e} mm");
+    assert!(
+        h <= 0.01,
+        "Hausdorff between the Q29.5 and 30° sections {h}"
+    );
 }
 
 #[test]
