@@ -9,9 +9,14 @@ The script writes the program and the tool table, times the whole `latsim run --
 process, then builds the very sweeps latsim builds (the convex hull of the insert at both
 ends of every move; the insert is convex) and times shapely's `union_all` of them and the
 `difference` from the bar (the booleans alone: building the polygons is not counted).
-It prints both times, the ratio and the two removed areas.
+It prints both times (wall clock and cpu), the ratios and the two removed areas.
 
     python3 benches/geos_compare.py [MOVES ...]        # default 10000 100000
+
+Environment: REPORTS=all runs latsim with all four reports (`--svg --png --html` beside
+`--json`: issue 32's figure); LATSIM=path times that binary instead of target/release/latsim;
+RUNS=n times n pairs (latsim, then GEOS) and prints the medians and the median of the
+pairs' ratios (default 1).
 
 Needs Python 3 and shapely 2 (installed into benches/.venv from PyPI when missing).
 Not part of `cargo test`.
@@ -116,33 +121,37 @@ for line in open({data!r}):
     pts = [(z0 + a, r0 + b) for a, b in insert] + [(z1 + a, r1 + b) for a, b in insert]
     polys.append(MultiPoint(pts).convex_hull)
 bar = box(-110.0, 0.0, 0.0, 62.5)
-t = time.perf_counter()
+t, c = time.perf_counter(), time.process_time()
 cut = shapely.union_all(polys)
 final = bar.difference(cut)
-dt = time.perf_counter() - t
-print(dt, bar.area - final.area)
+dt, dc = time.perf_counter() - t, time.process_time() - c
+print(dt, dc, bar.area - final.area)
 """
     out = subprocess.run([py, "-c", code], check=True, capture_output=True, text=True).stdout
-    dt, removed = out.split()
-    return float(dt), float(removed)
+    dt, dc, removed = out.split()
+    return float(dt), float(dc), float(removed)
 
 
 def latsim_seconds(nc, tools, workdir):
-    binary = os.path.join(ROOT, "target", "release", "latsim")
+    binary = os.environ.get("LATSIM") or os.path.join(ROOT, "target", "release", "latsim")
     if not os.path.exists(binary):
         subprocess.run(["cargo", "build", "--release", "--locked"], cwd=ROOT, check=True)
     js = os.path.join(workdir, "out.json")
-    t = time.perf_counter()
-    subprocess.run(
-        [binary, "run", nc, "--stock", "125x110", "--tools", tools, "--json", js, "--quiet"],
-        check=False,
-        capture_output=True,
-    )
-    dt = time.perf_counter() - t
+    args = [binary, "run", nc, "--stock", "125x110", "--tools", tools, "--json", js, "--quiet"]
+    if os.environ.get("REPORTS") == "all":
+        out = os.path.join(workdir, "out")
+        args += ["--svg", out + ".svg", "--png", out + ".png", "--html", out + ".html"]
     import json
+    import resource
 
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t = time.perf_counter()
+    subprocess.run(args, check=False, capture_output=True)
+    dt = time.perf_counter() - t
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    dc = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     with open(js) as f:
-        return dt, json.load(f)["removed_area_mm2"]
+        return dt, dc, json.load(f)["removed_area_mm2"]
 
 
 def main():
@@ -151,7 +160,10 @@ def main():
         return
     sizes = [int(a) for a in sys.argv[1:]] or [10_000, 100_000]
     py = ensure_shapely()
-    print("| moves | latsim (whole process) s | GEOS booleans s | ratio | removed latsim / GEOS mm² |")
+    print(
+        "| moves | latsim (whole process) wall / cpu s | GEOS booleans wall / cpu s "
+        "| ratio wall / cpu | removed latsim / GEOS mm² |"
+    )
     print("|---:|---:|---:|---:|---|")
     for n in sizes:
         with tempfile.TemporaryDirectory() as d:
@@ -162,9 +174,23 @@ def main():
                 f.write(program(mv))
             with open(tools, "w") as f:
                 f.write(TOOLS)
-            t_l, a_l = latsim_seconds(nc, tools, d)
-            t_g, a_g = geos_seconds(py, mv, d)
-            print(f"| {len(mv)} | {t_l:.3f} | {t_g:.3f} | {t_g / t_l:.1f}× | {a_l:.2f} / {a_g:.2f} |")
+            # in turn, latsim then GEOS, so a box whose speed drifts slows both of a pair;
+            # each figure is a median, each ratio the median of the pairs' ratios
+            runs = int(os.environ.get("RUNS", "1"))
+            pairs = [(latsim_seconds(nc, tools, d), geos_seconds(py, mv, d)) for _ in range(runs)]
+
+            def median(values):
+                return sorted(values)[runs // 2]
+
+            lw, lc = median(l[0] for l, _ in pairs), median(l[1] for l, _ in pairs)
+            gw, gc = median(g[0] for _, g in pairs), median(g[1] for _, g in pairs)
+            rw = median(g[0] / l[0] for l, g in pairs)
+            rc = median(g[1] / l[1] for l, g in pairs)
+            a_l, a_g = pairs[0][0][2], pairs[0][1][2]
+            print(
+                f"| {len(mv)} | {lw:.3f} / {lc:.3f} | {gw:.3f} / {gc:.3f} "
+                f"| {rw:.1f}× / {rc:.1f}× | {a_l:.2f} / {a_g:.2f} |"
+            )
 
 
 if __name__ == "__main__":

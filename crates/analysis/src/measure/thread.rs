@@ -430,19 +430,27 @@ impl ThreadPasses {
     }
 }
 
-/// The threads' passes, each by the index of its first thread move (a chamfer pull-out
-/// continues it), grouped as [`Thread`] says.
+/// The threads' passes, each by the index of its main thread move (of a run of thread
+/// moves, the one most nearly along Z: a chamfer pull-out or a `LinuxCNC` G76 taper before
+/// or after it belongs to the same pass), grouped as [`Thread`] says.
 fn thread_groups(segments: &[Segment], tools: &ToolTable) -> Vec<(Surface, Vec<usize>)> {
     let mut groups: Vec<(Surface, Vec<usize>)> = vec![];
     let mut open = false;
-    for (i, s) in segments.iter().enumerate() {
-        match s.motion {
-            Motion::Rapid => {}
-            Motion::Feed => open = false,
+    let mut i = 0;
+    while i < segments.len() {
+        match segments[i].motion {
+            Motion::Rapid => i += 1,
+            Motion::Feed => {
+                open = false;
+                i += 1;
+            }
             Motion::Thread => {
-                if i > 0 && segments[i - 1].motion == Motion::Thread {
-                    continue; // the pull-out of the same pass
-                }
+                let run = segments[i..]
+                    .iter()
+                    .position(|s| s.motion != Motion::Thread)
+                    .map_or(segments.len(), |k| i + k);
+                let main = main_move(segments, i, run);
+                let s = &segments[main];
                 let surface = match tools.outline_for(s.tool, s.hint).0.bbox() {
                     Some((lo, hi)) if hi[1] < -lo[1] => Surface::Bore,
                     _ => Surface::Outer,
@@ -458,15 +466,34 @@ fn thread_groups(segments: &[Segment], tools: &ToolTable) -> Vec<(Surface, Vec<u
                             && s.from.z.min(s.to.z) < b
                     });
                 if joins {
-                    groups.last_mut().expect("joins an open group").1.push(i);
+                    groups.last_mut().expect("joins an open group").1.push(main);
                 } else {
-                    groups.push((surface, vec![i]));
+                    groups.push((surface, vec![main]));
                 }
                 open = true;
+                i = run;
             }
         }
     }
     groups
+}
+
+/// Of the thread moves `from..to` (one pass), the one most nearly along Z (the first of
+/// equals): the thread itself, not a chamfer pull-out or a taper, however long they are.
+fn main_move(segments: &[Segment], from: usize, to: usize) -> usize {
+    let slope = |k: usize| {
+        let s = &segments[k];
+        let dz = (s.to.z - s.from.z).abs();
+        if dz > 0.0 {
+            (s.to.r - s.from.r).abs() / dz
+        } else {
+            f64::INFINITY
+        }
+    };
+    (from..to).fold(
+        from,
+        |best, k| if slope(k) < slope(best) { k } else { best },
+    )
 }
 
 /// The crest of a thread between `z0` and `z1`: the highest outside or the lowest bore.
@@ -539,6 +566,40 @@ mod tests {
             outer,
             holes: vec![],
         }]
+    }
+
+    /// A thread move from `(z0, r0)` to `(z1, r1)`.
+    fn thread_move(z0: f64, r0: f64, z1: f64, r1: f64) -> Segment {
+        Segment {
+            motion: Motion::Thread,
+            from: expander::Pt::new(z0, r0),
+            to: expander::Pt::new(z1, r1),
+            arc: None,
+            tool: 4,
+            hint: expander::ToolHint::Table,
+            lead: 1.5,
+            thread_phase: 0.0,
+            feed: expander::FeedId::default(),
+            span: Span::default(),
+        }
+    }
+
+    #[test]
+    fn the_main_move_of_a_pass_is_the_one_most_nearly_along_z() {
+        // a short thread and a long 45° pull-out: the thread, however short
+        let pass = [
+            thread_move(2.0, 9.5, -1.0, 9.5),
+            thread_move(-1.0, 9.5, -9.0, 17.5),
+        ];
+        assert_eq!(main_move(&pass, 0, 2), 0);
+        // LinuxCNC's tapered pass: radial in, taper in, thread, taper out
+        let pass = [
+            thread_move(3.0, 16.3, 3.0, 16.0),
+            thread_move(3.0, 16.0, 2.5, 15.4),
+            thread_move(2.5, 15.4, -19.5, 15.4),
+            thread_move(-19.5, 15.4, -20.0, 16.3),
+        ];
+        assert_eq!(main_move(&pass, 0, 4), 2);
     }
 
     fn thread_along(root: f64, lead: f64, starts: usize) -> Thread {

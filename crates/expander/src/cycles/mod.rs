@@ -15,6 +15,7 @@ mod g73;
 mod g74_g75;
 pub(crate) mod g75_1;
 mod g76;
+pub(crate) mod g76_linuxcnc;
 mod g90;
 mod g92;
 mod g94;
@@ -140,6 +141,8 @@ pub(crate) struct Cycle<'a, 'b> {
     pub(crate) feed_mm: f64,
     /// Where a drilling cycle returns (G98/G99 in systems B/C; the profile elsewhere).
     pub(crate) drill_return: crate::DrillReturn,
+    /// The modes a `LinuxCNC` G76 reads (G7, compensation, spindle).
+    pub(crate) linuxcnc: g76_linuxcnc::Modes,
 }
 
 /// What a cycle made.
@@ -296,6 +299,7 @@ pub(crate) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         G71 | G72 => g71_g72::run(c),
         G73 => g73::run(c),
         G76 => g76::run(c),
+        crate::linuxcnc::CYCLE_G76 => g76_linuxcnc::run(c),
         t if drill::is_drill(t) => drill::run(c),
         _ => Err(not_implemented(c)),
     }
@@ -321,6 +325,7 @@ pub(crate) fn name(tenths: i32) -> &'static str {
         G75 => "G75 (radial grooving cycle)",
         G75_1 => "G75.1 (radial trapezoid groove cycle)",
         G76 => "G76 (multiple threading cycle)",
+        crate::linuxcnc::CYCLE_G76 => "G76 (LinuxCNC threading cycle)",
         G90 => "G90 (axial turning cycle)",
         G92 => "G92 (threading cycle)",
         G94 => "G94 (face turning cycle)",
@@ -339,6 +344,7 @@ pub(crate) fn is_cycle(tenths: i32) -> bool {
         tenths,
         G70 | G71 | G72 | G73 | G74 | G75 | G75_1 | G76 | G90 | G92 | G94
     ) || drill::is_drill(tenths)
+        || tenths == crate::linuxcnc::CYCLE_G76
 }
 
 /// Whether a cycle is modal (group 01): later blocks with only coordinates repeat it.

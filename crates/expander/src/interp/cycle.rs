@@ -42,9 +42,18 @@ impl Interp<'_> {
                 thread_chamfer: self.thread_chamfer,
                 feed_mm,
                 drill_return: self.drill_return,
+                linuxcnc: cycles::g76_linuxcnc::Modes {
+                    x_diameter: self.x_diameter,
+                    compensating: self.comp.is_some(),
+                    spindle_turning: self.spindle_on,
+                },
             };
             cycles::run(&mut c)?
         };
+        if code == crate::linuxcnc::CYCLE_G76 {
+            // modal in LinuxCNC: a block of axis words repeats it
+            self.motion = super::MotionMode::Cycle(code);
+        }
         let mut out = out;
         self.out.warnings.append(&mut out.warnings);
         self.out.dwell_s += out.dwell_s;

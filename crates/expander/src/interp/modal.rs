@@ -241,7 +241,6 @@ impl Interp<'_> {
         }
         let cycle = match t {
             crate::linuxcnc::CYCLE_G70 => "G70",
-            crate::linuxcnc::CYCLE_G76 => "G76",
             t if (crate::linuxcnc::CYCLE_G72 - 2..=crate::linuxcnc::CYCLE_G71).contains(&t) => {
                 "G71/G72"
             }
