@@ -180,3 +180,175 @@ fn linuxcnc_codes_latsim_does_not_run_are_alarms_at_their_word() {
         out.stderr
     );
 }
+
+/// Subroutines with arguments and a return value, `if`/`elseif`/`else`, `while`, `repeat`
+/// and `do … while` with `continue` and `break` ([O]): the path worked out by hand.
+#[test]
+fn o_word_subroutines_and_flow_run_as_linuxcnc_runs_them() {
+    let prog = "G18 G21 G7 G90 G95\nT1 M6 G43\n\
+o100 sub\n  G0 X#1 Z2\n  G1 Z#2 F0.2\n  G0 X[#1+4] Z2\no100 endsub [#1 * 2]\n\
+o<face> sub\n  o10 if [#1 GT 50]\n    G0 X#1 Z0\n  o10 elseif [#1 GT 30]\n    G0 X[#1+1] Z0\n  o10 else\n    G0 X[#1+2] Z0\n  o10 endif\no<face> endsub\n\
+#1 = 40\n\
+o1 while [#1 GT 30]\n  o100 call [#1] [-20]\n  #1 = [#1 - 4]\no1 endwhile\n\
+G0 X#<_value> Z5\n\
+o<face> call [60]\no<face> call [40]\no<face> call [20]\n\
+o2 repeat [3]\n  G91 G0 Z1\no2 endrepeat\nG90\n\
+#3 = 0\no3 do\n  #3 = [#3 + 1]\n  o4 if [#3 EQ 2]\n    o3 continue\n  o4 endif\n  o5 if [#3 EQ 4]\n    o3 break\n  o5 endif\no3 while [#3 LT 10]\n\
+G0 X#<_value> Z#3\nM2\n";
+    let p = path(prog, "linuxcnc");
+    assert_eq!(
+        p,
+        [
+            // o100 call [40] [-20], [36], [32]: #1 of the caller stays 40, 36, 32
+            "rapid,150,250,2,40,,,,1",
+            "feed,2,40,-20,40,,,,1",
+            "rapid,-20,40,2,44,,,,1",
+            "rapid,2,44,2,36,,,,1",
+            "feed,2,36,-20,36,,,,1",
+            "rapid,-20,36,2,40,,,,1",
+            "rapid,2,40,2,32,,,,1",
+            "feed,2,32,-20,32,,,,1",
+            "rapid,-20,32,2,36,,,,1",
+            // #<_value> = 2 × 32 from the last endsub
+            "rapid,2,36,5,64,,,,1",
+            // o<face>: 60 > 50; 40 > 30: 41; else 22
+            "rapid,5,64,0,60,,,,1",
+            "rapid,0,60,0,41,,,,1",
+            "rapid,0,41,0,22,,,,1",
+            // repeat [3]: three steps of 1 mm
+            "rapid,0,22,1,22,,,,1",
+            "rapid,1,22,2,22,,,,1",
+            "rapid,2,22,3,22,,,,1",
+            // o<face> returned no value: #<_value> cleared to 0 by its call; break at #3 = 4
+            "rapid,3,22,4,0,,,,1",
+        ]
+    );
+}
+
+/// The loop guard of issue 37 watches o-word loops: a `while` whose state never changes
+/// is an alarm at once, at its `endwhile`; a `do … while [1]` at its `while`; loops that
+/// count to 1000 run to their end.
+#[test]
+fn o_word_loops_meet_the_loop_guard() {
+    let (code, err) = check("G7 G0 X30 Z2\no1 while [1]\n  G0 X30 Z2\no1 endwhile\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("endless loop"), "{err}");
+    assert!(err.contains("p.ngc:4:1"), "{err}");
+    assert!(err.contains("o… break"), "{err}");
+    let (code, err) = check("G7 G0 X30 Z2\no3 do\n  G0 X30\no3 while [1]\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("endless loop") && err.contains("p.ngc:4:1"),
+        "{err}"
+    );
+    let counting = "G7 G0 X30 Z2\n#1 = 0\no1 while [#1 LT 1000]\n  G0 X30 Z2\n  #1 = [#1 + 1]\no1 endwhile\no2 repeat [1000]\n  G0 X30\no2 endrepeat\n#2 = 0\no3 do\n  #2 = [#2 + 1]\no3 while [#2 LT 1000]\nG0 X#1 Z[#2 / 100]\nM2\n";
+    let p = path(counting, "linuxcnc");
+    assert_eq!(p.last().unwrap(), "rapid,2,30,10,1000,,,,1", "{p:?}");
+}
+
+/// Badly formed o-words are read errors (exit 2: a statement that does not read) or
+/// alarms before the run (exit 1: the structure, as FANUC's DO/END) at their line and
+/// column, never a panic.
+#[test]
+fn o_word_mistakes_are_named_at_their_place() {
+    for (text, at, says, exit) in [
+        (
+            "o1 endwhile",
+            "p.ngc:2:1",
+            "o1 endwhile without o1 while",
+            1,
+        ),
+        ("o1 if [1]\nG0 X1", "p.ngc:2:1", "o1 if without o1 endif", 1),
+        (
+            "o2 call",
+            "p.ngc:2:1",
+            "o2 call: the subroutine is not defined",
+            1,
+        ),
+        ("o<x> call [1]", "p.ngc:2:1", "x.ngc", 1),
+        (
+            "o1 sub\no2 sub\no2 endsub\no1 endsub",
+            "p.ngc:3:1",
+            "inside the definition of o1",
+            1,
+        ),
+        (
+            "o1 while [1]\no2 if [1]\no1 endwhile\no2 endif",
+            "p.ngc:4:1",
+            "must not cross",
+            1,
+        ),
+        ("o1 break", "p.ngc:2:1", "o1 break outside", 1),
+        (
+            "o1 if [1]\no1 else\no1 elseif [2]\no1 endif",
+            "p.ngc:4:1",
+            "elseif after o1 else",
+            1,
+        ),
+        (
+            "o1 repeat\no1 endrepeat",
+            "p.ngc:2:10",
+            "needs its value in brackets",
+            2,
+        ),
+        ("o1 frob", "p.ngc:2:4", "o1 needs a keyword", 2),
+        (
+            "o1 sub\no1 endsub\no1 sub\no1 endsub",
+            "p.ngc:4:1",
+            "defined twice",
+            1,
+        ),
+        ("o1 return", "p.ngc:2:1", "o1 return outside", 1),
+    ] {
+        let (code, err) = check(&format!("G7 G0 X30 Z2\n{text}\nM2\n"));
+        assert_eq!(code, exit, "{text}: {err}");
+        assert!(err.contains(at), "{text}: {err}");
+        assert!(err.contains(says), "{text}: {err}");
+    }
+}
+
+/// `#<name>` is local to the call level it is set in, `#<_name>` global ([OV] "Named
+/// Parameters"); `EXISTS[#<name>]` asks without reading; reading one never set is an error.
+#[test]
+fn named_parameters_are_local_or_global_by_name() {
+    let prog = "G7 G0 X30 Z2\n#<d> = 20\n\
+o1 sub\n  o2 if [EXISTS[#<d>]]\n    G0 X99\n  o2 endif\n  #<d> = 50\n  #<_g> = [#<d> + #1]\no1 endsub\n\
+o1 call [3]\nG0 X#<d> Z1\nG0 X#<_g> Z0\nM2\n";
+    let p = path(prog, "linuxcnc");
+    assert_eq!(
+        p[1..],
+        ["rapid,2,30,1,20,,,,1", "rapid,1,20,0,53,,,,1"],
+        "{p:?}"
+    );
+    let (code, err) =
+        check("G7 G0 X30 Z2\n#<d> = 20\no1 sub\n  G0 X#<d>\no1 endsub\no1 call\nM2\n");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("#<d> is not defined") && err.contains("p.ngc:4:7"),
+        "{err}"
+    );
+    // names are read without blanks and case (LinuxCNC: #<Tool Dia> is #<tooldia>)
+    let p = path("G7\n#<Tool Dia> = 12\nG0 X#<tooldia> Z1\nM2\n", "linuxcnc");
+    assert_eq!(p[0], "rapid,150,250,1,12,,,,1");
+}
+
+/// FANUC's macro statements are not `LinuxCNC` syntax: a read error naming the o-words.
+#[test]
+fn fanuc_macro_flow_is_an_error_under_linuxcnc() {
+    for (text, word) in [
+        ("IF [#1 EQ 1] GOTO 10", "IF"),
+        ("WHILE [#1 LT 2] DO1\nEND1", "WHILE"),
+        ("GOTO 10", "GOTO"),
+    ] {
+        let (code, err) = check(&format!("G7 G0 X30 Z2\n{text}\nN10 M2\n"));
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains(&format!("{word} is FANUC macro B, not LinuxCNC")),
+            "{err}"
+        );
+        assert!(
+            err.contains("o100 while") && err.contains("p.ngc:2:1"),
+            "{err}"
+        );
+    }
+}

@@ -28,6 +28,8 @@ use std::sync::Arc;
 const MAX_NESTING: u32 = 4;
 /// Haas nests subprogram calls up to 9 levels (S15; **Interpretation** for M97/M98).
 const MAX_NESTING_HAAS: u32 = 9;
+/// `LinuxCNC` nests subroutine calls up to 10 levels ([O] "Subroutines").
+const MAX_NESTING_LINUXCNC: u32 = 10;
 
 /// What a call runs.
 pub(super) enum Callee {
@@ -40,6 +42,8 @@ pub(super) enum Callee {
     File(String),
     /// The blocks from this N number of the calling program (Haas M97).
     Local(u32),
+    /// The blocks from this index of the calling program (`LinuxCNC`'s `o… call`).
+    At(usize),
 }
 
 /// How an O program was left.
@@ -245,10 +249,10 @@ impl Interp<'_> {
         depth: u32,
         (callee, times, span, locals): (Callee, u32, Span, Option<Box<macro_b::Locals>>),
     ) -> Result<Called, Diagnostic> {
-        let limit = if self.machine.control == Control::Haas {
-            MAX_NESTING_HAAS
-        } else {
-            MAX_NESTING
+        let limit = match self.machine.control {
+            Control::Haas => MAX_NESTING_HAAS,
+            Control::LinuxCnc => MAX_NESTING_LINUXCNC,
+            _ => MAX_NESTING,
         };
         if depth + 1 > limit {
             return Err(alarm(
@@ -295,6 +299,7 @@ impl Interp<'_> {
                 return Ok(Target::Here(index, from));
             }
             Callee::File(ref path) => return self.file(path, span),
+            Callee::At(from) => return Ok(Target::Here(index, from)),
             Callee::Program(n) | Callee::Modal(n) => n,
         };
         if let Some(sub) = program

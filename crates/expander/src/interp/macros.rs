@@ -19,6 +19,8 @@ use macro_b::{
 };
 use std::borrow::Cow;
 
+mod o_words;
+
 /// The macro side of a run.
 pub(crate) struct Macros {
     state: MacroState,
@@ -149,6 +151,7 @@ fn code(kind: ErrorKind) -> &'static str {
         | ErrorKind::LoopNesting
         | ErrorKind::LoopCrossing
         | ErrorKind::IfStructure => "PS0124",
+        ErrorKind::OWordStructure => "LS-O-WORD",
         ErrorKind::Budget => "LS-LOOP",
         ErrorKind::CallDepth => "PS077",
         ErrorKind::ProgramMissing => "PS078",
@@ -275,6 +278,19 @@ impl Macros {
                     return Ok(None);
                 }
                 Flow::Next
+            }
+            StmtKind::OWord {
+                label,
+                keyword,
+                args,
+            } => {
+                let w = o_words::OWord {
+                    label,
+                    keyword: *keyword,
+                    args,
+                    span: stmt.span,
+                };
+                self.o_word((index, i), &w, sys)?
             }
         }))
     }
@@ -507,6 +523,13 @@ impl Interp<'_> {
             .report()
             .into_iter()
             .map(|v| (format!("#{}", v.number), v.value.get()))
+            .chain(
+                m.state
+                    .vars
+                    .named_report()
+                    .into_iter()
+                    .map(|(n, v)| (format!("#<{n}>"), v.get())),
+            )
             .collect();
         let mut lines: Vec<(u32, u64)> = Vec::new();
         for (sub, counts) in program.programs.iter().zip(&m.counts) {

@@ -11,9 +11,10 @@ impl Reader<'_> {
     /// Whether a macro statement starts at `span` (macro B on, nothing but an N word read
     /// of the block).
     pub(super) fn statement_starts(&self, span: Span) -> bool {
-        self.options.macros.is_some()
-            && self.at_statement_start()
-            && macro_b::starts_statement(&self.src[span.offset as usize..])
+        self.options.macros.is_some_and(|dialect| {
+            self.at_statement_start()
+                && macro_b::starts_statement_in(&self.src[span.offset as usize..], dialect)
+        })
     }
 
     /// A macro statement from `start` (already read) to the end of the block.
