@@ -145,6 +145,12 @@ fn semicolon_comments_and_msg_read_silently_under_linuxcnc_only() {
     let (code, err) = check(prog);
     assert_eq!(code, 0, "{err}");
     assert!(!err.contains("read as a comment"), "{err}");
+    // the rest of the line after `;` is a comment, whatever it holds; `%` in a comment is
+    // text (`(debug, %.3f#1)`); an M2 inside an o-word `if` leaves the endif reachable
+    let prog2 = "G7\n#1 = [2 * 3]; X\n(debug, %.3f#1)\no1 if [#1 GT 9]\n  M2\no1 endif\nG0 X#1 Z1 ; >= 2\nM2\n";
+    let (code, err) = check(prog2);
+    assert_eq!((code, err.as_str()), (0, ""));
+    assert_eq!(path(prog2, "linuxcnc"), ["rapid,150,250,1,6,,,,1"]);
     let (_dir, p) = temp_program("p.nc", prog.replace("G7 ", "").as_bytes());
     let out = latsim(&["check", p.to_str().unwrap(), "--control", "fanuc-a"]);
     assert!(out.stderr.contains("read as a comment"), "{}", out.stderr);
