@@ -161,7 +161,6 @@ fn linuxcnc_codes_latsim_does_not_run_are_alarms_at_their_word() {
     for (prog, word, col) in [
         ("G7 G0 X30 Z2\nG5 X1 Z1 I1 J1 P1 Q1\nM2\n", "G5", 1),
         ("G7 G0 X30 Z2\nG0 G33.1 Z-5 K1\nM2\n", "G33.1", 4),
-        ("G7 G0 X30 Z2\nG70 Q100 X30 Z2\nM2\n", "G70", 1),
         ("G7 G0 X30 Z2\nG76 P1.5 Z-10 I-1 J0.1 K0.9\nM2\n", "G76", 1),
     ] {
         let (code, err) = check(prog);
@@ -357,4 +356,176 @@ fn fanuc_macro_flow_is_an_error_under_linuxcnc() {
             "{err}"
         );
     }
+}
+
+/// The profile of the pawn-like job below (diameters), the same blocks in both programs.
+const PAWN_PROFILE: &str =
+    "G1 X0 Z0\nG3 X12 Z-6 R6\nG1 X8 Z-10\nZ-14\nX20 Z-20\nZ-26\nX28 Z-30\nZ-36\nX32\n";
+
+/// The pawn-like job written the `LinuxCNC` way (profile in o100, G71.1 without the pocket,
+/// G71.2 with it, G70) leaves the same part as the job written for FANUC (G71 type II with
+/// P/Q blocks, G70): the final sections within the simulation's chord tolerance (0.001 mm).
+#[test]
+fn pawn_job_with_g71_1_g71_2_g70_equals_the_fanuc_job() {
+    let lcnc = format!(
+        "G18 G21 G7 G90 G95\nT1 M6 G43\nG96 D2500 S180 M3\nF0.2\no100 sub\n{PAWN_PROFILE}o100 endsub\nG0 X32 Z2\nG71.1 Q100 X32 Z2 D0.5 I1.5 R0.5\nG71.2 Q100 X32 Z2 D0.5 I1.5 R0.5\nG70 Q100 X32 Z2\nG0 X60 Z50\nM2\n"
+    );
+    let numbered: String = PAWN_PROFILE
+        .lines()
+        .enumerate()
+        .map(|(i, l)| format!("N{} {l}\n", 10 + i))
+        .collect();
+    let fanuc = format!(
+        "O1\nG18 G21 G99\nT0101\nG50 S2500\nG96 S180 M3\nG0 X32 Z2\nG71 U1.5 R0.5\nG71 P10 Q18 U1.0 W0.5 F0.2\n{numbered}G70 P10 Q18\nG0 X60 Z50\nM30\n"
+    );
+    let tools = stock::ToolTable::from_toml(
+        &std::fs::read_to_string(asset("corpus/tools/shop.toml")).unwrap(),
+    )
+    .unwrap();
+    let blank = stock::Blank::bar(32.0, 50.0, 0.0, None).unwrap();
+    let read = gcode::ReadOptions {
+        macros: Some(macro_b::Dialect::LinuxCnc),
+        ..Default::default()
+    };
+    let run = |text: &str, control, read| {
+        let p = gcode::parse_with(text, read).unwrap();
+        let opts = expander::Options {
+            tools: tools.facts(),
+            macros: read.macros.map(|d| match d {
+                macro_b::Dialect::LinuxCnc => macro_b::Options::linuxcnc(),
+                _ => macro_b::Options::fanuc(),
+            }),
+            ..Default::default()
+        };
+        let tp = expander::expand(&p, &expander::Machine::for_control(control), &opts);
+        assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+        let sim = stock::simulate(
+            &blank,
+            &tools,
+            &tp.segments,
+            &stock::SimOptions::default(),
+            &mut |_| {},
+        );
+        (tp, sim)
+    };
+    let (tl, sl) = run(&lcnc, expander::Control::LinuxCnc, read);
+    let (tf, sf) = run(
+        &fanuc,
+        expander::Control::FanucA,
+        gcode::ReadOptions::default(),
+    );
+    let h = stock::hausdorff(&sl.final_shapes, &sf.final_shapes);
+    eprintln!(
+        "LinuxCNC {} moves, FANUC {} moves, Hausdorff {h:.6} mm",
+        tl.segments.len(),
+        tf.segments.len()
+    );
+    assert!(h <= 0.001, "Hausdorff between the final sections {h}");
+    // the part is the profile: Φ8 in the neck's pocket (Z-10 … Z-14)
+    let neck = |s: &stock::Simulation| surface_diameter(s, -12.0);
+    assert!((neck(&sl) - 8.0).abs() < 0.01, "neck Φ{}", neck(&sl));
+    // G71.1 alone does not cut the pocket: it bridges it at Φ12 + 2 × D
+    let only_1 = lcnc
+        .replace("G71.2 Q100 X32 Z2 D0.5 I1.5 R0.5\n", "")
+        .replace("G70 Q100 X32 Z2\n", "");
+    let (_, s1) = run(&only_1, expander::Control::LinuxCnc, read);
+    assert!(
+        (neck(&s1) - 13.0).abs() < 0.01,
+        "G71.1 at the neck: Φ{}",
+        neck(&s1)
+    );
+}
+
+/// The diameter of the part's outer surface at `z`: where the outline's edges cross z,
+/// the largest radius, doubled.
+fn surface_diameter(sim: &stock::Simulation, z: f64) -> f64 {
+    let mut r = f64::MIN;
+    for shape in &sim.final_shapes {
+        let pts = &shape.outer;
+        for k in 0..pts.len() {
+            let (a, b) = (pts[k], pts[(k + 1) % pts.len()]);
+            if (a[0] - z) * (b[0] - z) <= 0.0 && a[0] != b[0] {
+                let t = (z - a[0]) / (b[0] - a[0]);
+                r = r.max(a[1] + t * (b[1] - a[1]));
+            }
+        }
+    }
+    2.0 * r
+}
+
+/// G70 Q D E P ([G] "G70"): pass k of P at distance (k − 1)(D − E)/P + E off the profile
+/// toward the start point, each from a rapid to the start point and to the profile's start;
+/// the tool stays at the profile's end. Worked out by hand: the step Φ10 → Φ20 at Z-10
+/// kept 0.5 away is Φ11 to Z-9.5, then the shoulder at Z-9.5.
+#[test]
+fn g70_passes_run_at_their_distances() {
+    let prog = "G7 G18 G21 G95 F0.1\no1 sub\n  G1 X10 Z0\n  Z-10\n  X20\no1 endsub\nG0 X30 Z2\nG70 Q1 X30 Z2 D1 P2\nM2\n";
+    let p = path(prog, "linuxcnc");
+    assert_eq!(
+        p[1..],
+        [
+            "rapid,2,30,0,11,,,,1",
+            "feed,0,11,-9.5,11,,,,1",
+            "feed,-9.5,11,-9.5,20,,,,1",
+            "rapid,-9.5,20,2,30,,,,1",
+            "rapid,2,30,0,10,,,,1",
+            "feed,0,10,-10,10,,,,1",
+            "feed,-10,10,-10,20,,,,1",
+        ],
+        "{p:?}"
+    );
+    // the profile's lines are the moves' lines: line 3 is the first move of o1
+    let (_dir, f) = temp_program("p.ngc", prog.as_bytes());
+    let out = latsim(&[
+        "expand",
+        f.to_str().unwrap(),
+        "--control",
+        "linuxcnc",
+        "--format",
+        "csv",
+    ]);
+    assert!(
+        out.stdout
+            .lines()
+            .any(|l| l.starts_with("4,3,feed,0,10,-10,10,")),
+        "{}",
+        out.stdout
+    );
+}
+
+/// G71/G72 words and profiles that `LinuxCNC` refuses are alarms at their place; a fillet
+/// A on a profile corner rounds it (r 1 at the Φ10 shoulder), a chamfer C has its ends.
+#[test]
+fn g7x_mistakes_are_alarms_and_corners_round() {
+    for (text, at, says) in [
+        ("G70 Q100 X30 Z2", "p.ngc:7:1", "no o100 sub"),
+        ("G71 X30 Z2 D1", "p.ngc:7:1", "without Q"),
+        (
+            "G41.1 D0.8 L2\nG71 Q1 X30 Z2",
+            "p.ngc:8:1",
+            "cutter compensation on",
+        ),
+        ("G71 Q1 X30 Z2 I0", "p.ngc:7:1", "greater than zero"),
+        ("G71 Q1 X30 Z2 K3", "p.ngc:7:15", "address K"),
+    ] {
+        let prog =
+            format!("G7 G0 X30 Z2 F0.2\no1 sub\nG1 X10 Z0\nZ-10\nX30\no1 endsub\n{text}\nM2\n");
+        let (code, err) = check(&prog);
+        assert_eq!(code, 1, "{text}: {err}");
+        assert!(err.contains(at) && err.contains(says), "{text}: {err}");
+    }
+    let corner = "G7 G18 G21 G95 F0.1\no1 sub\n  G1 X10 Z0\n  Z-10 A1\n  X20\no1 endsub\nG0 X30 Z2\nG70 Q1 X30 Z2\nM2\n";
+    let p = path(corner, "linuxcnc");
+    assert_eq!(
+        p[1..],
+        [
+            "rapid,2,30,0,10,,,,1",
+            "feed,0,10,-9,10,,,,1",
+            "arc,-9,10,-10,12,-9,12,cw,1",
+            "feed,-10,12,-10,20,,,,1",
+        ],
+        "{p:?}"
+    );
+    let p = path(&corner.replace("A1", "C1"), "linuxcnc");
+    assert_eq!(p[3], "feed,-9,10,-10,12,,,,1", "{p:?}");
 }

@@ -86,6 +86,8 @@ pub(super) enum Flow {
         seq: u32,
         span: Span,
     },
+    /// A `LinuxCNC` G70/G71/G72 block (as `LinuxCNC` means it): it runs its profile O-sub.
+    G7x(Box<gcode::Block>),
 }
 
 /// Where a call goes: program index and first block in this file, or a library program.
@@ -191,6 +193,10 @@ impl Interp<'_> {
                 Flow::Branch { seq, span } => {
                     jump = Some(span);
                     seq_index(blocks, seq, span, "branches to")?
+                }
+                Flow::G7x(b) => {
+                    self.linuxcnc_g7x(program, index, depth, &b)?;
+                    i + 1
                 }
             };
             if i <= from {

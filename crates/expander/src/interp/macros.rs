@@ -730,6 +730,27 @@ impl Interp<'_> {
         }
     }
 
+    /// The `sub` line of `LinuxCNC` subroutine `label` in O program `index` of `program`.
+    pub(super) fn o_sub_line(
+        &self,
+        program: &Program,
+        index: usize,
+        label: &macro_b::OLabel,
+    ) -> Option<usize> {
+        let m = self.macros.as_ref()?;
+        m.programs[m.base_of(program)? + index].o_words().sub(label)
+    }
+
+    /// The locals of a `LinuxCNC` call without arguments: the caller's #1…#30.
+    pub(super) fn o_call_locals(&self) -> Option<Box<Locals>> {
+        let m = self.macros.as_ref()?;
+        let mut locals: Locals = [Value::VACANT; 33];
+        for (n, slot) in locals.iter_mut().enumerate().take(30) {
+            *slot = m.state.vars.local(n + 1);
+        }
+        Some(Box::new(locals))
+    }
+
     /// Custom macro B's variables, when it is on.
     pub(super) fn variables(&self) -> Option<&macro_b::Variables> {
         self.macros.as_ref().map(|m| &m.state.vars)

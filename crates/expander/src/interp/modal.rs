@@ -239,12 +239,9 @@ impl Interp<'_> {
         if self.machine.control != crate::Control::LinuxCnc {
             return None;
         }
+        // (G70, G71, G72 run before: `linuxcnc_g7x`)
         let cycle = match t {
-            crate::linuxcnc::CYCLE_G70 => "G70",
             crate::linuxcnc::CYCLE_G76 => "G76",
-            t if (crate::linuxcnc::CYCLE_G72 - 2..=crate::linuxcnc::CYCLE_G71).contains(&t) => {
-                "G71/G72"
-            }
             t => return crate::linuxcnc::unsupported(t).map(str::to_string),
         };
         Some(format!("LinuxCNC's {cycle} cycle is not run by latsim yet"))
