@@ -332,6 +332,12 @@ o1 call [3]\nG0 X#<d> Z1\nG0 X#<_g> Z0\nM2\n";
         err.contains("#<d> is not defined") && err.contains("p.ngc:4:7"),
         "{err}"
     );
+    // LinuxCNC's predefined #<_x> (the radius inside, in program units), #<_z>, #<_metric>
+    let p = path(
+        "G7 G0 X30 Z2\nG0 X[#<_x> * 2 + 4 + #<_metric>] Z[#<_Z> - 1]\nM2\n",
+        "linuxcnc",
+    );
+    assert_eq!(p[1], "rapid,2,30,1,35,,,,1", "{p:?}");
     // names are read without blanks and case (LinuxCNC: #<Tool Dia> is #<tooldia>)
     let p = path("G7\n#<Tool Dia> = 12\nG0 X#<tooldia> Z1\nM2\n", "linuxcnc");
     assert_eq!(p[0], "rapid,150,250,1,12,,,,1");

@@ -82,7 +82,13 @@ impl MacroState {
     pub fn eval(&mut self, e: &Expr, sys: &mut dyn System) -> Result<Value> {
         match &e.kind {
             ExprKind::Num(v) => Ok(Value::num(*v)),
-            ExprKind::Var(VarRef::Named(name)) => self.vars.read_named(name, e.span),
+            ExprKind::Var(VarRef::Named(name)) => match self.vars.named(name) {
+                Some(v) => Ok(v),
+                None => match sys.named_parameter(name) {
+                    Some(v) => Ok(Value::num(v)),
+                    None => self.vars.read_named(name, e.span),
+                },
+            },
             ExprKind::Var(r) => {
                 let n = self.var_number(r, sys)?;
                 let options = self.options;
@@ -94,7 +100,8 @@ impl MacroState {
                 })
             }
             ExprKind::Call(Func::Exists, args) => {
-                let defined = matches!(&args[0].kind, ExprKind::Var(VarRef::Named(n)) if self.vars.named(n).is_some());
+                let defined = matches!(&args[0].kind, ExprKind::Var(VarRef::Named(n))
+                    if self.vars.named(n).is_some() || sys.named_parameter(n).is_some());
                 Ok(Value::truth(defined))
             }
             ExprKind::Group(inner) | ExprKind::Pos(inner) => self.eval(inner, sys),

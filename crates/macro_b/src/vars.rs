@@ -81,6 +81,11 @@ pub trait System {
     fn tool_offset(&self, _number: u32) -> Option<f64> {
         None
     }
+    /// `LinuxCNC`'s predefined named parameter `#<_name>` (`_x`, `_metric` …), when the
+    /// machine keeps it.
+    fn named_parameter(&self, _name: &str) -> Option<f64> {
+        None
+    }
     /// `#3006 = n (message)`: stop with a message and continue. `false`: not simulated.
     fn stop_message(&mut self, _number: f64, _message: &str) -> bool {
         false
@@ -271,7 +276,7 @@ impl Variables {
     pub fn read_named(&self, name: &str, span: Span) -> Result<Value> {
         self.named.get(name).ok_or_else(|| {
             let help = if crate::named::is_global(name) {
-                "set it first (#<_name> = …); of LinuxCNC's predefined parameters latsim keeps #<_value> and #<_value_returned> only"
+                "set it first (#<_name> = …); of LinuxCNC's predefined parameters latsim keeps #<_value>, #<_value_returned>, #<_x>, #<_z>, #<_metric>, #<_imperial>, #<_absolute>, #<_incremental>, #<_lathe_diameter_mode>, #<_lathe_radius_mode>, #<_units_per_rev>, #<_units_per_minute>, #<_feed>, #<_rpm>, #<_current_tool>"
             } else {
                 "set it first at this call level (#<name> = …), or test it with EXISTS[#<name>]"
             };

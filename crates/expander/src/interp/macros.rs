@@ -122,6 +122,28 @@ impl System for Sys<'_, '_> {
             None => false,
         }
     }
+    fn named_parameter(&self, name: &str) -> Option<f64> {
+        let it = &self.it;
+        let here = it.pos - it.shift;
+        let flag = |b: bool| if b { 1.0 } else { 0.0 };
+        Some(match name {
+            // LinuxCNC keeps X as a radius inside (`_setup.current_x`), in program units
+            "_x" => here.r / it.unit(),
+            "_z" => here.z / it.unit(),
+            "_metric" => flag(!it.inch),
+            "_imperial" => flag(it.inch),
+            "_absolute" => flag(!it.incremental),
+            "_incremental" => flag(it.incremental),
+            "_lathe_diameter_mode" => flag(it.x_diameter),
+            "_lathe_radius_mode" => flag(!it.x_diameter),
+            "_units_per_rev" => flag(it.per_rev),
+            "_units_per_minute" => flag(!it.per_rev),
+            "_feed" => it.feed,
+            "_rpm" => it.s_value,
+            "_current_tool" => f64::from(it.tool),
+            _ => return None,
+        })
+    }
     fn stop_message(&mut self, number: f64, message: &str) -> bool {
         self.it.warn(
             self.span,
