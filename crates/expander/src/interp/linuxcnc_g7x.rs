@@ -274,7 +274,6 @@ impl Interp<'_> {
         if code == lc::CYCLE_G70 {
             out.moves
                 .extend(g7x::finishing_passes(&shape, (w.d, w.e, w.passes))?);
-            out.comp = Some(None);
             out.comp_from = 1;
         } else {
             let g72 = code <= lc::CYCLE_G72;
@@ -297,7 +296,29 @@ impl Interp<'_> {
         self.out.warnings.append(&mut out.warnings);
         self.record_intended(std::mem::take(&mut out.intended), b.span);
         self.flush_compensation();
-        self.emit_cycle(out, g.span)?;
+        if code == lc::CYCLE_G70 {
+            self.emit_g70(out, g.span)
+        } else {
+            self.emit_cycle(out, g.span).map(|_| ())
+        }
+    }
+
+    /// G70's moves, compensated from move `comp_from` on when G41/G42 (or their `.1`
+    /// forms) are in force; the compensation stays on after the cycle, as in `LinuxCNC`
+    /// (the tool stays at the profile's end; the next move under G40 is the cancel).
+    fn emit_g70(&mut self, out: Output, span: Span) -> Result<(), Diagnostic> {
+        for (k, m) in out.moves.into_iter().enumerate() {
+            if k == out.comp_from {
+                if let Some(side) = self.comp {
+                    if let Some(nose) = self.nose_for_offset(span) {
+                        self.section = Some((side, nose, vec![]));
+                    }
+                }
+            }
+            if m.to.dist(self.pos) >= 1e-12 {
+                self.push_at(m.span.unwrap_or(span), m.motion, m.to, m.arc, 0.0, m.hint)?;
+            }
+        }
         Ok(())
     }
 
