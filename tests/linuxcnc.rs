@@ -535,3 +535,38 @@ fn g7x_mistakes_are_alarms_and_corners_round() {
     let p = path(&corner.replace("A1", "C1"), "linuxcnc");
     assert_eq!(p[3], "feed,-9,10,-10,12,,,,1", "{p:?}");
 }
+
+/// `o<name> call` of a subroutine the file does not define runs the `o<name> sub` of
+/// `name.ngc` beside the program (LinuxCNC's SUBROUTINE_PATH; the file's own `M2` after its
+/// `endsub` is not reached); a missing file is an alarm at the call naming it.
+#[test]
+fn a_subroutine_of_another_file_is_called_by_its_name() {
+    let (dir, prog) = temp_program(
+        "main.ngc",
+        b"G7 G18 G21 G95 F0.2\nG0 X30 Z2\no<step> call [24] [-10]\nG0 X40 Z5\nM2\n",
+    );
+    std::fs::write(
+        dir.path().join("step.ngc"),
+        "(a subroutine file)\no<step> sub\n  G0 X#1 Z2\n  G1 Z#2\n  G0 X30\no<step> endsub\nM2\n",
+    )
+    .unwrap();
+    let out = latsim(&[
+        "expand",
+        prog.to_str().unwrap(),
+        "--control",
+        "linuxcnc",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let moves: Vec<&str> = out.stdout.lines().skip(2).collect();
+    assert!(moves[0].ends_with("rapid,2,30,2,24,,,,0"), "{moves:?}");
+    assert!(moves[1].ends_with("feed,2,24,-10,24,,,,0"), "{moves:?}");
+    assert!(moves[3].ends_with("rapid,-10,30,5,40,,,,0"), "{moves:?}");
+    let (code, err) = check("G7 G0 X30 Z2\no<nowhere> call\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("o<nowhere> call") && err.contains("nowhere.ngc"),
+        "{err}"
+    );
+}

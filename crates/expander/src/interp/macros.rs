@@ -763,6 +763,20 @@ impl Interp<'_> {
         m.programs[m.base_of(program)? + index].o_words().sub(label)
     }
 
+    /// The `sub` line of `LinuxCNC` subroutine `label` in the first O program of `program`
+    /// (a file of the library), its structure prepared the first time.
+    pub(super) fn o_sub_in_file(
+        &mut self,
+        program: &Program,
+        label: &macro_b::OLabel,
+    ) -> Result<Option<usize>, Diagnostic> {
+        let Some(m) = self.macros.as_mut() else {
+            return Ok(None);
+        };
+        let base = m.base(program).map_err(diagnostic)?;
+        Ok(m.programs.get(base).and_then(|p| p.o_words().sub(label)))
+    }
+
     /// The locals of a `LinuxCNC` call without arguments: the caller's #1…#30.
     pub(super) fn o_call_locals(&self) -> Option<Box<Locals>> {
         let m = self.macros.as_ref()?;

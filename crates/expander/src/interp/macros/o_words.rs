@@ -9,9 +9,7 @@
 use super::super::flow::{Callee, Flow};
 use super::Macros;
 use crate::Span;
-use macro_b::{
-    ErrorKind, Expr, Locals, MacroError, OKeyword, OLabel, OLink, StmtKind, System, Value,
-};
+use macro_b::{Expr, Locals, MacroError, OKeyword, OLabel, OLink, StmtKind, System, Value};
 
 /// The name of the hidden counter of the `repeat` at line `line` of O program `index`
 /// (the call level's own: a name with blanks cannot be written in a program).
@@ -173,7 +171,8 @@ impl Macros {
         Ok(Flow::Next)
     }
 
-    /// `call [a] [b] …`: the blocks after the subroutine's `sub` on a new local level:
+    /// `call [a] [b] …`: the blocks after the subroutine's `sub` (in this file, else in the
+    /// file named after it) on a new local level:
     /// the caller's #1…#30 with the arguments over them (`LinuxCNC` restores #1…#30 on
     /// return; the level's named parameters start empty). `#<_value>` is cleared first.
     fn o_call(
@@ -182,21 +181,7 @@ impl Macros {
         w: &OWord<'_>,
         sys: &mut dyn System,
     ) -> Result<Flow, MacroError> {
-        let Some(sub) = self.programs[index].o_words().sub(w.label) else {
-            let help = match w.label {
-                OLabel::Name(n) => format!("define {} sub … {} endsub in this file (LinuxCNC would look for {n}.ngc in its SUBROUTINE_PATH; latsim reads the one file)", w.label, w.label),
-                OLabel::Number(_) => format!("define {} sub … {} endsub in this file", w.label, w.label),
-            };
-            return Err(MacroError::new(
-                ErrorKind::ProgramMissing,
-                w.span,
-                format!(
-                    "{} call: the subroutine is not defined in this file",
-                    w.label
-                ),
-                help,
-            ));
-        };
+        let sub = self.programs[index].o_words().sub(w.label);
         let mut locals: Locals = [Value::VACANT; 33];
         for (n, slot) in locals.iter_mut().enumerate().take(30) {
             *slot = self.state.vars.local(n + 1);
@@ -209,7 +194,8 @@ impl Macros {
             .vars
             .write_named("_value_returned", Value::num(0.0));
         Ok(Flow::Call {
-            callee: Callee::At(sub + 1),
+            // not in this file: LinuxCNC's `name.ngc` on its SUBROUTINE_PATH
+            callee: sub.map_or_else(|| Callee::SubFile(w.label.clone()), |s| Callee::At(s + 1)),
             times: 1,
             span: w.span,
             locals: Some(Box::new(locals)),
