@@ -240,6 +240,10 @@ fn o_word_loops_meet_the_loop_guard() {
     assert!(err.contains("endless loop"), "{err}");
     assert!(err.contains("p.ngc:4:1"), "{err}");
     assert!(err.contains("o… break"), "{err}");
+    let (code, err) =
+        check("G7 G0 X30 Z2\n#<d> = 5\no1 while [#<d> GT 0]\n  G0 X30 Z2\no1 endwhile\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("#<d> (= 5) never changes"), "{err}");
     let (code, err) = check("G7 G0 X30 Z2\no3 do\n  G0 X30\no3 while [1]\nM2\n");
     assert_eq!(code, 1, "{err}");
     assert!(
@@ -343,9 +347,16 @@ o1 call [3]\nG0 X#<d> Z1\nG0 X#<_g> Z0\nM2\n";
     assert_eq!(p[0], "rapid,150,250,1,12,,,,1");
 }
 
-/// FANUC's macro statements are not `LinuxCNC` syntax: a read error naming the o-words.
+/// FANUC's macro statements are not `LinuxCNC` syntax: a read error naming the o-words;
+/// and `LinuxCNC`'s named parameters are no FANUC syntax.
 #[test]
 fn fanuc_macro_flow_is_an_error_under_linuxcnc() {
+    for text in ["#<d> = 1\nG0 X30\nM30\n", "#1 = 1\nG0 X#<d>\nM30\n"] {
+        let (_dir, p) = temp_program("p.nc", text.as_bytes());
+        let out = latsim(&["check", p.to_str().unwrap(), "--control", "fanuc-a"]);
+        assert_eq!(out.code, 2, "{}", out.stderr);
+        assert!(out.stderr.contains("LinuxCNC"), "{}", out.stderr);
+    }
     for (text, word) in [
         ("IF [#1 EQ 1] GOTO 10", "IF"),
         ("WHILE [#1 LT 2] DO1\nEND1", "WHILE"),
@@ -537,7 +548,7 @@ fn g7x_mistakes_are_alarms_and_corners_round() {
 }
 
 /// `o<name> call` of a subroutine the file does not define runs the `o<name> sub` of
-/// `name.ngc` beside the program (LinuxCNC's SUBROUTINE_PATH; the file's own `M2` after its
+/// `name.ngc` beside the program (`LinuxCNC`'s `SUBROUTINE_PATH`; the file's own `M2` after its
 /// `endsub` is not reached); a missing file is an alarm at the call naming it.
 #[test]
 fn a_subroutine_of_another_file_is_called_by_its_name() {

@@ -239,7 +239,7 @@ impl Interp<'_> {
                 numbers.push(n);
             }
         }
-        let named: Vec<String> = numbers
+        let mut named: Vec<String> = numbers
             .iter()
             .map(|&n| match self.value_for_message(n, jump) {
                 Some(v) if v.is_vacant() => format!("#{n} (vacant)"),
@@ -247,6 +247,17 @@ impl Interp<'_> {
                 None => format!("#{n}"),
             })
             .collect();
+        // LinuxCNC's named parameters
+        for name in conditions.iter().flat_map(Expr::named) {
+            let value = self.variables().and_then(|v| v.named(&name));
+            let shown = match value {
+                Some(v) if !v.is_vacant() => format!("#<{name}> (= {v})"),
+                _ => format!("#<{name}>"),
+            };
+            if !named.contains(&shown) {
+                named.push(shown);
+            }
+        }
         let head = blocks.at(target).span.line;
         let (what, why) = explain(period, &conditions, &named);
         let o_word = matches!(

@@ -251,6 +251,33 @@ impl Expr {
         found
     }
 
+    /// The named parameters it reads (`#<name>`), in the order written, each once.
+    pub fn named(&self) -> Vec<String> {
+        let mut found = Vec::new();
+        self.collect_named(&mut found);
+        found
+    }
+
+    fn collect_named(&self, found: &mut Vec<String>) {
+        match &self.kind {
+            ExprKind::Num(_) | ExprKind::Var(VarRef::Direct(_)) => {}
+            ExprKind::Var(VarRef::Named(n)) => {
+                if !found.contains(n) {
+                    found.push(n.clone());
+                }
+            }
+            ExprKind::Var(VarRef::Indirect(e))
+            | ExprKind::Group(e)
+            | ExprKind::Neg(e)
+            | ExprKind::Pos(e) => e.collect_named(found),
+            ExprKind::Binary(_, a, b) => {
+                a.collect_named(found);
+                b.collect_named(found);
+            }
+            ExprKind::Call(_, args) => args.iter().for_each(|a| a.collect_named(found)),
+        }
+    }
+
     fn collect_variables(&self, found: &mut Vec<u32>) {
         match &self.kind {
             ExprKind::Num(_) | ExprKind::Var(VarRef::Named(_)) => {}
