@@ -327,7 +327,13 @@ fn library(
     main_len: usize,
     read: gcode::ReadOptions,
 ) -> Result<Option<Arc<Folders>>, ()> {
-    if args.lib.is_empty() && machine.control != expander::Control::Haas {
+    // Haas `M98 (path)` and LinuxCNC `o<name> call` find files in the program's folder
+    if args.lib.is_empty()
+        && !matches!(
+            machine.control,
+            expander::Control::Haas | expander::Control::LinuxCnc
+        )
+    {
         return Ok(None);
     }
     let home = path.parent().unwrap_or(Path::new("."));

@@ -145,6 +145,12 @@ fn semicolon_comments_and_msg_read_silently_under_linuxcnc_only() {
     let (code, err) = check(prog);
     assert_eq!(code, 0, "{err}");
     assert!(!err.contains("read as a comment"), "{err}");
+    // the rest of the line after `;` is a comment, whatever it holds; `%` in a comment is
+    // text (`(debug, %.3f#1)`); an M2 inside an o-word `if` leaves the endif reachable
+    let prog2 = "G7\n#1 = [2 * 3]; X\n(debug, %.3f#1)\no1 if [#1 GT 9]\n  M2\no1 endif\nG0 X#1 Z1 ; >= 2\nM2\n";
+    let (code, err) = check(prog2);
+    assert_eq!((code, err.as_str()), (0, ""));
+    assert_eq!(path(prog2, "linuxcnc"), ["rapid,150,250,1,6,,,,1"]);
     let (_dir, p) = temp_program("p.nc", prog.replace("G7 ", "").as_bytes());
     let out = latsim(&["check", p.to_str().unwrap(), "--control", "fanuc-a"]);
     assert!(out.stderr.contains("read as a comment"), "{}", out.stderr);
@@ -155,7 +161,6 @@ fn linuxcnc_codes_latsim_does_not_run_are_alarms_at_their_word() {
     for (prog, word, col) in [
         ("G7 G0 X30 Z2\nG5 X1 Z1 I1 J1 P1 Q1\nM2\n", "G5", 1),
         ("G7 G0 X30 Z2\nG0 G33.1 Z-5 K1\nM2\n", "G33.1", 4),
-        ("G7 G0 X30 Z2\nG70 Q100 X30 Z2\nM2\n", "G70", 1),
     ] {
         let (code, err) = check(prog);
         assert_eq!(code, 1, "{prog}: {err}");
@@ -177,5 +182,401 @@ fn linuxcnc_codes_latsim_does_not_run_are_alarms_at_their_word() {
         out.stderr.contains("diameter mode in LinuxCNC"),
         "{}",
         out.stderr
+    );
+}
+
+/// Subroutines with arguments and a return value, `if`/`elseif`/`else`, `while`, `repeat`
+/// and `do … while` with `continue` and `break` ([O]): the path worked out by hand.
+#[test]
+fn o_word_subroutines_and_flow_run_as_linuxcnc_runs_them() {
+    let prog = "G18 G21 G7 G90 G95\nT1 M6 G43\n\
+o100 sub\n  G0 X#1 Z2\n  G1 Z#2 F0.2\n  G0 X[#1+4] Z2\no100 endsub [#1 * 2]\n\
+o<face> sub\n  o10 if [#1 GT 50]\n    G0 X#1 Z0\n  o10 elseif [#1 GT 30]\n    G0 X[#1+1] Z0\n  o10 else\n    G0 X[#1+2] Z0\n  o10 endif\no<face> endsub\n\
+#1 = 40\n\
+o1 while [#1 GT 30]\n  o100 call [#1] [-20]\n  #1 = [#1 - 4]\no1 endwhile\n\
+G0 X#<_value> Z5\n\
+o<face> call [60]\no<face> call [40]\no<face> call [20]\n\
+o2 repeat [3]\n  G91 G0 Z1\no2 endrepeat\nG90\n\
+#3 = 0\no3 do\n  #3 = [#3 + 1]\n  o4 if [#3 EQ 2]\n    o3 continue\n  o4 endif\n  o5 if [#3 EQ 4]\n    o3 break\n  o5 endif\no3 while [#3 LT 10]\n\
+G0 X#<_value> Z#3\nM2\n";
+    let p = path(prog, "linuxcnc");
+    assert_eq!(
+        p,
+        [
+            // o100 call [40] [-20], [36], [32]: #1 of the caller stays 40, 36, 32
+            "rapid,150,250,2,40,,,,1",
+            "feed,2,40,-20,40,,,,1",
+            "rapid,-20,40,2,44,,,,1",
+            "rapid,2,44,2,36,,,,1",
+            "feed,2,36,-20,36,,,,1",
+            "rapid,-20,36,2,40,,,,1",
+            "rapid,2,40,2,32,,,,1",
+            "feed,2,32,-20,32,,,,1",
+            "rapid,-20,32,2,36,,,,1",
+            // #<_value> = 2 × 32 from the last endsub
+            "rapid,2,36,5,64,,,,1",
+            // o<face>: 60 > 50; 40 > 30: 41; else 22
+            "rapid,5,64,0,60,,,,1",
+            "rapid,0,60,0,41,,,,1",
+            "rapid,0,41,0,22,,,,1",
+            // repeat [3]: three steps of 1 mm
+            "rapid,0,22,1,22,,,,1",
+            "rapid,1,22,2,22,,,,1",
+            "rapid,2,22,3,22,,,,1",
+            // o<face> returned no value: #<_value> cleared to 0 by its call; break at #3 = 4
+            "rapid,3,22,4,0,,,,1",
+        ]
+    );
+}
+
+/// The loop guard of issue 37 watches o-word loops: a `while` whose state never changes
+/// is an alarm at once, at its `endwhile`; a `do … while [1]` at its `while`; loops that
+/// count to 1000 run to their end.
+#[test]
+fn o_word_loops_meet_the_loop_guard() {
+    let (code, err) = check("G7 G0 X30 Z2\no1 while [1]\n  G0 X30 Z2\no1 endwhile\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("endless loop"), "{err}");
+    assert!(err.contains("p.ngc:4:1"), "{err}");
+    assert!(err.contains("o… break"), "{err}");
+    let (code, err) =
+        check("G7 G0 X30 Z2\n#<d> = 5\no1 while [#<d> GT 0]\n  G0 X30 Z2\no1 endwhile\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("#<d> (= 5) never changes"), "{err}");
+    let (code, err) = check("G7 G0 X30 Z2\no3 do\n  G0 X30\no3 while [1]\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("endless loop") && err.contains("p.ngc:4:1"),
+        "{err}"
+    );
+    let counting = "G7 G0 X30 Z2\n#1 = 0\no1 while [#1 LT 1000]\n  G0 X30 Z2\n  #1 = [#1 + 1]\no1 endwhile\no2 repeat [1000]\n  G0 X30\no2 endrepeat\n#2 = 0\no3 do\n  #2 = [#2 + 1]\no3 while [#2 LT 1000]\nG0 X#1 Z[#2 / 100]\nM2\n";
+    let p = path(counting, "linuxcnc");
+    assert_eq!(p.last().unwrap(), "rapid,2,30,10,1000,,,,1", "{p:?}");
+}
+
+/// Badly formed o-words are read errors (exit 2: a statement that does not read) or
+/// alarms before the run (exit 1: the structure, as FANUC's DO/END) at their line and
+/// column, never a panic.
+#[test]
+fn o_word_mistakes_are_named_at_their_place() {
+    for (text, at, says, exit) in [
+        (
+            "o1 endwhile",
+            "p.ngc:2:1",
+            "o1 endwhile without o1 while",
+            1,
+        ),
+        ("o1 if [1]\nG0 X1", "p.ngc:2:1", "o1 if without o1 endif", 1),
+        (
+            "o2 call",
+            "p.ngc:2:1",
+            "o2 call: the subroutine is not defined",
+            1,
+        ),
+        ("o<x> call [1]", "p.ngc:2:1", "x.ngc", 1),
+        (
+            "o1 sub\no2 sub\no2 endsub\no1 endsub",
+            "p.ngc:3:1",
+            "inside the definition of o1",
+            1,
+        ),
+        (
+            "o1 while [1]\no2 if [1]\no1 endwhile\no2 endif",
+            "p.ngc:4:1",
+            "must not cross",
+            1,
+        ),
+        ("o1 break", "p.ngc:2:1", "o1 break outside", 1),
+        (
+            "o1 if [1]\no1 else\no1 elseif [2]\no1 endif",
+            "p.ngc:4:1",
+            "elseif after o1 else",
+            1,
+        ),
+        (
+            "o1 repeat\no1 endrepeat",
+            "p.ngc:2:10",
+            "needs its value in brackets",
+            2,
+        ),
+        ("o1 frob", "p.ngc:2:4", "o1 needs a keyword", 2),
+        (
+            "o1 sub\no1 endsub\no1 sub\no1 endsub",
+            "p.ngc:4:1",
+            "defined twice",
+            1,
+        ),
+        ("o1 return", "p.ngc:2:1", "o1 return outside", 1),
+    ] {
+        let (code, err) = check(&format!("G7 G0 X30 Z2\n{text}\nM2\n"));
+        assert_eq!(code, exit, "{text}: {err}");
+        assert!(err.contains(at), "{text}: {err}");
+        assert!(err.contains(says), "{text}: {err}");
+    }
+}
+
+/// `#<name>` is local to the call level it is set in, `#<_name>` global ([OV] "Named
+/// Parameters"); `EXISTS[#<name>]` asks without reading; reading one never set is an error.
+#[test]
+fn named_parameters_are_local_or_global_by_name() {
+    let prog = "G7 G0 X30 Z2\n#<d> = 20\n\
+o1 sub\n  o2 if [EXISTS[#<d>]]\n    G0 X99\n  o2 endif\n  #<d> = 50\n  #<_g> = [#<d> + #1]\no1 endsub\n\
+o1 call [3]\nG0 X#<d> Z1\nG0 X#<_g> Z0\nM2\n";
+    let p = path(prog, "linuxcnc");
+    assert_eq!(
+        p[1..],
+        ["rapid,2,30,1,20,,,,1", "rapid,1,20,0,53,,,,1"],
+        "{p:?}"
+    );
+    let (code, err) =
+        check("G7 G0 X30 Z2\n#<d> = 20\no1 sub\n  G0 X#<d>\no1 endsub\no1 call\nM2\n");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("#<d> is not defined") && err.contains("p.ngc:4:7"),
+        "{err}"
+    );
+    // LinuxCNC's predefined #<_x> (the radius inside, in program units), #<_z>, #<_metric>
+    let p = path(
+        "G7 G0 X30 Z2\nG0 X[#<_x> * 2 + 4 + #<_metric>] Z[#<_Z> - 1]\nM2\n",
+        "linuxcnc",
+    );
+    assert_eq!(p[1], "rapid,2,30,1,35,,,,1", "{p:?}");
+    // names are read without blanks and case (LinuxCNC: #<Tool Dia> is #<tooldia>)
+    let p = path("G7\n#<Tool Dia> = 12\nG0 X#<tooldia> Z1\nM2\n", "linuxcnc");
+    assert_eq!(p[0], "rapid,150,250,1,12,,,,1");
+}
+
+/// FANUC's macro statements are not `LinuxCNC` syntax: a read error naming the o-words;
+/// and `LinuxCNC`'s named parameters are no FANUC syntax.
+#[test]
+fn fanuc_macro_flow_is_an_error_under_linuxcnc() {
+    for text in ["#<d> = 1\nG0 X30\nM30\n", "#1 = 1\nG0 X#<d>\nM30\n"] {
+        let (_dir, p) = temp_program("p.nc", text.as_bytes());
+        let out = latsim(&["check", p.to_str().unwrap(), "--control", "fanuc-a"]);
+        assert_eq!(out.code, 2, "{}", out.stderr);
+        assert!(out.stderr.contains("LinuxCNC"), "{}", out.stderr);
+    }
+    for (text, word) in [
+        ("IF [#1 EQ 1] GOTO 10", "IF"),
+        ("WHILE [#1 LT 2] DO1\nEND1", "WHILE"),
+        ("GOTO 10", "GOTO"),
+    ] {
+        let (code, err) = check(&format!("G7 G0 X30 Z2\n{text}\nN10 M2\n"));
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains(&format!("{word} is FANUC macro B, not LinuxCNC")),
+            "{err}"
+        );
+        assert!(
+            err.contains("o100 while") && err.contains("p.ngc:2:1"),
+            "{err}"
+        );
+    }
+}
+
+/// The profile of the pawn-like job below (diameters), the same blocks in both programs.
+const PAWN_PROFILE: &str =
+    "G1 X0 Z0\nG3 X12 Z-6 R6\nG1 X8 Z-10\nZ-14\nX20 Z-20\nZ-26\nX28 Z-30\nZ-36\nX32\n";
+
+/// The pawn-like job written the `LinuxCNC` way (profile in o100, G71.1 without the pocket,
+/// G71.2 with it, G70) leaves the same part as the job written for FANUC (G71 type II with
+/// P/Q blocks, G70): the final sections within the simulation's chord tolerance (0.001 mm).
+#[test]
+fn pawn_job_with_g71_1_g71_2_g70_equals_the_fanuc_job() {
+    let lcnc = format!(
+        "G18 G21 G7 G90 G95\nT1 M6 G43\nG96 D2500 S180 M3\nF0.2\no100 sub\n{PAWN_PROFILE}o100 endsub\nG0 X32 Z2\nG71.1 Q100 X32 Z2 D0.5 I1.5 R0.5\nG71.2 Q100 X32 Z2 D0.5 I1.5 R0.5\nG70 Q100 X32 Z2\nG0 X60 Z50\nM2\n"
+    );
+    let numbered: String = PAWN_PROFILE
+        .lines()
+        .enumerate()
+        .map(|(i, l)| format!("N{} {l}\n", 10 + i))
+        .collect();
+    let fanuc = format!(
+        "O1\nG18 G21 G99\nT0101\nG50 S2500\nG96 S180 M3\nG0 X32 Z2\nG71 U1.5 R0.5\nG71 P10 Q18 U1.0 W0.5 F0.2\n{numbered}G70 P10 Q18\nG0 X60 Z50\nM30\n"
+    );
+    let tools = stock::ToolTable::from_toml(
+        &std::fs::read_to_string(asset("corpus/tools/shop.toml")).unwrap(),
+    )
+    .unwrap();
+    let blank = stock::Blank::bar(32.0, 50.0, 0.0, None).unwrap();
+    let read = gcode::ReadOptions {
+        macros: Some(macro_b::Dialect::LinuxCnc),
+        ..Default::default()
+    };
+    let run = |text: &str, control, read| {
+        let p = gcode::parse_with(text, read).unwrap();
+        let opts = expander::Options {
+            tools: tools.facts(),
+            macros: read.macros.map(|d| match d {
+                macro_b::Dialect::LinuxCnc => macro_b::Options::linuxcnc(),
+                _ => macro_b::Options::fanuc(),
+            }),
+            ..Default::default()
+        };
+        let tp = expander::expand(&p, &expander::Machine::for_control(control), &opts);
+        assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+        let sim = stock::simulate(
+            &blank,
+            &tools,
+            &tp.segments,
+            &stock::SimOptions::default(),
+            &mut |_| {},
+        );
+        (tp, sim)
+    };
+    let (tl, sl) = run(&lcnc, expander::Control::LinuxCnc, read);
+    let (tf, sf) = run(
+        &fanuc,
+        expander::Control::FanucA,
+        gcode::ReadOptions::default(),
+    );
+    let h = stock::hausdorff(&sl.final_shapes, &sf.final_shapes);
+    eprintln!(
+        "LinuxCNC {} moves, FANUC {} moves, Hausdorff {h:.6} mm",
+        tl.segments.len(),
+        tf.segments.len()
+    );
+    assert!(h <= 0.001, "Hausdorff between the final sections {h}");
+    // the part is the profile: Φ8 in the neck's pocket (Z-10 … Z-14)
+    let neck = |s: &stock::Simulation| surface_diameter(s, -12.0);
+    assert!((neck(&sl) - 8.0).abs() < 0.01, "neck Φ{}", neck(&sl));
+    // G71.1 alone does not cut the pocket: it bridges it at Φ12 + 2 × D
+    let only_1 = lcnc
+        .replace("G71.2 Q100 X32 Z2 D0.5 I1.5 R0.5\n", "")
+        .replace("G70 Q100 X32 Z2\n", "");
+    let (_, s1) = run(&only_1, expander::Control::LinuxCnc, read);
+    assert!(
+        (neck(&s1) - 13.0).abs() < 0.01,
+        "G71.1 at the neck: Φ{}",
+        neck(&s1)
+    );
+}
+
+/// The diameter of the part's outer surface at `z`: where the outline's edges cross z,
+/// the largest radius, doubled.
+fn surface_diameter(sim: &stock::Simulation, z: f64) -> f64 {
+    let mut r = f64::MIN;
+    for shape in &sim.final_shapes {
+        let pts = &shape.outer;
+        for k in 0..pts.len() {
+            let (a, b) = (pts[k], pts[(k + 1) % pts.len()]);
+            if (a[0] - z) * (b[0] - z) <= 0.0 && a[0] != b[0] {
+                let t = (z - a[0]) / (b[0] - a[0]);
+                r = r.max(a[1] + t * (b[1] - a[1]));
+            }
+        }
+    }
+    2.0 * r
+}
+
+/// G70 Q D E P ([G] "G70"): pass k of P at distance (k − 1)(D − E)/P + E off the profile
+/// toward the start point, each from a rapid to the start point and to the profile's start;
+/// the tool stays at the profile's end. Worked out by hand: the step Φ10 → Φ20 at Z-10
+/// kept 0.5 away is Φ11 to Z-9.5, then the shoulder at Z-9.5.
+#[test]
+fn g70_passes_run_at_their_distances() {
+    let prog = "G7 G18 G21 G95 F0.1\no1 sub\n  G1 X10 Z0\n  Z-10\n  X20\no1 endsub\nG0 X30 Z2\nG70 Q1 X30 Z2 D1 P2\nM2\n";
+    let p = path(prog, "linuxcnc");
+    assert_eq!(
+        p[1..],
+        [
+            "rapid,2,30,0,11,,,,1",
+            "feed,0,11,-9.5,11,,,,1",
+            "feed,-9.5,11,-9.5,20,,,,1",
+            "rapid,-9.5,20,2,30,,,,1",
+            "rapid,2,30,0,10,,,,1",
+            "feed,0,10,-10,10,,,,1",
+            "feed,-10,10,-10,20,,,,1",
+        ],
+        "{p:?}"
+    );
+    // the profile's lines are the moves' lines: line 3 is the first move of o1
+    let (_dir, f) = temp_program("p.ngc", prog.as_bytes());
+    let out = latsim(&[
+        "expand",
+        f.to_str().unwrap(),
+        "--control",
+        "linuxcnc",
+        "--format",
+        "csv",
+    ]);
+    assert!(
+        out.stdout
+            .lines()
+            .any(|l| l.starts_with("4,3,feed,0,10,-10,10,")),
+        "{}",
+        out.stdout
+    );
+}
+
+/// G71/G72 words and profiles that `LinuxCNC` refuses are alarms at their place; a fillet
+/// A on a profile corner rounds it (r 1 at the Φ10 shoulder), a chamfer C has its ends.
+#[test]
+fn g7x_mistakes_are_alarms_and_corners_round() {
+    for (text, at, says) in [
+        ("G70 Q100 X30 Z2", "p.ngc:7:1", "no o100 sub"),
+        ("G71 X30 Z2 D1", "p.ngc:7:1", "without Q"),
+        (
+            "G41.1 D0.8 L2\nG71 Q1 X30 Z2",
+            "p.ngc:8:1",
+            "cutter compensation on",
+        ),
+        ("G71 Q1 X30 Z2 I0", "p.ngc:7:1", "greater than zero"),
+        ("G71 Q1 X30 Z2 K3", "p.ngc:7:15", "address K"),
+    ] {
+        let prog =
+            format!("G7 G0 X30 Z2 F0.2\no1 sub\nG1 X10 Z0\nZ-10\nX30\no1 endsub\n{text}\nM2\n");
+        let (code, err) = check(&prog);
+        assert_eq!(code, 1, "{text}: {err}");
+        assert!(err.contains(at) && err.contains(says), "{text}: {err}");
+    }
+    let corner = "G7 G18 G21 G95 F0.1\no1 sub\n  G1 X10 Z0\n  Z-10 A1\n  X20\no1 endsub\nG0 X30 Z2\nG70 Q1 X30 Z2\nM2\n";
+    let p = path(corner, "linuxcnc");
+    assert_eq!(
+        p[1..],
+        [
+            "rapid,2,30,0,10,,,,1",
+            "feed,0,10,-9,10,,,,1",
+            "arc,-9,10,-10,12,-9,12,cw,1",
+            "feed,-10,12,-10,20,,,,1",
+        ],
+        "{p:?}"
+    );
+    let p = path(&corner.replace("A1", "C1"), "linuxcnc");
+    assert_eq!(p[3], "feed,-9,10,-10,12,,,,1", "{p:?}");
+}
+
+/// `o<name> call` of a subroutine the file does not define runs the `o<name> sub` of
+/// `name.ngc` beside the program (`LinuxCNC`'s `SUBROUTINE_PATH`; the file's own `M2` after its
+/// `endsub` is not reached); a missing file is an alarm at the call naming it.
+#[test]
+fn a_subroutine_of_another_file_is_called_by_its_name() {
+    let (dir, prog) = temp_program(
+        "main.ngc",
+        b"G7 G18 G21 G95 F0.2\nG0 X30 Z2\no<step> call [24] [-10]\nG0 X40 Z5\nM2\n",
+    );
+    std::fs::write(
+        dir.path().join("step.ngc"),
+        "(a subroutine file)\no<step> sub\n  G0 X#1 Z2\n  G1 Z#2\n  G0 X30\no<step> endsub\nM2\n",
+    )
+    .unwrap();
+    let out = latsim(&[
+        "expand",
+        prog.to_str().unwrap(),
+        "--control",
+        "linuxcnc",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let moves: Vec<&str> = out.stdout.lines().skip(2).collect();
+    assert!(moves[0].ends_with("rapid,2,30,2,24,,,,0"), "{moves:?}");
+    assert!(moves[1].ends_with("feed,2,24,-10,24,,,,0"), "{moves:?}");
+    assert!(moves[3].ends_with("rapid,-10,30,5,40,,,,0"), "{moves:?}");
+    let (code, err) = check("G7 G0 X30 Z2\no<nowhere> call\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("o<nowhere> call") && err.contains("nowhere.ngc"),
+        "{err}"
     );
 }

@@ -41,6 +41,9 @@ pub enum ErrorKind {
     JumpIntoLoop,
     /// Block-form `IF … THEN` / `ELSE` / `ENDIF` not well formed.
     IfStructure,
+    /// `LinuxCNC` o-words not well formed (an `endwhile` without its `while`, a `sub`
+    /// inside a `sub`, a `call` of a subroutine the file does not define …).
+    OWordStructure,
     /// The executed-block budget ran out (a runaway loop).
     Budget,
     /// Macro or subprogram calls nested deeper than the control allows.
@@ -70,6 +73,7 @@ impl ErrorKind {
                 | Self::LoopNesting
                 | Self::LoopCrossing
                 | Self::IfStructure
+                | Self::OWordStructure
         )
     }
 }

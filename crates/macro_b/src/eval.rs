@@ -5,7 +5,7 @@ use crate::span::Span;
 
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::expr::{BinOp, Expr, ExprKind, Func, Stmt, StmtKind, VarRef};
-use crate::options::Options;
+use crate::options::{Dialect, Options};
 use crate::value::{fix, fup, round_half_away, round_to_increment, Value};
 use crate::vars::{System, Variables};
 
@@ -69,6 +69,11 @@ impl MacroState {
                 let v = self.eval(e, sys)?.or_zero();
                 Ok(round_half_away(v).clamp(-1e12, 1e12) as i64)
             }
+            VarRef::Named(n) => Err(MacroError::syntax(
+                Span::default(),
+                format!("#<{n}> has no number"),
+                "a named parameter is read by name",
+            )),
         }
     }
 
@@ -77,10 +82,27 @@ impl MacroState {
     pub fn eval(&mut self, e: &Expr, sys: &mut dyn System) -> Result<Value> {
         match &e.kind {
             ExprKind::Num(v) => Ok(Value::num(*v)),
+            ExprKind::Var(VarRef::Named(name)) => match self.vars.named(name) {
+                Some(v) => Ok(v),
+                None => match sys.named_parameter(name) {
+                    Some(v) => Ok(Value::num(v)),
+                    None => self.vars.read_named(name, e.span),
+                },
+            },
             ExprKind::Var(r) => {
                 let n = self.var_number(r, sys)?;
                 let options = self.options;
-                self.vars.read(n, e.span, &options, sys)
+                let v = self.vars.read(n, e.span, &options, sys)?;
+                // LinuxCNC has no vacant value: a parameter never set reads 0
+                Ok(match options.dialect {
+                    Dialect::LinuxCnc => Value::num(v.or_zero()),
+                    _ => v,
+                })
+            }
+            ExprKind::Call(Func::Exists, args) => {
+                let defined = matches!(&args[0].kind, ExprKind::Var(VarRef::Named(n))
+                    if self.vars.named(n).is_some() || sys.named_parameter(n).is_some());
+                Ok(Value::truth(defined))
             }
             ExprKind::Group(inner) | ExprKind::Pos(inner) => self.eval(inner, sys),
             ExprKind::Neg(inner) => {
@@ -205,6 +227,7 @@ impl MacroState {
             Func::Exp => x.exp(),
             Func::Pow => x.powf(xs[1]),
             Func::Adp => x * self.options.adp_scale,
+            Func::Exists => unreachable!("EXISTS is answered before its argument is read"),
             Func::Bin | Func::Bcd => {
                 let i = to_int(x, e.span, f.name())?;
                 if i < 0 {
@@ -328,6 +351,11 @@ impl MacroState {
         comment: Option<&str>,
         sys: &mut dyn System,
     ) -> Result<()> {
+        if let VarRef::Named(name) = target {
+            let v = self.eval(value, sys)?;
+            self.vars.write_named(name, v);
+            return Ok(());
+        }
         let n = self.var_number(target, sys)?;
         let v = self.eval(value, sys)?;
         let options = self.options;

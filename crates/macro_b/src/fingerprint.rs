@@ -42,6 +42,9 @@ pub struct Snapshot {
     pub(crate) levels: usize,
     /// (slot, bits of the value) of every slot that is not vacant, in slot order.
     pub(crate) values: Vec<(u32, u64)>,
+    /// (level or `None` for a global, name, bits or `None` for vacant) of every named
+    /// parameter (`LinuxCNC`).
+    pub(crate) names: Vec<(Option<usize>, String, Option<u64>)>,
 }
 
 impl Snapshot {

@@ -59,6 +59,8 @@ pub struct MacroProgram<B> {
     /// (N number, line), sorted: found by binary search on every jump.
     seqs: Vec<(u32, usize)>,
     warnings: Vec<Warning>,
+    /// `LinuxCNC`'s o-words matched.
+    o_words: crate::o_words::OStructure,
 }
 
 fn stmt_of<B>(line: &Line<B>) -> Option<&StmtKind> {
@@ -228,7 +230,9 @@ impl<B> MacroProgram<B> {
         }
         pairing.all_closed(&lines)?;
         seqs.sort_unstable();
+        let o_words = crate::o_words::structure(&lines)?;
         Ok(Self {
+            o_words,
             number,
             lines,
             partner: pairing.partner,
@@ -246,6 +250,11 @@ impl<B> MacroProgram<B> {
     /// The blocks.
     pub fn lines(&self) -> &[Line<B>] {
         &self.lines
+    }
+
+    /// The structure of its `LinuxCNC` o-words.
+    pub fn o_words(&self) -> &crate::o_words::OStructure {
+        &self.o_words
     }
 
     /// Things accepted with a warning.
@@ -571,6 +580,14 @@ impl<'p, B> Flow<'p, B> {
                     }
                 }
                 StmtKind::Else => self.top().pc = prog.partner[li] + 1,
+                StmtKind::OWord { .. } => {
+                    return Err(MacroError::new(
+                        ErrorKind::Unsupported,
+                        stmt.span,
+                        "o-words run in latsim's interpreter, not in this engine",
+                        "run the program with latsim --control linuxcnc",
+                    ))
+                }
             }
         }
     }

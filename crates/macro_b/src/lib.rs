@@ -49,6 +49,8 @@ mod eval;
 mod expr;
 mod fingerprint;
 mod flow;
+mod named;
+mod o_words;
 mod options;
 mod span;
 mod value;
@@ -61,14 +63,15 @@ pub use arguments::{letter_of_argument, ARGUMENTS};
 pub use error::{ErrorKind, MacroError, Result};
 pub use eval::MacroState;
 pub use expr::{
-    parse_expr, parse_operand, parse_stmt, starts_statement, BinOp, Expr, ExprKind, Func, Stmt,
-    StmtKind, VarRef,
+    parse_expr, parse_operand, parse_stmt, starts_statement, starts_statement_in, BinOp, Expr,
+    ExprKind, Func, OKeyword, OLabel, Stmt, StmtKind, VarRef,
 };
 pub use fingerprint::Snapshot;
 pub use flow::{
     g65_argument_value, g65_locals, Argument, At, Body, CallKind, Flow, Line, MacroProgram, Step,
     Warning,
 };
+pub use o_words::{OLink, OStructure};
 pub use options::{Dialect, Limits, Options, DEFAULT_MAX_BLOCKS, MAX_BRACKET_DEPTH};
 pub use span::Span;
 pub use value::{fix, fup, round_half_away, round_to_increment, Value};

@@ -6,6 +6,7 @@ use crate::span::Span;
 use crate::arguments::letter_of_argument;
 use crate::error::{ErrorKind, MacroError, Result};
 use crate::fingerprint::{common_slot, local_slot, share, Snapshot};
+use crate::named::{name_slot, Named};
 use crate::options::Options;
 use crate::value::{round_half_away, Value};
 
@@ -78,6 +79,11 @@ pub trait System {
     /// `#2001`+: a tool offset, when the profile maps them. `None` gives the error
     /// "tool offset variables not mapped".
     fn tool_offset(&self, _number: u32) -> Option<f64> {
+        None
+    }
+    /// `LinuxCNC`'s predefined named parameter `#<_name>` (`_x`, `_metric` …), when the
+    /// machine keeps it.
+    fn named_parameter(&self, _name: &str) -> Option<f64> {
         None
     }
     /// `#3006 = n (message)`: stop with a message and continue. `false`: not simulated.
@@ -195,6 +201,8 @@ pub struct VarEntry {
 #[derive(Debug, Clone)]
 pub struct Variables {
     levels: Vec<Locals>,
+    /// `LinuxCNC`'s named parameters.
+    named: Named,
     common: Vec<Value>,
     /// Per variable number below 1000: bit 0 read, bit 1 set (main level and commons).
     touched: Vec<u8>,
@@ -214,6 +222,7 @@ impl Variables {
     pub fn new() -> Self {
         Self {
             levels: vec![[Value::VACANT; 33]],
+            named: Named::default(),
             common: vec![Value::VACANT; 1000],
             touched: vec![0; 1000],
             fingerprint: 0,
@@ -234,6 +243,7 @@ impl Variables {
                 .wrapping_add(share(local_slot(level, i), v));
         }
         self.levels.push(args);
+        self.named.levels.push(Default::default());
     }
 
     /// Leave a `G65` level (`M99`): its locals are gone. The main level stays.
@@ -246,7 +256,62 @@ impl Variables {
                     .wrapping_sub(share(local_slot(level, i), v));
             }
             self.levels.pop();
+            if let Some(names) = self.named.levels.pop() {
+                for (name, v) in names {
+                    self.fingerprint = self
+                        .fingerprint
+                        .wrapping_sub(share(name_slot(Some(level), &name), v));
+                }
+            }
         }
+    }
+
+    /// The named parameter `#<name>` at the current level (`_` first: the global), if it
+    /// is defined.
+    pub fn named(&self, name: &str) -> Option<Value> {
+        self.named.get(name)
+    }
+
+    /// Read `#<name>`: an error at `span` when it is not defined.
+    pub fn read_named(&self, name: &str, span: Span) -> Result<Value> {
+        self.named.get(name).ok_or_else(|| {
+            let help = if crate::named::is_global(name) {
+                "set it first (#<_name> = …); of LinuxCNC's predefined parameters latsim keeps #<_value>, #<_value_returned>, #<_x>, #<_z>, #<_metric>, #<_imperial>, #<_absolute>, #<_incremental>, #<_lathe_diameter_mode>, #<_lathe_radius_mode>, #<_units_per_rev>, #<_units_per_minute>, #<_feed>, #<_rpm>, #<_current_tool>"
+            } else {
+                "set it first at this call level (#<name> = …), or test it with EXISTS[#<name>]"
+            };
+            MacroError::new(
+                ErrorKind::NoSuchVariable,
+                span,
+                format!("named parameter #<{name}> is not defined"),
+                help,
+            )
+        })
+    }
+
+    /// Set `#<name>` (local to the current level, or global with `_` first).
+    pub fn write_named(&mut self, name: &str, v: Value) {
+        let (map, level) = self.named.map_mut(name);
+        let old = map.insert(name.to_string(), v).unwrap_or(Value::VACANT);
+        self.refingerprint(name_slot(level, name), old, v);
+    }
+
+    /// Forget `#<name>` (the interpreter's own per-level names).
+    pub fn remove_named(&mut self, name: &str) {
+        let (map, level) = self.named.map_mut(name);
+        if let Some(old) = map.remove(name) {
+            self.refingerprint(name_slot(level, name), old, Value::VACANT);
+        }
+    }
+
+    /// The named parameters of the main level and the globals a program can write, with
+    /// their values, in name order (the report's `#<name>` lines).
+    pub fn named_report(&self) -> Vec<(String, Value)> {
+        let main = self.named.levels[0].iter();
+        main.chain(self.named.globals.iter())
+            .filter(|(n, _)| !n.contains(' '))
+            .map(|(n, v)| (n.clone(), *v))
+            .collect()
     }
 
     /// Local `#n` (1–33) of the current level.
@@ -313,6 +378,7 @@ impl Variables {
             fingerprint: self.fingerprint,
             levels: self.levels.len(),
             values: self.held().collect(),
+            names: self.named.held(),
         }
     }
 
@@ -322,6 +388,7 @@ impl Variables {
         then.fingerprint == self.fingerprint
             && then.levels == self.levels.len()
             && then.values.iter().copied().eq(self.held())
+            && then.names == self.named.held()
     }
 
     /// (slot, bits) of every variable that holds a value, in slot order.

@@ -76,7 +76,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     } else {
         (shape, None)
     };
-    let frame = Frame::new(c, &shape, g72, removal.force_type2)?;
+    let frame = Frame::new((c.code, c.span()), &shape, g72, removal.force_type2)?;
     let poly = Poly::new(&shape, &frame, removal.layers_off)?;
     let levels = poly.v_max / removal.dd;
     if levels > MAX_LAYERS {
@@ -105,6 +105,41 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         shape.intended_path(0.001),
     ));
     Ok(out)
+}
+
+/// `LinuxCNC`'s G71/G72 (docs/linuxcnc.md, "G70, G71, G72"): FANUC's type II layers of
+/// depth `dd` with the 45° retract `e` over `shape` (already offset by `LinuxCNC`'s D), then
+/// the pass along the shape; the tool stays at its end. `code` and `span`: the cycle (G71 or
+/// G72 canonical) and its block, for the alarms.
+pub(crate) fn linuxcnc_rough(
+    (code, span): (i32, Span),
+    shape: &FinishingShape,
+    dd: f64,
+    e: f64,
+) -> Result<Vec<Move>, Diagnostic> {
+    let g72 = code == G72;
+    let removal = Removal {
+        note: None,
+        dd,
+        e,
+        layers_off: Pt::new(0.0, 0.0),
+        final_off: Pt::new(0.0, 0.0),
+        last_layer_at_shape: false,
+        force_type2: true,
+    };
+    let frame = Frame::new((code, span), shape, g72, true)?;
+    let poly = Poly::new(shape, &frame, removal.layers_off)?;
+    if poly.v_max / dd > MAX_LAYERS {
+        return Err(Diagnostic::new(
+            span,
+            "LS-TOO-MANY-LAYERS",
+            format!("depth of cut I{dd} makes {:.0} layers", poly.v_max / dd),
+            "give a larger depth of cut I",
+        ));
+    }
+    let mut moves = rough(&poly, &frame, &removal, false);
+    moves.extend(passes::moved(shape, removal.final_off));
+    Ok(moves)
 }
 
 /// The depth of cut and the allowances: the Haas/FS15 one-block form (D in the block), or
@@ -345,7 +380,7 @@ struct Frame {
 
 impl Frame {
     fn new(
-        c: &Cycle,
+        (code, span): (i32, Span),
         shape: &FinishingShape,
         g72: bool,
         force_type2: bool,
@@ -361,7 +396,7 @@ impl Frame {
                 "LS-SHAPE-NS",
                 format!(
                     "the ns block of {} must move in {ax} (type I: {ax} only; type II: {ax} and {other})",
-                    super::name(c.code)
+                    super::name(code)
                 ),
                 format!("start the shape with a G00/G01 move in {ax} from the start point"),
             ));
@@ -380,12 +415,13 @@ impl Frame {
             ));
         }
         if (if g72 { end.r - b.r } else { end.z - b.z }).abs() < EPS {
-            return Err(c.alarm(
+            return Err(Diagnostic::new(
+                span,
                 "PS064",
                 format!("the finishing shape does not travel in {other} from B to C"),
                 format!(
                     "{} cuts along {other}: the shape must run along {other}",
-                    super::name(c.code)
+                    super::name(code)
                 ),
             ));
         }

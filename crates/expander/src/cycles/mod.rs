@@ -10,7 +10,7 @@ use gcode::{Subprogram, Word};
 pub(crate) mod contour;
 pub(crate) mod drill;
 mod g70;
-mod g71_g72;
+pub(crate) mod g71_g72;
 mod g73;
 mod g74_g75;
 pub(crate) mod g75_1;
@@ -19,6 +19,7 @@ pub(crate) mod g76_linuxcnc;
 mod g90;
 mod g92;
 mod g94;
+pub(crate) mod linuxcnc_g7x;
 mod passes;
 mod shape_return;
 

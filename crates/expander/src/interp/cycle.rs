@@ -64,7 +64,7 @@ impl Interp<'_> {
     /// The shapes a cycle intends, for the analysis. G73 then G70 on one shape hand it over
     /// twice: it is kept once, as the later cycle's (the one that finishes it: its tool
     /// owns the contour).
-    fn record_intended(
+    pub(super) fn record_intended(
         &mut self,
         intended: Vec<(crate::IntendedKind, Vec<crate::Pt>)>,
         span: Span,
@@ -91,7 +91,7 @@ impl Interp<'_> {
     /// Emit a cycle's moves with the block's `span` (a move's own span wins): G70 runs its
     /// pass as one compensation section (start-up A → B, or the move of the block that
     /// wrote G41/G42 inside the shape; cancel back to A). Where the program goes next.
-    fn emit_cycle(&mut self, out: Output, span: Span) -> Result<Flow, Diagnostic> {
+    pub(super) fn emit_cycle(&mut self, out: Output, span: Span) -> Result<Flow, Diagnostic> {
         let side = out.comp.and_then(|shape_side| shape_side.or(self.comp));
         let feed = self.feed;
         for (k, m) in out.moves.into_iter().enumerate() {

@@ -28,6 +28,8 @@ use std::sync::Arc;
 const MAX_NESTING: u32 = 4;
 /// Haas nests subprogram calls up to 9 levels (S15; **Interpretation** for M97/M98).
 const MAX_NESTING_HAAS: u32 = 9;
+/// `LinuxCNC` nests subroutine calls up to 10 levels ([O] "Subroutines").
+const MAX_NESTING_LINUXCNC: u32 = 10;
 
 /// What a call runs.
 pub(super) enum Callee {
@@ -40,6 +42,11 @@ pub(super) enum Callee {
     File(String),
     /// The blocks from this N number of the calling program (Haas M97).
     Local(u32),
+    /// The blocks from this index of the calling program (`LinuxCNC`'s `o… call`).
+    At(usize),
+    /// `LinuxCNC`'s subroutine of another file: `o<name> call` runs the `o<name> sub` of
+    /// `name.ngc` in the main program's folder (`o123 call`: `123.ngc`).
+    SubFile(macro_b::OLabel),
 }
 
 /// How an O program was left.
@@ -82,12 +89,16 @@ pub(super) enum Flow {
         seq: u32,
         span: Span,
     },
+    /// A `LinuxCNC` G70/G71/G72 block (as `LinuxCNC` means it): it runs its profile O-sub.
+    G7x(Box<gcode::Block>),
 }
 
 /// Where a call goes: program index and first block in this file, or a library program.
 enum Target {
     Here(usize, usize),
     Library(Arc<Program>, usize),
+    /// A library program from this block.
+    LibraryAt(Arc<Program>, usize, usize),
 }
 
 /// The index of the one block numbered `seq` (an alarm at `span` when absent or written
@@ -188,6 +199,10 @@ impl Interp<'_> {
                     jump = Some(span);
                     seq_index(blocks, seq, span, "branches to")?
                 }
+                Flow::G7x(b) => {
+                    self.linuxcnc_g7x(program, index, depth, &b)?;
+                    i + 1
+                }
             };
             if i <= from {
                 self.came_back(&mut guard, blocks, (from, i), jump)?;
@@ -245,10 +260,10 @@ impl Interp<'_> {
         depth: u32,
         (callee, times, span, locals): (Callee, u32, Span, Option<Box<macro_b::Locals>>),
     ) -> Result<Called, Diagnostic> {
-        let limit = if self.machine.control == Control::Haas {
-            MAX_NESTING_HAAS
-        } else {
-            MAX_NESTING
+        let limit = match self.machine.control {
+            Control::Haas => MAX_NESTING_HAAS,
+            Control::LinuxCnc => MAX_NESTING_LINUXCNC,
+            _ => MAX_NESTING,
         };
         if depth + 1 > limit {
             return Err(alarm(
@@ -258,10 +273,14 @@ impl Interp<'_> {
                 "remove the recursive call or flatten the nesting",
             ));
         }
-        let target = self.callee(program, index, &callee, span)?;
+        let target = match &callee {
+            Callee::SubFile(label) => self.sub_file(label, span)?,
+            _ => self.callee(program, index, &callee, span)?,
+        };
         let (called, sub, from) = match &target {
             Target::Here(sub, from) => (program, *sub, *from),
             Target::Library(p, sub) => (&**p, *sub, 0),
+            Target::LibraryAt(p, sub, from) => (&**p, *sub, *from),
         };
         let level = self.enter_call(locals, matches!(callee, Callee::Modal(_)));
         for _ in 0..times {
@@ -295,6 +314,8 @@ impl Interp<'_> {
                 return Ok(Target::Here(index, from));
             }
             Callee::File(ref path) => return self.file(path, span),
+            Callee::At(from) => return Ok(Target::Here(index, from)),
+            Callee::SubFile(_) => unreachable!("a file's subroutine is found by sub_file"),
             Callee::Program(n) | Callee::Modal(n) => n,
         };
         if let Some(sub) = program
@@ -334,6 +355,37 @@ impl Interp<'_> {
                 "PS078",
                 format!("subprogram O{number:04}: {why}"),
                 "fix the library file",
+            )),
+        }
+    }
+
+    /// The `LinuxCNC` subroutine `label` of the file named after it (`o<name>`: `name.ngc`,
+    /// `o123`: `123.ngc`) in the main program's folder: from the block after its `sub`.
+    fn sub_file(&mut self, label: &macro_b::OLabel, span: Span) -> Result<Target, Diagnostic> {
+        let name = match label {
+            macro_b::OLabel::Name(n) => format!("{n}.ngc"),
+            macro_b::OLabel::Number(n) => format!("{n}.ngc"),
+        };
+        let help = format!("define {label} sub … {label} endsub in this file, or put {name} (holding it) beside the program");
+        let program = match &self.opts.library {
+            Some(lib) => lib.0.file(&name),
+            None => Err("no folder of the main program to look in".to_string()),
+        }
+        .map_err(|why| {
+            alarm(
+                span,
+                "PS078",
+                format!("{label} call: the subroutine is not defined in this file, and {why}"),
+                help.clone(),
+            )
+        })?;
+        match self.o_sub_in_file(&program, label)? {
+            Some(line) => Ok(Target::LibraryAt(program, 0, line + 1)),
+            None => Err(alarm(
+                span,
+                "PS078",
+                format!("{label} call: {name} does not define {label} sub"),
+                help,
             )),
         }
     }

@@ -38,7 +38,7 @@ use crate::cycles::Retained;
 use crate::tnrc::{Nose, Side};
 use crate::{Diagnostic, DrillReturn, Pt, Segment, Span};
 use gcode::Blocks;
-use macro_b::{Expr, StmtKind};
+use macro_b::{Expr, OKeyword, StmtKind};
 use std::collections::BTreeMap;
 
 /// Jump targets remembered per program level.
@@ -239,7 +239,7 @@ impl Interp<'_> {
                 numbers.push(n);
             }
         }
-        let named: Vec<String> = numbers
+        let mut named: Vec<String> = numbers
             .iter()
             .map(|&n| match self.value_for_message(n, jump) {
                 Some(v) if v.is_vacant() => format!("#{n} (vacant)"),
@@ -247,9 +247,26 @@ impl Interp<'_> {
                 None => format!("#{n}"),
             })
             .collect();
+        // LinuxCNC's named parameters
+        for name in conditions.iter().flat_map(Expr::named) {
+            let value = self.variables().and_then(|v| v.named(&name));
+            let shown = match value {
+                Some(v) if !v.is_vacant() => format!("#<{name}> (= {v})"),
+                _ => format!("#<{name}>"),
+            };
+            if !named.contains(&shown) {
+                named.push(shown);
+            }
+        }
         let head = blocks.at(target).span.line;
         let (what, why) = explain(period, &conditions, &named);
-        let help = if conditions.is_empty() {
+        let o_word = matches!(
+            blocks.at(from).stmt.as_deref().map(|s| &s.kind),
+            Some(StmtKind::OWord { .. })
+        );
+        let help = if o_word {
+            "make the loop change what its condition tests (step a counter, move the tool), or leave it with o… break; a control would run it until the operator stops it"
+        } else if conditions.is_empty() {
             "give the loop a way out (IF [ … ] GOTO past it, or a WHILE condition), or remove the jump back; a control would run it until the operator stops it"
         } else {
             "make the loop change what its condition tests (step a counter, move the tool), or leave it with a GOTO; a control would run it until the operator stops it"
@@ -299,7 +316,16 @@ fn exit_conditions(blocks: &Blocks, from: usize, target: usize) -> Vec<Expr> {
     let stmt = |i: usize| blocks.at(i).stmt.as_deref().cloned();
     let own = stmt(from).and_then(|s| match &s.kind {
         StmtKind::IfGoto { cond, .. } => Some(cond.clone()),
-        StmtKind::End { .. } => stmt(target).and_then(|w| w.condition().cloned()),
+        StmtKind::End { .. }
+        | StmtKind::OWord {
+            keyword: OKeyword::EndWhile,
+            ..
+        } => stmt(target).and_then(|w| w.condition().cloned()),
+        // the `while` that closes a LinuxCNC `do`
+        StmtKind::OWord {
+            keyword: OKeyword::While,
+            ..
+        } => s.condition().cloned(),
         _ => None,
     });
     match own {

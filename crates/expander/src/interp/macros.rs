@@ -19,6 +19,8 @@ use macro_b::{
 };
 use std::borrow::Cow;
 
+mod o_words;
+
 /// The macro side of a run.
 pub(crate) struct Macros {
     state: MacroState,
@@ -120,6 +122,28 @@ impl System for Sys<'_, '_> {
             None => false,
         }
     }
+    fn named_parameter(&self, name: &str) -> Option<f64> {
+        let it = &self.it;
+        let here = it.pos - it.shift;
+        let flag = |b: bool| if b { 1.0 } else { 0.0 };
+        Some(match name {
+            // LinuxCNC keeps X as a radius inside (`_setup.current_x`), in program units
+            "_x" => here.r / it.unit(),
+            "_z" => here.z / it.unit(),
+            "_metric" => flag(!it.inch),
+            "_imperial" => flag(it.inch),
+            "_absolute" => flag(!it.incremental),
+            "_incremental" => flag(it.incremental),
+            "_lathe_diameter_mode" => flag(it.x_diameter),
+            "_lathe_radius_mode" => flag(!it.x_diameter),
+            "_units_per_rev" => flag(it.per_rev),
+            "_units_per_minute" => flag(!it.per_rev),
+            "_feed" => it.feed,
+            "_rpm" => it.s_value,
+            "_current_tool" => f64::from(it.tool),
+            _ => return None,
+        })
+    }
     fn stop_message(&mut self, number: f64, message: &str) -> bool {
         self.it.warn(
             self.span,
@@ -149,6 +173,7 @@ fn code(kind: ErrorKind) -> &'static str {
         | ErrorKind::LoopNesting
         | ErrorKind::LoopCrossing
         | ErrorKind::IfStructure => "PS0124",
+        ErrorKind::OWordStructure => "LS-O-WORD",
         ErrorKind::Budget => "LS-LOOP",
         ErrorKind::CallDepth => "PS077",
         ErrorKind::ProgramMissing => "PS078",
@@ -275,6 +300,19 @@ impl Macros {
                     return Ok(None);
                 }
                 Flow::Next
+            }
+            StmtKind::OWord {
+                label,
+                keyword,
+                args,
+            } => {
+                let w = o_words::OWord {
+                    label,
+                    keyword: *keyword,
+                    args,
+                    span: stmt.span,
+                };
+                self.o_word((index, i), &w, sys)?
             }
         }))
     }
@@ -507,6 +545,13 @@ impl Interp<'_> {
             .report()
             .into_iter()
             .map(|v| (format!("#{}", v.number), v.value.get()))
+            .chain(
+                m.state
+                    .vars
+                    .named_report()
+                    .into_iter()
+                    .map(|(n, v)| (format!("#<{n}>"), v.get())),
+            )
             .collect();
         let mut lines: Vec<(u32, u64)> = Vec::new();
         for (sub, counts) in program.programs.iter().zip(&m.counts) {
@@ -705,6 +750,41 @@ impl Interp<'_> {
                 m.in_modal -= 1;
             }
         }
+    }
+
+    /// The `sub` line of `LinuxCNC` subroutine `label` in O program `index` of `program`.
+    pub(super) fn o_sub_line(
+        &self,
+        program: &Program,
+        index: usize,
+        label: &macro_b::OLabel,
+    ) -> Option<usize> {
+        let m = self.macros.as_ref()?;
+        m.programs[m.base_of(program)? + index].o_words().sub(label)
+    }
+
+    /// The `sub` line of `LinuxCNC` subroutine `label` in the first O program of `program`
+    /// (a file of the library), its structure prepared the first time.
+    pub(super) fn o_sub_in_file(
+        &mut self,
+        program: &Program,
+        label: &macro_b::OLabel,
+    ) -> Result<Option<usize>, Diagnostic> {
+        let Some(m) = self.macros.as_mut() else {
+            return Ok(None);
+        };
+        let base = m.base(program).map_err(diagnostic)?;
+        Ok(m.programs.get(base).and_then(|p| p.o_words().sub(label)))
+    }
+
+    /// The locals of a `LinuxCNC` call without arguments: the caller's #1…#30.
+    pub(super) fn o_call_locals(&self) -> Option<Box<Locals>> {
+        let m = self.macros.as_ref()?;
+        let mut locals: Locals = [Value::VACANT; 33];
+        for (n, slot) in locals.iter_mut().enumerate().take(30) {
+            *slot = m.state.vars.local(n + 1);
+        }
+        Some(Box::new(locals))
     }
 
     /// Custom macro B's variables, when it is on.

@@ -17,6 +17,7 @@ mod flow;
 mod frame;
 mod g10;
 mod linuxcnc;
+mod linuxcnc_g7x;
 mod loop_guard;
 mod macros;
 mod modal;
@@ -230,6 +231,8 @@ pub(crate) struct Interp<'m> {
     arc_absolute: bool,
     /// `LinuxCNC`: the tool a T word prepared for the next M6.
     pending_tool: Option<u32>,
+    /// `LinuxCNC` G7x: the profile O-sub running, its moves captured.
+    g7x_capture: Option<linuxcnc_g7x::Capture>,
 }
 
 /// A controller alarm.
@@ -293,6 +296,7 @@ impl<'m> Interp<'m> {
             x_diameter: machine.x_mode == crate::XMode::Diameter,
             arc_absolute: false,
             pending_tool: None,
+            g7x_capture: None,
         }
     }
 
@@ -376,9 +380,15 @@ impl<'m> Interp<'m> {
     /// block runs as `LinuxCNC` means it (`linuxcnc_block`: radius X, absolute arc centres).
     fn block(&mut self, sub: &Subprogram, b: &Block, index: usize) -> Result<Flow, Diagnostic> {
         if self.machine.control == crate::Control::LinuxCnc {
-            if let Some(meant) = self.linuxcnc_block(b) {
-                return self.run_block(sub, &meant, index);
+            let meant = self.linuxcnc_block(b);
+            let b = meant.as_ref().unwrap_or(b);
+            if linuxcnc_g7x::g7x_code(b).is_some() {
+                return Ok(Flow::G7x(Box::new(b.clone())));
             }
+            if let Some(profile) = self.g7x_hook(b) {
+                return self.capture_block(sub, &profile, index);
+            }
+            return self.run_block(sub, b, index);
         }
         self.run_block(sub, b, index)
     }

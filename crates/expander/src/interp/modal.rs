@@ -239,14 +239,8 @@ impl Interp<'_> {
         if self.machine.control != crate::Control::LinuxCnc {
             return None;
         }
-        let cycle = match t {
-            crate::linuxcnc::CYCLE_G70 => "G70",
-            t if (crate::linuxcnc::CYCLE_G72 - 2..=crate::linuxcnc::CYCLE_G71).contains(&t) => {
-                "G71/G72"
-            }
-            t => return crate::linuxcnc::unsupported(t).map(str::to_string),
-        };
-        Some(format!("LinuxCNC's {cycle} cycle is not run by latsim yet"))
+        // (its G70, G71, G72 and G76 run: `linuxcnc_g7x`, `cycles/g76_linuxcnc`)
+        crate::linuxcnc::unsupported(t).map(str::to_string)
     }
 
     /// Whether the block has a G code whose canonical meaning satisfies `pred`.

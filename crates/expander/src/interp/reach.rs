@@ -16,6 +16,10 @@ pub(super) fn unreachable_tail(main: &Subprogram) -> Option<Cow<'_, Block>> {
     let blocks = &main.blocks;
     let end = (0..blocks.len()).find(|&i| blocks.ends_program(i))?;
     let first = blocks.get(end + 1)?;
+    if (end + 1..blocks.len()).any(|i| closes_o_word(&blocks.at(i))) {
+        // LinuxCNC: the end stands inside an o-word block (`o10 if … M2 o10 endif`)
+        return None;
+    }
     let tail: Vec<u32> = (end + 1..blocks.len())
         .filter_map(|i| blocks.seq(i))
         .collect();
@@ -35,6 +39,24 @@ pub(super) fn unreachable_tail(main: &Subprogram) -> Option<Cow<'_, Block>> {
     }
     let referred = tail.iter().any(|n| named.contains(n));
     (!referred).then_some(first)
+}
+
+/// Whether `b` continues or closes a `LinuxCNC` o-word block opened before it.
+fn closes_o_word(b: &Block) -> bool {
+    use macro_b::{OKeyword as K, StmtKind};
+    matches!(
+        b.stmt.as_deref().map(|s| &s.kind),
+        Some(StmtKind::OWord {
+            keyword: K::ElseIf
+                | K::Else
+                | K::EndIf
+                | K::EndWhile
+                | K::While
+                | K::EndRepeat
+                | K::EndSub,
+            ..
+        })
+    )
 }
 
 #[cfg(test)]

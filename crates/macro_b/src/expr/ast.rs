@@ -11,6 +11,9 @@ pub enum VarRef {
     Direct(u32),
     /// `#[expr]`; the expression is rounded to an integer when read.
     Indirect(Box<Expr>),
+    /// `LinuxCNC`'s named parameter `#<name>` (lower case, blanks removed): local to the
+    /// call level, global when the name starts with `_`.
+    Named(String),
 }
 
 /// A macro function (spec §5.4).
@@ -50,6 +53,8 @@ pub enum Func {
     Bin,
     /// `BCD`: binary to BCD.
     Bcd,
+    /// `LinuxCNC`'s `EXISTS[#<name>]`: 1 when the named parameter is defined.
+    Exists,
 }
 
 impl Func {
@@ -73,6 +78,7 @@ impl Func {
             "ADP" => Self::Adp,
             "BIN" => Self::Bin,
             "BCD" => Self::Bcd,
+            "EXISTS" => Self::Exists,
             _ => return None,
         })
     }
@@ -97,6 +103,7 @@ impl Func {
             Self::Adp => "ADP",
             Self::Bin => "BIN",
             Self::Bcd => "BCD",
+            Self::Exists => "EXISTS",
         }
     }
 }
@@ -223,7 +230,7 @@ impl Expr {
     pub fn shift_spans(&mut self, by: u32) {
         self.span.offset += by;
         match &mut self.kind {
-            ExprKind::Num(_) | ExprKind::Var(VarRef::Direct(_)) => {}
+            ExprKind::Num(_) | ExprKind::Var(VarRef::Direct(_) | VarRef::Named(_)) => {}
             ExprKind::Var(VarRef::Indirect(e))
             | ExprKind::Group(e)
             | ExprKind::Neg(e)
@@ -244,9 +251,36 @@ impl Expr {
         found
     }
 
+    /// The named parameters it reads (`#<name>`), in the order written, each once.
+    pub fn named(&self) -> Vec<String> {
+        let mut found = Vec::new();
+        self.collect_named(&mut found);
+        found
+    }
+
+    fn collect_named(&self, found: &mut Vec<String>) {
+        match &self.kind {
+            ExprKind::Num(_) | ExprKind::Var(VarRef::Direct(_)) => {}
+            ExprKind::Var(VarRef::Named(n)) => {
+                if !found.contains(n) {
+                    found.push(n.clone());
+                }
+            }
+            ExprKind::Var(VarRef::Indirect(e))
+            | ExprKind::Group(e)
+            | ExprKind::Neg(e)
+            | ExprKind::Pos(e) => e.collect_named(found),
+            ExprKind::Binary(_, a, b) => {
+                a.collect_named(found);
+                b.collect_named(found);
+            }
+            ExprKind::Call(_, args) => args.iter().for_each(|a| a.collect_named(found)),
+        }
+    }
+
     fn collect_variables(&self, found: &mut Vec<u32>) {
         match &self.kind {
-            ExprKind::Num(_) => {}
+            ExprKind::Num(_) | ExprKind::Var(VarRef::Named(_)) => {}
             ExprKind::Var(VarRef::Direct(n)) => {
                 if !found.contains(n) {
                     found.push(*n);
@@ -270,6 +304,7 @@ impl fmt::Display for VarRef {
         match self {
             Self::Direct(n) => write!(f, "#{n}"),
             Self::Indirect(e) => write!(f, "#[{e}]"),
+            Self::Named(n) => write!(f, "#<{n}>"),
         }
     }
 }
@@ -374,6 +409,123 @@ pub enum StmtKind {
         /// The target sequence number.
         target: Expr,
     },
+    /// `LinuxCNC`'s o-word: `o100 if [c]`, `o<name> call [a] [b]`, `o100 endsub [v]` …
+    OWord {
+        /// The o-number or name.
+        label: OLabel,
+        /// What it does.
+        keyword: OKeyword,
+        /// Its bracketed expressions (the condition, the count, the arguments, the value).
+        args: Vec<Expr>,
+    },
+}
+
+/// The label of a `LinuxCNC` o-word: `o100` or `o<name>` (lower case).
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub enum OLabel {
+    /// `o100`.
+    Number(u32),
+    /// `o<name>`.
+    Name(String),
+}
+
+impl fmt::Display for OLabel {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Number(n) => write!(f, "o{n}"),
+            Self::Name(n) => write!(f, "o<{n}>"),
+        }
+    }
+}
+
+/// What a `LinuxCNC` o-word does ([O] in docs/linuxcnc.md).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OKeyword {
+    /// `sub`: a subroutine's definition starts (skipped where it stands).
+    Sub,
+    /// `endsub [v]`: the definition ends; run, it returns.
+    EndSub,
+    /// `return [v]`: return from the subroutine.
+    Return,
+    /// `call [a] [b] …`: call the subroutine with #1… set.
+    Call,
+    /// `if [c]`.
+    If,
+    /// `elseif [c]`.
+    ElseIf,
+    /// `else`.
+    Else,
+    /// `endif`.
+    EndIf,
+    /// `while [c]`: a loop's head, or the end of a `do` loop with the same label.
+    While,
+    /// `endwhile`.
+    EndWhile,
+    /// `do`.
+    Do,
+    /// `repeat [n]`.
+    Repeat,
+    /// `endrepeat`.
+    EndRepeat,
+    /// `break`: leave the loop.
+    Break,
+    /// `continue`: the loop's next test.
+    Continue,
+}
+
+impl OKeyword {
+    /// The keyword of a lower-case word.
+    pub fn from_word(w: &str) -> Option<Self> {
+        Some(match w {
+            "sub" => Self::Sub,
+            "endsub" => Self::EndSub,
+            "return" => Self::Return,
+            "call" => Self::Call,
+            "if" => Self::If,
+            "elseif" => Self::ElseIf,
+            "else" => Self::Else,
+            "endif" => Self::EndIf,
+            "while" => Self::While,
+            "endwhile" => Self::EndWhile,
+            "do" => Self::Do,
+            "repeat" => Self::Repeat,
+            "endrepeat" => Self::EndRepeat,
+            "break" => Self::Break,
+            "continue" => Self::Continue,
+            _ => return None,
+        })
+    }
+
+    /// The keyword as written.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Sub => "sub",
+            Self::EndSub => "endsub",
+            Self::Return => "return",
+            Self::Call => "call",
+            Self::If => "if",
+            Self::ElseIf => "elseif",
+            Self::Else => "else",
+            Self::EndIf => "endif",
+            Self::While => "while",
+            Self::EndWhile => "endwhile",
+            Self::Do => "do",
+            Self::Repeat => "repeat",
+            Self::EndRepeat => "endrepeat",
+            Self::Break => "break",
+            Self::Continue => "continue",
+        }
+    }
+
+    /// How many bracketed expressions it takes: (at least, at most).
+    pub fn arity(self) -> (usize, usize) {
+        match self {
+            Self::If | Self::ElseIf | Self::While | Self::Repeat => (1, 1),
+            Self::EndSub | Self::Return => (0, 1),
+            Self::Call => (0, 30),
+            _ => (0, 0),
+        }
+    }
 }
 
 /// A macro statement with the span of its text.
@@ -394,6 +546,11 @@ impl Stmt {
             | StmtKind::IfThenBlock { cond, .. }
             | StmtKind::IfBlock { cond }
             | StmtKind::While { cond, .. } => Some(cond),
+            StmtKind::OWord {
+                keyword: OKeyword::If | OKeyword::ElseIf | OKeyword::While,
+                args,
+                ..
+            } => args.first(),
             _ => None,
         }
     }
@@ -430,6 +587,7 @@ impl Stmt {
             }
             StmtKind::IfBlock { cond } | StmtKind::While { cond, .. } => cond.shift_spans(by),
             StmtKind::Goto { target } => target.shift_spans(by),
+            StmtKind::OWord { args, .. } => args.iter_mut().for_each(|a| a.shift_spans(by)),
             StmtKind::Else | StmtKind::EndIf | StmtKind::Do { .. } | StmtKind::End { .. } => {}
         }
     }

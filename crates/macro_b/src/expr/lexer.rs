@@ -22,6 +22,8 @@ pub(super) enum Tok {
     Word(String),
     /// `( … )` text.
     Comment(String),
+    /// `LinuxCNC`'s `<name>` (after `#` or `o`): lower case, blanks removed.
+    Name(String),
     End,
 }
 
@@ -93,6 +95,7 @@ impl Parser<'_> {
                 '/' => simple(Tok::Slash),
                 '=' => simple(Tok::Assign),
                 ';' => (Tok::End, start),
+                '<' => self.name(start)?,
                 '(' => {
                     let close = text[start..].find(')').map(|i| start + i);
                     let end = close.map_or(text.len(), |i| i + 1);
@@ -147,6 +150,32 @@ impl Parser<'_> {
         Ok(Token { tok, start, end })
     }
 
+    /// `<name>` from the `<` at `start`: up to its `>`, blanks removed, lower case
+    /// (`LinuxCNC`'s named parameters and o-word names, [OV] "Named Parameters").
+    fn name(&self, start: usize) -> Result<(Tok, usize)> {
+        let text = self.src.text;
+        let Some(close) = text[start..].find('>').map(|i| start + i) else {
+            return Err(MacroError::syntax(
+                self.src.span(start, text.len()),
+                "'<' without its '>'",
+                "write a name as <name>, e.g. #<depth> or o<turn>",
+            ));
+        };
+        let name: String = text[start + 1..close]
+            .chars()
+            .filter(|c| !c.is_whitespace())
+            .flat_map(char::to_lowercase)
+            .collect();
+        if name.is_empty() {
+            return Err(MacroError::syntax(
+                self.src.span(start, close + 1),
+                "an empty name <>",
+                "write a name between < and >",
+            ));
+        }
+        Ok((Tok::Name(name), close + 1))
+    }
+
     pub(super) fn peek_n(&mut self, k: usize) -> Result<&Token> {
         while self.ahead.len() <= k {
             let t = self.lex_one()?;
@@ -190,6 +219,7 @@ impl Parser<'_> {
             Tok::Num(v, _) => format!("the number {v}"),
             Tok::Word(w) => format!("'{w}'"),
             Tok::Comment(_) => "a comment".into(),
+            Tok::Name(n) => format!("<{n}>"),
             Tok::End => "the end of the block".into(),
         }
     }

@@ -18,7 +18,7 @@ mod statement;
 #[cfg(test)]
 mod tests;
 
-pub use ast::{BinOp, Expr, ExprKind, Func, Stmt, StmtKind, VarRef};
+pub use ast::{BinOp, Expr, ExprKind, Func, OKeyword, OLabel, Stmt, StmtKind, VarRef};
 
 use crate::error::Result;
 use crate::options::Options;
@@ -67,4 +67,34 @@ pub fn starts_statement(text: &str) -> bool {
     ["IF", "WHILE", "WH", "DO", "END", "GOTO", "ELSE", "ENDIF"]
         .iter()
         .any(|k| k.eq_ignore_ascii_case(word))
+}
+
+/// [`starts_statement`] for `dialect`: under `LinuxCNC` also an o-word (`o100 sub`,
+/// `o<name> call`, an `o` label followed by one of its keywords).
+pub fn starts_statement_in(text: &str, dialect: crate::Dialect) -> bool {
+    starts_statement(text) || (dialect == crate::Dialect::LinuxCnc && starts_o_word(text))
+}
+
+/// Whether the text starts with an o-word: `o`, a number or `<name>`, a word.
+fn starts_o_word(text: &str) -> bool {
+    let t = text.trim_start();
+    let Some(rest) = t.strip_prefix(['o', 'O']) else {
+        return false;
+    };
+    let rest = rest.trim_start_matches([' ', '\t']);
+    let rest = if let Some(named) = rest.strip_prefix('<') {
+        match named.split_once('>') {
+            Some((_, after)) => after,
+            None => return true, // the parser names the missing '>'
+        }
+    } else {
+        let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+        if digits == 0 {
+            return false;
+        }
+        &rest[digits..]
+    };
+    let rest = rest.trim_start_matches([' ', '\t']);
+    // a keyword, or a word that is no address (`o1 frob`: the parser names it)
+    rest.bytes().take_while(u8::is_ascii_alphabetic).count() >= 2
 }

@@ -24,7 +24,7 @@ pub(super) struct Parser<'a> {
 }
 
 pub(super) fn keyword_help() -> &'static str {
-    "macro words are IF GOTO THEN WHILE DO END, the operators EQ NE GT GE LT LE AND OR XOR MOD, and the functions SIN COS TAN ASIN ACOS ATAN SQRT ABS ROUND FIX FUP LN EXP POW ADP BIN BCD"
+    "macro words are IF GOTO THEN WHILE DO END, the operators EQ NE GT GE LT LE AND OR XOR MOD, and the functions SIN COS TAN ASIN ACOS ATAN SQRT ABS ROUND FIX FUP LN EXP POW ADP BIN BCD (LinuxCNC: EXISTS)"
 }
 
 impl<'a> Parser<'a> {
@@ -168,6 +168,10 @@ impl Parser<'_> {
                 self.expect_rbr(&open)?;
                 VarRef::Indirect(Box::new(e))
             }
+            Tok::Name(name) => {
+                self.bump()?;
+                VarRef::Named(name)
+            }
             Tok::Hash => {
                 return Err(
                     self.error_here("'##' is not valid", "write an indirect reference as #[#1]")
@@ -237,6 +241,13 @@ impl Parser<'_> {
         }
         let open = self.open_bracket()?;
         let mut args = vec![self.expr()?];
+        if f == Func::Exists && !matches!(&args[0].kind, ExprKind::Var(VarRef::Named(_))) {
+            return Err(MacroError::syntax(
+                args[0].span,
+                "EXISTS takes a named parameter",
+                "write EXISTS[#<name>]",
+            ));
+        }
         if *self.peek()? == Tok::Comma {
             if !matches!(f, Func::Atan | Func::Pow) {
                 return Err(self.error_here(

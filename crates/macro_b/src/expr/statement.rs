@@ -4,7 +4,7 @@ use super::ast::*;
 use super::lexer::{Tok, Token};
 use super::parser::Parser;
 use crate::error::{ErrorKind, MacroError, Result};
-use crate::options::Options;
+use crate::options::{Dialect, Options};
 
 impl Parser<'_> {
     pub(super) fn assignment(&mut self) -> Result<Stmt> {
@@ -67,6 +67,18 @@ impl Parser<'_> {
                 ));
             }
         };
+        if options.dialect == Dialect::LinuxCnc {
+            if word == "O" {
+                self.bump()?;
+                return self.o_word(start);
+            }
+            return Err(MacroError::new(
+                ErrorKind::Unsupported,
+                self.span_of(&first),
+                format!("{word} is FANUC macro B, not LinuxCNC"),
+                "LinuxCNC's flow is o-words: o100 if [c] … o100 endif, o100 while [c] … o100 endwhile, o100 sub … o100 endsub with o100 call",
+            ));
+        }
         self.bump()?;
         let kind = match word.as_str() {
             "IF" => self.if_statement(options)?,
@@ -196,5 +208,67 @@ impl Parser<'_> {
         let id = self.loop_id("DO")?;
         self.expect_end("the loop number")?;
         Ok(StmtKind::While { cond, id })
+    }
+}
+
+impl Parser<'_> {
+    /// A `LinuxCNC` o-word after its `o` ([O] in docs/linuxcnc.md): the label (`100` or
+    /// `<name>`), the keyword and its bracketed expressions.
+    fn o_word(&mut self, start: usize) -> Result<Stmt> {
+        let t = self.bump()?;
+        let label = match &t.tok {
+            Tok::Num(v, false) if *v <= f64::from(u32::MAX) => OLabel::Number(*v as u32),
+            Tok::Name(n) => OLabel::Name(n.clone()),
+            other => {
+                let found = Self::describe(other);
+                return Err(MacroError::syntax(
+                    self.span_of(&t),
+                    format!("an o-word needs a number or <name>, found {found}"),
+                    "write o100 sub or o<name> sub (a computed o[…] label is not read by latsim)",
+                ));
+            }
+        };
+        let k = self.bump()?;
+        let keyword = match &k.tok {
+            Tok::Word(w) => OKeyword::from_word(&w.to_ascii_lowercase()),
+            _ => None,
+        };
+        let Some(keyword) = keyword else {
+            let found = Self::describe(&k.tok);
+            return Err(MacroError::syntax(
+                self.span_of(&k),
+                format!("{label} needs a keyword, found {found}"),
+                "o-word keywords: sub endsub return call if elseif else endif while endwhile do repeat endrepeat break continue",
+            ));
+        };
+        let (least, most) = keyword.arity();
+        let mut args = Vec::new();
+        while *self.peek()? == Tok::LBr {
+            if args.len() == most {
+                return Err(self.error_here(
+                    format!(
+                        "{label} {} takes at most {most} bracketed value(s)",
+                        keyword.name()
+                    ),
+                    "remove the extra [ … ]",
+                ));
+            }
+            args.push(self.primary()?);
+        }
+        if args.len() < least {
+            return Err(self.error_here(
+                format!("{label} {} needs its value in brackets", keyword.name()),
+                format!("write {label} {} [ … ]", keyword.name()),
+            ));
+        }
+        self.expect_end(&format!("{label} {}", keyword.name()))?;
+        Ok(Stmt {
+            kind: StmtKind::OWord {
+                label,
+                keyword,
+                args,
+            },
+            span: self.span_from(start),
+        })
     }
 }

@@ -135,7 +135,9 @@ impl Reader<'_> {
             self.note(open, "nested parentheses read as one comment: a FANUC control would end the comment at the first ')' and read the rest as code");
         }
         let body = &rest[..end.unwrap_or(rest.len())];
-        if body.contains('%') {
+        if body.contains('%') && self.options.macros != Some(macro_b::Dialect::LinuxCnc) {
+            // (LinuxCNC reads a file to its end: `%` in a comment is text, as in
+            // `(debug, %.3f#1)`)
             self.note(open, "'%' inside a comment: read on as text (a FANUC control stops reading the file at a %)");
         }
         let stop = self.offset() + body.len();
@@ -159,6 +161,11 @@ impl Reader<'_> {
         self.end_block()?;
         if self.found.is_some() {
             return Ok(Step::Found);
+        }
+        if self.options.macros == Some(macro_b::Dialect::LinuxCnc) {
+            // LinuxCNC: the rest of the line is a comment, whatever it holds ([OV] "Comments")
+            self.skip_line();
+            return Ok(Step::Go);
         }
         let rest = self.rest_of_line();
         if self.pos < self.no_prose_before {
@@ -246,12 +253,8 @@ impl Reader<'_> {
         if self.options.macros == Some(macro_b::Dialect::LinuxCnc)
             && found.whose.starts_with("LinuxCNC")
         {
-            // --control linuxcnc: LinuxCNC's own construct that latsim does not read yet
-            return Some(ParseError::new(
-                line,
-                format!("{} is not read by latsim yet under --control linuxcnc", found.what),
-                "docs/linuxcnc.md lists the LinuxCNC constructs latsim reads; write the subroutine out as plain blocks",
-            ));
+            // --control linuxcnc reads LinuxCNC's constructs: the error is the reader's own
+            return None;
         }
         Some(ParseError::new(
             line,

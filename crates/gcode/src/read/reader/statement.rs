@@ -11,9 +11,10 @@ impl Reader<'_> {
     /// Whether a macro statement starts at `span` (macro B on, nothing but an N word read
     /// of the block).
     pub(super) fn statement_starts(&self, span: Span) -> bool {
-        self.options.macros.is_some()
-            && self.at_statement_start()
-            && macro_b::starts_statement(&self.src[span.offset as usize..])
+        self.options.macros.is_some_and(|dialect| {
+            self.at_statement_start()
+                && macro_b::starts_statement_in(&self.src[span.offset as usize..], dialect)
+        })
     }
 
     /// A macro statement from `start` (already read) to the end of the block.
@@ -25,6 +26,7 @@ impl Reader<'_> {
             Some(Dialect::LinuxCnc) => macro_b::Options::linuxcnc(),
             _ => macro_b::Options::fanuc(),
         };
+        self.named_only_under_linuxcnc(text, start)?;
         let stmt =
             macro_b::parse_stmt(text, start, &options).map_err(|e| self.macro_error(e, start))?;
         // Haas `IF [cond] THEN <NC block>`: the block's words are read as words
@@ -34,6 +36,36 @@ impl Reader<'_> {
         };
         self.consume_to(end);
         self.stmt = Some(stmt);
+        Ok(())
+    }
+
+    /// `LinuxCNC`'s named parameters (`#<name>`, outside comments) are an error under
+    /// another control: the error naming `LinuxCNC`'s construct.
+    fn named_only_under_linuxcnc(&self, text: &str, at: Span) -> Result<(), ParseError> {
+        if self.options.macros == Some(Dialect::LinuxCnc) {
+            return Ok(());
+        }
+        let mut depth = 0usize;
+        let mut prev = ' ';
+        for c in text.chars() {
+            match c {
+                '(' => depth += 1,
+                ')' => depth = depth.saturating_sub(1),
+                '<' if depth == 0 && prev == '#' => {
+                    return Err(self.foreign(at).unwrap_or_else(|| {
+                        ParseError::new(
+                            at,
+                            "a named parameter #<…> is LinuxCNC syntax",
+                            "run with --control linuxcnc, or use numbered variables",
+                        )
+                    }))
+                }
+                _ => {}
+            }
+            if !c.is_whitespace() {
+                prev = c;
+            }
+        }
         Ok(())
     }
 
@@ -55,6 +87,7 @@ impl Reader<'_> {
         let text = block_text(self.src, base.offset as usize);
         let (expr, used) =
             macro_b::parse_operand(text, base).map_err(|e| self.macro_error(e, at))?;
+        self.named_only_under_linuxcnc(&text[..used], at)?;
         let end = self.consume_to(base.offset as usize + used).unwrap_or(at);
         self.push_word(Word {
             letter,
