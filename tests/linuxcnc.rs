@@ -185,6 +185,22 @@ fn linuxcnc_codes_latsim_does_not_run_are_alarms_at_their_word() {
     );
 }
 
+/// `G92 Z0` makes the tool's Z2 read Z0; `G92.1` (and `G92.2`) drop that offset: the same
+/// `G0 Z-1` goes to Z1 under it and to Z-1 after ([G] "G92.1, G92.2 Reset G92 Offsets"), as
+/// `LinuxCNC`'s own `lathe-g76.ngc` steps its passes along Z. `G92.3` stays an alarm.
+#[test]
+fn g92_1_and_g92_2_drop_the_g92_offset() {
+    for reset in ["G92.1", "G92.2"] {
+        let text = format!("G18 G21 G7 G90\nG0 X30 Z2\nG92 Z0\nG0 Z-1\n{reset}\nG0 Z-1\nM2\n");
+        let p = path(&text, "linuxcnc");
+        let ends: Vec<&str> = p.iter().map(|l| l.split(',').nth(3).unwrap()).collect();
+        assert_eq!(ends[ends.len() - 2..], ["1", "-1"], "{reset}: {p:?}");
+    }
+    let (code, err) = check("G7 G0 X30 Z2\nG92 Z0\nG92.3\nM2\n");
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("G92.3") && err.contains("p.ngc:3:1"), "{err}");
+}
+
 /// Subroutines with arguments and a return value, `if`/`elseif`/`else`, `while`, `repeat`
 /// and `do … while` with `continue` and `break` ([O]): the path worked out by hand.
 #[test]

@@ -33,6 +33,8 @@ pub(crate) const CYCLE_G71: i32 = -1710;
 pub(crate) const CYCLE_G72: i32 = -1720;
 /// `G76 P Z I J R K Q H E L`: `LinuxCNC`'s one-line threading cycle.
 pub(crate) const CYCLE_G76: i32 = -1760;
+/// `G92.1`, `G92.2`: the G92 (and G52) offset dropped.
+pub(crate) const G92_RESET: i32 = -1921;
 
 /// The canonical code of `LinuxCNC`'s `tenths`; a code `LinuxCNC` does not have is an error.
 pub(crate) fn canonical(t: i32) -> Result<i32, Foreign> {
@@ -50,6 +52,7 @@ pub(crate) fn canonical(t: i32) -> Result<i32, Foreign> {
         710..=712 => CYCLE_G71 - (t - 710),
         720..=722 => CYCLE_G72 - (t - 720),
         760 => CYCLE_G76,
+        921 | 922 => G92_RESET,
         330 => G32,
         920 => G50,
         900 => dialect::ABSOLUTE,
@@ -86,7 +89,7 @@ pub(crate) fn unsupported(t: i32) -> Option<&'static str> {
         730 | 740 | 810..=890 => {
             "LinuxCNC's drilling and tapping cycles (G73, G74, G81-G89) drill along the plane's normal (Y in G18), not along the lathe's Z: not simulated"
         }
-        921..=923 => "G92.1, G92.2, G92.3 (G92 offsets reset and restore) are not run by latsim",
+        923 => "G92.3 (the G92 offset restored from parameters 5211-5219) is not run by latsim",
         930 => "G93 (inverse time feed) is not run by latsim",
         _ => return None,
     })
@@ -107,5 +110,8 @@ mod tests {
         assert!(canonical(500).is_err(), "G50 is no LinuxCNC code");
         assert!(canonical(320).is_err(), "G32 is no LinuxCNC code");
         assert!(unsupported(canonical(331).unwrap()).is_some());
+        assert_eq!(canonical(921), Ok(G92_RESET));
+        assert_eq!(canonical(922), Ok(G92_RESET));
+        assert!(unsupported(canonical(923).unwrap()).is_some());
     }
 }

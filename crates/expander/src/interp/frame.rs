@@ -166,6 +166,15 @@ impl Interp<'_> {
         Ok(())
     }
 
+    /// `LinuxCNC`'s `G92.1` / `G92.2`: the G92 offset is dropped, and with it the G52 shift
+    /// (`LinuxCNC`'s G52 "shares parameters with G92", coordinates.adoc "The G52 command"):
+    /// later words are read in the work system in force. (The two differ only in parameters
+    /// 5211–5219, which latsim does not keep.)
+    pub(super) fn drop_g92_offset(&mut self) {
+        self.frames.local = Pt::default();
+        self.shift = self.frames.origin;
+    }
+
     /// G53 X Z: a move to that machine position (from the profile's `machine_zero`). FANUC
     /// and GSK move at rapid traverse whatever the mode; Haas at the G00/G01 in force
     /// (spec/dialects.md §6.4, docs/field-rules.md). A rapid never cuts, so if its sweep

@@ -103,6 +103,7 @@ impl Interp<'_> {
                 self.length_offset(w, loaded, used)?
             }
             lc::LENGTH_CANCEL => {}
+            lc::G92_RESET => self.drop_g92_offset(),
             G96 => {
                 self.css = true;
                 if let Some(d) = used.take('D') {
