@@ -87,7 +87,7 @@ pub(crate) fn unsupported(t: i32) -> Option<&'static str> {
         431 | 432 => "G43.1, G43.2 (dynamic and added tool length offsets) are not run by latsim",
         591..=593 => "G59.1, G59.2, G59.3 (work offsets 7 to 9) are not run by latsim",
         730 | 740 | 810..=890 => {
-            "LinuxCNC's drilling and tapping cycles (G73, G74, G81-G89) drill along the plane's normal (Y in G18), not along the lathe's Z: not simulated"
+            "LinuxCNC's drilling and tapping cycles (G73, G74, G81-G89) drill along the plane's normal: Y in G18 (no hole in the turned section), Z in G17 (a hole on the axis, as LinuxCNC's lathe drill macro drills it), which latsim does not run yet"
         }
         923 => "G92.3 (the G92 offset restored from parameters 5211-5219) is not run by latsim",
         930 => "G93 (inverse time feed) is not run by latsim",
