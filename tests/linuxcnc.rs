@@ -201,6 +201,70 @@ fn g92_1_and_g92_2_drop_the_g92_offset() {
     assert!(err.contains("G92.3") && err.contains("p.ngc:3:1"), "{err}");
 }
 
+/// In G17 `LinuxCNC` drills along Z, the lathe's axis (`macros/lathe/drill.ngc` does):
+/// G83 feeds a peck Q, rapids back to R, comes down to 1 mm (the clearance) short of the
+/// depth reached and ends at R (power-on G99, `R_PLANE`); G73 backs off by D after each peck
+/// and ends at the initial level under G98 (`interp_cycles.cc` `convert_cycle_g83`, `_g73`).
+/// The moves worked out by hand; in G18 the same cycle drills along Y: an alarm at its word.
+#[test]
+fn drilling_cycles_in_g17_drill_along_the_axis() {
+    let text = "G18 G21 G7 G90 G95\nT1 M6 G43\nG97 S800 M3\nG0 X0 Z5\nG17\nG83 Z-10 R2 Q4 F0.1\nG80\nG98 G73 Z-6 R1 Q2.5 D0.5\nG80\nG18\nG0 X20\nM2\n";
+    let moves: Vec<String> = path(text, "linuxcnc")
+        .iter()
+        .skip(1)
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            format!("{} {}", f[0], f[3])
+        })
+        .collect();
+    let hand = [
+        // G83: to R, pecks to -2 and -6 each followed by R and 1 mm short, bottom, R
+        "rapid 2",
+        "feed -2",
+        "rapid 2",
+        "rapid -1",
+        "feed -6",
+        "rapid 2",
+        "rapid -5",
+        "feed -10",
+        "rapid 2",
+        // G73: to R, pecks to -1.5 and -4 each backed off 0.5, bottom, initial level
+        "rapid 1",
+        "feed -1.5",
+        "rapid -1",
+        "feed -4",
+        "rapid -3.5",
+        "feed -6",
+        "rapid 2",
+        "rapid 2",
+    ];
+    assert_eq!(moves, hand);
+    for (prog, col, says) in [
+        (
+            "G18 G21 G90\nG0 X0 Z5\nM3 S500\nG83 Z-10 R2 Q4 F100\nM2\n",
+            1,
+            "plane's normal",
+        ),
+        (
+            "G17 G21 G90\nG0 X0 Z5\nM3 S500\nG83 Z-10 R2 F100\nM2\n",
+            1,
+            "without Q",
+        ),
+        (
+            "G17 G21 G91\nG0 X0 Z5\nM3 S500\nG81 Z-10 R-3 F100\nM2\n",
+            1,
+            "G91",
+        ),
+    ] {
+        let (code, err) = check(prog);
+        assert_eq!(code, 1, "{prog}: {err}");
+        assert!(
+            err.contains(says) && err.contains(&format!("p.ngc:4:{col}")),
+            "{prog}: {err}"
+        );
+    }
+}
+
 /// Subroutines with arguments and a return value, `if`/`elseif`/`else`, `while`, `repeat`
 /// and `do … while` with `continue` and `break` ([O]): the path worked out by hand.
 #[test]

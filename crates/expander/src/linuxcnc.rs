@@ -33,8 +33,17 @@ pub(crate) const CYCLE_G71: i32 = -1710;
 pub(crate) const CYCLE_G72: i32 = -1720;
 /// `G76 P Z I J R K Q H E L`: `LinuxCNC`'s one-line threading cycle.
 pub(crate) const CYCLE_G76: i32 = -1760;
+/// `G73 Z R Q [D]`: `LinuxCNC`'s peck drilling with chip breaking (the drilling cycles run in
+/// G17, along Z: `cycles/drill.rs`).
+pub(crate) const DRILL_CHIP_BREAK: i32 = -1730;
 /// `G92.1`, `G92.2`: the G92 (and G52) offset dropped.
 pub(crate) const G92_RESET: i32 = -1921;
+
+/// Whether `t` (canonical) is one of the `LinuxCNC` drilling cycles latsim runs: in G17 they
+/// drill along Z, on the lathe's axis.
+pub(crate) fn is_drilling(t: i32) -> bool {
+    matches!(t, G81 | G82 | G83 | G85 | DRILL_CHIP_BREAK)
+}
 
 /// The canonical code of `LinuxCNC`'s `tenths`; a code `LinuxCNC` does not have is an error.
 pub(crate) fn canonical(t: i32) -> Result<i32, Foreign> {
@@ -53,6 +62,8 @@ pub(crate) fn canonical(t: i32) -> Result<i32, Foreign> {
         720..=722 => CYCLE_G72 - (t - 720),
         760 => CYCLE_G76,
         921 | 922 => G92_RESET,
+        730 => DRILL_CHIP_BREAK,
+        810 | 820 | 830 | 850 => t,
         330 => G32,
         920 => G50,
         900 => dialect::ABSOLUTE,
@@ -86,9 +97,8 @@ pub(crate) fn unsupported(t: i32) -> Option<&'static str> {
         380..=385 => "G38.n (probing) moves are not simulated",
         431 | 432 => "G43.1, G43.2 (dynamic and added tool length offsets) are not run by latsim",
         591..=593 => "G59.1, G59.2, G59.3 (work offsets 7 to 9) are not run by latsim",
-        730 | 740 | 810..=890 => {
-            "LinuxCNC's drilling and tapping cycles (G73, G74, G81-G89) drill along the plane's normal: Y in G18 (no hole in the turned section), Z in G17 (a hole on the axis, as LinuxCNC's lathe drill macro drills it), which latsim does not run yet"
-        }
+        740 | 840 => "G74, G84 (tapping with a floating holder) are not run by latsim",
+        860..=890 => "G86-G89 (boring with spindle stop, back boring, manual out, dwell and feed out) are not run by latsim",
         923 => "G92.3 (the G92 offset restored from parameters 5211-5219) is not run by latsim",
         930 => "G93 (inverse time feed) is not run by latsim",
         _ => return None,
@@ -111,6 +121,9 @@ mod tests {
         assert!(canonical(320).is_err(), "G32 is no LinuxCNC code");
         assert!(unsupported(canonical(331).unwrap()).is_some());
         assert_eq!(canonical(921), Ok(G92_RESET));
+        assert_eq!(canonical(730), Ok(DRILL_CHIP_BREAK));
+        assert_eq!(canonical(830), Ok(G83));
+        assert!(unsupported(canonical(840).unwrap()).is_some());
         assert_eq!(canonical(922), Ok(G92_RESET));
         assert!(unsupported(canonical(923).unwrap()).is_some());
     }

@@ -33,6 +33,7 @@
 
 use super::{Cycle, Move, Output, MAX_MOVES};
 use crate::codes::{G81, G82, G83, G84, G85};
+use crate::linuxcnc::DRILL_CHIP_BREAK;
 use crate::{Control, Diagnostic, DrillReturn, Pt};
 
 /// The words a drilling cycle retains between its blocks.
@@ -50,19 +51,57 @@ pub(crate) struct DrillWords {
     pub(crate) q: f64,
     /// Dwell at the bottom, s.
     pub(crate) dwell: f64,
+    /// How far short of the depth reached the tool comes back down after a peck (or backs
+    /// off, high-speed), mm: the profile's `drill_clearance`, `LinuxCNC`'s D.
+    pub(crate) clearance: f64,
 }
 
 /// Whether a G code (tenths) is a drilling cycle of the spindle axis.
 pub(crate) fn is_drill(t: i32) -> bool {
-    matches!(t, G81 | G82 | G83 | G84 | G85)
+    matches!(t, G81 | G82 | G83 | G84 | G85 | DRILL_CHIP_BREAK)
+}
+
+/// Whose rules a drilling block is read by.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Rules {
+    /// FANUC: R from the initial level, Q in least increments, P milliseconds, K repeats.
+    Fanuc,
+    /// Haas: R the plane's Z, Q in mm, `P1.5` seconds (`P1500` milliseconds).
+    Haas,
+    /// `LinuxCNC` in G17 (docs/linuxcnc.md): R the plane's Z, Q in program units, P
+    /// seconds, D the peck clearance; G83 retracts to R after each peck, G73 backs off by
+    /// the clearance (`interp_cycles.cc` `convert_cycle_g83`, `convert_cycle_g73`).
+    LinuxCnc,
+}
+
+impl Rules {
+    fn of(control: Control) -> Self {
+        match control {
+            Control::Haas => Self::Haas,
+            Control::LinuxCnc => Self::LinuxCnc,
+            _ => Self::Fanuc,
+        }
+    }
+
+    /// R is the R plane's Z (else its distance from the initial level).
+    fn r_is_plane(self) -> bool {
+        self != Self::Fanuc
+    }
 }
 
 /// Expand one drilling block (the first of the cycle, or a modal repeat).
 pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
-    let haas = c.machine.control == Control::Haas;
-    check_code(c, haas)?;
+    let rules = Rules::of(c.machine.control);
+    check_code(c, rules)?;
     check_on_axis(c)?;
-    let hole = read(c, haas)?;
+    if rules == Rules::LinuxCnc && c.linuxcnc.incremental {
+        return Err(c.alarm(
+            "LS-NOT-IMPLEMENTED",
+            "a LinuxCNC drilling cycle in G91 (R from the start, Z from R, L repeats) is not run by latsim",
+            "drill in G90: Z the hole's bottom and R the R plane's Z",
+        ));
+    }
+    let hole = read(c, rules)?;
     c.retained.drill = Some(hole.words);
     let mut out = Output {
         moves: moves(c, &hole),
@@ -81,29 +120,31 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
 }
 
 /// The drilling codes of this control; the other control's are alarms naming it.
-fn check_code(c: &Cycle, haas: bool) -> Result<(), Diagnostic> {
+fn check_code(c: &Cycle, rules: Rules) -> Result<(), Diagnostic> {
     let name = crate::codes::g_name(c.code);
-    let accepted = if haas {
-        matches!(c.code, G81 | G82 | G83 | G84)
-    } else {
-        matches!(c.code, G83 | G84 | G85)
+    let accepted = match rules {
+        Rules::Haas => matches!(c.code, G81 | G82 | G83 | G84),
+        Rules::LinuxCnc => crate::linuxcnc::is_drilling(c.code),
+        Rules::Fanuc => matches!(c.code, G83 | G84 | G85),
     };
     if accepted {
         return Ok(());
     }
-    Err(c.alarm(
-        "LS-DRILL-CODE",
-        if haas {
-            format!("{name} is not a Haas lathe drilling cycle on the spindle axis")
-        } else {
-            format!("{name} is the Haas drilling code; this control is {}", c.machine.control.key())
-        },
-        if haas {
-            "Haas drills on the axis with G81 (drill), G82 (dwell), G83 (peck), G84 (tap)"
-        } else {
-            "FANUC lathes drill on the axis with G83 (drill/peck), G84 (tap), G85 (bore); or run with --control haas"
-        },
-    ))
+    let (message, help) = match rules {
+        Rules::Haas => (
+            format!("{name} is not a Haas lathe drilling cycle on the spindle axis"),
+            "Haas drills on the axis with G81 (drill), G82 (dwell), G83 (peck), G84 (tap)",
+        ),
+        Rules::LinuxCnc => (
+            format!("{name} is not a LinuxCNC drilling cycle latsim runs"),
+            "latsim runs LinuxCNC's G73, G81, G82, G83 and G85 in G17 (docs/linuxcnc.md)",
+        ),
+        Rules::Fanuc => (
+            format!("{name} is the Haas drilling code; this control is {}", c.machine.control.key()),
+            "FANUC lathes drill on the axis with G83 (drill/peck), G84 (tap), G85 (bore); or run with --control haas",
+        ),
+    };
+    Err(c.alarm("LS-DRILL-CODE", message, help))
 }
 
 /// C and H (the C axis) are alarms: an off-axis hole is not axisymmetric.
@@ -131,7 +172,7 @@ struct Hole {
 
 /// Read the block's words, the retained ones of the same cycle filling what it omits, and
 /// check the levels: initial, R point, bottom in that order along Z.
-fn read(c: &mut Cycle, haas: bool) -> Result<Hole, Diagnostic> {
+fn read(c: &mut Cycle, rules: Rules) -> Result<Hole, Diagnostic> {
     let name = crate::codes::g_name(c.code);
     let prev = c
         .retained
@@ -139,12 +180,13 @@ fn read(c: &mut Cycle, haas: bool) -> Result<Hole, Diagnostic> {
         .filter(|d| d.code == c.code || c.g.is_none());
     x_on_axis(c, &name)?;
     let initial = prev.map_or(c.start.z, |p| p.initial);
-    let r = r_point(c, haas, &name, initial, prev)?;
+    let r = r_point(c, rules.r_is_plane(), &name, initial, prev)?;
     let w_word = c.words.block.get('W');
     let bottom = bottom(c, &name, r, prev)?;
-    let q = peck(c, haas, &name, prev)?;
-    let dwell = dwell(c, haas, &name, prev)?;
-    let times = repeats(c, haas)?;
+    let q = peck(c, rules, &name, prev)?;
+    let dwell = dwell(c, rules, &name, prev)?;
+    let times = repeats(c, rules)?;
+    let clearance = clearance(c, rules, prev)?;
     if times > 1 {
         if let Some(w) = w_word {
             return Err(Diagnostic::new(
@@ -184,6 +226,7 @@ fn read(c: &mut Cycle, haas: bool) -> Result<Hole, Diagnostic> {
         bottom,
         q,
         dwell,
+        clearance,
     };
     Ok(Hole {
         words,
@@ -213,17 +256,17 @@ fn x_on_axis(c: &mut Cycle, name: &str) -> Result<(), Diagnostic> {
 /// The R point, G54 frame Z: Haas R the plane's Z, FANUC R from the initial level.
 fn r_point(
     c: &mut Cycle,
-    haas: bool,
+    r_is_plane: bool,
     name: &str,
     initial: f64,
     prev: Option<DrillWords>,
 ) -> Result<f64, Diagnostic> {
     Ok(match c.words.take('R') {
-        Some(w) if haas => w.value * c.unit + c.shift.z,
+        Some(w) if r_is_plane => w.value * c.unit + c.shift.z,
         Some(w) => initial + w.value * c.unit,
         None => match prev {
             Some(p) => p.r,
-            None if haas => {
+            None if r_is_plane => {
                 return Err(c.alarm(
                     "LS-DRILL-R",
                     format!("{name} without R (the R plane)"),
@@ -261,21 +304,28 @@ fn bottom(c: &mut Cycle, name: &str, r: f64, prev: Option<DrillWords>) -> Result
     })
 }
 
-/// The peck depth Q of G83, mm (0: one feed): Haas in mm, FANUC in increments.
+/// The peck depth Q of G83 (and `LinuxCNC`'s G73), mm (0: one feed): Haas in mm,
+/// `LinuxCNC` in program units, FANUC in increments. `LinuxCNC` pecks need Q.
 fn peck(
     c: &mut Cycle,
-    haas: bool,
+    rules: Rules,
     name: &str,
     prev: Option<DrillWords>,
 ) -> Result<f64, Diagnostic> {
-    if c.code != G83 {
+    if !matches!(c.code, G83 | DRILL_CHIP_BREAK) {
         return Ok(0.0);
     }
-    let q = if haas {
-        c.words.mm('Q', c.unit)
-    } else {
-        c.words.increments('Q', c.machine.increment.mm())?
+    let q = match rules {
+        Rules::Haas | Rules::LinuxCnc => c.words.mm('Q', c.unit),
+        Rules::Fanuc => c.words.increments('Q', c.machine.increment.mm())?,
     };
+    if q.is_none() && rules == Rules::LinuxCnc && prev.is_none_or(|p| p.q <= 0.0) {
+        return Err(c.alarm(
+            "LS-DRILL-Q",
+            format!("{name} without Q (LinuxCNC's peck depth)"),
+            "give the depth of each peck, e.g. Q2; G81 drills in one feed",
+        ));
+    }
     match q {
         Some(q) if q <= 0.0 => Err(c.alarm(
             "LS-DRILL-Q",
@@ -287,35 +337,65 @@ fn peck(
     }
 }
 
-/// The dwell P at the bottom, s: FANUC milliseconds without a point; Haas `P1.5` seconds.
+/// The dwell P at the bottom, s: FANUC milliseconds without a point; Haas `P1.5` seconds;
+/// `LinuxCNC` seconds.
 fn dwell(
     c: &mut Cycle,
-    haas: bool,
+    rules: Rules,
     name: &str,
     prev: Option<DrillWords>,
 ) -> Result<f64, Diagnostic> {
     match c.words.take('P') {
-        Some(p) if haas && p.has_point => Ok(p.value),
+        Some(p) if p.value < 0.0 => Err(Diagnostic::new(
+            p.span,
+            "LS-VALUE",
+            "a negative dwell",
+            "give the dwell at the bottom (FANUC milliseconds, Haas and LinuxCNC seconds)",
+        )),
+        Some(p) if rules == Rules::LinuxCnc => Ok(p.value),
+        Some(p) if rules == Rules::Haas && p.has_point => Ok(p.value),
         Some(p) if p.has_point => Err(Diagnostic::new(
             p.span,
             "LS-VALUE",
             format!("{name} P is the dwell in milliseconds and takes no decimal point"),
             "write e.g. P500 for 0.5 s",
         )),
-        Some(p) if p.value < 0.0 => Err(Diagnostic::new(
-            p.span,
-            "LS-VALUE",
-            "a negative dwell",
-            "give the dwell at the bottom in milliseconds",
-        )),
         Some(p) => Ok(p.value / 1000.0),
         None => Ok(prev.map_or(0.0, |p| p.dwell)),
     }
 }
 
-/// K: how many times the hole is drilled (FANUC; 1 on Haas).
-fn repeats(c: &mut Cycle, haas: bool) -> Result<u32, Diagnostic> {
-    let k_word = if haas { None } else { c.words.take('K') };
+/// The peck clearance, mm: `LinuxCNC`'s D (sticky), else the profile's `drill_clearance`
+/// (1 mm, `LinuxCNC`'s metric default too).
+fn clearance(c: &mut Cycle, rules: Rules, prev: Option<DrillWords>) -> Result<f64, Diagnostic> {
+    let d = if rules == Rules::LinuxCnc {
+        c.words.take('D')
+    } else {
+        None
+    };
+    match d {
+        Some(d) if d.value < 0.0 => Err(Diagnostic::new(
+            d.span,
+            "LS-VALUE",
+            "a negative peck clearance D",
+            "give how far short of the depth reached the drill comes back, e.g. D0.5",
+        )),
+        Some(d) => Ok(d.value * c.unit),
+        None => Ok(prev.map_or(c.machine.drill_clearance, |p| p.clearance)),
+    }
+}
+
+/// K: how many times the hole is drilled (FANUC; 1 on Haas). `LinuxCNC`'s L repeats a
+/// hole only in G91 (moved along X), so in G90 it is read and changes nothing.
+fn repeats(c: &mut Cycle, rules: Rules) -> Result<u32, Diagnostic> {
+    if rules == Rules::LinuxCnc {
+        c.words.take('L');
+    }
+    let k_word = if rules == Rules::Fanuc {
+        c.words.take('K')
+    } else {
+        None
+    };
     match k_word {
         None => Ok(1),
         Some(k) if !k.has_point && (1.0..=9999.0).contains(&k.value) => Ok(k.value as u32),
@@ -337,7 +417,12 @@ fn moves(c: &Cycle, hole: &Hole) -> Vec<Move> {
     };
     let at = |z: f64| Pt::new(z, 0.0);
     let dir = (w.bottom - w.r).signum();
-    let delta = c.machine.drill_clearance;
+    let delta = w.clearance;
+    let full_retract = match c.code {
+        DRILL_CHIP_BREAK => false,
+        _ if c.machine.control == Control::LinuxCnc => true,
+        _ => c.machine.g83_full_retract,
+    };
     let mut moves = vec![];
     for _ in 0..hole.times {
         moves.push(Move::rapid(at(w.r))); // 1. to the R point
@@ -351,7 +436,7 @@ fn moves(c: &Cycle, hole: &Hole) -> Vec<Move> {
                 };
                 moves.push(Move::feed(at(depth))); // 2. one peck
                 if i < n {
-                    if c.machine.g83_full_retract {
+                    if full_retract {
                         moves.push(Move::rapid(at(w.r)));
                         moves.push(Move::rapid(at(depth - dir * delta)));
                     } else {

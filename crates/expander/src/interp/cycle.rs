@@ -46,6 +46,7 @@ impl Interp<'_> {
                     x_diameter: self.x_diameter,
                     compensating: self.comp.is_some(),
                     spindle_turning: self.spindle_on,
+                    incremental: self.incremental,
                 },
             };
             cycles::run(&mut c)?

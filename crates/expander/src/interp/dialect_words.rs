@@ -44,7 +44,9 @@ impl Interp<'_> {
         if let Some((plane, set)) = self.plane {
             let arc =
                 matches!(motion, MotionMode::Cw | MotionMode::Ccw) && axis && g.one_shot.is_none();
-            let cycle = g.one_shot.is_some_and(|(t, _)| crate::cycles::is_cycle(t))
+            let cycle = g
+                .one_shot
+                .is_some_and(|(t, _)| crate::cycles::is_cycle(t) && !self.drills_along_z(t))
                 || (matches!(motion, MotionMode::Cycle(_))
                     && (axis || b.has('R'))
                     && g.one_shot.is_none());

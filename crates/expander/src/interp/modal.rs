@@ -239,8 +239,21 @@ impl Interp<'_> {
         if self.machine.control != crate::Control::LinuxCnc {
             return None;
         }
+        if crate::linuxcnc::is_drilling(t) && !self.drills_along_z(t) {
+            return Some(
+                "LinuxCNC drills along the plane's normal: in G18 (the lathe's plane) that is Y, no hole in the turned section; write G17 before the cycle to drill along Z, as LinuxCNC's lathe drill macro does".into(),
+            );
+        }
         // (its G70, G71, G72 and G76 run: `linuxcnc_g7x`, `cycles/g76_linuxcnc`)
         crate::linuxcnc::unsupported(t).map(str::to_string)
+    }
+
+    /// Whether `t` is a `LinuxCNC` drilling cycle under G17: it drills along Z, the lathe's
+    /// axis (its normal), so the XY plane is no live-tooling plane for it.
+    pub(super) fn drills_along_z(&self, t: i32) -> bool {
+        self.machine.control == crate::Control::LinuxCnc
+            && crate::linuxcnc::is_drilling(t)
+            && matches!(self.plane, Some((170, _)))
     }
 
     /// Whether the block has a G code whose canonical meaning satisfies `pred`.

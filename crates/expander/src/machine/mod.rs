@@ -410,7 +410,12 @@ impl Machine {
             g92_chamfer_leads: 0.0,
             g83_full_retract: false,
             drill_clearance: 1.0,
-            drill_return: DrillReturn::Initial,
+            // LinuxCNC powers on retracting to the R plane (interp_setup.cc: R_PLANE, G99)
+            drill_return: if control == Control::LinuxCnc {
+                DrillReturn::RPoint
+            } else {
+                DrillReturn::Initial
+            },
             haas: HaasSettings::default(),
             workholding: crate::Workholding::default(),
         }

@@ -15,7 +15,7 @@ mod read;
 use super::{Cycle, Output};
 use crate::Diagnostic;
 
-/// The interpreter's modes a `LinuxCNC` G76 reads.
+/// The interpreter's modes a `LinuxCNC` cycle reads (G76, the drilling cycles).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub(crate) struct Modes {
     /// G7 in force: I, J and K are diameters (`LinuxCNC` halves them).
@@ -24,6 +24,8 @@ pub(crate) struct Modes {
     pub(crate) compensating: bool,
     /// M3/M4 in force: `LinuxCNC` refuses G76 with the spindle stopped.
     pub(crate) spindle_turning: bool,
+    /// G91 in force (the drilling cycles' R and Z read otherwise).
+    pub(crate) incremental: bool,
 }
 
 /// One G76 block as `LinuxCNC` reads it. Lengths in mm, radii.
