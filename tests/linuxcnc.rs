@@ -160,7 +160,7 @@ fn semicolon_comments_and_msg_read_silently_under_linuxcnc_only() {
 fn linuxcnc_codes_latsim_does_not_run_are_alarms_at_their_word() {
     for (prog, word, col) in [
         ("G7 G0 X30 Z2\nG5 X1 Z1 I1 J1 P1 Q1\nM2\n", "G5", 1),
-        ("G7 G0 X30 Z2\nG0 G33.1 Z-5 K1\nM2\n", "G33.1", 4),
+        ("G7 G0 X30 Z2\nG0 G38.2 Z-5\nM2\n", "G38.2", 4),
     ] {
         let (code, err) = check(prog);
         assert_eq!(code, 1, "{prog}: {err}");
@@ -260,6 +260,52 @@ fn drilling_cycles_in_g17_drill_along_the_axis() {
         assert_eq!(code, 1, "{prog}: {err}");
         assert!(
             err.contains(says) && err.contains(&format!("p.ngc:4:{col}")),
+            "{prog}: {err}"
+        );
+    }
+}
+
+/// `G33.1 Z K` taps on the axis: in to Z and back out to the start at the lead K, modal
+/// (a block of Z and K taps again, LinuxCNC's `G_33_1` motion); LinuxCNC's own refusals
+/// (no K, an F, the spindle stopped) and a hole off the axis are alarms at their line.
+#[test]
+fn g33_1_taps_in_and_back_out_on_the_axis() {
+    let text = "G18 G21 G7 G90 G95\nT8 M6 G43\nG97 S300 M3\nG0 X0 Z5\nG33.1 Z-15 K1.5\nZ-20 K1.5\nG0 X60\nM2\n";
+    let moves: Vec<String> = path(text, "linuxcnc")
+        .iter()
+        .skip(1)
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            format!("{} {} {}", f[0], f[3], f[4])
+        })
+        .collect();
+    let hand = [
+        "feed -15 0",
+        "feed 5 0",
+        "feed -20 0",
+        "feed 5 0",
+        "rapid 5 60",
+    ];
+    assert_eq!(moves, hand);
+    for (prog, says) in [
+        ("G7 G0 X0 Z5\nM3 S300\nG33.1 Z-15\nM2\n", "without K"),
+        (
+            "G7 G0 X0 Z5\nM3 S300\nG33.1 Z-15 K1 F100\nM2\n",
+            "F word used with G33.1",
+        ),
+        (
+            "G7 G0 X0 Z5\nM5\nG33.1 Z-15 K1\nM2\n",
+            "Spindle not turning",
+        ),
+        (
+            "G7 G0 X10 Z5\nM3 S300\nG33.1 Z-15 K1\nM2\n",
+            "off the spindle axis",
+        ),
+    ] {
+        let (code, err) = check(prog);
+        assert_eq!(code, 1, "{prog}: {err}");
+        assert!(
+            err.contains(says) && err.contains("p.ngc:3:"),
             "{prog}: {err}"
         );
     }

@@ -36,6 +36,8 @@ pub(crate) const CYCLE_G76: i32 = -1760;
 /// `G73 Z R Q [D]`: `LinuxCNC`'s peck drilling with chip breaking (the drilling cycles run in
 /// G17, along Z: `cycles/drill.rs`).
 pub(crate) const DRILL_CHIP_BREAK: i32 = -1730;
+/// `G33.1 Z K`: rigid tapping on the axis, in and back out at the lead K.
+pub(crate) const RIGID_TAP: i32 = -1331;
 /// `G92.1`, `G92.2`: the G92 (and G52) offset dropped.
 pub(crate) const G92_RESET: i32 = -1921;
 
@@ -63,6 +65,7 @@ pub(crate) fn canonical(t: i32) -> Result<i32, Foreign> {
         760 => CYCLE_G76,
         921 | 922 => G92_RESET,
         730 => DRILL_CHIP_BREAK,
+        331 => RIGID_TAP,
         810 | 820 | 830 | 850 => t,
         330 => G32,
         920 => G50,
@@ -93,7 +96,6 @@ pub(crate) fn unsupported(t: i32) -> Option<&'static str> {
         50..=53 => "G5, G5.1, G5.2, G5.3 (splines and NURBS) are not run by latsim",
         100 => "G10 (tool table and coordinate system setting) is not run by latsim under --control linuxcnc",
         191 | 281 | 301 | 300 => "G19.1, G28.1, G30, G30.1 (stored positions) are not run by latsim",
-        331 => "G33.1 (rigid tapping) is not run by latsim",
         380..=385 => "G38.n (probing) moves are not simulated",
         431 | 432 => "G43.1, G43.2 (dynamic and added tool length offsets) are not run by latsim",
         591..=593 => "G59.1, G59.2, G59.3 (work offsets 7 to 9) are not run by latsim",
@@ -119,7 +121,7 @@ mod tests {
         assert_eq!(canonical(920), Ok(G50));
         assert!(canonical(500).is_err(), "G50 is no LinuxCNC code");
         assert!(canonical(320).is_err(), "G32 is no LinuxCNC code");
-        assert!(unsupported(canonical(331).unwrap()).is_some());
+        assert_eq!(canonical(331), Ok(RIGID_TAP));
         assert_eq!(canonical(921), Ok(G92_RESET));
         assert_eq!(canonical(730), Ok(DRILL_CHIP_BREAK));
         assert_eq!(canonical(830), Ok(G83));

@@ -24,6 +24,7 @@ mod modal;
 mod modal_call;
 mod motion;
 mod reach;
+mod rigid_tap;
 mod tool_facts;
 
 use crate::codes::{self, *};
@@ -473,6 +474,7 @@ impl<'m> Interp<'m> {
             }
             G27 => self.g27(b, used, w)?,
             G10 => self.g10(used, w)?,
+            crate::linuxcnc::RIGID_TAP => self.rigid_tap(b, w.span, used)?,
             t => {
                 return self
                     .cycle(t, Some(w), sub, b, index, used)
@@ -502,6 +504,10 @@ impl<'m> Interp<'m> {
             return self.cycle(t, None, sub, b, index, used);
         }
         if let MotionMode::Cycle(t) = self.motion {
+            if t == crate::linuxcnc::RIGID_TAP && ['X', 'Z'].iter().any(|&l| b.has(l)) {
+                self.rigid_tap(b, b.span, used)?;
+                return Ok(Flow::Next);
+            }
             if ['X', 'Z', 'U', 'W', 'R'].iter().any(|&l| b.has(l)) {
                 let w = g.motion.map(|(_, w)| w);
                 return self

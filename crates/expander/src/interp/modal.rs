@@ -99,7 +99,10 @@ fn g_name(w: &Word) -> String {
 
 /// The one-shot codes: they act once, after the block's modes, instead of a motion.
 fn is_one_shot(t: i32) -> bool {
-    matches!(t, G04 | G10 | G27 | G28 | G50 | G50_3 | G52 | G53) || cycles::is_cycle(t)
+    matches!(
+        t,
+        G04 | G10 | G27 | G28 | G50 | G50_3 | G52 | G53 | crate::linuxcnc::RIGID_TAP
+    ) || cycles::is_cycle(t)
 }
 
 impl Interp<'_> {
