@@ -266,7 +266,7 @@ fn drilling_cycles_in_g17_drill_along_the_axis() {
 }
 
 /// `G33.1 Z K` taps on the axis: in to Z and back out to the start at the lead K, modal
-/// (a block of Z and K taps again, LinuxCNC's `G_33_1` motion); LinuxCNC's own refusals
+/// (a block of Z and K taps again, `LinuxCNC`'s `G_33_1` motion); `LinuxCNC`'s own refusals
 /// (no K, an F, the spindle stopped) and a hole off the axis are alarms at their line.
 #[test]
 fn g33_1_taps_in_and_back_out_on_the_axis() {
