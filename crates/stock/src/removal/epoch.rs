@@ -9,10 +9,11 @@ use super::SimOptions;
 use crate::budget::{size, OverBudget, RunMemory};
 use crate::overlay::{Engine, Grid, IBox, IPt, IShape, IShapes};
 use crate::snapshot::Snapshots;
-use crate::sweep::{SweepBuilder, Sweeps};
+use crate::sweep::{Item, SweepBuilder, Sweeps};
 use crate::{Shape, ToolTable};
 use expander::{Motion, Segment};
 use geom::Rect;
+use std::ops::Range;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 
@@ -27,7 +28,7 @@ const EPOCH: usize = 32_768;
 const MAX_SEPARATION_CHECKS: usize = 1_000;
 
 /// The stock of a run: Z strips, each a tree of tiles, cut by `threads` workers.
-pub(super) struct Strips {
+pub(crate) struct Strips {
     /// The strips' Z bounds (grid units), one more than the strips.
     bounds: Vec<i32>,
     nodes: Vec<Mutex<Node>>,
@@ -40,7 +41,7 @@ pub(super) struct Strips {
 
 impl Strips {
     /// The blank's `stock` in strips across the clip box `clip` (`bb`: the blank's box).
-    pub(super) fn new(
+    pub(crate) fn new(
         grid: &Grid,
         clip: &Rect,
         bb: &Rect,
@@ -82,10 +83,24 @@ impl Strips {
 
     /// For each strip, the sweeps whose box reaches into it.
     fn lists(&self, sweeps: &Sweeps) -> Vec<Vec<u32>> {
+        self.lists_in(sweeps, 0..sweeps.items.len(), |_| true)
+    }
+
+    /// For each strip, the sweeps of `items` that `keep` keeps and whose box reaches into it.
+    fn lists_in(
+        &self,
+        sweeps: &Sweeps,
+        items: Range<usize>,
+        keep: impl Fn(&Item) -> bool,
+    ) -> Vec<Vec<u32>> {
         let bounds = &self.bounds;
         let n_strips = bounds.len() - 1;
         let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n_strips];
-        for (i, it) in sweeps.items.iter().enumerate() {
+        for (i, it) in sweeps.items[items.clone()].iter().enumerate() {
+            if !keep(it) {
+                continue;
+            }
+            let i = i + items.start;
             let lo = bounds
                 .partition_point(|&b| b <= it.bbox.min[0])
                 .saturating_sub(1);
@@ -152,8 +167,33 @@ impl Strips {
         })
     }
 
+    /// Cuts the sweeps `items` of `sweeps` that remove material (not a body's probe) into
+    /// the strips as the removal cuts an epoch: for the snapshots' own copy of the stock,
+    /// which gets the tiles' air tests and batches (the rapid cuts found are the removal's
+    /// to report, and dropped here).
+    pub(crate) fn cut_items(
+        &self,
+        sweeps: &Sweeps,
+        items: Range<usize>,
+        (grid, opts): (&Grid, &SimOptions),
+        engine: &mut Engine,
+    ) {
+        let lists = self.lists_in(sweeps, items, |it| it.body.is_none());
+        let stop = AtomicBool::new(false);
+        let ctx = Ctx {
+            grid,
+            min_tile: self.min_tile,
+            sweeps,
+            ring_air: opts.ring_air,
+            cover: opts.cover,
+            budget: None,
+            stop: &stop,
+        };
+        self.cut(&lists, &ctx, engine, || {});
+    }
+
     /// The stock as it stands: every strip's tiles joined.
-    pub(super) fn stock(&self, engine: &mut Engine) -> IShapes {
+    pub(crate) fn stock(&self, engine: &mut Engine) -> IShapes {
         let mut parts: Vec<IShapes> = Vec::new();
         for m in &self.nodes {
             m.lock()
@@ -164,7 +204,7 @@ impl Strips {
     }
 
     /// The vertices of the stock and the tiles holding them.
-    fn census(&self) -> (usize, usize) {
+    pub(crate) fn census(&self) -> (usize, usize) {
         self.nodes.iter().fold((0, 0), |(v, t), m| {
             let (nv, nt) = m.lock().unwrap_or_else(|e| e.into_inner()).census();
             (v + nv, t + nt)
@@ -338,7 +378,7 @@ impl<'a> Epochs<'a> {
                     break;
                 }
             }
-            self.snapshots.epoch(&ep.sweeps, engine);
+            self.snapshots.epoch(&ep.sweeps, (grid, opts), engine);
             cut_moves = ep.cut_moves(cut_moves);
             // (at the last epoch end the stock is the final part, which the caller has anyway)
             if ep.end < moves {

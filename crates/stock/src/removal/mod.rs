@@ -35,7 +35,8 @@ pub use crash::Crash;
 use crate::budget::{OverBudget, RunMemory};
 use crate::overlay::{Engine, Grid, IShapes};
 use crate::{area, revolved_volume, Blank, Shape, ToolTable};
-use epoch::{Cuts, Epochs, Strips};
+pub(crate) use epoch::Strips;
+use epoch::{Cuts, Epochs};
 use expander::Segment;
 use geom::flat::pts;
 use geom::Rect;
@@ -154,6 +155,10 @@ pub fn simulate(
     let stock = grid.shapes_to_int(&shapes);
     let strips = Strips::new(&grid, &clip, &bb, &stock, &mut engine);
     let mut epochs = Epochs::new(&grid, clip, tools, segments, opts, (&shapes, &stock));
+    // the snapshots' copy of the stock, in strips of its own
+    epochs
+        .snapshots
+        .tile(|stock| Strips::new(&grid, &clip, &bb, stock, &mut engine));
     let mut cuts = epochs.cut_all(&strips, (&grid, &mut engine), opts, progress);
     warnings.append(&mut cuts.warnings);
     warnings.append(&mut epochs.builder.warnings);
