@@ -649,6 +649,13 @@ fn g7x_mistakes_are_alarms_and_corners_round() {
         ),
         ("G71 Q1 X30 Z2 I0", "p.ngc:7:1", "greater than zero"),
         ("G71 Q1 X30 Z2 K3", "p.ngc:7:15", "address K"),
+        // G71.2 continues a G71.1 of the same profile; alone LinuxCNC cuts only the pockets
+        ("G71.2 Q1 X30 Z2", "p.ngc:7:1", "no G71.1 Q1 before it"),
+        (
+            "G72.1 Q1 X30 Z2\nG71.2 Q1 X30 Z2",
+            "p.ngc:8:1",
+            "no G71.1 Q1 before it",
+        ),
     ] {
         let prog =
             format!("G7 G0 X30 Z2 F0.2\no1 sub\nG1 X10 Z0\nZ-10\nX30\no1 endsub\n{text}\nM2\n");
@@ -670,6 +677,11 @@ fn g7x_mistakes_are_alarms_and_corners_round() {
     );
     let p = path(&corner.replace("A1", "C1"), "linuxcnc");
     assert_eq!(p[3], "feed,-9,10,-10,12,,,,1", "{p:?}");
+    // after a G71.1 of the profile, its G71.2 runs (warned: simulated as the whole cycle)
+    let (code, err) =
+        check(&corner.replace("G70 Q1 X30 Z2", "G71.1 Q1 X30 Z2 D0.5\nG71.2 Q1 X30 Z2"));
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("LS-G7X-2"), "{err}");
 }
 
 /// `o<name> call` of a subroutine the file does not define runs the `o<name> sub` of

@@ -238,6 +238,34 @@ impl Interp<'_> {
         })
     }
 
+    /// G71.2/G72.2 "only cut after the first pocket and continue where G7x.1 stopped" ([G]
+    /// "G71 G72"): latsim runs a G7x.2 as the whole cycle, which leaves the same part only
+    /// after a G7x.1 of the same profile; without one `LinuxCNC` would leave the material
+    /// before the first pocket, so that is an alarm rather than a part it does not make.
+    /// A G7x.1 is noted for the G7x.2 that follows.
+    fn continues_a_rough(
+        &mut self,
+        g72: bool,
+        sub: i32,
+        q: u32,
+        at: gcode::Span,
+    ) -> Result<(), Diagnostic> {
+        let n = if g72 { 72 } else { 71 };
+        match sub {
+            1 if !self.g7x_roughed.contains(&(g72, q)) => self.g7x_roughed.push((g72, q)),
+            2 if !self.g7x_roughed.contains(&(g72, q)) => {
+                return Err(alarm(
+                    at,
+                    "LS-NOT-IMPLEMENTED",
+                    format!("G{n}.2 Q{q} with no G{n}.1 Q{q} before it: LinuxCNC cuts only from the first pocket on, which latsim does not run yet"),
+                    format!("rough the profile with G{n}.1 Q{q} first (LinuxCNC's own use), or with G{n} for the whole cycle"),
+                ))
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
     /// Run G7x block `b` of O program `index` of `program` at call `depth`.
     pub(super) fn linuxcnc_g7x(
         &mut self,
@@ -278,6 +306,7 @@ impl Interp<'_> {
         } else {
             let g72 = code <= lc::CYCLE_G72;
             let sub = if g72 { lc::CYCLE_G72 - code } else { sub };
+            self.continues_a_rough(g72, sub, w.q, g.span)?;
             let kept = g7x::at_distance(&shape, w.d)?;
             let kept = if sub == 1 {
                 g7x::without_pockets(&kept, g72)

@@ -234,6 +234,8 @@ pub(crate) struct Interp<'m> {
     pending_tool: Option<u32>,
     /// `LinuxCNC` G7x: the profile O-sub running, its moves captured.
     g7x_capture: Option<linuxcnc_g7x::Capture>,
+    /// `LinuxCNC` G71.1/G72.1 run so far: (G72, profile Q), which a G7x.2 continues.
+    g7x_roughed: Vec<(bool, u32)>,
 }
 
 /// A controller alarm.
@@ -298,6 +300,7 @@ impl<'m> Interp<'m> {
             arc_absolute: false,
             pending_tool: None,
             g7x_capture: None,
+            g7x_roughed: Vec::new(),
         }
     }
 
