@@ -357,7 +357,10 @@ fn simulate(args: &RunArgs, path: &Path) -> Result<Ran, ()> {
     let job = Job::load(args, path, false)?;
     crate::input::print_diagnostics(&job.loaded, true);
     let settings = job.settings(args.tol);
-    let opts = stock::SimOptions::default();
+    let opts = stock::SimOptions {
+        max_memory: crate::run::memory_budget(args).map(stock::RunMemory::alone),
+        ..stock::SimOptions::default()
+    };
     let (sim, findings) = analysis::pipeline(
         &job.loaded.toolpath,
         &job.intents,
@@ -365,6 +368,10 @@ fn simulate(args: &RunArgs, path: &Path) -> Result<Ran, ()> {
         &opts,
         &mut |_| {},
     );
+    if let Some(over) = &sim.over_budget {
+        crate::run::print_over_budget(path, over);
+        return Err(());
+    }
     let name = path.display().to_string();
     let report = crate::report::report(
         &crate::report::Run {

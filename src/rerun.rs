@@ -5,10 +5,11 @@
 use crate::job::Job;
 use analysis::diagnose::{Change, Rerun, Rerunning};
 
-/// A job and its tolerance, re-runnable.
+/// A job, its tolerance and its run's memory budget, re-runnable.
 pub(crate) struct Rerunner<'a> {
     pub(crate) job: &'a Job,
     pub(crate) tol: f64,
+    pub(crate) memory: Option<stock::RunMemory>,
 }
 
 impl Rerun for Rerunner<'_> {
@@ -35,13 +36,16 @@ impl Rerun for Rerunner<'_> {
             tools: &tools,
             ..self.job.settings(self.tol)
         };
-        let (_, findings) = analysis::pipeline(
-            &toolpath,
-            &self.job.intents,
-            &settings,
-            &stock::SimOptions::default(),
-            &mut |_| {},
-        );
+        let opts = stock::SimOptions {
+            max_memory: self.memory.clone(),
+            ..stock::SimOptions::default()
+        };
+        let (sim, findings) =
+            analysis::pipeline(&toolpath, &self.job.intents, &settings, &opts, &mut |_| {});
+        // a re-run stopped over the budget checks nothing
+        if sim.over_budget.is_some() {
+            return None;
+        }
         Some(Rerunning {
             findings,
             alarms: toolpath.alarms.len(),

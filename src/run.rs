@@ -238,9 +238,7 @@ pub(crate) fn run(args: &RunArgs) -> u8 {
 /// Each program's memory budget (`--max-memory`, else half the machine's), shared by the
 /// batch through one ledger.
 fn memory_of(args: &RunArgs, files: &[PathBuf]) -> impl Fn(usize) -> Option<stock::RunMemory> {
-    let budget = args
-        .max_memory
-        .or_else(stock::MemoryBudget::half_of_machine);
+    let budget = memory_budget(args);
     let sizes = files
         .iter()
         .map(|f| std::fs::metadata(f).map_or(0, |m| m.len()));
@@ -251,6 +249,12 @@ fn memory_of(args: &RunArgs, files: &[PathBuf]) -> impl Fn(usize) -> Option<stoc
             None => stock::RunMemory::alone(b),
         })
     }
+}
+
+/// A program's memory budget: `--max-memory`, else half the machine's.
+pub(crate) fn memory_budget(args: &RunArgs) -> Option<stock::MemoryBudget> {
+    args.max_memory
+        .or_else(stock::MemoryBudget::half_of_machine)
 }
 
 /// The files a run reads, which no report may replace: the programs, the tables and
@@ -413,7 +417,7 @@ fn simulate(
         } else {
             vec![]
         },
-        max_memory: memory,
+        max_memory: memory.clone(),
         ..stock::SimOptions::default()
     };
     let bar = progress_bar(moves as u64, quiet);
@@ -434,7 +438,11 @@ fn simulate(
         b.finish_and_clear();
     }
     if sim.over_budget.is_none() {
-        let rerun = crate::rerun::Rerunner { job, tol: args.tol };
+        let rerun = crate::rerun::Rerunner {
+            job,
+            tol: args.tol,
+            memory,
+        };
         analysis::diagnose::diagnose(&mut findings, &job.loaded.toolpath, &settings, &rerun);
     }
     (sim, findings)
@@ -484,12 +492,17 @@ fn over_budget(path: &Path, over: &stock::OverBudget, batch: bool) -> Outcome {
     if batch {
         println!("{}: UNUSABLE — {message}", path.display());
     } else {
-        diag::print_plain(
-            &format!("{}: {message}", path.display()),
-            "split the program, or give a larger --max-memory where the machine has the memory",
-        );
+        print_over_budget(path, over);
     }
     Outcome::unusable(path.to_path_buf(), Some(message))
+}
+
+/// The message of a run stopped over its memory budget, with what to do.
+pub(crate) fn print_over_budget(path: &Path, over: &stock::OverBudget) {
+    diag::print_plain(
+        &format!("{}: {over}", path.display()),
+        "split the program, or give a larger --max-memory where the machine has the memory",
+    );
 }
 
 /// Renders every report first, then writes them all to disk, then makes them visible: a

@@ -98,3 +98,40 @@ fn in_a_batch_the_program_holding_the_most_stops_and_the_others_go_on() {
     assert!(dir.path().join("out/a-small.json").exists());
     assert!(!dir.path().join("out/b-thread.json").exists());
 }
+
+/// `latsim diff` simulates each program side within the same budget as `run`: over it, the
+/// side's message names the budget and the flag, exit 2, and no diff is written; with room
+/// the two differ (exit 1).
+#[test]
+fn a_diff_over_its_budget_stops_with_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("a.nc"), SMALL).unwrap();
+    std::fs::write(dir.path().join("b.nc"), SMALL.replace("X48", "X47.8")).unwrap();
+    let diff = |budget: &str| {
+        Command::new(env!("CARGO_BIN_EXE_latsim"))
+            .current_dir(dir.path())
+            .args([
+                "diff", "a.nc", "b.nc", "--stock", "50x40", "--json", "d.json",
+            ])
+            .args(["--max-memory", budget])
+            .env("NO_COLOR", "1")
+            .output()
+            .unwrap()
+    };
+    let over = diff("1M");
+    let stderr = String::from_utf8_lossy(&over.stderr)
+        .replace('│', " ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert_eq!(over.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("a.nc: over the memory budget of 1 MiB"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("--max-memory"), "{stderr}");
+    assert!(!dir.path().join("d.json").exists());
+    let room = diff("8G");
+    assert_eq!(room.status.code(), Some(1), "{room:?}");
+    assert!(dir.path().join("d.json").exists());
+}

@@ -127,6 +127,17 @@ impl Obstacle {
         }
     }
 
+    /// The pieces of a sweep whose boxes meet this obstacle's: the only ones its
+    /// intersection with the sweep can come from (an arc's sweep is a piece a chord, each
+    /// overlapping the next, and the boolean of them all cost milliseconds a move).
+    fn near(&self, sweep: &[Shape]) -> Vec<Shape> {
+        sweep
+            .iter()
+            .filter(|piece| shapes_box(std::slice::from_ref(piece)).intersects(&self.bbox))
+            .cloned()
+            .collect()
+    }
+
     /// Whether the sweep (convex pieces, box `sb`) may overlap it with some area: boxes,
     /// then for a convex obstacle a separating-axis test of every piece near it.
     fn may_overlap(&self, sweep: &[Shape], sb: &Rect) -> bool {
@@ -286,7 +297,7 @@ impl Fixture {
                     if !applies || hit.contains(&o.name) || !o.may_overlap(&sweep, &sb) {
                         continue;
                     }
-                    let overlap = boolean(&sweep, &o.shapes, BoolOp::Intersection);
+                    let overlap = boolean(&o.near(&sweep), &o.shapes, BoolOp::Intersection);
                     let a = area(&overlap);
                     let reaches_skin = o.skin.as_ref().is_none_or(|skin| {
                         area(&boolean(&overlap, skin, BoolOp::Intersection)) > CRASH_MIN_AREA
