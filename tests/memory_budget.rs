@@ -19,6 +19,15 @@ fn thread_passes(passes: usize) -> String {
     text + "M30\n"
 }
 
+/// A message as one line: the terminal's wrapping and frame taken out.
+fn one_line(stderr: &[u8]) -> String {
+    String::from_utf8_lossy(stderr)
+        .replace('│', " ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
 fn latsim(dir: &std::path::Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_latsim"))
         .current_dir(dir)
@@ -44,12 +53,7 @@ fn a_run_over_its_budget_stops_with_exit_2_and_says_what_grew() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("small.nc"), SMALL).unwrap();
     let over = latsim(dir.path(), &["small.nc", "--max-memory", "1M"]);
-    // (the message as one line: the terminal's wrapping and frame taken out)
-    let stderr = String::from_utf8_lossy(&over.stderr)
-        .replace('│', " ")
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ");
+    let stderr = one_line(&over.stderr);
     assert_eq!(over.status.code(), Some(2), "{stderr}");
     assert!(
         stderr.contains("over the memory budget of 1 MiB: the process held"),
@@ -119,11 +123,7 @@ fn a_diff_over_its_budget_stops_with_exit_2() {
             .unwrap()
     };
     let over = diff("1M");
-    let stderr = String::from_utf8_lossy(&over.stderr)
-        .replace('│', " ")
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ");
+    let stderr = one_line(&over.stderr);
     assert_eq!(over.status.code(), Some(2), "{stderr}");
     assert!(
         stderr.contains("a.nc: over the memory budget of 1 MiB"),

@@ -46,6 +46,25 @@ pub(crate) struct ShapeElement {
 }
 
 impl ShapeElement {
+    /// This element as a feed of no tool and no feed rate: for its geometry only (its
+    /// polyline, an offset).
+    pub(crate) fn as_segment(&self) -> crate::Segment {
+        crate::Segment {
+            motion: crate::Motion::Feed,
+            from: self.from,
+            to: self.to,
+            arc: self.arc,
+            tool: 0,
+            hint: crate::ToolHint::Table,
+            lead: 0.0,
+            thread_phase: 0.0,
+            feed: crate::FeedId::default(),
+            span: self.span,
+        }
+    }
+}
+
+impl ShapeElement {
     /// This element moved by `d` (a translated arc keeps its radius and direction).
     pub(crate) fn shifted(&self, d: Pt) -> Self {
         let m = |p: Pt| Pt::new(p.z + d.z, p.r + d.r);
@@ -125,19 +144,7 @@ impl FinishingShape {
     pub(crate) fn intended_path(&self, tol: f64) -> Vec<Pt> {
         let mut pts = vec![self.start];
         for e in &self.elements {
-            let seg = crate::Segment {
-                motion: crate::Motion::Feed,
-                from: e.from,
-                to: e.to,
-                arc: e.arc,
-                tool: 0,
-                hint: crate::ToolHint::Table,
-                lead: 0.0,
-                thread_phase: 0.0,
-                feed: crate::FeedId::default(), // only its polyline is used
-                span: e.span,
-            };
-            pts.extend(seg.polyline(tol).into_iter().skip(1));
+            pts.extend(e.as_segment().polyline(tol).into_iter().skip(1));
         }
         pts
     }

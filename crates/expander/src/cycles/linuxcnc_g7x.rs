@@ -8,7 +8,7 @@
 use super::contour::{FinishingShape, ShapeElement, ShapeModes};
 use super::Move;
 use crate::tnrc::{self, Nose, Side};
-use crate::{Diagnostic, Motion, Pt, Segment, Span};
+use crate::{Diagnostic, Pt, Segment, Span};
 
 /// A fillet (A, `chamfer` false) or chamfer (C) of `size` written on the block whose move
 /// is profile element `after` (counted from the first move of the O-sub).
@@ -126,21 +126,6 @@ fn add_corner(elements: &mut Vec<ShapeElement>, c: Corner) -> Result<(), Diagnos
     Ok(())
 }
 
-fn segment(e: &ShapeElement) -> Segment {
-    Segment {
-        motion: Motion::Feed,
-        from: e.from,
-        to: e.to,
-        arc: e.arc,
-        tool: 0,
-        hint: crate::ToolHint::Table,
-        lead: 0.0,
-        thread_phase: 0.0,
-        feed: crate::FeedId::default(),
-        span: e.span,
-    }
-}
-
 /// The profile kept `distance` away, on the side of the cycle's start point: the moves
 /// after the first offset as a nose of that radius would run (spec/tnrc.md's offset: arcs
 /// round the outside corners), the first move ending at the offset start.
@@ -167,14 +152,18 @@ pub(crate) fn at_distance(
         };
         (other, -distance)
     };
-    let mut section: Vec<Segment> = shape.elements.iter().map(segment).collect();
+    let mut section: Vec<Segment> = shape
+        .elements
+        .iter()
+        .map(ShapeElement::as_segment)
+        .collect();
     let last = shape.elements[shape.elements.len() - 1];
     let along = if last.arc.is_none() {
         (last.to - last.from).unit()
     } else {
         (c - b).unit()
     };
-    let mut cancel = segment(&last);
+    let mut cancel = last.as_segment();
     cancel.from = c;
     cancel.to = c + along;
     cancel.arc = None;
@@ -206,7 +195,7 @@ pub(crate) fn without_pockets(shape: &FinishingShape, g72: bool) -> FinishingSha
     let depth = |p: Pt| sv * infeed(p);
     let mut pts: Vec<(Pt, Span)> = vec![(b, shape.elements[0].span)];
     for e in &shape.elements[1..] {
-        for p in segment(e).polyline(SAGITTA).into_iter().skip(1) {
+        for p in e.as_segment().polyline(SAGITTA).into_iter().skip(1) {
             pts.push((p, e.span));
         }
     }
@@ -283,12 +272,13 @@ mod tests {
     use super::*;
 
     fn seg(from: (f64, f64), to: (f64, f64)) -> Segment {
-        segment(&element(
+        element(
             Pt::new(from.0, from.1),
             Pt::new(to.0, to.1),
             None,
             Span::default(),
-        ))
+        )
+        .as_segment()
     }
 
     /// A 90° corner with fillet A2: tangent points 2 mm before and after it, the centre
