@@ -203,14 +203,7 @@ impl Interp<'_> {
             ));
         }
         let feed = self.feed_for(span, motion)?;
-        let feed = self.out.feeds.id(feed).ok_or_else(|| {
-            alarm(
-                span,
-                "LS-TOO-LONG",
-                "the program uses more than 2^32 different feeds",
-                "split the program",
-            )
-        })?;
+        let feed = self.feed_id(span, feed)?;
         Ok(Segment {
             motion,
             from: self.pos,
@@ -226,6 +219,18 @@ impl Interp<'_> {
             },
             feed,
             span,
+        })
+    }
+
+    /// The toolpath's number of `feed` (moves hold the number, not the feed).
+    pub(super) fn feed_id(&mut self, span: Span, feed: Feed) -> Result<crate::FeedId, Diagnostic> {
+        self.out.feeds.id(feed).ok_or_else(|| {
+            alarm(
+                span,
+                "LS-TOO-LONG",
+                "the program uses more than 2^32 different feeds",
+                "split the program",
+            )
         })
     }
 

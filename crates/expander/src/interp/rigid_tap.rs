@@ -76,14 +76,7 @@ impl Interp<'_> {
             feed: k.value * self.unit(),
             spindle: self.spindle(),
         };
-        let feed = self.out.feeds.id(per_rev).ok_or_else(|| {
-            alarm(
-                at,
-                "LS-TOO-LONG",
-                "the program uses more than 2^32 different feeds",
-                "split the program",
-            )
-        })?;
+        let feed = self.feed_id(at, per_rev)?;
         for point in [to, start] {
             // (built as a rapid, which needs no F, then made the synchronised feed it is)
             let mut seg = self.segment(
