@@ -539,34 +539,8 @@ fn add_threads(report: &mut Report, findings: &Findings) {
         .collect();
 }
 
-/// How many snapshots (besides the blank and the final part).
-const SNAPSHOTS: usize = 30;
-/// How many for programs over 5 000 moves, where each is a union of all the removal's
-/// tiles (the 10⁵-move cutting zig-zag: 29 of them added 3.2 s to a 4.1 s run).
-const SNAPSHOTS_LONG: usize = 10;
-
-/// Move counts after which the simulation keeps the stock for the HTML report's move
-/// slider (taken in the simulation's one pass: exactly at these counts up to 5 000 moves,
-/// at the removal's epoch ends nearest after them beyond; `stock::Simulation::snapshots`).
-pub(crate) fn snapshot_marks(moves: usize) -> Vec<usize> {
-    if moves == 0 {
-        return vec![];
-    }
-    let count = if moves > stock::SNAPSHOT_EXACT_MAX_MOVES {
-        SNAPSHOTS_LONG
-    } else {
-        SNAPSHOTS
-    };
-    let mut marks: Vec<usize> = (1..count)
-        .map(|i| i * moves / count)
-        .filter(|&k| k > 0 && k < moves)
-        .collect();
-    marks.dedup();
-    marks
-}
-
 /// The stock part-way through the run for the HTML report: the blank, the snapshots the
-/// simulation took at [`snapshot_marks`], and the final part.
+/// simulation took at `stock::player_marks`, and the final part.
 pub(crate) fn snapshots(
     blank: &stock::Blank,
     moves: usize,

@@ -401,8 +401,8 @@ fn run_one(
 }
 
 /// The removal and the analysis (with a progress bar unless `quiet`), then the diagnosis
-/// of what they found; the HTML player's snapshots only for an HTML report (they cost a
-/// second cut of every sweep). A run over its memory budget is returned undiagnosed.
+/// of what they found; the HTML player's snapshots only for an HTML report (each is a
+/// union of the whole stock). A run over its memory budget is returned undiagnosed.
 fn simulate(
     args: &RunArgs,
     job: &Job,
@@ -413,7 +413,7 @@ fn simulate(
     let moves = job.loaded.toolpath.segments.len();
     let opts = stock::SimOptions {
         snapshot_after: if html {
-            crate::report::snapshot_marks(moves)
+            stock::player_marks(moves)
         } else {
             vec![]
         },
@@ -461,7 +461,7 @@ fn build_report(
 ) -> render::Report {
     let moves = job.loaded.toolpath.segments.len();
     let marks = if html {
-        crate::report::snapshot_marks(moves)
+        stock::player_marks(moves)
     } else {
         vec![]
     };

@@ -230,7 +230,7 @@ pub(crate) fn size(bytes: u64) -> String {
 
 /// A run stopped because the process went over its memory budget: where, and what grew.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("over the memory budget of {budget}: the process held {} after {moves} moves; {what} (give --max-memory to allow more)", size(*.held))]
+#[error("over the memory budget of {budget}: the process held {} after {moves} move{}; {what} (give --max-memory to allow more)", size(*.held), if *.moves == 1 { "" } else { "s" })]
 pub struct OverBudget {
     /// The budget.
     pub budget: MemoryBudget,

@@ -1,47 +1,76 @@
 //! Stock snapshots part-way through a removal run, taken in the run's one pass.
 //!
-//! The removal itself works in epochs over tiles and batches its cuts; cutting at the
-//! snapshot counts inside it would change where batches end and so the last bits of the
-//! final part. Up to [`EXACT_MAX_MOVES`] moves, snapshots therefore keep their own copy of
-//! the stock and cut into it the same sweeps, in order, stopping at each count asked for
-//! (the intended shapes read the stock exactly where a cycle began). The copy is held in Z
-//! strips of tiles like the removal's and cut the way the removal cuts ([`Strips`]): each
-//! range of sweeps meets only the tiles it reaches, with their air tests and batches (one
-//! boolean call of the whole stock against every sweep of a range, 30 ranges, took 60 % of
-//! an HTML run of 1 000 small arcs). A snapshot is the union of the copy's tiles: it
-//! differs from one boolean call by where edges were rounded at tile sides and batch
-//! ends, a few grid steps. Longer programs get their snapshots at the removal's own epoch
-//! ends instead, where every tile is flushed: the union of the tiles' stock, at the first
-//! epoch end at or after each count asked for, labelled with the moves it holds.
+//! The removal works in epochs over tiles and batches its cuts; where an epoch ends, every
+//! tile is flushed and the stock is the union of the tiles. A program of up to
+//! [`EXACT_MAX_MOVES`] moves therefore ends an epoch at each of its stops ([`stops`]): the
+//! HTML player's counts ([`player_marks`], a function of the program's length alone) and
+//! the counts the analysis asks for (where a cycle began, a function of the program), so
+//! a snapshot there is the stock exactly after that many moves, and the removal ends its
+//! batches at the same places whichever reports are written: every report of a run reads
+//! the same part. (A second copy of the stock cut to the counts cost as much as the removal
+//! itself: 95 of 317 ms on 1 000 small arcs.) Longer programs get their snapshots at the
+//! removal's own epoch ends: the union of the tiles' stock, at the first epoch end at or
+//! after each count asked for, labelled with the moves it holds.
 
 /// Longest program whose snapshots are taken exactly at their counts.
 pub const EXACT_MAX_MOVES: usize = 5_000;
+/// How many snapshots the HTML player shows (besides the blank and the final part).
+const PLAYER: usize = 30;
+/// How many for programs over [`EXACT_MAX_MOVES`] moves, where each is a union of all the
+/// removal's tiles (the 10⁵-move cutting zig-zag: 29 of them added 3.2 s to a 4.1 s run).
+const PLAYER_LONG: usize = 10;
 
-use crate::overlay::{Engine, Grid, IShapes};
-use crate::removal::{SimOptions, Strips};
-use crate::sweep::{SweepBuilder, Sweeps};
+use crate::overlay::{Engine, IShapes};
+use crate::removal::Strips;
+use crate::sweep::Sweeps;
 
-/// The snapshot counts still to come, the snapshot stock and the snapshots taken.
+/// Move counts after which the HTML player shows the stock (its move slider): evenly
+/// spread over the program's `moves`.
+pub fn player_marks(moves: usize) -> Vec<usize> {
+    let count = if moves > EXACT_MAX_MOVES {
+        PLAYER_LONG
+    } else {
+        PLAYER
+    };
+    let mut marks: Vec<usize> = (1..count)
+        .map(|i| i * moves / count)
+        .filter(|&k| k > 0 && k < moves)
+        .collect();
+    marks.dedup();
+    marks
+}
+
+/// Where the removal of a program of `moves` moves ends its epochs besides its usual ends:
+/// for a program of up to [`EXACT_MAX_MOVES`] moves, at the player's counts and at the
+/// counts `asked` (ascending, those in `1..moves`); none for a longer one.
+pub(crate) fn stops(asked: &[usize], moves: usize) -> Vec<usize> {
+    if moves > EXACT_MAX_MOVES {
+        return Vec::new();
+    }
+    let mut stops = player_marks(moves);
+    stops.extend(asked.iter().copied().filter(|&k| k > 0 && k < moves));
+    stops.sort_unstable();
+    stops.dedup();
+    stops
+}
+
+/// The snapshot counts still to come and the snapshots taken.
 pub(crate) struct Snapshots {
-    /// Exact at the counts (a second cut), or at epoch ends.
+    /// Exact at the counts (epochs end there), or at epoch ends.
     exact: bool,
-    marks: std::iter::Peekable<std::vec::IntoIter<usize>>,
-    /// The blank, until [`Snapshots::tile`] puts it in strips (exact snapshots only).
-    stock: IShapes,
-    /// The snapshots' own copy of the stock, cut up to the last count reached.
-    strips: Option<Strips>,
-    /// Counts reached in the current epoch: (count, number of the epoch's sweeps emitted by
-    /// then, the sweep of the merged run still open then).
-    reached: Vec<(usize, usize, Sweeps)>,
+    /// The counts asked for, ascending.
+    marks: Vec<usize>,
+    /// Counts before this index were served (epoch mode).
+    served: usize,
     /// (move count, stock after that many moves), ascending.
     pub(crate) out: Vec<(usize, IShapes)>,
 }
 
 impl Snapshots {
-    /// Snapshots after each of `marks` moves (those in `1..moves`), from `stock`: exact
-    /// when `moves` is at most [`EXACT_MAX_MOVES`], else at epoch ends
+    /// Snapshots after each of `marks` moves (those in `1..moves`): exact when `moves` is
+    /// at most [`EXACT_MAX_MOVES`] ([`Snapshots::at_stop`]), else at epoch ends
     /// ([`Snapshots::at_epoch_end`]).
-    pub(crate) fn new(marks: &[usize], moves: usize, stock: &IShapes) -> Self {
+    pub(crate) fn new(marks: &[usize], moves: usize) -> Self {
         let mut m: Vec<usize> = marks
             .iter()
             .copied()
@@ -49,26 +78,11 @@ impl Snapshots {
             .collect();
         m.sort_unstable();
         m.dedup();
-        let exact = moves <= EXACT_MAX_MOVES;
         Self {
-            exact,
-            stock: if m.is_empty() || !exact {
-                Vec::new()
-            } else {
-                stock.clone()
-            },
-            marks: m.into_iter().peekable(),
-            strips: None,
-            reached: Vec::new(),
+            exact: moves <= EXACT_MAX_MOVES,
+            marks: m,
+            served: 0,
             out: Vec::new(),
-        }
-    }
-
-    /// Puts the snapshots' copy of the stock into strips (`strips` of the blank's stock),
-    /// when snapshots are taken exactly and any are asked for.
-    pub(crate) fn tile(&mut self, strips: impl FnOnce(&IShapes) -> Strips) {
-        if !self.stock.is_empty() {
-            self.strips = Some(strips(&std::mem::take(&mut self.stock)));
         }
     }
 
@@ -78,70 +92,59 @@ impl Snapshots {
         self.exact
     }
 
-    /// Called after `moves` moves were pushed into `builder`: at a snapshot count, notes how
-    /// far the builder got and the sweep of its open run.
-    pub(crate) fn after_push(&mut self, moves: usize, builder: &mut SweepBuilder) {
-        if self.exact && self.marks.next_if_eq(&moves).is_some() {
-            let emitted = builder.emitted();
-            self.reached.push((moves, emitted, builder.peek_run()));
-        }
+    /// Whether a snapshot is wanted after `moves` moves (exact mode).
+    pub(crate) fn wanted(&self, moves: usize) -> bool {
+        self.exact && self.marks.binary_search(&moves).is_ok()
     }
 
-    /// Called with the sweeps the builder emitted this epoch: cuts them into the snapshots'
-    /// copy of the stock and takes the snapshots reached.
-    pub(crate) fn epoch(
+    /// At an epoch that ended at a stop after `moves` moves (exact mode): takes the
+    /// snapshot wanted there, the union of the tiles of `strips`, less the sweep of a
+    /// merged run still `open` there (its cut comes when it ends).
+    pub(crate) fn at_stop(
         &mut self,
-        sweeps: &Sweeps,
-        run: (&Grid, &SimOptions),
+        moves: usize,
+        open: Option<&Sweeps>,
+        strips: &Strips,
         engine: &mut Engine,
     ) {
-        let Some(strips) = self.strips.as_ref().filter(|_| self.exact) else {
+        if !self.wanted(moves) {
             return;
-        };
-        let mut applied = 0;
-        for (k, emitted, open) in std::mem::take(&mut self.reached) {
-            strips.cut_items(sweeps, applied..emitted, run, engine);
-            applied = emitted;
-            let stock = strips.stock(engine);
-            let snap = if open.items.is_empty() {
-                stock
-            } else {
+        }
+        let stock = strips.stock(engine);
+        let snap = match open {
+            Some(open) => {
                 let polys = open
                     .items
                     .iter()
                     .filter(|it| it.body.is_none())
                     .flat_map(|it| open.polys_of(it));
                 engine.difference(&stock, polys)
-            };
-            self.out.push((k, snap));
-        }
-        if self.marks.peek().is_some() {
-            strips.cut_items(sweeps, applied..sweeps.items.len(), run, engine);
-        }
+            }
+            None => stock,
+        };
+        self.out.push((moves, snap));
     }
 
     /// At an epoch end (epoch mode): `stock()` is the stock holding the cuts of the first
     /// `moves` moves; it is taken once for all the counts asked for up to `moves`.
     pub(crate) fn at_epoch_end(&mut self, moves: usize, stock: impl FnOnce() -> IShapes) {
-        let mut due = false;
-        while !self.exact && self.marks.next_if(|&k| k <= moves).is_some() {
-            due = true;
-        }
-        if due {
+        let due = self.marks[self.served..].partition_point(|&k| k <= moves);
+        if !self.exact && due > 0 {
+            self.served += due;
             self.out.push((moves, stock()));
         }
     }
 
-    /// About how many bytes the snapshots' stock and the snapshots taken hold.
+    /// About how many bytes the snapshots taken hold.
     pub(crate) fn bytes(&self) -> u64 {
-        let copy = self.strips.as_ref().map_or(0, |s| s.census().0);
-        let vertices: usize = std::iter::once(&self.stock)
-            .chain(self.out.iter().map(|(_, s)| s))
-            .flatten()
+        let vertices: usize = self
+            .out
+            .iter()
+            .flat_map(|(_, s)| s)
             .flatten()
             .map(Vec::len)
             .sum();
-        ((vertices + copy) * std::mem::size_of::<crate::overlay::IPt>()) as u64
+        (vertices * std::mem::size_of::<crate::overlay::IPt>()) as u64
     }
 }
 

@@ -9,11 +9,10 @@ use super::SimOptions;
 use crate::budget::{size, OverBudget, RunMemory};
 use crate::overlay::{Engine, Grid, IBox, IPt, IShape, IShapes};
 use crate::snapshot::Snapshots;
-use crate::sweep::{Item, SweepBuilder, Sweeps};
+use crate::sweep::{SweepBuilder, Sweeps};
 use crate::{Shape, ToolTable};
 use expander::{Motion, Segment};
 use geom::Rect;
-use std::ops::Range;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 
@@ -83,24 +82,10 @@ impl Strips {
 
     /// For each strip, the sweeps whose box reaches into it.
     fn lists(&self, sweeps: &Sweeps) -> Vec<Vec<u32>> {
-        self.lists_in(sweeps, 0..sweeps.items.len(), |_| true)
-    }
-
-    /// For each strip, the sweeps of `items` that `keep` keeps and whose box reaches into it.
-    fn lists_in(
-        &self,
-        sweeps: &Sweeps,
-        items: Range<usize>,
-        keep: impl Fn(&Item) -> bool,
-    ) -> Vec<Vec<u32>> {
         let bounds = &self.bounds;
         let n_strips = bounds.len() - 1;
         let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n_strips];
-        for (i, it) in sweeps.items[items.clone()].iter().enumerate() {
-            if !keep(it) {
-                continue;
-            }
-            let i = i + items.start;
+        for (i, it) in sweeps.items.iter().enumerate() {
             let lo = bounds
                 .partition_point(|&b| b <= it.bbox.min[0])
                 .saturating_sub(1);
@@ -167,31 +152,6 @@ impl Strips {
         })
     }
 
-    /// Cuts the sweeps `items` of `sweeps` that remove material (not a body's probe) into
-    /// the strips as the removal cuts an epoch: for the snapshots' own copy of the stock,
-    /// which gets the tiles' air tests and batches (the rapid cuts found are the removal's
-    /// to report, and dropped here).
-    pub(crate) fn cut_items(
-        &self,
-        sweeps: &Sweeps,
-        items: Range<usize>,
-        (grid, opts): (&Grid, &SimOptions),
-        engine: &mut Engine,
-    ) {
-        let lists = self.lists_in(sweeps, items, |it| it.body.is_none());
-        let stop = AtomicBool::new(false);
-        let ctx = Ctx {
-            grid,
-            min_tile: self.min_tile,
-            sweeps,
-            ring_air: opts.ring_air,
-            cover: opts.cover,
-            budget: None,
-            stop: &stop,
-        };
-        self.cut(&lists, &ctx, engine, || {});
-    }
-
     /// The stock as it stands: every strip's tiles joined.
     pub(crate) fn stock(&self, engine: &mut Engine) -> IShapes {
         let mut parts: Vec<IShapes> = Vec::new();
@@ -242,6 +202,8 @@ struct Epoch {
     sweeps: Sweeps,
     /// A merged run of feeds was still open at its end (its cut comes in a later epoch).
     open_run: bool,
+    /// That run's sweep so far, when a snapshot is wanted at the epoch's end.
+    open_sweep: Option<Sweeps>,
 }
 
 impl Epoch {
@@ -285,12 +247,14 @@ pub(super) struct Epochs<'a> {
     bore: f64,
     /// Most moves an epoch holds.
     len: usize,
+    /// Move counts where an epoch ends besides (`snapshot::stops`), ascending.
+    stops: Vec<usize>,
     /// Part-offs after which the stock was looked at for pieces that fell.
     checks: usize,
 }
 
 impl<'a> Epochs<'a> {
-    /// The epochs of `segments` over the blank `shapes` (`stock` on `grid`), sweeps clipped
+    /// The epochs of `segments` over the blank `shapes` (on `grid`), sweeps clipped
     /// to `clip`.
     pub(super) fn new(
         grid: &'a Grid,
@@ -298,7 +262,7 @@ impl<'a> Epochs<'a> {
         tools: &'a ToolTable,
         segments: &'a [Segment],
         opts: &SimOptions,
-        (shapes, stock): (&[Shape], &IShapes),
+        shapes: &[Shape],
     ) -> Self {
         let positive = |v: f64| v.is_finite() && v > 0.0;
         let tol = if positive(opts.chord_tol) {
@@ -314,7 +278,7 @@ impl<'a> Epochs<'a> {
         let mut builder = SweepBuilder::new(grid, clip, tools, tol, merge_tol);
         builder.set_rear(crate::section::rear_tools(segments));
         builder.set_feed_paths(opts.feed_paths);
-        let snapshots = Snapshots::new(&opts.snapshot_after, segments.len(), stock);
+        let snapshots = Snapshots::new(&opts.snapshot_after, segments.len());
         // a group's passes are one sweep: only where snapshots are not taken move by move
         builder.set_pass_groups(opts.pass_groups && !snapshots.exact());
         Self {
@@ -326,6 +290,7 @@ impl<'a> Epochs<'a> {
             } else {
                 (segments.len() / 30).clamp(1024, EPOCH)
             },
+            stops: crate::snapshot::stops(&opts.snapshot_after, segments.len()),
             snapshots,
             segments,
             tools,
@@ -352,9 +317,8 @@ impl<'a> Epochs<'a> {
             let lists = strips.lists(&ep.sweeps);
             // the next epoch's sweeps are built while the workers cut this one's, unless this
             // one ends with a part-off (the stock is looked at first: pieces that fell are
-            // erased from what comes after) or the snapshots are exact (their counts are read
-            // epoch by epoch; such programs fit one epoch anyway)
-            let ahead = !ep.parting && ep.end < moves && !self.snapshots.exact();
+            // erased from what comes after)
+            let ahead = !ep.parting && ep.end < moves;
             let ctx = Ctx {
                 grid,
                 min_tile: strips.min_tile,
@@ -378,7 +342,8 @@ impl<'a> Epochs<'a> {
                     break;
                 }
             }
-            self.snapshots.epoch(&ep.sweeps, (grid, opts), engine);
+            self.snapshots
+                .at_stop(ep.end, ep.open_sweep.as_ref(), strips, engine);
             cut_moves = ep.cut_moves(cut_moves);
             // (at the last epoch end the stock is the final part, which the caller has anyway)
             if ep.end < moves {
@@ -483,6 +448,9 @@ impl<'a> Epochs<'a> {
         let (segments, tools, bore) = (self.segments, self.tools, self.bore);
         let looking = self.checks < MAX_SEPARATION_CHECKS;
         let mut end = (start + self.len).min(segments.len());
+        if let Some(&stop) = self.stops.iter().find(|&&k| k > start) {
+            end = end.min(stop);
+        }
         // a part-off may leave a piece: its epoch ends with it, so that the stock can be
         // looked at before the next move
         if let Some(k) = segments[start..end]
@@ -497,17 +465,19 @@ impl<'a> Epochs<'a> {
         for (k, seg) in segments[start..end].iter().enumerate() {
             self.builder
                 .push(start + k, seg, segments.get(start + k + 1));
-            self.snapshots.after_push(start + k + 1, &mut self.builder);
         }
         let parting = end > start && looking && parts_off(&segments[end - 1], tools, bore);
         if end == segments.len() || parting {
             self.builder.flush_run();
         }
+        let open_run = self.builder.has_open_run();
+        let open_sweep = (open_run && self.snapshots.wanted(end)).then(|| self.builder.peek_run());
         Epoch {
             end,
             parting,
             sweeps: self.builder.take(),
-            open_run: self.builder.has_open_run(),
+            open_run,
+            open_sweep,
         }
     }
 }

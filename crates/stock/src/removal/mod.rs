@@ -154,11 +154,7 @@ pub fn simulate(
     let mut engine = Engine::new();
     let stock = grid.shapes_to_int(&shapes);
     let strips = Strips::new(&grid, &clip, &bb, &stock, &mut engine);
-    let mut epochs = Epochs::new(&grid, clip, tools, segments, opts, (&shapes, &stock));
-    // the snapshots' copy of the stock, in strips of its own
-    epochs
-        .snapshots
-        .tile(|stock| Strips::new(&grid, &clip, &bb, stock, &mut engine));
+    let mut epochs = Epochs::new(&grid, clip, tools, segments, opts, &shapes);
     let mut cuts = epochs.cut_all(&strips, (&grid, &mut engine), opts, progress);
     warnings.append(&mut cuts.warnings);
     warnings.append(&mut epochs.builder.warnings);

@@ -250,8 +250,10 @@ fn flank_infeed_passes_leave_no_zigzag_along_the_flank() {
         .map(|s| s.outer.len() + s.holes.iter().map(Vec::len).sum::<usize>())
         .sum();
     assert!(vertices < 150, "{vertices} vertices");
+    // grid rounding (~0.1 nm) along the 27 mm of flanks, where the epochs that end at the
+    // snapshot stops (every 20 moves here) end batches
     assert!(
-        (sim.removed_area - last.removed_area).abs() < 1e-6,
+        (sim.removed_area - last.removed_area).abs() < 1e-5,
         "{} against {}",
         sim.removed_area,
         last.removed_area

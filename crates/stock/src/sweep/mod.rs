@@ -372,11 +372,6 @@ impl<'a> SweepBuilder<'a> {
         self.run.is_some()
     }
 
-    /// Number of sweeps emitted since the last [`SweepBuilder::take`].
-    pub(crate) fn emitted(&self) -> usize {
-        self.out.items.len()
-    }
-
     /// The sweep of the current merged run as [`SweepBuilder::flush_run`] would emit it,
     /// without ending the run (for snapshots part-way through).
     pub(crate) fn peek_run(&mut self) -> Sweeps {
