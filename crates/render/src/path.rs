@@ -179,48 +179,120 @@ impl ToolpathD {
     }
 }
 
+/// One kind's path data, simplified as it is written: a run of points is drawn as one
+/// straight line from its first point (the anchor) while every point of the run lies within
+/// `md` of that line (the line's direction stays in the cone each point allows, the
+/// intersection of which is `window`), and points within `md` of the anchor are dropped. One
+/// pass, constant work a point: 50 passes of a 2 000-move roughing at 0.45 px a move drew
+/// 54 050 points, stroked point by point by the PNG's rasteriser.
 #[derive(Default)]
 struct KindWriter {
     d: String,
-    /// Last point written (or pending), the one new points are measured from.
-    last: Option<[f64; 2]>,
+    /// The last point written or pending: the start of the current run.
+    anchor: Option<[f64; 2]>,
     /// A subpath start not yet written: only flushed once a line follows it.
     pending_move: Option<[f64; 2]>,
+    /// The run's last point, not yet written: where its line ends so far.
+    tail: Option<[f64; 2]>,
+    /// Direction (rad) of the run's first point from the anchor; `window` is relative to it.
+    base: f64,
+    /// The directions from the anchor within which the line keeps every run point within
+    /// `md`: the intersection of the points' cones.
+    window: (f64, f64),
+    /// The run's farthest distance from the anchor (a run turning back ends).
+    reach: f64,
     points: usize,
     /// Write the path text; else only count the points it would have.
     write: bool,
 }
 
 impl KindWriter {
-    fn line(&mut self, pts: &[[f64; 2]], md2: f64) {
+    /// Adds a move's points (`md`: the tolerance, mm): a move starting away from where the
+    /// path stands (or after a non-finite point) starts a new subpath.
+    fn line(&mut self, pts: &[[f64; 2]], md: f64) {
         for (i, p) in pts.iter().enumerate() {
             if !finite(p) {
-                self.last = None;
-                self.pending_move = None;
+                self.end_subpath();
                 continue;
             }
-            let near = self.last.is_some_and(|l| dist2(l, *p) <= md2);
-            if near {
-                continue;
-            }
-            if i == 0 || self.last.is_none() {
+            let at = self.tail.or(self.anchor);
+            let near = at.is_some_and(|l| dist2(l, *p) <= md * md);
+            if i == 0 && !near {
                 // Discontinuous start: begin a new subpath lazily.
+                self.end_subpath();
                 self.pending_move = Some(*p);
-                self.last = Some(*p);
-                continue;
+                self.anchor = Some(*p);
+            } else if !near {
+                self.extend(*p, md);
             }
-            if let Some(m) = self.pending_move.take() {
-                if self.write {
-                    push_pt(&mut self.d, 'M', m, PATH_DECIMALS);
-                }
-                self.points += 1;
-            }
+        }
+    }
+
+    /// Takes `p` into the run when the run's line can reach it and still pass within `md`
+    /// of every point before; else writes the run's line and starts the next run at its end.
+    fn extend(&mut self, p: [f64; 2], md: f64) {
+        let Some(a) = self.anchor else {
+            self.pending_move = Some(p);
+            self.anchor = Some(p);
+            return;
+        };
+        let d = dist2(a, p).sqrt();
+        if d <= md {
+            return;
+        }
+        let theta = (p[1] - a[1]).atan2(p[0] - a[0]);
+        let w = (md / d).asin();
+        if self.tail.is_none() {
+            (self.base, self.window, self.reach) = (theta, (-w, w), d);
+            self.tail = Some(p);
+            return;
+        }
+        let rel = wrap(theta - self.base);
+        if rel >= self.window.0 && rel <= self.window.1 && d >= self.reach - md {
+            self.window = (self.window.0.max(rel - w), self.window.1.min(rel + w));
+            self.reach = self.reach.max(d);
+            self.tail = Some(p);
+            return;
+        }
+        self.write_tail();
+        self.extend(p, md);
+    }
+
+    /// Writes the run's line to its last point, which becomes the next run's anchor.
+    fn write_tail(&mut self) {
+        let Some(t) = self.tail.take() else {
+            return;
+        };
+        if let Some(m) = self.pending_move.take() {
             if self.write {
-                push_pt(&mut self.d, 'L', *p, PATH_DECIMALS);
+                push_pt(&mut self.d, 'M', m, PATH_DECIMALS);
             }
             self.points += 1;
-            self.last = Some(*p);
         }
+        if self.write {
+            push_pt(&mut self.d, 'L', t, PATH_DECIMALS);
+        }
+        self.points += 1;
+        self.anchor = Some(t);
+    }
+
+    /// Ends the current subpath: its last run is written.
+    fn end_subpath(&mut self) {
+        self.write_tail();
+        self.anchor = None;
+        self.pending_move = None;
+    }
+}
+
+/// An angle difference brought into (−π, π].
+fn wrap(a: f64) -> f64 {
+    use std::f64::consts::{PI, TAU};
+    if a > PI {
+        a - TAU
+    } else if a <= -PI {
+        a + TAU
+    } else {
+        a
     }
 }
 
@@ -270,7 +342,6 @@ fn candidates<'a>(lines: &'a [PathLine], min_dist: f64, window: &Bbox) -> Vec<&'
 /// Every `stride`-th candidate, thinned; only counted unless `write` (the path text of a
 /// million moves is written once, for the stride finally chosen).
 fn one_pass(cands: &[&PathLine], min_dist: f64, stride: usize, write: bool) -> ToolpathD {
-    let md2 = min_dist * min_dist;
     let mut w: [KindWriter; 3] = Default::default();
     for k in &mut w {
         k.write = write;
@@ -281,7 +352,10 @@ fn one_pass(cands: &[&PathLine], min_dist: f64, stride: usize, write: bool) -> T
             PathKind::Feed => 1,
             PathKind::Thread => 2,
         };
-        w[i].line(&l.points, md2);
+        w[i].line(&l.points, min_dist);
+    }
+    for k in &mut w {
+        k.end_subpath();
     }
     let [r, f, t] = w;
     ToolpathD {
@@ -294,8 +368,9 @@ fn one_pass(cands: &[&PathLine], min_dist: f64, stride: usize, write: bool) -> T
 }
 
 /// Thin the toolpath for a view: only segments touching `window` (mm), duplicates drawn
-/// once, points closer than `min_dist` (mm) to the previous kept point dropped, and at
-/// most about `cap` points: beyond that only every k-th segment is drawn.
+/// once, each kind's path simplified so that every point lies within about `min_dist` (mm)
+/// of the drawn line ([`KindWriter`]), and at most about `cap` points: beyond that only
+/// every k-th segment is drawn.
 pub(crate) fn toolpath_d(
     lines: &[PathLine],
     min_dist: f64,
@@ -342,9 +417,10 @@ mod tests {
         ];
         let w = Bbox::new(-100.0, 100.0, -100.0, 100.0);
         let t = toolpath_d(&lines, 0.01, &w, 1000);
-        assert_eq!(t.feed, "M0,10L-1,10L-5,10");
+        // the three feeds lie on one line: drawn as one
+        assert_eq!(t.feed, "M0,10L-5,10");
         assert_eq!(t.rapid, "M-5,10L-5,20");
-        assert_eq!(t.points, 5);
+        assert_eq!(t.points, 4);
         assert!(!t.thinned());
     }
 
@@ -361,6 +437,86 @@ mod tests {
         let t = toolpath_d(&lines, 0.01, &w, 1_000);
         assert!(t.points <= 1_000, "{}", t.points);
         assert!(t.thinned());
+    }
+
+    /// Distance from `p` to the polyline `line`.
+    fn to_polyline(p: [f64; 2], line: &[[f64; 2]]) -> f64 {
+        line.windows(2)
+            .map(|w| seg_dist(p, w[0], w[1]))
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The points of one subpath of path data `M…L…`.
+    fn parse_d(d: &str) -> Vec<[f64; 2]> {
+        d.split(['M', 'L'])
+            .filter(|t| !t.is_empty())
+            .map(|t| {
+                let (z, r) = t.split_once(',').unwrap();
+                [z.parse().unwrap(), r.parse().unwrap()]
+            })
+            .collect()
+    }
+
+    /// 50 roughing passes of 2 000 feeds 0.05 mm long along a wave (R ≥ 5 mm), drawn at
+    /// 0.03 mm a point: each pass keeps a few dozen points instead of a thousand, every
+    /// programmed point lies within 1.5 × 0.03 mm of the drawn line and every drawn point
+    /// on the path, and the corners where a pass starts and ends are kept.
+    #[test]
+    fn smooth_passes_draw_with_few_points_within_the_tolerance() {
+        let md = 0.03;
+        let profile = |z: f64, k: usize| 30.0 + k as f64 * 0.3 + 2.0 * (z / 5.0).sin();
+        let mut lines = Vec::new();
+        let mut all = Vec::new();
+        for k in 0..50 {
+            let pts: Vec<[f64; 2]> = (0..=2000)
+                .map(|i| {
+                    let z = -0.05 * i as f64;
+                    [z, profile(z, k)]
+                })
+                .collect();
+            for w in pts.windows(2) {
+                lines.push(line(PathKind::Feed, w));
+            }
+            all.push(pts);
+        }
+        let w = Bbox::new(-1e3, 1e3, -1e3, 1e3);
+        let t = toolpath_d(&lines, md, &w, 1_000_000);
+        let subpaths: Vec<Vec<[f64; 2]>> = t
+            .feed
+            .split('M')
+            .filter(|s| !s.is_empty())
+            .map(parse_d)
+            .collect();
+        assert_eq!(subpaths.len(), 50);
+        assert!(t.points < 50 * 80, "{} points", t.points);
+        for (drawn, pts) in subpaths.iter().zip(&all) {
+            assert_eq!(drawn[0], pts[0]);
+            assert!(dist2(drawn[drawn.len() - 1], pts[2000]).sqrt() <= md);
+            let worst = pts
+                .iter()
+                .map(|p| to_polyline(*p, drawn))
+                .fold(0.0, f64::max);
+            assert!(worst <= 1.5 * md, "a point {worst} mm off the drawn line");
+            let off = drawn
+                .iter()
+                .map(|p| to_polyline(*p, pts))
+                .fold(0.0, f64::max);
+            assert!(off <= 1e-4, "a drawn point {off} mm off the path");
+        }
+    }
+
+    /// A path that turns back on itself (a peck out and back along one line, then on) keeps
+    /// the turning point: the line does not stop short of where the tool went.
+    #[test]
+    fn a_path_that_turns_back_keeps_its_turning_point() {
+        let lines = vec![
+            line(PathKind::Feed, &[[0.0, 10.0], [-3.0, 10.0]]),
+            line(PathKind::Feed, &[[-3.0, 10.0], [-1.0, 10.0]]),
+            line(PathKind::Feed, &[[-1.0, 10.0], [-1.0, 12.0]]),
+        ];
+        let w = Bbox::new(-100.0, 100.0, -100.0, 100.0);
+        let t = toolpath_d(&lines, 0.01, &w, 1000);
+        assert_eq!(t.feed, "M0,10L-3,10L-1,10L-1,12");
     }
 
     #[test]
