@@ -11,7 +11,7 @@
 use crate::note::Note;
 use expander::{Motion, Segment};
 use geom::flat::P;
-use stock::{float_sweep, move_path, Mounts, Outline, Shape, ToolTable};
+use stock::{float_sweep, move_path, Mounted, Mounts, Outline, Shape, ToolTable};
 
 /// Most findings of guessed tools tested for certainty in one run: each test is a pass over
 /// the moves before it; the findings after these stay possible (a program with that many is
@@ -224,12 +224,55 @@ fn uncovered(spans: &[(f64, f64)], cover: &mut [(f64, f64)], len: f64) -> f64 {
     left * len
 }
 
+/// The outlines an earlier move may have cut with (`m`: its tool as mounted): the edge and
+/// the body as mounted when the table states the tool, or at least its nose and the way it
+/// points (an insert whose size is assumed: a bigger one cuts on the same side); for a
+/// feed of a tool the table says nothing of (`unknown_feed`: a default stands in), a disc
+/// as far across as the default's edge reaches, any way round. The stock such a feed
+/// leaves is a guess too: the default OD insert fed along a bore leaves the wall a boring
+/// bar would have cut, and a rapid back through that wall is no certain crash. (A rapid
+/// cuts nothing in a sound program: it keeps its outline.)
+fn may_have_cut(m: &Mounted, unknown_feed: bool) -> Vec<Outline> {
+    if !unknown_feed || m.core.is_some() {
+        return [Some(&*m.edge), m.body.as_ref().map(|b| &b.outline)]
+            .into_iter()
+            .flatten()
+            .cloned()
+            .collect();
+    }
+    let reach = m
+        .edge
+        .parts
+        .iter()
+        .flatten()
+        .map(|p| p[0].hypot(p[1]))
+        .fold(0.0, f64::max);
+    // a regular 32-gon around the circle of that radius
+    let n = 32;
+    let r = reach / (std::f64::consts::PI / f64::from(n)).cos();
+    let disc = (0..n)
+        .map(|k| {
+            let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect();
+    vec![Outline {
+        parts: vec![disc],
+        past_axis: m.edge.past_axis,
+    }]
+}
+
+/// Whether `seg` is a feed of a tool whose size the table does not state.
+fn guessed_feed(tools: &ToolTable, seg: &Segment) -> bool {
+    seg.motion == Motion::Feed && guessed(tools, seg)
+}
+
 /// Whether move `i`'s reference path enters uncut stock: the blank less what the moves
-/// before it swept (their tools as mounted, folded into the section as the removal folds
+/// before it may have swept ([`may_have_cut`], folded into the section as the removal folds
 /// them). Only the moves whose sweeps can reach the path are looked at.
 pub(crate) fn enters_uncut(
     i: usize,
-    segments: &[Segment],
+    (segments, tools): (&[Segment], &ToolTable),
     blank: &[Shape],
     mounts: &mut Mounts,
     chord_tol: f64,
@@ -246,8 +289,13 @@ pub(crate) fn enters_uncut(
         );
         let mut cover = Vec::new();
         for seg in &segments[..i] {
-            let m = mounts.of(seg);
-            let bb = m.bbox();
+            let outlines = may_have_cut(&mounts.of(seg), guessed_feed(tools, seg));
+            let bb = geom::Rect::of(
+                outlines
+                    .iter()
+                    .flat_map(|o| o.parts.iter().flatten())
+                    .map(|&p| geom::Pt::from(p)),
+            );
             let (sz, sr) = (seg.from.z.min(seg.to.z), seg.from.z.max(seg.to.z));
             let reach_r = seg.from.r.abs().max(seg.to.r.abs()) + bb.max.r.abs().max(bb.min.r.abs());
             let bulge = seg.arc.map_or(0.0, |c| c.center.dist(seg.from));
@@ -258,10 +306,7 @@ pub(crate) fn enters_uncut(
                 continue;
             }
             let path = move_path(seg, chord_tol);
-            for part in [Some(&*m.edge), m.body.as_ref().map(|b| &b.outline)]
-                .into_iter()
-                .flatten()
-            {
+            for part in &outlines {
                 if seg.motion == Motion::Thread {
                     continue; // a thread's stamps are the removal's; they cut the teeth only
                 }
@@ -281,13 +326,13 @@ pub(crate) fn enters_uncut(
 }
 
 /// Whether the stated core of move `i`'s tool (`core`: an insert's nose, a blade's tip) cuts
-/// uncut stock on that move: its sweep less the blank's outside and the earlier moves'
-/// sweeps (those whose boxes meet what is left of it in the blank) has more than
-/// [`CORE_AREA`] left.
+/// uncut stock on that move: its sweep less the blank's outside and what the earlier moves
+/// may have swept ([`may_have_cut`]; those whose boxes meet what is left of it in the blank)
+/// has more than [`CORE_AREA`] left.
 pub(crate) fn core_enters_uncut(
     i: usize,
     core: &Outline,
-    segments: &[Segment],
+    (segments, tools): (&[Segment], &ToolTable),
     blank: &[Shape],
     mounts: &mut Mounts,
     chord_tol: f64,
@@ -316,12 +361,8 @@ pub(crate) fn core_enters_uncut(
         if seg.motion == Motion::Thread {
             continue;
         }
-        let m = mounts.of(seg);
         let path = move_path(seg, chord_tol);
-        for part in [Some(&*m.edge), m.body.as_ref().map(|b| &b.outline)]
-            .into_iter()
-            .flatten()
-        {
+        for part in &may_have_cut(&mounts.of(seg), guessed_feed(tools, seg)) {
             earlier.extend(float_sweep(part, &path).into_iter().filter(|poly| {
                 geom::Rect::of(poly.iter().map(|&p| geom::Pt::from(p))).intersects(&bb)
             }));

@@ -118,7 +118,7 @@ pub(crate) fn mark_assumed(
             None => {
                 crate::assumed::enters_uncut(
                     c.segment,
-                    segments,
+                    (segments, s.tools),
                     &s.blank.shapes,
                     &mut mounts,
                     chord_tol,
@@ -126,7 +126,7 @@ pub(crate) fn mark_assumed(
                     crate::assumed::core_enters_uncut(
                         c.segment,
                         &core,
-                        segments,
+                        (segments, s.tools),
                         &s.blank.shapes,
                         &mut mounts,
                         chord_tol,

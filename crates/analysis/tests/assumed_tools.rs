@@ -92,3 +92,54 @@ fn a_rapid_of_a_guessed_tool_is_certain_only_where_its_point_enters_stock() {
         .iter()
         .any(|n| n.code == "LS-ASSUMED-TOOL" && n.message.contains("possible crash")));
 }
+
+/// A tube Φ60 × 40 with a Φ30 bore, bored to Φ34 in one pass by T02 with no entry: the
+/// default OD insert fed along the bore cuts the wall above its point, not the bore below
+/// it, and the retract (`X33.6`, then `G00 Z2`) runs back through the 2 mm it left. That
+/// stock is there only because the guess is the wrong way round for a boring bar: a
+/// possible crash, clean. With T02 stated as a boring bar the pass cuts the bore and the
+/// retract meets nothing; with T02 stated as an OD insert the crash is certain.
+#[test]
+fn a_rapid_through_stock_a_guessed_tool_left_is_a_possible_crash() {
+    let text =
+        "G99 M03 S600\nT0202\nG00 X34 Z2\nG01 Z-20 F0.2\nX33.6\nG00 Z2\nG00 X100 Z100\nM30\n";
+    let tube = Blank::bar(60.0, 40.0, 0.0, Some(30.0)).unwrap();
+    let run = |tools: &str| {
+        let tools = ToolTable::from_toml(tools).expect("tool table");
+        let (tp, _, f) = common::judge(text, &tube, &tools);
+        (tp, f)
+    };
+    let (tp, f) = run("");
+    assert_eq!(f.verdict, Verdict::Clean, "{:?}", f.crashes);
+    assert_eq!(f.crashes.len(), 1, "{:?}", f.crashes);
+    assert!(f.crashes[0].assumed);
+    assert_eq!(tp.segments[f.crashes[0].segment].span.line, 6);
+    assert!(f
+        .warnings
+        .iter()
+        .any(|n| n.code == "LS-ASSUMED-TOOL" && n.message.contains("possible crash")));
+
+    let bar = "[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\nentering_angle = 93\nedge = 11.0\nshank = 20.0\n";
+    let (_, f) = run(bar);
+    assert!(f.crashes.is_empty(), "{:?}", f.crashes);
+
+    let od = "[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"DNMG 110404\"\nholder = \"PDJNR 2525M11\"\n";
+    let (_, f) = run(od);
+    assert_eq!(f.verdict, Verdict::Crash);
+    assert!(f.crashes.iter().all(|c| !c.assumed));
+}
+
+/// Where a tool with no entry turned (Φ40 to Φ30 over Z0…-10), the stock it left is a
+/// guess; a rapid into the bar 30 mm beyond it (`G00 X30 Z-40`), farther than any tool of
+/// the guessed size reaches from that cut, is certain: the gate still fails.
+#[test]
+fn a_rapid_into_bar_far_from_a_guessed_cut_stays_certain() {
+    let (tp, f) = judge(
+        "G99 M03 S600\nT0101\nG00 X42 Z2\nG00 X30\nG01 Z-10 F0.2\nG00 X42\nG00 Z-40\nG00 X30\nG00 X50\nM30\n",
+        "",
+    );
+    assert_eq!(f.verdict, Verdict::Crash, "{:?}", f.crashes);
+    let certain: Vec<_> = f.crashes.iter().filter(|c| !c.assumed).collect();
+    assert_eq!(certain.len(), 1, "{:?}", f.crashes);
+    assert_eq!(tp.segments[certain[0].segment].span.line, 8);
+}
