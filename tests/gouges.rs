@@ -339,3 +339,42 @@ fn a_groove_cut_after_the_finish_by_another_tool_is_its_own() {
     assert_eq!(out.code, 1, "{v:#}");
     assert_eq!(v["verdict"], "gouge", "{v:#}");
 }
+
+/// Face, G71/G70 to Φ20, a G76 thread, then a Φ8 drill 15 deep on the axis (a field
+/// program's sequence): the hole is the drill's own cut whatever the bar's length. The
+/// facing pass runs along the face above the hole, and its sweep met the hole only by the
+/// booleans' rounding along that edge; on a 70 mm bar that rounding made it the hole's
+/// maker, a 4 mm gouge at the facing line (on 60 mm it did not).
+#[test]
+fn a_hole_drilled_below_the_faced_end_is_the_drills_whatever_the_bar() {
+    let program = "O0703\nG21 G40 G99\nT0101\nG50 S3000\nG96 S200 M03\nG00 X44. Z0.\nG01 X-1.6 F0.15\nG00 Z2.\nG00 X42.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.3\nN10 G00 X14.\nG01 X20. Z-1. F0.1\nZ-20.\nN20 X42.\nG70 P10 Q20\nG28 U0.\nG28 W0.\nT0404\nG97 S1200 M03\nG00 X22. Z5.\nG76 P010060 Q50 R0.05\nG76 X18.16 Z-17. P920 Q300 F1.5\nG00 X44.\nG28 U0.\nG28 W0.\nT0505\nG97 S1200 M03\nG00 X0. Z2.\nG74 R0.5\nG74 Z-15. Q3000 F0.08\nG00 Z5.\nG28 U0.\nG28 W0.\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\ntip_flat = 0.0\n[[tool]]\nt = 5\nkind = \"drill\"\ndiameter = 8.0\npoint_angle = 118\nreach = 60.0\n";
+    let (dir, path) = temp_program("o0703.nc", program.as_bytes());
+    let table = dir.path().join("tools.toml");
+    std::fs::write(&table, tools).unwrap();
+    for stock in ["40x60", "40x70"] {
+        let (out, v) = run_json(&[
+            "run",
+            path.to_str().unwrap(),
+            "--control",
+            "fanuc-a",
+            "--stock",
+            stock,
+            "--tools",
+            table.to_str().unwrap(),
+        ]);
+        assert_eq!(v["verdict"], "clean", "{stock}: {v:#}");
+        assert_eq!(out.code, 0, "{stock}");
+        let later: Vec<&serde_json::Value> = v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|w| w["code"] == "LS-LATER-CUT")
+            .collect();
+        assert_eq!(later.len(), 1, "{stock}: {v:#}");
+        assert!(later[0]["message"]
+            .as_str()
+            .unwrap()
+            .starts_with("T05 cuts"));
+    }
+}

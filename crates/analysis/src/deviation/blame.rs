@@ -40,7 +40,12 @@ pub(super) fn blame(
         }
         let sweep = float_sweep(outline, &move_path(seg, chord_tol));
         for g in near {
-            if overlaps(&gouges[g].shape, &boxes[g], &sweep) {
+            if overlaps(
+                &gouges[g].shape,
+                &boxes[g],
+                &sweep,
+                edge_sliver(&gouges[g].shape),
+            ) {
                 gouges[g].made_by = Some(i);
                 unnamed.retain(|&u| u != g);
             }
@@ -100,7 +105,7 @@ pub(crate) fn certain(
         for g in near {
             let by_core = core
                 .as_ref()
-                .is_some_and(|sweep| overlaps(regions[g], &boxes[g], sweep));
+                .is_some_and(|sweep| overlaps(regions[g], &boxes[g], sweep, SLIVER));
             if by_core || crate::assumed::path_enters_part_at(seg, &part, &indexes[g], chord_tol) {
                 certain[g] = true;
                 open.retain(|&o| o != g);
@@ -126,15 +131,25 @@ fn may_sweep_over(bb: &Rect, seg: &Segment, outline: &Outline) -> bool {
         || (!folded && (sr1 + hi[1] + bulge < bb.min.r || sr0 + lo[1] - bulge > bb.max.r)))
 }
 
+/// The least overlap that makes a move the maker of `region`: 10⁻⁶ mm times its perimeter
+/// (at least [`SLIVER`]). A sweep that only runs along the region's edge overlaps it by the
+/// booleans' rounding there (a grid step, ~10⁻⁷ mm, along the edge): the facing pass along
+/// the face above a drilled hole was named the hole's maker, or not, with the bar's length.
+pub(super) fn edge_sliver(region: &Shape) -> f64 {
+    (1e-6 * super::perimeter(region)).max(SLIVER)
+}
+
+/// Less overlap than this is no overlap, mm².
+pub(super) const SLIVER: f64 = 1e-9;
+
 /// Whether the union of the convex `sweep` parts overlaps `region` (box `bb`) by more than
-/// 10⁻⁹ mm². Exact shortcuts first (a G73 of many passes asks this for every pass and gouge,
+/// `sliver` mm². Exact shortcuts first (a G73 of many passes asks this for every pass and gouge,
 /// a holder that rubs for every move): a part whose box misses the region's adds nothing;
 /// a part holding every vertex of the region holds all of it. Then each part's overlap is
 /// measured by clipping the region's rings to it: one over the threshold decides, and when
 /// even their sum is under it the union's is too. Only the rare case between asks the
 /// boolean of the union.
-pub(super) fn overlaps(region: &Shape, bb: &Rect, sweep: &[Vec<P>]) -> bool {
-    const SLIVER: f64 = 1e-9;
+pub(super) fn overlaps(region: &Shape, bb: &Rect, sweep: &[Vec<P>], sliver: f64) -> bool {
     let near: Vec<&Vec<P>> = sweep
         .iter()
         .filter(|s| Rect::of(pts(s)).intersects(bb))
@@ -143,7 +158,7 @@ pub(super) fn overlaps(region: &Shape, bb: &Rect, sweep: &[Vec<P>]) -> bool {
         return false;
     }
     if near.iter().any(|s| holds_all(s, &region.outer)) {
-        return area(std::slice::from_ref(region)) > SLIVER;
+        return area(std::slice::from_ref(region)) > sliver;
     }
     let sign = ring::signed_area(&pts(&region.outer)).signum();
     let mut sum = 0.0;
@@ -152,12 +167,12 @@ pub(super) fn overlaps(region: &Shape, bb: &Rect, sweep: &[Vec<P>]) -> bool {
             .chain(&region.holes)
             .map(|r| sign * ring::signed_area(&pts(&clip_to_hull(r, s))))
             .sum();
-        if a > SLIVER {
+        if a > sliver {
             return true;
         }
         sum += a.max(0.0);
     }
-    if sum <= SLIVER {
+    if sum <= sliver {
         return false;
     }
     let union: Vec<Shape> = near
@@ -171,7 +186,7 @@ pub(super) fn overlaps(region: &Shape, bb: &Rect, sweep: &[Vec<P>]) -> bool {
         &union,
         std::slice::from_ref(region),
         BoolOp::Intersection,
-    )) > SLIVER
+    )) > sliver
 }
 
 /// Whether the convex ring `hull` (either orientation) holds every point of `ring`, its
@@ -225,7 +240,7 @@ pub(crate) fn moves_over(
             sweep = sweep.iter().map(|part| grown(part, margin)).collect();
         }
         for g in near {
-            if overlaps(&regions[g], &boxes[g], &sweep) {
+            if overlaps(&regions[g], &boxes[g], &sweep, edge_sliver(&regions[g])) {
                 out[g].push(i);
             }
         }

@@ -1,6 +1,6 @@
 //! The deviation's tests: intents, findings, depths and blame against hand-made parts.
 
-use super::blame::overlaps;
+use super::blame::{overlaps, SLIVER};
 use super::*;
 use crate::intent::*;
 
@@ -60,7 +60,11 @@ fn overlap_by_clipping_agrees_with_the_boolean() {
             let (z, r) = (i as f64 * 0.5, j as f64 * 0.5);
             for parts in [vec![tri(z, r)], vec![tri(z, r), tri(z + 0.25, r - 0.75)]] {
                 let expect = by_boolean(&parts);
-                assert_eq!(overlaps(&region, &bb, &parts), expect, "at ({z}, {r})");
+                assert_eq!(
+                    overlaps(&region, &bb, &parts, SLIVER),
+                    expect,
+                    "at ({z}, {r})"
+                );
                 if expect {
                     hits += 1;
                 } else {
