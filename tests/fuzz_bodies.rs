@@ -181,3 +181,17 @@ fn run_body_on_a_found_g73_crashing_into_the_chuck_ends() {
     .unwrap();
     run::body(&input);
 }
+
+/// Found by the `run` target (2026-11-28, a timeout on the loaded box): a mutated grooving
+/// program whose garbled `G32.X00` became a thread along X, 560 leads of 0.05 mm (a face
+/// scroll), stamped 560 times into one tile. The body's stamp budget counted leads along Z
+/// only; it now counts them along the longer axis, as the removal stamps, and leaves this
+/// program out (1.1 s in release with the diagnosis's re-runs: heavy, not endless).
+#[test]
+fn run_body_on_a_found_radial_thread_ends() {
+    let input = std::fs::read(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/findings/run-radial-thread-stamps.bin"),
+    )
+    .unwrap();
+    run::body(&input);
+}

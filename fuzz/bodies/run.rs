@@ -143,12 +143,15 @@ fn expanded(text: &str, macros: bool, tools: &stock::ToolTable) -> Option<expand
         return None;
     }
     // and a stamp budget: 1 680 stamps of an 80° insert (G92 passes at the modal F0.1 of a
-    // G01: lead 0.1 over 28 mm) take 2.2 s in release, > 10 s instrumented
+    // G01: lead 0.1 over 28 mm) take 2.2 s in release, > 10 s instrumented. Leads counted
+    // along the longer axis, as the removal stamps (`stock::sweep::thread`): a G32 along X
+    // (a face scroll) of 560 leads of 0.05 mm slipped past a count along Z (1.1 s in
+    // release with the diagnosis's re-runs, past the timeout on the loaded box)
     let stamps: f64 = tp
         .segments
         .iter()
         .filter(|s| s.motion == expander::Motion::Thread && s.lead > 0.0)
-        .map(|s| (s.to.z - s.from.z).abs() / s.lead)
+        .map(|s| (s.to.z - s.from.z).abs().max((s.to.r - s.from.r).abs()) / s.lead)
         .sum();
     (stamps <= MAX_STAMPS).then_some(tp)
 }
