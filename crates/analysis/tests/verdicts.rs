@@ -123,3 +123,23 @@ fn thread_teeth_are_not_gouges() {
     assert_eq!(f.threads.len(), 1);
     assert!(f.threads[0].depth_error_mm.is_some_and(|e| e.abs() <= 0.01));
 }
+
+/// Zig-zag roughing by hand under one G42 (a field program's habit): Φ46 to Z-40, fed back
+/// at X52 to Z2, then Φ42 to Z-20. The section is two passes and a return, not one
+/// contour: the second pass supersedes the first over its stretch and the return is no
+/// contour at all, so the Φ42 cut is no gouge of the Φ46 (as one contour it was a 1 mm
+/// gouge); clean with a stated CNMG. One pass fed back the same way is clean too.
+#[test]
+fn zig_zag_roughing_under_one_g42_is_its_passes() {
+    let tools = ToolTable::from_toml(
+        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n",
+    )
+    .unwrap();
+    let blank = Blank::bar(50.0, 80.0, 0.0, None).unwrap();
+    let two = "G21 G99 G40\nT0101\nG96 S180 M03\nG00 X54. Z2.\nG01 G42 X46. F0.25\nZ-40.\nX52.\nZ2.\nX42.\nZ-20.\nX52.\nG40 G00 X60. Z10.\nM30\n";
+    let (_, _, f) = judge(two, &blank, &tools);
+    assert_eq!(f.verdict, Verdict::Clean, "{:?}", f.deviation);
+    let one = "G21 G99 G40\nT0101\nG96 S180 M03\nG00 X54. Z2.\nG01 G42 X46. F0.25\nZ-40.\nX52.\nZ2.\nG40 G00 X60. Z10.\nM30\n";
+    let (_, _, f) = judge(one, &blank, &tools);
+    assert_eq!(f.verdict, Verdict::Clean, "{:?}", f.deviation);
+}

@@ -4,7 +4,7 @@
 use super::{compensate, Nose, Side};
 use crate::codes::{G41, G42};
 use crate::interp::{alarm, Interp, MotionMode};
-use crate::{Diagnostic, Span};
+use crate::{Diagnostic, Segment, Span};
 use gcode::{Block, Word};
 
 impl Interp<'_> {
@@ -92,7 +92,8 @@ impl Interp<'_> {
             // report keeps only the last pass over a stretch of surface: roughing under
             // G41/G42 is not an intent).
             let body = &section[1..section.len() - 1];
-            for chain in body.split(|s| s.motion == crate::Motion::Rapid) {
+            let chains = body.split(|s| s.motion == crate::Motion::Rapid);
+            for chain in chains.flat_map(passes) {
                 let Some(first) = chain.first() else { continue };
                 let mut points = vec![first.from];
                 for seg in chain {
@@ -121,4 +122,39 @@ impl Interp<'_> {
             self.out.tailstock.push((self.out.segments.len(), engaged));
         }
     }
+}
+
+/// The passes of a chain of feeds under G41/G42: its runs that keep one direction along Z
+/// (a move along X alone stays in the run it is in), those going the way the chain's first
+/// run goes. A run back the other way is the tool fed back to start the next pass, no
+/// contour: zig-zag roughing by hand under one G42 is then its passes, each a contour that
+/// a later one over its stretch supersedes (a chain read as one contour made the second,
+/// deeper pass a 1 mm gouge of the first).
+fn passes(chain: &[Segment]) -> Vec<&[Segment]> {
+    let dir = |s: &Segment| {
+        let dz = s.to.z - s.from.z;
+        if dz.abs() <= 1e-6 {
+            0.0
+        } else {
+            dz.signum()
+        }
+    };
+    let mut runs: Vec<(f64, &[Segment])> = Vec::new();
+    let (mut start, mut run_dir) = (0, 0.0);
+    for (k, seg) in chain.iter().enumerate() {
+        let d = dir(seg);
+        if d != 0.0 && run_dir != 0.0 && d != run_dir {
+            runs.push((run_dir, &chain[start..k]));
+            start = k;
+        }
+        if d != 0.0 {
+            run_dir = d;
+        }
+    }
+    runs.push((run_dir, &chain[start..]));
+    let first = runs.iter().map(|r| r.0).find(|&d| d != 0.0).unwrap_or(0.0);
+    runs.into_iter()
+        .filter(|&(d, _)| d == first || d == 0.0)
+        .map(|(_, run)| run)
+        .collect()
 }
