@@ -145,6 +145,30 @@ fn haas_g53_with_g01_feeds_and_fanuc_g53_rapids() {
     assert!(moves("fanuc-a").contains("rapid"), "{}", moves("fanuc-a"));
 }
 
+/// `G28 G00 U0 W0` (Haas class programs write it before every tool) stopped with PS010;
+/// it goes home at rapid and leaves G00 in force: the next block's bare `X… Z…` is a rapid.
+/// `G28 G01 U0` stays an alarm (docs/field-rules.md §10).
+#[test]
+fn g28_with_g00_goes_home_and_leaves_g00() {
+    let expand = |prog: &str| {
+        let (_dir, path) = temp_program("g28.nc", prog.as_bytes());
+        latsim(&[
+            "expand",
+            path.to_str().unwrap(),
+            "--control",
+            "haas",
+            "--format",
+            "csv",
+        ])
+    };
+    let out = expand("G21 G99\nT101\nG01 X50. Z2. F0.2\nG28 G00 U0 W0\nX40. Z5.\nM30\n");
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let last = out.stdout.lines().last().unwrap().to_string();
+    assert!(last.contains("rapid"), "{last}");
+    let out = expand("G21 G99\nT101\nG28 G01 U0\nM30\n");
+    assert!(out.stderr.contains("PS010"), "{}", out.stderr);
+}
+
 /// Okuma OSP programs (the field test's `$NAME.MIN%` files) stopped at "unexpected
 /// character '$'"; they are named, at the line, as Okuma syntax.
 #[test]

@@ -461,20 +461,18 @@ impl<'m> Interp<'m> {
         (sub, b, index): (&'b Subprogram, &'b Block, usize),
         used: &mut Words<'b>,
     ) -> Result<Flow, Diagnostic> {
+        if let (G28 | G53, Some((m, _))) = (t, g.motion) {
+            // G00 (G53: or G01) beside G28/G53 sets the mode for the blocks after it too
+            self.motion = m;
+            self.retained.drill = None;
+        }
         match t {
             G04 => self.dwell(used, w)?,
             G28 => self.g28(b, used, w)?,
             G50 => self.g50(used)?,
             G50_3 => self.preset(w, used)?,
             G52 => self.g52(b, used)?,
-            G53 => {
-                if let Some((m, _)) = g.motion {
-                    // G00/G01 with G53 sets the mode for the blocks after it too
-                    self.motion = m;
-                    self.retained.drill = None;
-                }
-                self.g53(b, used, w)?
-            }
+            G53 => self.g53(b, used, w)?,
             G27 => self.g27(b, used, w)?,
             G10 => self.g10(used, w)?,
             crate::linuxcnc::RIGID_TAP => self.rigid_tap(b, w.span, used)?,

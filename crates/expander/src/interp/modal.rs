@@ -76,12 +76,18 @@ impl<'b> GWords<'b> {
     }
 
     /// A one-shot code shares no block with a motion code, but G53 moves at the block's
-    /// G00/G01 (spec/dialects.md §6.4; `G53 G00 X0`, the Haas and FANUC way home).
+    /// G00/G01 (spec/dialects.md §6.4; `G53 G00 X0`, the Haas and FANUC way home), and G28
+    /// goes home at rapid with a G00 beside it (`G28 G00 U0 W0`, Haas class programs:
+    /// docs/field-rules.md §10); either way the code sets the motion mode for the blocks
+    /// after.
     fn check_motion_with_one_shot(&self) -> Result<(), Diagnostic> {
         let (Some((m, m_word)), Some((o_code, o))) = (self.motion, self.one_shot) else {
             return Ok(());
         };
         if o_code == G53 && matches!(m, MotionMode::Rapid | MotionMode::Line) {
+            return Ok(());
+        }
+        if o_code == G28 && m == MotionMode::Rapid {
             return Ok(());
         }
         Err(alarm(
