@@ -204,6 +204,60 @@ fn a_nose_leaves_a_sharp_inside_corner() {
     assert_eq!(l.cause.as_ref().unwrap().kind, CauseKind::Nose);
 }
 
+/// Roughed by T01 (r0.8), finished by T02 (r0.2) under G42: the sharp shoulder keeps
+/// (1 − 1/√2)·0.2 = 0.059 mm, what the finishing nose leaves, and the cause names r0.2 (it
+/// named the program's largest nose, r0.8: a user would change the wrong insert).
+#[test]
+fn a_corner_leftover_names_the_nose_that_last_passed_it() {
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"VNMG 160402\"\nholder = \"MVJNR 2525M16\"\n";
+    let text = "G21 G40 G99\nT0101\nG96 S200 M03\nG00 X42. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 G42 X20.\nG01 Z-30.\nN20 X42.\nG40 G00 X60. Z10.\nT0202\nG96 S250 M03\nG00 X42. Z2.\nG70 P10 Q20 F0.1\nG40 G00 X60. Z10.\nM30\n";
+    let (_, f) = Job::new(text, tools, bar(40.0, 50.0)).diagnosed();
+    let d = f.deviation.as_ref().unwrap();
+    let l = d
+        .leftovers
+        .iter()
+        .find(|l| (l.depth - 0.0586).abs() < 0.002)
+        .unwrap_or_else(|| {
+            panic!(
+                "{:?}",
+                d.leftovers.iter().map(|l| l.depth).collect::<Vec<_>>()
+            )
+        });
+    let cause = l.cause.as_ref().unwrap();
+    assert_eq!(cause.kind, CauseKind::Nose);
+    assert!(cause.text.starts_with("the r0.2 nose"), "{}", cause.text);
+}
+
+/// A 45° chamfer finished without G41/G42 by an r0.4 nose: the tip runs on the contour and
+/// the nose leaves r(√2 − 1) = 0.166 mm on the slope, not in a corner: the cause is the
+/// uncompensated radius (it read "cannot fill this inside corner", of the roughing r0.8).
+#[test]
+fn a_band_on_an_uncompensated_chamfer_is_the_compensation() {
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"DNMG 150404\"\nholder = \"PDJNR 2525M15\"\n";
+    let text = "G21 G40 G99\nT0101\nG96 S200 M03\nG00 X42. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X16.\nG01 Z0. F0.12\nX20. Z-2.\nZ-20.\nN20 X41.\nG00 X100. Z100.\nT0202\nG00 X42. Z2.\nG70 P10 Q20\nG00 X100. Z100.\nM30\n";
+    let (_, f) = Job::new(text, tools, bar(40.0, 50.0)).diagnosed();
+    let d = f.deviation.as_ref().unwrap();
+    let l = d
+        .leftovers
+        .iter()
+        .find(|l| (l.depth - 0.1657).abs() < 0.003)
+        .unwrap_or_else(|| {
+            panic!(
+                "{:?}",
+                d.leftovers.iter().map(|l| l.depth).collect::<Vec<_>>()
+            )
+        });
+    let cause = l.cause.as_ref().unwrap();
+    assert_eq!(cause.kind, CauseKind::Compensation, "{}", cause.text);
+    assert!(
+        cause
+            .text
+            .starts_with("the r0.4 nose leaves 0.166 mm on this slope"),
+        "{}",
+        cause.text
+    );
+}
+
 /// The program itself: a last pass at X19 where the drawn part is Φ20: the programmed point
 /// goes 0.5 mm into the part (more than the 0.4 nose: no compensation puts it there). And a
 /// G73 whose roughing passes, the shape moved out by U, run into a wall that leans toward

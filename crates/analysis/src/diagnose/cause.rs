@@ -309,18 +309,23 @@ pub(crate) fn leftover(
     segments: &[Segment],
     s: &Settings,
 ) -> Cause {
-    let nose = segments
-        .iter()
-        .filter(|seg| seg.motion != Motion::Rapid)
-        .filter_map(|seg| Facts::of(&tool_of(seg, s)))
-        .map(|f| f.nose_radius)
-        .fold(0.0, f64::max);
+    let nose = nose_last_near(l.nearest, l.depth, segments, s);
     let corner = at_corner(intents, l.nearest, nose);
     if nose > 0.0 && corner && l.depth <= nose * (1.0 - std::f64::consts::FRAC_1_SQRT_2) + 0.01 {
         return Cause {
             kind: CauseKind::Nose,
             text: format!(
                 "the r{nose} nose cannot fill this inside corner sharper than its radius: {:.3} mm stays",
+                l.depth
+            ),
+            numbers: vec![("nose_radius", nose), ("depth_mm", l.depth)],
+        };
+    }
+    if nose > 0.0 && l.depth <= nose + 0.01 && on_slope(intents, l.nearest) {
+        return Cause {
+            kind: CauseKind::Compensation,
+            text: format!(
+                "the r{nose} nose leaves {:.3} mm on this slope: the tool's tip runs on the contour, its radius not compensated (G41/G42 with the offset's radius and tip)",
                 l.depth
             ),
             numbers: vec![("nose_radius", nose), ("depth_mm", l.depth)],
@@ -341,6 +346,80 @@ pub(crate) fn leftover(
 /// Whether `p` lies within `within` of a vertex of an intended outline (an inside corner
 /// of the part is a vertex of its drawn outline; a leftover the nose leaves there lies
 /// within its radius of it).
+/// The nose radius of the tool that last passed the corner `p`: the last feed move whose
+/// reference path comes within twice its tool's nose radius and `depth` (and 0.05 mm) of
+/// it. That nose left the corner's leftover (the largest nose of the program named a
+/// roughing r0.8 for what a finishing r0.2 left); 0 when no feed comes that near.
+fn nose_last_near(p: P, depth: f64, segments: &[Segment], s: &Settings) -> f64 {
+    let largest = segments
+        .iter()
+        .filter(|seg| seg.motion != Motion::Rapid)
+        .filter_map(|seg| Facts::of(&tool_of(seg, s)))
+        .map(|f| f.nose_radius)
+        .fold(0.0, f64::max);
+    let margin = |r: f64| 2.0 * r + depth + 0.05;
+    segments
+        .iter()
+        .rev()
+        .filter(|seg| seg.motion != Motion::Rapid)
+        .filter(|seg| box_distance(seg, p) <= margin(largest))
+        .find_map(|seg| {
+            let f = Facts::of(&tool_of(seg, s))?;
+            let near = stock::move_path(seg, 1e-3)
+                .windows(2)
+                .any(|w| segment_distance(p, w[0], w[1]) <= margin(f.nose_radius));
+            near.then_some(f.nose_radius)
+        })
+        .unwrap_or(0.0)
+}
+
+/// Distance from `p` to the box of `seg`'s path (arcs' bulge included), 0 inside.
+fn box_distance(seg: &Segment, p: P) -> f64 {
+    let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
+    let (z0, z1) = (
+        seg.from.z.min(seg.to.z) - bulge,
+        seg.from.z.max(seg.to.z) + bulge,
+    );
+    let (r0, r1) = (
+        seg.from.r.min(seg.to.r) - bulge,
+        seg.from.r.max(seg.to.r) + bulge,
+    );
+    let dz = (z0 - p[0]).max(p[0] - z1).max(0.0);
+    let dr = (r0 - p[1]).max(p[1] - r1).max(0.0);
+    dz.hypot(dr)
+}
+
+/// Distance from `p` to the segment `a`–`b`.
+fn segment_distance(p: P, a: P, b: P) -> f64 {
+    let (dz, dr) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dz * dz + dr * dr;
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * dz + (p[1] - a[1]) * dr) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (a[0] + t * dz - p[0]).hypot(a[1] + t * dr - p[1])
+}
+
+/// Whether the intended boundary at `p` (an edge within 0.01 mm of it) is a slope: an edge
+/// neither along Z nor along X (by more than a degree), where an uncompensated nose leaves
+/// a band.
+fn on_slope(intents: &[Intent], p: P) -> bool {
+    let mut edges = intents
+        .iter()
+        .flat_map(|it| it.outline.iter())
+        .flat_map(|(line, closed)| {
+            let n = line.len();
+            let count = if *closed { n } else { n.saturating_sub(1) };
+            (0..count).map(move |k| (line[k], line[(k + 1) % n]))
+        });
+    edges.any(|(a, b)| {
+        let angle = (b[1] - a[1]).atan2(b[0] - a[0]).abs().to_degrees();
+        let off_axis = angle.min(180.0 - angle);
+        segment_distance(p, a, b) <= 0.01 && off_axis > 1.0 && (90.0 - off_axis).abs() > 1.0
+    })
+}
+
 fn at_corner(intents: &[Intent], p: P, within: f64) -> bool {
     intents
         .iter()

@@ -92,23 +92,22 @@ impl Interp<'_> {
             // report keeps only the last pass over a stretch of surface: roughing under
             // G41/G42 is not an intent).
             let body = &section[1..section.len() - 1];
-            let chains = body.split(|s| s.motion == crate::Motion::Rapid);
-            for chain in chains.flat_map(passes) {
-                let Some(first) = chain.first() else { continue };
-                let mut points = vec![first.from];
-                for seg in chain {
-                    points.extend(seg.polyline(0.001).into_iter().skip(1));
-                }
+            for chain in body.split(|s| s.motion == crate::Motion::Rapid) {
                 // (a G70 shape that writes G41/G42 after its ns block hands over more)
                 let known = self.out.intended.iter().any(|i| {
-                    i.kind == crate::IntendedKind::FinishingContour && i.points.ends_with(&points)
+                    i.kind == crate::IntendedKind::FinishingContour
+                        && i.points.ends_with(&contour_points(chain))
                 });
-                if !known {
+                if known {
+                    continue;
+                }
+                for pass in passes(chain) {
+                    let Some(first) = pass.first() else { continue };
                     self.out.intended.push(crate::Intended {
                         kind: crate::IntendedKind::Compensated {
                             part_on_left: side == Side::Right,
                         },
-                        points,
+                        points: contour_points(pass),
                         span: first.span,
                         after_move: self.out.segments.len(),
                     });
@@ -124,16 +123,25 @@ impl Interp<'_> {
     }
 }
 
+/// The programmed points of a chain of moves, arcs as chords.
+fn contour_points(chain: &[Segment]) -> Vec<crate::Pt> {
+    let mut points: Vec<crate::Pt> = chain.first().map(|s| s.from).into_iter().collect();
+    for seg in chain {
+        points.extend(seg.polyline(0.001).into_iter().skip(1));
+    }
+    points
+}
+
 /// The passes of a chain of feeds under G41/G42: its runs that keep one direction along Z
-/// (a move along X alone stays in the run it is in), those going the way the chain's first
-/// run goes. A run back the other way is the tool fed back to start the next pass, no
+/// (a move more along X than along Z stays in the run it is in: a wall leaning back is no
+/// return), those going the way the chain's first run goes. A run back the other way is the tool fed back to start the next pass, no
 /// contour: zig-zag roughing by hand under one G42 is then its passes, each a contour that
 /// a later one over its stretch supersedes (a chain read as one contour made the second,
 /// deeper pass a 1 mm gouge of the first).
 fn passes(chain: &[Segment]) -> Vec<&[Segment]> {
     let dir = |s: &Segment| {
-        let dz = s.to.z - s.from.z;
-        if dz.abs() <= 1e-6 {
+        let (dz, dr) = (s.to.z - s.from.z, s.to.r - s.from.r);
+        if dz.abs() <= dr.abs() || dz.abs() <= 1e-6 {
             0.0
         } else {
             dz.signum()
