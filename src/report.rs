@@ -104,6 +104,7 @@ fn tool_list(
             description: tools.get(t).unwrap_or(&stock::Tool::DEFAULT).describe(),
             designation: tools.designation(t).map(str::to_string),
             assumed: !tools.size_stated(t, expander::ToolHint::Table),
+            in_table: tools.get(t).is_some(),
             time_s: secs,
             cut_time_s: cut(t),
         })

@@ -318,6 +318,8 @@ pub struct ToolEntry {
     /// The tool table does not state its size (no entry: the default tool; an insert with
     /// no edge nor ISO designation): its outline is assumed.
     pub assumed: bool,
+    /// The tool table has an entry for it (with `assumed`: its size is what is missing).
+    pub in_table: bool,
     /// The time of all its moves, s.
     pub time_s: f64,
     /// The time of its cutting (feed and thread) moves, s.

@@ -135,8 +135,9 @@ fn a_huge_section_is_thinned_to_a_bounded_count() {
     assert!(min(&xs).abs() < 1e-9 && (max(&xs) - 40.0).abs() < 1e-9);
 }
 
-/// Tool T01 called with offsets 01 and 11, ISO designation and times; a default T03; a
-/// chuck with hard jaws and the stick-out: what the sheet says of them.
+/// Tool T01 called with offsets 01 and 11, ISO designation and times; a default T03; T04 in
+/// the table without its size; a chuck with hard jaws and the stick-out: what the sheet says
+/// of them.
 #[test]
 fn setup_sheet_lists_tools_and_workholding() {
     let mut r = common::groove_bar();
@@ -147,6 +148,7 @@ fn setup_sheet_lists_tools_and_workholding() {
             description: "turning C 80°, r0.8, tip 3, κr 95°".into(),
             designation: Some("CNMG 120408 in PCLNR 2525M12".into()),
             assumed: false,
+            in_table: true,
             time_s: 95.4,
             cut_time_s: 81.6,
         },
@@ -156,6 +158,17 @@ fn setup_sheet_lists_tools_and_workholding() {
             description: "turning D 55°, r0.4, tip 3, κr 93°".into(),
             designation: None,
             assumed: true,
+            in_table: false,
+            time_s: 4.0,
+            cut_time_s: 2.5,
+        },
+        ToolEntry {
+            number: 4,
+            offsets: vec![4],
+            description: "turning C 80°, r0.8, tip 3, κr 95°".into(),
+            designation: None,
+            assumed: true,
+            in_table: true,
             time_s: 4.0,
             cut_time_s: 2.5,
         },
@@ -176,6 +189,7 @@ fn setup_sheet_lists_tools_and_workholding() {
     for needle in [
         "<td class=\"n\">T01</td><td class=\"n\">01, 11</td><td>turning C 80°, r0.8, tip 3, κr 95°</td><td><code>CNMG 120408 in PCLNR 2525M12</code></td><td class=\"n\">1 min 22 s</td><td class=\"n\">1 min 35 s</td>",
         "<td class=\"n\">T03</td><td class=\"n\">03</td><td>turning D 55°, r0.4, tip 3, κr 93° (not in the tool table: the default assumed)</td><td><code>—</code></td><td class=\"n\">2.5 s</td><td class=\"n\">4 s</td>",
+        "<td class=\"n\">T04</td><td class=\"n\">04</td><td>turning C 80°, r0.8, tip 3, κr 95° (its size not in the tool table: assumed)</td>",
         "<th scope=\"row\">jaws</th><td>hard jaws gripping 15 mm over Ø40, 25 mm high</td>",
         "<th scope=\"row\">stick-out</th><td>45 mm</td>",
         "<th scope=\"row\">blank</th><td>bar Ø40 × 60, face at Z0</td>",

@@ -67,7 +67,10 @@ fn tool_row(out: &mut String, t: &ToolEntry) {
     if t.number == 0 {
         what.push_str(" (before the first T word)");
     }
-    if t.assumed {
+    if t.assumed && t.in_table {
+        // (the setup sheet said "not in the tool table" of a tool the table lists)
+        what.push_str(" (its size not in the tool table: assumed)");
+    } else if t.assumed {
         what.push_str(" (not in the tool table: the default assumed)");
     }
     let _ = writeln!(
