@@ -378,3 +378,41 @@ fn a_hole_drilled_below_the_faced_end_is_the_drills_whatever_the_bar() {
             .starts_with("T05 cuts"));
     }
 }
+
+/// A Haas G71/G70 whose shape ends with the return to the start (`N20 G00 G40 Z2.54`,
+/// docs/field-rules.md §3) and a W allowance: the G70's intended shape kept the return, and
+/// its run back along the bar's diameter closed the part against the roughed stock, leaving
+/// a band W (0.127 mm) wide through the part's core, from the axis to Φ12.7: a 0.81 mm²
+/// leftover (field run: 18 of 33 Haas programs end their shapes so). Only the r0.8 nose's
+/// fillet in the shoulder stays, 0.8² (1 − π/4) = 0.137 mm².
+#[test]
+fn a_haas_shape_return_leaves_no_band_through_the_core() {
+    let program = "%\nO2007\nG00 G18 G21 G40 G99\nT0101\nG50 S2500\nG96 S900 M03\nG00 G54 X38.1 Z2.54\nG71 P10 Q20 U0.254 W0.127 D1.27 F0.25\nN10 G00 G42 X-1.575 Z2.54\nG01 Z0.\nX10.904\nX12.7 Z-0.898\nZ-53.264\nX38.1\nN20 G00 G40 Z2.54\nG70 P10 Q20 F0.2\nG00 Z2.54\nM30\n%\n";
+    let (dir, path) = temp_program("o2007.nc", program.as_bytes());
+    let table = dir.path().join("tools.toml");
+    std::fs::write(
+        &table,
+        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n",
+    )
+    .unwrap();
+    let (out, v) = run_json(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "haas",
+        "--stock",
+        "38.1x101.6",
+        "--tools",
+        table.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 0, "{v:#}");
+    let leftovers = v["leftovers"].as_array().unwrap();
+    let area: f64 = leftovers
+        .iter()
+        .map(|l| l["area_mm2"].as_f64().unwrap())
+        .sum();
+    assert!(
+        (area - 0.137).abs() < 0.005,
+        "{area} mm² left: {leftovers:#?}"
+    );
+}

@@ -35,7 +35,21 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
     };
     out.intended.push((
         crate::IntendedKind::FinishingContour,
-        shape.intended_path(0.001),
+        intended(shape, c.machine.control).intended_path(0.001),
     ));
     Ok(out)
+}
+
+/// The shape the pass finishes to: on a Haas, without the return its last G00 moves make
+/// to the start level (docs/field-rules.md §3), as G71/G72 read it. The pass runs the
+/// return as written; kept in the intended shape, its run back along the bar's diameter
+/// closed the part against the roughed stock and left a band W wide out of it, a
+/// leftover through the part's core (field run: 18 of 33 Haas programs end their shapes
+/// so). The ns block tells G71's shape (X given) from G72's (Z alone).
+fn intended(shape: contour::FinishingShape, control: crate::Control) -> contour::FinishingShape {
+    if control != crate::Control::Haas {
+        return shape;
+    }
+    let g72 = shape.ns_moves == (false, true);
+    super::shape_return::trim(shape, g72).0
 }
