@@ -258,6 +258,22 @@ fn a_band_on_an_uncompensated_chamfer_is_the_compensation() {
     );
 }
 
+/// A G70 finishes Φ20 with a sharp front corner; then the same tool breaks that edge by
+/// hand without compensation (`G00 X17. Z1. / G01 Z0. / X21. Z-2.`). The gouge lies across
+/// the corner, on the tool's side of the path, while the part lies on its left (toward the
+/// axis and the chuck): the remedy is G42, the side of the part. (The gouge's side named
+/// G41, and the G41 the message asked for made two gouges, 1.13 mm.)
+#[test]
+fn an_edge_break_by_hand_names_the_side_of_the_part() {
+    let cnmg = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n";
+    let text = "G21 G40 G99\nT0101\nG96 S200 M03\nG00 X42. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z0.\nZ-30.\nN20 X42.\nG70 P10 Q20 F0.1\nG00 X17. Z1.\nG01 Z0. F0.1\nX21. Z-2.\nG00 X42.\nG00 X60. Z10.\nM30\n";
+    let (_, f) = Job::new(text, cnmg, bar(40.0, 80.0)).diagnosed();
+    let g = &f.deviation.as_ref().unwrap().gouges[0];
+    let c = g.cause.as_ref().expect("a cause");
+    assert_eq!(c.kind, CauseKind::Compensation, "{}", c.text);
+    assert!(c.text.contains("(G42 from line"), "{}", c.text);
+}
+
 /// The program itself: a last pass at X19 where the drawn part is Φ20: the programmed point
 /// goes 0.5 mm into the part (more than the 0.4 nose: no compensation puts it there). And a
 /// G73 whose roughing passes, the shape moved out by U, run into a wall that leans toward

@@ -157,8 +157,60 @@ pub(crate) fn gouge(
     Some(match facts.part_at(q) {
         Part::Trailing => trailing(g, intents, &facts, seg),
         Part::Leading => leading(g, intents, &facts, seg),
-        Part::Nose => nose(g, &facts, seg, segments, i),
+        Part::Nose => match part_beside(intents, seg, facts.nose_radius.max(0.05)) {
+            Beside::Both => Cause {
+                kind: CauseKind::Program,
+                text: format!(
+                    "line {} moves the tool's reference point through the part: the programmed path itself cuts {:.3} mm below the intended surface",
+                    seg.span.line, g.depth
+                ),
+                numbers: vec![("depth_mm", g.depth)],
+            },
+            side => nose(g, &facts, seg, segments, (i, side)),
+        },
     })
+}
+
+/// Where the intended part lies beside a move.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Beside {
+    Left,
+    Right,
+    /// On both sides: the path runs through the part (a hand chamfer across a finished
+    /// corner), which no compensation explains.
+    Both,
+    Unknown,
+}
+
+/// Where the intended part lies beside `seg`: probed `off` mm either side of the middle of
+/// its path (the side of the part, not of the gouge, says G41 or G42: an edge break cut
+/// across a finished corner leaves the gouge on the other side of the path).
+fn part_beside(intents: &[Intent], seg: &Segment, off: f64) -> Beside {
+    let path = stock::move_path(seg, 1e-3);
+    let k = path.len() / 2;
+    let (a, b) = (path[k.saturating_sub(1)], path[k.min(path.len() - 1)]);
+    let (dz, dr) = (b[0] - a[0], b[1] - a[1]);
+    let len = dz.hypot(dr);
+    if len <= 0.0 {
+        return Beside::Unknown;
+    }
+    let mid = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
+    // the left of travel in (z, r)
+    let n = [-dr / len * off, dz / len * off];
+    let inside = |p: P| {
+        intents
+            .iter()
+            .any(|it| crate::assumed::Region::new(&it.part).contains(p))
+    };
+    match (
+        inside([mid[0] + n[0], mid[1] + n[1]]),
+        inside([mid[0] - n[0], mid[1] - n[1]]),
+    ) {
+        (true, true) => Beside::Both,
+        (true, false) => Beside::Left,
+        (false, true) => Beside::Right,
+        (false, false) => Beside::Unknown,
+    }
 }
 
 /// The first move of the gouge's tool (from the one that made it) whose reference point goes
@@ -281,11 +333,23 @@ fn leading(g: &Finding, intents: &[Intent], f: &Facts, seg: &Segment) -> Cause {
 
 /// A gouge the nose made: its radius not compensated as this tool needs. The side the part
 /// lies on, against the direction of travel, says G41 or G42.
-fn nose(g: &Finding, f: &Facts, seg: &Segment, segments: &[Segment], i: usize) -> Cause {
+fn nose(
+    g: &Finding,
+    f: &Facts,
+    seg: &Segment,
+    segments: &[Segment],
+    (i, beside): (usize, Beside),
+) -> Cause {
     let d = seg.to - seg.from;
     let side = d.z * (g.at[1] - seg.from.r) - d.r * (g.at[0] - seg.from.z);
-    // the part on the left of travel puts the tool on the right: G42
-    let code = if side > 0.0 { "G42" } else { "G41" };
+    // the part on the left of travel puts the tool on the right: G42 (where the part lies
+    // is probed; else the gouge is taken to lie on the part's side)
+    let left = match beside {
+        Beside::Left => true,
+        Beside::Right => false,
+        Beside::Both | Beside::Unknown => side > 0.0,
+    };
+    let code = if left { "G42" } else { "G41" };
     let first = (0..=i)
         .rev()
         .take_while(|&k| segments[k].tool == seg.tool && segments[k].motion != Motion::Rapid)
