@@ -230,6 +230,11 @@ impl G76Error {
             K::LeadTwice => "give the lead once, in F or in E".into(),
             K::Lead { .. } => "give the lead in F".into(),
             K::MinDepth { .. } => format!("{l} (minimum depth of cut) is unsigned"),
+            K::Allowance { d, .. } if d >= 1.0 && d.fract() == 0.0 => format!(
+                "the finishing allowance must be at least 0 and smaller than the thread height; latsim reads R{d} as {d} mm, as every number without a decimal point, where a FANUC reading such numbers in its least increment takes {} mm: write R{}",
+                d / 1000.0,
+                d / 1000.0
+            ),
             K::Allowance { .. } => "the finishing allowance must be at least 0 and smaller than the thread height".into(),
             K::ChamferAngle { .. } => "set the chamfer angle (parameter 5131 / Haas setting 96) between 0° and 90°, 45° usually".into(),
             K::NoZTravel => "give the thread end Z away from the start point's Z".into(),

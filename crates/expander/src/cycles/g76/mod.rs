@@ -805,6 +805,18 @@ mod tests {
         (at.letter, at.span.map(|s| (s.line, s.column)))
     }
 
+    /// FANUC's manual writes `R200` for a 0.2 mm allowance (numbers without a decimal point
+    /// in the least increment); latsim reads it as 200 mm, as every such number: the alarm's
+    /// help says so and gives `R0.2` (field run: two public FANUC and Mazak samples).
+    #[test]
+    fn an_allowance_without_a_decimal_point_names_its_least_increment_reading() {
+        let e = two_block_error("G76 P021060 Q100 R200\nG76 X18.05 Z-25 P975 Q400 F1.5\n");
+        assert!(matches!(e.kind, G76ErrorKind::Allowance { .. }), "{e}");
+        assert!(e.help().contains("write R0.2"), "{}", e.help());
+        let e = two_block_error("G76 P021060 Q100 R1.5\nG76 X18.05 Z-25 P975 Q400 F1.5\n");
+        assert!(!e.help().contains("write R"), "{}", e.help());
+    }
+
     #[test]
     fn alarm_first_depth_zero() {
         let e = two_block_error("G76 P021060 Q50 R0.05\nG76 X18.05 Z-25 P975 Q0 F1.5\n");
