@@ -227,39 +227,32 @@ fn uncovered(spans: &[(f64, f64)], cover: &mut [(f64, f64)], len: f64) -> f64 {
 /// The outlines an earlier move may have cut with (`m`: its tool as mounted): the edge and
 /// the body as mounted when the table states the tool, or at least its nose and the way it
 /// points (an insert whose size is assumed: a bigger one cuts on the same side); for a
-/// feed of a tool the table says nothing of (`unknown_feed`: a default stands in), a disc
-/// as far across as the default's edge reaches, any way round. The stock such a feed
-/// leaves is a guess too: the default OD insert fed along a bore leaves the wall a boring
-/// bar would have cut, and a rapid back through that wall is no certain crash. (A rapid
-/// cuts nothing in a sound program: it keeps its outline.)
+/// feed of a tool the table says nothing of (`unknown_feed`: a default stands in, no nose
+/// stated), the
+/// default's edge and its mirror across the path (an OD insert or a boring bar: a T word
+/// alone does not tell which). The stock such a feed leaves is a guess too: the default OD
+/// insert fed along a bore leaves the wall a boring bar would have cut, and a rapid back
+/// through that wall is no certain crash; a rapid into the bar beyond a shoulder either
+/// would have left stays certain. (A rapid cuts nothing in a sound program: it keeps its
+/// outline.)
 fn may_have_cut(m: &Mounted, unknown_feed: bool) -> Vec<Outline> {
-    if !unknown_feed || m.core.is_some() {
+    if !unknown_feed {
         return [Some(&*m.edge), m.body.as_ref().map(|b| &b.outline)]
             .into_iter()
             .flatten()
             .cloned()
             .collect();
     }
-    let reach = m
-        .edge
-        .parts
-        .iter()
-        .flatten()
-        .map(|p| p[0].hypot(p[1]))
-        .fold(0.0, f64::max);
-    // a regular 32-gon around the circle of that radius
-    let n = 32;
-    let r = reach / (std::f64::consts::PI / f64::from(n)).cos();
-    let disc = (0..n)
-        .map(|k| {
-            let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect();
-    vec![Outline {
-        parts: vec![disc],
+    let mirrored = Outline {
+        parts: m
+            .edge
+            .parts
+            .iter()
+            .map(|part| part.iter().rev().map(|p| [p[0], -p[1]]).collect())
+            .collect(),
         past_axis: m.edge.past_axis,
-    }]
+    };
+    vec![(*m.edge).clone(), mirrored]
 }
 
 /// Whether `seg` is a feed of a tool whose size the table does not state.
@@ -288,8 +281,12 @@ pub(crate) fn enters_uncut(
             [a[0].max(b[0]), a[1].max(b[1])],
         );
         let mut cover = Vec::new();
+        // an earlier feed of a tool the table says nothing of covers this chord
+        let mut unknown_near = false;
         for seg in &segments[..i] {
-            let outlines = may_have_cut(&mounts.of(seg), guessed_feed(tools, seg));
+            let m = mounts.of(seg);
+            let unknown = guessed_feed(tools, seg) && m.core.is_none();
+            let outlines = may_have_cut(&m, unknown);
             let bb = geom::Rect::of(
                 outlines
                     .iter()
@@ -305,6 +302,7 @@ pub(crate) fn enters_uncut(
             if reach_r + bulge < lo[1] {
                 continue;
             }
+            unknown_near |= unknown;
             let path = move_path(seg, chord_tol);
             for part in &outlines {
                 if seg.motion == Motion::Thread {
@@ -318,12 +316,19 @@ pub(crate) fn enters_uncut(
             }
         }
         let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
-        if uncovered(&spans, &mut cover, len) > ENTERS {
+        let enters = if unknown_near { UNKNOWN_NOSE } else { ENTERS };
+        if uncovered(&spans, &mut cover, len) > enters {
             return true;
         }
     }
     false
 }
+
+/// Near a feed of a tool the table says nothing of, a shorter stretch in uncut stock is no
+/// entry, mm: the fillet a nose of unknown radius leaves in the corner where its feed
+/// ended (up to the largest nose in common use, r0.8), which the imaginary tip, retracting
+/// along the feed, passes through whatever the tool.
+const UNKNOWN_NOSE: f64 = 0.8;
 
 /// Whether the stated core of move `i`'s tool (`core`: an insert's nose, a blade's tip) cuts
 /// uncut stock on that move: its sweep less the blank's outside and what the earlier moves
@@ -362,7 +367,8 @@ pub(crate) fn core_enters_uncut(
             continue;
         }
         let path = move_path(seg, chord_tol);
-        for part in &may_have_cut(&mounts.of(seg), guessed_feed(tools, seg)) {
+        let m = mounts.of(seg);
+        for part in &may_have_cut(&m, guessed_feed(tools, seg) && m.core.is_none()) {
             earlier.extend(float_sweep(part, &path).into_iter().filter(|poly| {
                 geom::Rect::of(poly.iter().map(|&p| geom::Pt::from(p))).intersects(&bb)
             }));

@@ -143,3 +143,20 @@ fn a_rapid_into_bar_far_from_a_guessed_cut_stays_certain() {
     assert_eq!(certain.len(), 1, "{:?}", f.crashes);
     assert_eq!(tp.segments[certain[0].segment].span.line, 8);
 }
+
+/// No tool table: T01 turns Φ20 to Z-20 on a Φ30 bar; then T03 rapids from X60 Z100
+/// straight to X22 Z-25, through the shoulder face at Z-20 and 4 mm into bar no tool cut.
+/// T01's shoulder pass at Z-20 leaves the bar beyond it whichever way its tool points (an
+/// OD insert or a boring bar both cut toward +Z of their point): a certain crash at line
+/// 13. (A disc around each guessed feed, any way round, made it possible: the gate passed
+/// a part-off approach into the bar.)
+#[test]
+fn a_rapid_into_bar_beyond_a_guessed_shoulder_stays_certain() {
+    let text = "G21 G40 G98\nT0101\nM03 S1000\nG00 X32. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.4 W0.1 F100\nN10 G00 X20.\nG01 Z-20.\nN20 X32.\nG70 P10 Q20 F50\nG00 X60. Z100.\nT0303\nG00 X22. Z-25.\nG01 X2. F20\nG00 X46.\nM30\n";
+    let bar = Blank::bar(30.0, 60.0, 0.0, None).unwrap();
+    let (tp, _, f) = common::judge(text, &bar, &ToolTable::empty());
+    assert_eq!(f.verdict, Verdict::Crash, "{:?}", f.crashes);
+    let certain: Vec<_> = f.crashes.iter().filter(|c| !c.assumed).collect();
+    assert_eq!(certain.len(), 1, "{:?}", f.crashes);
+    assert_eq!(tp.segments[certain[0].segment].span.line, 13);
+}
