@@ -143,3 +143,21 @@ fn zig_zag_roughing_under_one_g42_is_its_passes() {
     let (_, _, f) = judge(one, &blank, &tools);
     assert_eq!(f.verdict, Verdict::Clean, "{:?}", f.deviation);
 }
+
+/// T02 turns Φ18 to Z-20 first; then T01's G71/G70 finishes Φ20 to Z-20. Where the G71
+/// began, its contour lay wholly in the air (the part was already smaller), so it was
+/// dropped and the 1 mm the Φ18 took out of the Φ20 went unjudged. A contour that touches
+/// no stock where its cycle began is read against the blank: a gouge, 1 mm deep.
+#[test]
+fn a_contour_already_cut_below_is_still_the_intent() {
+    let tools = ToolTable::from_toml(
+        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"DNMG 150404\"\nholder = \"PDJNR 2525M15\"\n",
+    )
+    .unwrap();
+    let blank = Blank::bar(30.0, 60.0, 0.0, None).unwrap();
+    let text = "G21 G40 G99\nT0202\nG96 S180 M03\nG00 X32. Z2.\nG01 X18. F0.2\nZ-20.\nX32.\nG00 Z2.\nT0101\nG00 X32. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0 W0 F0.25\nN10 G00 X20.\nG01 Z-20.\nN20 X32.\nG70 P10 Q20\nG00 X60. Z60.\nM30\n";
+    let (_, _, f) = judge(text, &blank, &tools);
+    assert_eq!(f.verdict, Verdict::Gouge, "{:?}", f.deviation);
+    let g = &f.deviation.as_ref().unwrap().gouges[0];
+    assert!((g.depth - 1.0).abs() < 0.01, "{}", g.depth);
+}

@@ -134,6 +134,17 @@ pub fn deviation(
         .partition(|g| cut_later(g, intents, segments, tools, &world_box));
     out.gouges = gouges;
     out.later_cuts = later;
+    // a tool the table says nothing of may be a drill or a blade: what it cuts inside a
+    // contour another tool finished before may be its own hole or groove
+    for g in &mut out.gouges {
+        if g.made_by.is_some_and(|i| {
+            tools.get(segments[i].tool).is_none()
+                && segments[i].motion != expander::Motion::Rapid
+                && in_later_contour(g, intents, (i, &segments[i]), &world_box)
+        }) {
+            g.assumed = true;
+        }
+    }
     mark_assumed(&mut out.gouges, &part, segments, &mut mounts, chord_tol);
     out
 }
@@ -150,9 +161,10 @@ fn mark_assumed(
 ) {
     let guessed: Vec<usize> = (0..gouges.len())
         .filter(|&g| {
-            gouges[g]
-                .made_by
-                .is_some_and(|i| crate::assumed::guessed(mounts.tools(), &segments[i]))
+            !gouges[g].assumed
+                && gouges[g]
+                    .made_by
+                    .is_some_and(|i| crate::assumed::guessed(mounts.tools(), &segments[i]))
         })
         .collect();
     let tested = &guessed[..guessed.len().min(crate::assumed::MAX_TESTED)];
@@ -190,6 +202,17 @@ fn cut_later(
     if seg.motion == expander::Motion::Rapid || !cuts_features {
         return false;
     }
+    in_later_contour(g, intents, (i, seg), world)
+}
+
+/// Whether every contour that claims the place of `g` (at least one) was finished by
+/// another tool than move `i`'s, from before `i` ([`Intent::owner`]).
+fn in_later_contour(
+    g: &Finding,
+    intents: &[Intent],
+    (i, seg): (usize, &Segment),
+    world: &Rect,
+) -> bool {
     let region = std::slice::from_ref(&g.shape);
     let claiming = intents.iter().filter(|intent| {
         let zone = clip_to_box(&intent.zone, world);

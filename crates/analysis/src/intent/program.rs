@@ -101,16 +101,23 @@ fn own(toolpath: &Toolpath, stock_at: &dyn Fn(usize) -> Vec<Shape>) -> Vec<Inten
             // the tool that cuts the contour: later feeds of other tools are theirs
             let owner = segments.get(i.after_move).map(|s| (s.tool, i.after_move));
             let contour = |intent: Option<Intent>| intent.map(|x| Intent { owner, ..x });
-            match i.kind {
+            // read against the stock where its cycle began; a contour wholly in the air
+            // there (a guessed tool's roughing cut the wall on the wrong side, another tool
+            // cut deeper) against the blank, rather than dropped
+            let read = |stock: &[Shape]| match i.kind {
                 IntendedKind::Groove => Some(Intent::groove(&pts)),
-                IntendedKind::FinishingContour => {
-                    contour(Intent::finishing(&pts, &stock_at(i.after_move)))
+                IntendedKind::FinishingContour => Intent::finishing(&pts, stock),
+                IntendedKind::Compensated { part_on_left } => {
+                    Intent::compensated(&pts, part_on_left != below, stock)
                 }
-                IntendedKind::Compensated { part_on_left } => contour(Intent::compensated(
-                    &pts,
-                    part_on_left != below,
-                    &stock_at(i.after_move),
-                )),
+            };
+            let intent = read(&stock_at(i.after_move))
+                .filter(|it| !it.part.is_empty())
+                .or_else(|| read(&stock_at(0)));
+            if i.kind == IntendedKind::Groove {
+                intent
+            } else {
+                contour(intent)
             }
         })
         .collect()
