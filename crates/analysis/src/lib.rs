@@ -269,7 +269,7 @@ fn check_threads(
     };
     threads::check(
         &beside.thread_passes,
-        &toolpath.segments,
+        (&toolpath.segments, stocks.s.tools),
         &sim.final_shapes,
         target,
         &thread_stock,

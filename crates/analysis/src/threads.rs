@@ -9,7 +9,7 @@
 use crate::findings::{Note, ThreadCheck};
 use crate::measure::{least_gap, Reference, Surface, Thread, ThreadPasses};
 use expander::Segment;
-use stock::Shape;
+use stock::{Shape, ToolTable};
 
 /// The threads' checks, with the notes they raise.
 #[derive(Debug, Default)]
@@ -25,7 +25,7 @@ pub(crate) struct Checked {
 /// depth).
 pub(crate) fn check(
     passes: &ThreadPasses,
-    segments: &[Segment],
+    (segments, tools): (&[Segment], &ToolTable),
     shapes: &[Shape],
     target: Option<&[Shape]>,
     before: &[(usize, Vec<Shape>)],
@@ -34,7 +34,12 @@ pub(crate) fn check(
     let mut out = Checked::default();
     for t in passes.measure(segments, shapes) {
         if t.wrong_side {
-            out.alarms.push(wrong_side(&t));
+            let tool = segments[t.first_move].tool;
+            if tools.get(tool).is_some() {
+                out.alarms.push(wrong_side(&t));
+            } else {
+                out.warnings.push(default_side(&t, tool));
+            }
         }
         let cut_into = before
             .iter()
@@ -89,6 +94,23 @@ fn wrong_side(t: &Thread) -> Note {
         code: "LS-THREAD-SIDE",
         message: format!(
             "the thread passes go deeper {toward} but the threading tool is {side} insert: its body sweeps through the part; give the tool `side = \"{other}\"` in the tool table"
+        ),
+    }
+}
+
+/// The warning of a thread cut the other way than the default threading insert points,
+/// by a tool `t` the table says nothing of: the side is the default's guess, not the
+/// program's error (spec/simulation.md, "Findings from assumed tools").
+fn default_side(t: &Thread, tool: u32) -> Note {
+    let (toward, default, other) = match t.surface {
+        Surface::Outer => ("outward (an inside thread)", "an OD", "id"),
+        Surface::Bore => ("inward (an outside thread)", "an ID", "od"),
+    };
+    Note {
+        span: t.span,
+        code: "LS-ASSUMED-TOOL",
+        message: format!(
+            "the thread passes go deeper {toward}; T{tool:02} is not in the tool table and the default threading insert is {default} one, whose body sweeps through the part: state T{tool:02} with `side = \"{other}\"` to check this thread"
         ),
     }
 }

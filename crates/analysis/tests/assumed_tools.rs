@@ -200,3 +200,27 @@ fn an_unknown_tool_inside_another_tools_contour_is_possible() {
         d.gouges
     );
 }
+
+/// No tool table: an internal M30 × 1.5 thread by G76 in a bored sleeve. The default
+/// threading insert is an OD one, so its passes went deeper away from its side: the alarm
+/// LS-THREAD-SIDE told the user to give the tool `side = "id"` though they gave no tool.
+/// The side is the default's guess: a warning LS-ASSUMED-TOOL naming T04, no alarm.
+#[test]
+fn an_inside_thread_of_an_unknown_tool_is_no_side_alarm() {
+    let text = "G18 G21 G40 G80 G99\nT0303\nG96 S150 M03\nG00 X18. Z2.\nG71 U1.5 R0.5\nG71 P30 Q40 U-0.4 W0.1 F0.2\nN30 G00 X32.\nG01 X28.4 Z-0.8 F0.1\nZ-25.\nN40 X18.\nG70 P30 Q40\nG00 Z5.\nG28 U0. W0.\nT0404\nG97 S700 M03\nG00 X26. Z5.\nG76 P010060 Q50 R0.05\nG76 X30. Z-22. P812 Q250 F1.5\nG00 Z10.\nG28 U0. W0.\nM30\n";
+    let sleeve = Blank::bar(50.0, 40.0, 0.0, Some(20.0)).unwrap();
+    let (_, _, f) = common::judge(text, &sleeve, &ToolTable::empty());
+    assert!(
+        f.alarms.iter().all(|a| a.code != "LS-THREAD-SIDE"),
+        "{:?}",
+        f.alarms
+    );
+    assert!(
+        f.part_warnings
+            .iter()
+            .any(|n| n.code == "LS-ASSUMED-TOOL"
+                && n.message.contains("state T04 with `side = \"id\"`")),
+        "{:?}",
+        f.part_warnings
+    );
+}
