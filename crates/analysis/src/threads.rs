@@ -83,12 +83,18 @@ pub(crate) fn check(
     out
 }
 
-/// The alarm of a threading tool whose passes go deeper away from its own side.
-fn wrong_side(t: &Thread) -> Note {
-    let (side, toward, other) = match t.surface {
+/// For a thread cut in `surface` whose passes go deeper away from its tool's side: the
+/// tool's side ("an OD"), where the passes go, and the side the tool should be given.
+fn sides(surface: Surface) -> (&'static str, &'static str, &'static str) {
+    match surface {
         Surface::Outer => ("an OD", "outward (an inside thread)", "id"),
         Surface::Bore => ("an ID", "inward (an outside thread)", "od"),
-    };
+    }
+}
+
+/// The alarm of a threading tool whose passes go deeper away from its own side.
+fn wrong_side(t: &Thread) -> Note {
+    let (side, toward, other) = sides(t.surface);
     Note {
         span: t.span,
         code: "LS-THREAD-SIDE",
@@ -102,10 +108,7 @@ fn wrong_side(t: &Thread) -> Note {
 /// by a tool `t` the table says nothing of: the side is the default's guess, not the
 /// program's error (spec/simulation.md, "Findings from assumed tools").
 fn default_side(t: &Thread, tool: u32) -> Note {
-    let (toward, default, other) = match t.surface {
-        Surface::Outer => ("outward (an inside thread)", "an OD", "id"),
-        Surface::Bore => ("inward (an outside thread)", "an ID", "od"),
-    };
+    let (default, toward, other) = sides(t.surface);
     Note {
         span: t.span,
         code: "LS-ASSUMED-TOOL",

@@ -161,6 +161,17 @@ fn a_rapid_into_bar_beyond_a_guessed_shoulder_stays_certain() {
     assert_eq!(tp.segments[certain[0].segment].span.line, 13);
 }
 
+/// The verdict is clean, and every gouge (there is one at least) is possible.
+fn assert_clean_with_possible_gouges(f: &Findings) {
+    assert_eq!(f.verdict, Verdict::Clean, "{:?}", f.deviation);
+    let d = f.deviation.as_ref().unwrap();
+    assert!(
+        !d.gouges.is_empty() && d.gouges.iter().all(|g| g.assumed),
+        "{:?}",
+        d.gouges
+    );
+}
+
 /// A bush with no tool table: T01 turns the OD by G71/G70, T04 bores Φ22 to Φ25.6 by
 /// G71/G70. The default OD insert standing in for T04 cuts the bore wall above its point,
 /// so the G70's ID contour lay wholly in the air where its cycle began and was dropped:
@@ -173,13 +184,7 @@ fn a_guessed_boring_bar_does_not_lose_its_own_contour() {
     let text = "G21 G18 G40 G99\nT0101\nG96 S200 M03\nG00 X54. Z2.\nG71 U1.5 R0.5\nG71 P100 Q110 U0.3 W0.1 F0.25\nN100 G00 X32.\nG01 Z0. F0.1\nG01 X35. Z-1.5\nG01 Z-15.\nG01 X50.\nN110 G01 Z-18.\nG70 P100 Q110 F0.1\nG00 X54. Z2.\nG28 U0. W0.\nT0404\nG96 S120 M03\nG00 X22. Z2.\nG71 U0.4 R0.3\nG71 P200 Q210 U-0.3 W0.0 F0.12\nN200 G00 X25.6\nG01 Z0. F0.08\nG01 Z-30.\nN210 G00 X22.\nG70 P200 Q210 F0.06\nG00 X22. Z5.\nG28 U0. W0.\nM30\n";
     let tube = Blank::bar(50.0, 40.0, 0.0, Some(22.0)).unwrap();
     let (_, _, f) = common::judge(text, &tube, &ToolTable::empty());
-    assert_eq!(f.verdict, Verdict::Clean, "{:?}", f.deviation);
-    let d = f.deviation.as_ref().unwrap();
-    assert!(
-        !d.gouges.is_empty() && d.gouges.iter().all(|g| g.assumed),
-        "{:?}",
-        d.gouges
-    );
+    assert_clean_with_possible_gouges(&f);
 }
 
 /// No tool table: T01 turns Φ20, T04 threads it by G76, T05 centre-drills 8 deep on the
@@ -192,13 +197,7 @@ fn an_unknown_tool_inside_another_tools_contour_is_possible() {
     let text = "G21 G40 G99\nT0101\nG50 S3000\nG96 S200 M03\nG00 X42. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.3\nN10 G00 X14.\nG01 X20. Z-1. F0.1\nZ-20.\nN20 X42.\nG70 P10 Q20\nG28 U0. W0.\nT0404\nG97 S1200 M03\nG00 X22. Z5.\nG76 P010060 Q50 R0.05\nG76 X18.16 Z-17. P920 Q300 F1.5\nG00 X44.\nG28 U0. W0.\nT0505\nG97 S1500 M03\nG00 X0. Z2.\nG01 Z-8. F0.05\nG00 Z5.\nG28 U0. W0.\nM30\n";
     let bar = Blank::bar(40.0, 50.0, 0.0, None).unwrap();
     let (_, _, f) = common::judge(text, &bar, &ToolTable::empty());
-    assert_eq!(f.verdict, Verdict::Clean, "{:?}", f.deviation);
-    let d = f.deviation.as_ref().unwrap();
-    assert!(
-        !d.gouges.is_empty() && d.gouges.iter().all(|g| g.assumed),
-        "{:?}",
-        d.gouges
-    );
+    assert_clean_with_possible_gouges(&f);
 }
 
 /// No tool table: an internal M30 × 1.5 thread by G76 in a bored sleeve. The default
