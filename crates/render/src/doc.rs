@@ -187,23 +187,71 @@ impl Doc {
         px_w: f64,
         dash: &[f64],
     ) {
-        if d.is_empty() {
-            return;
+        if !d.is_empty() {
+            let attrs = path_attrs(v, d, fill, stroke, px_w, dash);
+            self.leaf("path", &attrs);
         }
-        let mut attrs = vec![
-            ("d", d.to_string()),
-            ("fill", fill.into()),
-            ("fill-rule", "evenodd".into()),
-            ("stroke", stroke.into()),
-            ("stroke-width", num(px_w / v.s, 9)),
-            ("stroke-linejoin", "round".into()),
-        ];
-        if !dash.is_empty() {
-            let ds: Vec<String> = dash.iter().map(|x| num(x / v.s, 9)).collect();
-            attrs.push(("stroke-dasharray", ds.join(" ")));
-        }
-        self.leaf("path", &attrs);
     }
+
+    /// An unfilled mm path (a toolpath line) whose stroke is `opacity` opaque: a paint
+    /// opacity, not a group's, which resvg would draw on a layer of its own and blend back.
+    pub(crate) fn mm_line(
+        &mut self,
+        v: &View,
+        d: &str,
+        stroke: &str,
+        px_w: f64,
+        dash: &[f64],
+        opacity: f64,
+    ) {
+        if !d.is_empty() {
+            let mut attrs = path_attrs(v, d, "none", stroke, px_w, dash);
+            attrs.push(("stroke-opacity", num(opacity, 2)));
+            self.leaf("path", &attrs);
+        }
+    }
+
+    /// Paints the page (`page`: its width and height, px) white outside the frame `r`: what
+    /// a view drew past its frame is hidden as a clip path hides it on a white page, pixel
+    /// for pixel when `r` lies on whole pixels. resvg draws a clipped group on a layer the
+    /// size of what it holds and masks it: 10–15 ms of the PNG of a 55 ms run.
+    pub(crate) fn matte(&mut self, r: [f64; 4], page: [f64; 2]) {
+        let [x, y, w, h] = r.map(|c| num(c, 2));
+        let [pw, ph] = page.map(|c| num(c, 2));
+        self.leaf(
+            "path",
+            &[
+                ("d", format!("M0 0H{pw}V{ph}H0Z M{x} {y}v{h}h{w}v-{h}Z")),
+                ("fill", "#ffffff".into()),
+                ("fill-rule", "evenodd".into()),
+                ("stroke", "none".into()),
+            ],
+        );
+    }
+}
+
+/// The attributes of an mm path `d` under the view `v`: widths and dashes given in px.
+fn path_attrs(
+    v: &View,
+    d: &str,
+    fill: &str,
+    stroke: &str,
+    px_w: f64,
+    dash: &[f64],
+) -> Vec<(&'static str, String)> {
+    let mut attrs = vec![
+        ("d", d.to_string()),
+        ("fill", fill.into()),
+        ("fill-rule", "evenodd".into()),
+        ("stroke", stroke.into()),
+        ("stroke-width", num(px_w / v.s, 9)),
+        ("stroke-linejoin", "round".into()),
+    ];
+    if !dash.is_empty() {
+        let ds: Vec<String> = dash.iter().map(|x| num(x / v.s, 9)).collect();
+        attrs.push(("stroke-dasharray", ds.join(" ")));
+    }
+    attrs
 }
 
 /// The place and size of a px box `[x, y, w, h]` (a negative size is drawn as none).

@@ -14,6 +14,9 @@ use crate::text::{tick_label, width};
 /// intended line and the toolpath).
 pub(crate) const DEVIATION_EDGE_PX: f64 = 2.0;
 
+/// How opaque the toolpath's lines are: the part shows through where they run over it.
+const TOOLPATH_OPACITY: f64 = 0.9;
+
 /// Shapes and toolpath of a view, in mm under its transform: used by the main view and
 /// the detail views alike. `mirror`: also draw the lighter lower half. The gouge and
 /// leftover outlines go on top of the toolpath, so that no line hides them.
@@ -148,22 +151,38 @@ fn draw_toolpath(
         &v.mm.grow(v.mm.w().max(v.mm.h()) * 0.05),
         point_cap,
     );
-    let (transform, opacity) = (("transform", v.transform(false)), ("opacity", "0.9".into()));
+    let transform = ("transform", v.transform(false));
     match toolpath_id {
-        Some(id) => doc.open("g", &[("id", id.into()), transform, opacity]),
-        None => doc.open("g", &[transform, opacity]),
+        Some(id) => doc.open("g", &[("id", id.into()), transform]),
+        None => doc.open("g", &[transform]),
     }
-    doc.mm_path(v, &tp.rapid, "none", colour::RAPID, 1.1, &[5.0, 4.0]);
-    doc.mm_path(v, &tp.feed, "none", colour::FEED, 1.3, &[]);
-    doc.mm_path(v, &tp.thread, "none", colour::THREAD, 1.3, &[]);
+    doc.mm_line(
+        v,
+        &tp.rapid,
+        colour::RAPID,
+        1.1,
+        &[5.0, 4.0],
+        TOOLPATH_OPACITY,
+    );
+    doc.mm_line(v, &tp.feed, colour::FEED, 1.3, &[], TOOLPATH_OPACITY);
+    doc.mm_line(v, &tp.thread, colour::THREAD, 1.3, &[], TOOLPATH_OPACITY);
     doc.close();
     tp.thinned()
 }
 
-/// Grid lines, frame, tick marks and labels of a view. Returns the tick step.
+/// Grid lines, tick marks and labels of a view. Returns the tick step.
 pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
-    let (x0, y0, x1, y1) = (v.px[0], v.px[1], v.right(), v.bottom());
-    // Widen the step until the widest label fits between ticks with room to spare.
+    let step = tick_step(v, min_px);
+    if grid {
+        grid_lines(doc, v, step);
+    }
+    tick_marks(doc, v, step);
+    step
+}
+
+/// The tick step (mm) of a view: ticks at least `min_px` apart, widened until the widest
+/// label fits between them with room to spare.
+pub(crate) fn tick_step(v: &View, min_px: f64) -> f64 {
     let mut step = nice_step(min_px / v.s);
     for _ in 0..4 {
         let dec = step_decimals(step);
@@ -176,20 +195,27 @@ pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
         }
         step = nice_step((widest + 14.0) / v.s);
     }
-    let dec = step_decimals(step);
-    let zt = ticks(v.mm.zmin, v.mm.zmax, step);
-    let rt = ticks(v.mm.rmin, v.mm.rmax, step);
-    if grid {
-        for &t in &zt {
-            let x = v.x(t);
-            doc.line([x, y0], [x, y1], colour::GRID, 1.0, "");
-        }
-        for &t in &rt {
-            let y = v.y(t);
-            doc.line([x0, y], [x1, y], colour::GRID, 1.0, "");
-        }
+    step
+}
+
+/// The grid lines inside a view's frame, one per tick.
+pub(crate) fn grid_lines(doc: &mut Doc, v: &View, step: f64) {
+    let (x0, y0, x1, y1) = (v.px[0], v.px[1], v.right(), v.bottom());
+    for t in ticks(v.mm.zmin, v.mm.zmax, step) {
+        let x = v.x(t);
+        doc.line([x, y0], [x, y1], colour::GRID, 1.0, "");
     }
-    for &t in &zt {
+    for t in ticks(v.mm.rmin, v.mm.rmax, step) {
+        let y = v.y(t);
+        doc.line([x0, y], [x1, y], colour::GRID, 1.0, "");
+    }
+}
+
+/// The tick marks and labels outside a view's frame, below it (Z) and left of it (r).
+pub(crate) fn tick_marks(doc: &mut Doc, v: &View, step: f64) {
+    let (x0, y1) = (v.px[0], v.bottom());
+    let dec = step_decimals(step);
+    for t in ticks(v.mm.zmin, v.mm.zmax, step) {
         let x = v.x(t);
         doc.line([x, y1], [x, y1 + 5.0], colour::INK, 1.0, "");
         let label = tick_label(t, dec);
@@ -199,7 +225,7 @@ pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
             doc.text(x, y1 + 19.0, FS_TICK, "middle", colour::INK, &label);
         }
     }
-    for &t in &rt {
+    for t in ticks(v.mm.rmin, v.mm.rmax, step) {
         let y = v.y(t);
         doc.line([x0 - 5.0, y], [x0, y], colour::INK, 1.0, "");
         doc.text(
@@ -211,7 +237,6 @@ pub(crate) fn axes(doc: &mut Doc, v: &View, min_px: f64, grid: bool) -> f64 {
             &tick_label(t, dec),
         );
     }
-    step
 }
 
 /// The axis centre line (dash-dot) across a view, at r = 0.

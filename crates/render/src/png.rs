@@ -17,15 +17,22 @@ pub(crate) fn rasterise(svg: &str) -> Result<Vec<u8>, RenderError> {
     let mut pixmap = tiny_skia::Pixmap::new(w, h).ok_or(RenderError::Size(w, h))?;
     pixmap.fill(tiny_skia::Color::WHITE);
     resvg::render(&tree, tiny_skia::Transform::default(), &mut pixmap.as_mut());
-    // Opaque background: drop alpha, RGB is exact (premultiplied by 255).
-    let rgb: Vec<u8> = pixmap
-        .data()
-        .chunks_exact(4)
-        .flat_map(|p| [p[0], p[1], p[2]])
-        .collect();
+    let rgb = rgb_in_place(pixmap.take());
     let mut out = Vec::new();
     image::codecs::png::PngEncoder::new(&mut out)
         .write_image(&rgb, w, h, image::ExtendedColorType::Rgb8)
         .map_err(|e| RenderError::Encode(e.to_string()))?;
     Ok(out)
+}
+
+/// The RGB bytes of RGBA pixels on an opaque background (premultiplied by 255, so RGB is
+/// exact), moved down in the same buffer: a second 1600 × 1000 buffer, touched page by
+/// page, was 8 % of a small program's run.
+fn rgb_in_place(mut px: Vec<u8>) -> Vec<u8> {
+    let n = px.len() / 4;
+    for i in 0..n {
+        px.copy_within(4 * i..4 * i + 3, 3 * i);
+    }
+    px.truncate(3 * n);
+    px
 }

@@ -3,7 +3,7 @@
 
 use crate::doc::{marker, Doc};
 use crate::layout::{self, colour, FS_TEXT, FS_TICK, FS_TITLE, MAIN};
-use crate::plot::{axes, centre_line, draw_content};
+use crate::plot::{centre_line, draw_content, grid_lines, tick_marks, tick_step};
 use crate::report::{PathKind, Report};
 use crate::scale::View;
 use crate::text::{num, tick_label, truncate, width};
@@ -25,6 +25,18 @@ fn tick_room(v: &View) -> f64 {
 pub(crate) fn svg(report: &Report) -> String {
     let mut doc = Doc::new(layout::W, layout::H, "DejaVu Sans");
     doc.rect([0.0, 0.0, layout::W, layout::H], "#ffffff", "none", 0.0);
+
+    // Main view: drawn unclipped, then the page painted white around its frame, then what
+    // lies outside the frame (the title, the ticks).
+    let v = View::fit(layout::main_window(report), MAIN);
+    doc.rect(MAIN, "#ffffff", "none", 0.0);
+    let step = tick_step(&v, tick_room(&v));
+    grid_lines(&mut doc, &v, step);
+    let thinned = draw_content(&mut doc, report, &v, true, MAIN_POINT_CAP, Some("toolpath"));
+    centre_line(&mut doc, &v);
+    crate::fixture::label_fixture(&mut doc, report, &v);
+    doc.matte(MAIN, [layout::W, layout::H]);
+    tick_marks(&mut doc, &v, step);
 
     // Title line.
     let mut title = report.program.clone();
@@ -51,17 +63,6 @@ pub(crate) fn svg(report: &Report) -> String {
         &truncate(&title, max_chars),
     );
 
-    // Main view.
-    let v = View::fit(layout::main_window(report), MAIN);
-    doc.clip("clip-main", MAIN);
-    doc.rect(MAIN, "#ffffff", "none", 0.0);
-    let step_px = tick_room(&v);
-    axes(&mut doc, &v, step_px, true);
-    doc.open("g", &[("clip-path", "url(#clip-main)".into())]);
-    let thinned = draw_content(&mut doc, report, &v, true, MAIN_POINT_CAP, Some("toolpath"));
-    centre_line(&mut doc, &v);
-    crate::fixture::label_fixture(&mut doc, report, &v);
-    doc.close();
     doc.rect(MAIN, "none", "#2b2f36", 1.2);
     doc.text(
         MAIN[0] + MAIN[2] / 2.0,

@@ -39,6 +39,26 @@ fn has_layers_legend_and_title_block() {
     assert_eq!(ids.len(), n, "duplicate ids");
 }
 
+/// The main view is drawn straight on the page: no group opacity nor clip path around it
+/// (resvg draws such a group on a layer of its own and blends or masks it back: 40 % of a
+/// small program's PNG). The white matte around its frame hides what it draws past the
+/// frame (the reference pictures show it), and the toolpath's opacity is its stroke's.
+#[test]
+fn main_view_draws_on_the_page_without_layers() {
+    let s = render::svg(&common::o0008_groove());
+    let matte = s
+        .find("M0 0H1600V1000H0Z")
+        .expect("the matte around the main view");
+    let main = &s[..matte];
+    assert!(main.contains(r#"id="toolpath""#));
+    assert!(!main.contains("clip-path="), "a clip path in the main view");
+    assert!(
+        !main.contains(" opacity="),
+        "a group opacity in the main view"
+    );
+    assert!(main.contains(r#"stroke-opacity="0.9""#));
+}
+
 #[test]
 fn clean_report_says_clean() {
     let mut r = common::groove_bar();

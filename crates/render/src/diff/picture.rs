@@ -9,7 +9,7 @@ use crate::doc::Doc;
 use crate::layout::{self, colour, FS_SMALL, FS_TEXT, FS_TITLE, FS_VERDICT, MAIN};
 use crate::path::MIN_PX;
 use crate::path::{deviation_d, shapes_d};
-use crate::plot::{axes, centre_line, DEVIATION_EDGE_PX};
+use crate::plot::{axes, centre_line, grid_lines, tick_marks, tick_step, DEVIATION_EDGE_PX};
 use crate::scale::{Bbox, View};
 use crate::text::{chars_fitting, duration, num, quantity, truncate, width, wrap};
 
@@ -40,6 +40,17 @@ const LINE_H: f64 = 18.0;
 pub(super) fn svg(d: &DiffReport) -> String {
     let mut doc = Doc::new(layout::W, layout::H, "DejaVu Sans");
     doc.rect([0.0, 0.0, layout::W, layout::H], "#ffffff", "none", 0.0);
+    // the main view drawn unclipped, then the page painted white around its frame (as in
+    // the run's picture, `crate::svg`), then the title and the ticks outside the frame
+    let v = main_view(d);
+    doc.rect(MAIN, "#ffffff", "none", 0.0);
+    let step = tick_step(&v, 64.0);
+    grid_lines(&mut doc, &v, step);
+    layers(&mut doc, d, &v, Some("diff"));
+    centre_line(&mut doc, &v);
+    marks(&mut doc, d, &v);
+    doc.matte(MAIN, [layout::W, layout::H]);
+    tick_marks(&mut doc, &v, step);
     let title = format!("latsim diff: {} → {}", d.old, d.new);
     doc.text(
         MAIN[0],
@@ -49,15 +60,6 @@ pub(super) fn svg(d: &DiffReport) -> String {
         colour::INK,
         &truncate(&title, chars_fitting(MAIN[2], FS_TITLE)),
     );
-    let v = main_view(d);
-    doc.clip("clip-main", MAIN);
-    doc.rect(MAIN, "#ffffff", "none", 0.0);
-    axes(&mut doc, &v, 64.0, true);
-    doc.open("g", &[("clip-path", "url(#clip-main)".into())]);
-    layers(&mut doc, d, &v, Some("diff"));
-    centre_line(&mut doc, &v);
-    marks(&mut doc, d, &v);
-    doc.close();
     doc.rect(MAIN, "none", "#2b2f36", 1.2);
     doc.text(
         MAIN[0] + MAIN[2] / 2.0,
