@@ -102,10 +102,14 @@ const D55: &str =
 /// A D 55° insert on a 93° holder (PDJNR) finishing, under G42, a 41° flank descending
 /// from Φ40 at Z-10 to Φ29.569 at Z-16 (5.216 mm over 6: tan 41°). Its trailing edge has
 /// 180 − 93 − 55 = 32° of clearance: it cuts into the flank. Remedy: a 35° V on 93°
-/// (VBMT 160404 in SVJBR 2525M16: 180 − 93 − 35 = 52°), checked by the re-run.
+/// (VBMT 160404 in SVJBR 2525M16: 180 − 93 − 35 = 52°), checked by the re-run. The G73
+/// leaves U1.2 for the G70: its last pass, which no G42 compensates, would leave any r0.4
+/// nose 0.4 − 0.4 (cos 41° − sin 41°) = 0.360 mm into the flank, and 0.6 cos 41° = 0.453
+/// of allowance clears that (with U0 the V was offered as a cure, and the re-run left the
+/// 0.36 mm).
 #[test]
 fn a_d55_trailing_edge_on_a_41_degree_flank_gets_a_v35() {
-    let text = "G99 M03 S600 T0101\nG00 X52 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U0 W0 F0.2\nN10 G00 G42 X40 Z2\nG01 Z-10 F0.1\nX29.569 Z-16\nZ-30\nN20 G40 X52\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let text = "G99 M03 S600 T0101\nG00 X52 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U1.2 W0 F0.2\nN10 G00 G42 X40 Z2\nG01 Z-10 F0.1\nX29.569 Z-16\nZ-30\nN20 G40 X52\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
     let (_, f) = Job::new(text, D55, bar(50.0, 60.0)).diagnosed();
     let g = &f.deviation.as_ref().unwrap().gouges[0];
     let c = g.cause.as_ref().expect("a cause");
@@ -123,11 +127,71 @@ fn a_d55_trailing_edge_on_a_41_degree_flank_gets_a_v35() {
     assert!(r.text.contains("52°"), "{}", r.text);
 }
 
+/// A sharp D 55° (no nose) descending the 41° flank uncompensated; the table's T02, a
+/// V 35° on 93°, clears the flank with its trailing edge but leaves its r0.8 nose 0.72 mm
+/// deep in the same flank: no cure (it was offered as "checked" while the re-run's gouge
+/// lay 5 mm from where the first was deepest). The ISO V offered keeps the program's sharp
+/// nose (VBMT 160400, not 160404 and its 0.4 mm), and re-running with it leaves no gouge.
+#[test]
+fn a_tool_that_leaves_the_flank_gouged_is_no_remedy() {
+    let text = "G99 M03 S600 T0101\nG00 X52 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U0 W0 F0.2\nN10 G00 X40 Z2\nG01 Z-10 F0.1\nX29.569 Z-16\nZ-30\nN20 X52\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.0\ntip = 3\nentering_angle = 93\nedge = 15\n[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"V\"\nnose_radius = 0.8\ntip = 3\nentering_angle = 93\nedge = 16\n";
+    let job = Job::new(text, tools, bar(50.0, 60.0));
+    let (_, f) = job.diagnosed();
+    let g = &f.deviation.as_ref().unwrap().gouges[0];
+    assert_eq!(g.cause.as_ref().unwrap().kind, CauseKind::TrailingEdge);
+    let r = g.remedy.as_ref().expect("a checked remedy");
+    assert_eq!(
+        r.tool.as_deref(),
+        Some("VBMT 160400 in SVJBR 2525M16"),
+        "{}",
+        r.text
+    );
+    // what "checked" means: the program re-run with it has no gouge
+    let entry =
+        "kind = \"turning\"\ninsert = \"VBMT 160400\"\nholder = \"SVJBR 2525M16\"\ntip = 3\n";
+    let run = job
+        .rerun(&Change::Tool {
+            t: 1,
+            entry: entry.into(),
+        })
+        .unwrap();
+    assert!(run.findings.deviation.unwrap().gouges.is_empty());
+    // and with T02 the flank is still gouged
+    let t02 = "kind = \"turning\"\ninsert = \"V\"\nnose_radius = 0.8\ntip = 3\nentering_angle = 93\nedge = 16\n";
+    let run = job
+        .rerun(&Change::Tool {
+            t: 1,
+            entry: t02.into(),
+        })
+        .unwrap();
+    let left = run.findings.deviation.unwrap().gouges;
+    assert!(left.iter().any(|g| g.depth > 0.7), "{left:?}");
+}
+
+/// A G73 finishing a concave R6 half circle from Φ20 (the forum's program) with a sharp D
+/// 55° on 93°: its trailing edge cuts the circle's start, which falls vertically. The
+/// flank named is the steepest edge the gouge lies against (~89°, a chord of the circle's
+/// start), not the Φ20 diameter nearest its deepest point (0°); no V clears it, so no
+/// remedy is offered (a V 35° on 93° was, and left 1.3 mm).
+#[test]
+fn the_flank_is_the_steepest_edge_the_gouge_lies_against() {
+    let text = "G99 M03 S600 T0101\nG00 X31 Z1\nG73 U6 R10\nG73 P10 Q20 U0.1 W0 F0.2\nN10 G00 X20\nG01 Z-10\nN20 G02 X20 Z-22 R6\nG70 P10 Q20 F0.08\nG00 X100 Z100\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.0\ntip = 3\nentering_angle = 93\nedge = 11\n";
+    let (_, f) = Job::new(text, tools, bar(32.0, 60.0)).diagnosed();
+    let g = &f.deviation.as_ref().unwrap().gouges[0];
+    let c = g.cause.as_ref().expect("a cause");
+    assert_eq!(c.kind, CauseKind::TrailingEdge, "{}", c.text);
+    let flank = c.numbers.iter().find(|(n, _)| *n == "flank_deg").unwrap().1;
+    assert!(flank > 85.0, "{}", c.text);
+    assert!(g.remedy.is_none(), "{:?}", g.remedy);
+}
+
 /// The same flank with the table's own sharper tool (T02 a V 35° on 93°): the remedy names
 /// it.
 #[test]
 fn the_tables_own_tool_comes_first() {
-    let text = "G99 M03 S600 T0101\nG00 X52 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U0 W0 F0.2\nN10 G00 G42 X40 Z2\nG01 Z-10 F0.1\nX29.569 Z-16\nZ-30\nN20 G40 X52\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
+    let text = "G99 M03 S600 T0101\nG00 X52 Z2\nG73 U6 W0 R4\nG73 P10 Q20 U1.2 W0 F0.2\nN10 G00 G42 X40 Z2\nG01 Z-10 F0.1\nX29.569 Z-16\nZ-30\nN20 G40 X52\nG70 P10 Q20\nG00 X100 Z100\nM30\n";
     let tools = format!("{D55}[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"V\"\nnose_radius = 0.4\ntip = 3\nentering_angle = 93\nedge = 16\n");
     let (_, f) = Job::new(text, &tools, bar(50.0, 60.0)).diagnosed();
     let r = f.deviation.as_ref().unwrap().gouges[0]

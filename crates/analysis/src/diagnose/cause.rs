@@ -291,9 +291,44 @@ fn flank_deg(intents: &[Intent], p: P) -> Option<f64> {
     best.map(|(_, deg)| deg)
 }
 
+/// The steepness (as [`flank_deg`]) of the steepest edge of the intended part that the
+/// region `shape` lies against: the flank a trailing edge could not descend. Its deepest
+/// point is often nearest the diameter above the flank (a D insert's wedge under the
+/// shoulder): that diameter is 0°, the flank 83°. `None` when the region touches no edge.
+fn steepest_touched(intents: &[Intent], shape: &stock::Shape) -> Option<f64> {
+    const TOUCH: f64 = 1e-3;
+    let pts = &shape.outer;
+    let bbox = geom::Rect::of(pts.iter().map(|&p| geom::Pt::from(p))).grown(TOUCH);
+    let mut best: Option<f64> = None;
+    for it in intents {
+        for (line, closed) in &it.outline {
+            let n = line.len();
+            let edges = if *closed { n } else { n.saturating_sub(1) };
+            for k in 0..edges {
+                let (a, b) = (line[k], line[(k + 1) % n]);
+                let (dz, dr) = ((b[0] - a[0]).abs(), (b[1] - a[1]).abs());
+                let edge_box = geom::Rect::of([geom::Pt::from(a), geom::Pt::from(b)]);
+                if dz + dr == 0.0 || !edge_box.intersects(&bbox) {
+                    continue;
+                }
+                let touches = pts
+                    .iter()
+                    .any(|&p| geom::flat::segment_distance(p, a, b) <= TOUCH);
+                let deg = dr.atan2(dz).to_degrees();
+                if touches && best.is_none_or(|d| deg > d) {
+                    best = Some(deg);
+                }
+            }
+        }
+    }
+    best
+}
+
 fn trailing(g: &Finding, intents: &[Intent], f: &Facts, seg: &Segment) -> Cause {
     let clearance = f.trailing_clearance();
-    let flank = flank_deg(intents, g.nearest).unwrap_or(f64::NAN);
+    let flank = steepest_touched(intents, &g.shape)
+        .or_else(|| flank_deg(intents, g.nearest))
+        .unwrap_or(f64::NAN);
     Cause {
         kind: CauseKind::TrailingEdge,
         text: format!(

@@ -66,6 +66,14 @@ pub(crate) struct Tries<'a> {
     pub(crate) budget: &'a mut usize,
 }
 
+/// The finding a change must cure.
+enum Cured<'a> {
+    /// The crash at this place.
+    Crash(P),
+    /// This gouge, all of its region.
+    Gouge(&'a Finding),
+}
+
 fn near(p: P, q: P) -> bool {
     (p[0] - q[0]).hypot(p[1] - q[1]) <= SAME_PLACE
 }
@@ -85,9 +93,10 @@ fn overlap(a: &stock::Shape, b: &stock::Shape) -> bool {
 }
 
 impl Tries<'_> {
-    /// Whether the run with `change` has no crash (`crash`) or gouge near `at` any more and
-    /// no crash, gouge or alarm the original did not have.
-    fn fixes(&mut self, change: &Change, crash: bool, at: P) -> bool {
+    /// Whether the run with `change` has cured `what` (no crash near its place any more, or
+    /// no gouge left in its region) and has no crash, gouge or alarm the original did not
+    /// have.
+    fn fixes(&mut self, change: &Change, what: Cured) -> bool {
         if *self.budget == 0 {
             return false;
         }
@@ -97,11 +106,14 @@ impl Tries<'_> {
         };
         let (oc, rc) = (&self.original.crashes, &run.findings.crashes);
         let (og, rg) = (gouges(self.original), gouges(&run.findings));
-        // gone: nothing of its kind is left where it was deepest
-        let gone = if crash {
-            !rc.iter().any(|c| near(c.at, at))
-        } else {
-            !rg.iter().any(|g| near(g.at, at))
+        // gone: nothing of its kind is left where it was. A gouge must be gone from its whole
+        // region, not only from where it was deepest: a tool that leaves the same flank 3.35
+        // mm deep instead of 4.45 moved the deepest point 1.5 mm and cured nothing.
+        let gone = match what {
+            Cured::Crash(at) => !rc.iter().any(|c| near(c.at, at)),
+            Cured::Gouge(g) => !rg
+                .iter()
+                .any(|r| near(r.at, g.at) || overlap(&r.shape, &g.shape)),
         };
         // nothing new: every crash of the re-run is near one of the original, every gouge
         // lies in one of the original's regions (what is left of them is not new)
@@ -124,7 +136,7 @@ impl Tries<'_> {
         let f = Facts::of(&self.tools.get(seg.tool).cloned().unwrap_or(Tool::DEFAULT))?;
         for (name, entry, clearance) in candidates(self.tools, seg.tool, &f, flank) {
             let change = Change::Tool { t: seg.tool, entry };
-            if self.fixes(&change, false, g.at) {
+            if self.fixes(&change, Cured::Gouge(g)) {
                 let ghost = self.ghost(&change, seg);
                 return Some(Remedy {
                     text: format!(
@@ -187,7 +199,7 @@ impl Tries<'_> {
                 line,
                 text: block.clone(),
             };
-            if self.fixes(&change, true, c.at) {
+            if self.fixes(&change, Cured::Crash(c.at)) {
                 return Some(Remedy {
                     text: format!("{text}: insert `{block}` before line {line}"),
                     tool: None,
@@ -198,7 +210,7 @@ impl Tries<'_> {
                 });
             }
         }
-        if self.fixes(&Change::Feed { line }, true, c.at) {
+        if self.fixes(&Change::Feed { line }, Cured::Crash(c.at)) {
             return Some(Remedy {
                 text: format!("feed into the cut: G01 instead of G00 at line {line}"),
                 tool: None,
@@ -223,6 +235,22 @@ fn num(v: f64) -> String {
 /// Tools with more trailing clearance than `flank` (plus 1°) for the same tip: the table's
 /// turning tools first, then ISO ones (a 35° V on 93°: 52°; on 72.5°: 72.5°), as
 /// (name, entry fields, clearance).
+/// The ISO 1832 metric nose code nearest the radius `r` (mm): a V insert offered for the
+/// trailing edge keeps the nose the program was written for (an r0.4 for a sharp tool
+/// traded the flank's gouge for the uncompensated nose's 0.4 mm).
+fn nose_code(r: f64) -> String {
+    const TENTHS: [u32; 11] = [0, 1, 2, 4, 8, 12, 16, 20, 24, 28, 32];
+    let nearest = TENTHS
+        .iter()
+        .min_by(|a, b| {
+            let d = |c: &&u32| (f64::from(**c) / 10.0 - r).abs();
+            d(a).total_cmp(&d(b))
+        })
+        .copied()
+        .unwrap_or(4);
+    format!("{nearest:02}")
+}
+
 fn candidates(tools: &ToolTable, t: u32, f: &Facts, flank: f64) -> Vec<(String, String, f64)> {
     let mut out = Vec::new();
     for n in tools.numbers() {
@@ -250,15 +278,16 @@ fn candidates(tools: &ToolTable, t: u32, f: &Facts, flank: f64) -> Vec<(String, 
         _ => None,
     };
     if let Some(h) = hand {
+        let insert = format!("VBMT 1604{}", nose_code(f.nose_radius));
         for (holder, clearance) in [
             (format!("SVJB{h} 2525M16"), 52.0),
             ("SVVBN 2525M16".to_string(), 72.5),
         ] {
             if clearance > flank + 1.0 {
                 out.push((
-                    format!("VBMT 160404 in {holder}"),
+                    format!("{insert} in {holder}"),
                     format!(
-                        "kind = \"turning\"\ninsert = \"VBMT 160404\"\nholder = \"{holder}\"\ntip = {}\n",
+                        "kind = \"turning\"\ninsert = \"{insert}\"\nholder = \"{holder}\"\ntip = {}\n",
                         f.tip
                     ),
                     clearance,
