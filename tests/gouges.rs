@@ -379,6 +379,67 @@ fn a_hole_drilled_below_the_faced_end_is_the_drills_whatever_the_bar() {
     }
 }
 
+/// Field run 3 (a public brass bush: face, G71, G74 drill, G70): a hole drilled between a
+/// G71 and its G70, or before the contour (face, centre drill, turn), is the drill's own
+/// cut: the contour began with its G71, and an OD contour says nothing of the core under
+/// it. Each was a certain 4 mm gouge "into the part". A turning tool's plunge along the
+/// axis stays a gouge.
+#[test]
+fn a_hole_drilled_before_the_finish_is_the_drills() {
+    let face = "G00 X44. Z0.\nG01 X-1.6 F0.15\nG00 Z2.\n";
+    let drill =
+        "T0303\nG97 S1500 M03\nG00 X0. Z3.\nG74 R0.5\nG74 Z-25. Q5000 F0.1\nG00 Z5.\nG28 U0. W0.\n";
+    let rough = "T0101\nG96 S200 M03\nG00 X44. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20.\nX30.\nZ-35.\nN20 X44.\nG28 U0. W0.\n";
+    let finish = "T0202\nG96 S250 M03\nG00 X44. Z2.\nG70 P10 Q20 F0.08\nG28 U0. W0.\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 2\nkind = \"turning\"\ninsert = \"VBMT 160404\"\nholder = \"SVJBR 2525M16\"\n[[tool]]\nt = 3\nkind = \"drill\"\ndiameter = 8.0\n[[tool]]\nt = 4\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\nentering_angle = 93\nedge = 11\n";
+    let run = |name: &str, body: String| {
+        let program =
+            format!("O0106\nG21 G40 G99 G18\nG28 U0. W0.\nT0101\nG96 S200 M03\n{body}M30\n");
+        let (dir, path) = temp_program(name, program.as_bytes());
+        let table = dir.path().join("tools.toml");
+        std::fs::write(&table, tools).unwrap();
+        let stock = ["--control", "fanuc-a", "--stock", "40x60"];
+        let (out, v) = run_json(
+            &[
+                &["run", path.to_str().unwrap()],
+                &stock[..],
+                &["--tools", table.to_str().unwrap()],
+            ]
+            .concat(),
+        );
+        (out.code, v)
+    };
+    let later = |v: &serde_json::Value| {
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|w| w["code"] == "LS-LATER-CUT")
+            .count()
+    };
+    for (name, body) in [
+        (
+            "rough-drill-finish.nc",
+            format!("{face}{rough}{drill}{finish}"),
+        ),
+        (
+            "drill-rough-finish.nc",
+            format!("{face}{drill}{rough}{finish}"),
+        ),
+    ] {
+        let (code, v) = run(name, body);
+        assert_eq!(v["verdict"], "clean", "{name}: {v:#}");
+        assert_eq!(code, 0, "{name}");
+        assert_eq!(later(&v), 1, "{name}: {v:#}");
+    }
+    // a turning tool's plunge along the axis before the contour is no hole of its own: the
+    // finishing V (T02) down the axis 10 mm takes its whole width out of the part
+    let plunge = "T0202\nG97 S1500 M03\nG00 X0. Z3.\nG01 Z-10. F0.1\nG00 Z5.\nG28 U0. W0.\n";
+    let (code, v) = run("plunge.nc", format!("{face}{plunge}{rough}{finish}"));
+    assert_eq!(v["verdict"], "gouge", "{v:#}");
+    assert_eq!(code, 1);
+}
+
 /// A Haas G71/G70 whose shape ends with the return to the start (`N20 G00 G40 Z2.54`,
 /// docs/field-rules.md §3) and a W allowance: the G70's intended shape kept the return, and
 /// its run back along the bar's diameter closed the part against the roughed stock, leaving

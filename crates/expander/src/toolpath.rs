@@ -154,6 +154,10 @@ pub struct Intended {
     /// lead-in in front of that stock is no part of the shape), and the tool of the move
     /// after them is the one that finishes it.
     pub after_move: usize,
+    /// How many segments were made before the first cycle that ran the shape began (a
+    /// G71's roughing before its G70; `after_move` when one cycle runs it): the contour
+    /// began there.
+    pub began: usize,
 }
 
 /// Which outline cuts a segment, beyond the tool number.

@@ -206,7 +206,8 @@ fn cut_later(
 }
 
 /// Whether every contour that claims the place of `g` (at least one) was finished by
-/// another tool than move `i`'s, from before `i` ([`Intent::owner`]).
+/// another tool than move `i`'s and began before `i` ([`Intent::owner`]), or claims it
+/// only as the core under an OD profile ([`core_hole`]).
 fn in_later_contour(
     g: &Finding,
     intents: &[Intent],
@@ -221,11 +222,23 @@ fn in_later_contour(
     let mut any = false;
     for intent in claiming {
         match intent.owner {
-            Some((tool, from)) if tool != seg.tool && i >= from => any = true,
+            Some(o) if o.tool != seg.tool && (i >= o.began || core_hole(g, intent)) => {
+                any = true;
+            }
             _ => return false,
         }
     }
     any
+}
+
+/// Whether `g` is a hole on the axis and `intent` claims it only as the core under its
+/// profile: an OD contour's part runs down to the axis and states nothing of a centre hole
+/// or a drilled core, drilled before it as well as after (face, centre drill, turn). An ID
+/// contour's part stops at its bore: a drill too large for it stays a gouge.
+fn core_hole(g: &Finding, intent: &Intent) -> bool {
+    const ON_AXIS: f64 = 1e-6;
+    let reaches_axis = |ring: &[P]| ring.iter().any(|p| p[1] <= ON_AXIS);
+    reaches_axis(&g.shape.outer) && intent.part.iter().any(|s| reaches_axis(&s.outer))
 }
 
 /// `shapes` cut to `bx` ring by ring (Sutherland–Hodgman against the box's four sides): the
@@ -403,7 +416,7 @@ pub(crate) fn later_cut_notes(d: &Deviation, segments: &[Segment]) -> Vec<crate:
                 span: seg.span,
                 code: "LS-LATER-CUT",
                 message: format!(
-                    "T{:02} cuts {:.3} mm² ({:.3} mm deep, at Z{:.3} X{:.3}) inside a contour another tool finished before: read as this operation's own cut (a groove, hole or relief), not a gouge (Interpretation; --target judges it against the drawing)",
+                    "T{:02} cuts {:.3} mm² ({:.3} mm deep, at Z{:.3} X{:.3}) inside a contour another tool finishes: read as this operation's own cut (a groove, hole or relief), not a gouge (Interpretation; --target judges it against the drawing)",
                     seg.tool,
                     c.area,
                     c.depth,

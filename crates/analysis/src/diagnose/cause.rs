@@ -266,7 +266,8 @@ fn other_owner(g: &Finding, intents: &[Intent], seg: &Segment, i: usize) -> Opti
         .iter()
         .filter(|it| crate::assumed::Region::new(&it.zone).contains(g.at))
         .filter_map(|it| it.owner)
-        .find(|&(tool, from)| tool != seg.tool && i >= from)
+        .find(|o| o.tool != seg.tool && i >= o.finish)
+        .map(|o| (o.tool, o.finish))
 }
 
 /// The steepness of the intended part's boundary nearest `p`, degrees from the Z axis (0: a

@@ -21,12 +21,24 @@ pub struct Intent {
     pub zone: Vec<Shape>,
     /// The intended boundary as drawn in the report: (points, closed ring or open path).
     pub outline: Vec<(Vec<[f64; 2]>, bool)>,
-    /// For a contour the program cuts: the tool that cuts it and the index of its first
-    /// move. What feed moves of another tool cut from then on inside its zone is that
-    /// operation's own (a groove in a finished diameter, a drilled core, a thread relief):
-    /// no gouge of this contour (**Interpretation**, [`Deviation::later_cuts`]). `None`
-    /// (a `--target` drawing, a G75.1 groove): every cut is judged.
-    pub owner: Option<(u32, usize)>,
+    /// For a contour the program cuts: who cuts it. What feed moves of another tool that
+    /// makes features cut inside its zone once it began is that operation's own (a groove
+    /// in a finished diameter, a drilled core, a thread relief): no gouge of this contour
+    /// (**Interpretation**, [`Deviation::later_cuts`]). `None` (a `--target` drawing, a
+    /// G75.1 groove): every cut is judged.
+    pub owner: Option<Owner>,
+}
+
+/// Who cuts a contour the program defines, and from when.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Owner {
+    /// The tool that finishes it (a G70's, not its G71's).
+    pub tool: u32,
+    /// The index of the first move of the first cycle that ran the shape (its G71's, before
+    /// its G70): the contour began there.
+    pub began: usize,
+    /// The index of the first move of the cycle that finishes it.
+    pub finish: usize,
 }
 
 /// The side toward which an open intended path is closed: where the part lies.

@@ -98,8 +98,13 @@ fn own(toolpath: &Toolpath, stock_at: &dyn Fn(usize) -> Vec<Shape>) -> Vec<Inten
                 .iter()
                 .map(|p| [p.z, if below { -p.r } else { p.r }])
                 .collect();
-            // the tool that cuts the contour: later feeds of other tools are theirs
-            let owner = segments.get(i.after_move).map(|s| (s.tool, i.after_move));
+            // the tool that finishes the contour, from where its first cycle began (a G71's
+            // roughing before the G70): later feeds of other tools are theirs
+            let owner = segments.get(i.after_move).map(|s| super::Owner {
+                tool: s.tool,
+                began: i.began,
+                finish: i.after_move,
+            });
             let contour = |intent: Option<Intent>| intent.map(|x| Intent { owner, ..x });
             // read against the stock where its cycle began; a contour wholly in the air
             // there (a guessed tool's roughing cut the wall on the wrong side, another tool

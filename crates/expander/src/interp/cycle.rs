@@ -84,6 +84,7 @@ impl Interp<'_> {
                     points,
                     span,
                     after_move,
+                    began: after_move,
                 }),
             }
         }

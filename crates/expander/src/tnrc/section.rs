@@ -110,6 +110,7 @@ impl Interp<'_> {
                         points: contour_points(pass),
                         span: first.span,
                         after_move: self.out.segments.len(),
+                        began: self.out.segments.len(),
                     });
                 }
             }
