@@ -440,6 +440,42 @@ fn a_hole_drilled_before_the_finish_is_the_drills() {
     assert_eq!(code, 1);
 }
 
+/// Field run 3: G71/G70 to a diameter ending at Z-40, then a part-off with a 3 mm blade
+/// referenced at its left corner at Z-40: its slot is the blade's own cut (LS-LATER-CUT)
+/// whatever the diameter. The finishing pass leaves the diameter 5·10⁻⁵ mm under size (the
+/// nose's chords), a band joined to the slot; on Ø38.08, 38.1, 38.2 and 44.7 that band made
+/// the G70's last move the slot's maker, a 9.55 mm gouge "into the part".
+#[test]
+fn a_part_off_at_the_shapes_end_is_the_blades_whatever_the_diameter() {
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 6\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 25.0\n";
+    for d in ["38.0", "38.08", "38.1", "38.2", "44.7"] {
+        let program = format!("O0115\nG21 G40 G99 G18\nT0101\nG96 S200 M03\nG50 S3000\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20.\nX{d}\nZ-40.\nN20 X52.\nG70 P10 Q20 F0.1\nG28 U0. W0.\nT0606\nG96 S120 M03\nG00 X52. Z-40.\nG01 X8. F0.05\nG00 X52.\nG28 U0. W0.\nM30\n");
+        let (dir, path) = temp_program("partoff.nc", program.as_bytes());
+        let table = dir.path().join("tools.toml");
+        std::fs::write(&table, tools).unwrap();
+        let (out, v) = run_json(&[
+            "run",
+            path.to_str().unwrap(),
+            "--control",
+            "fanuc-a",
+            "--stock",
+            "50x70",
+            "--tools",
+            table.to_str().unwrap(),
+        ]);
+        assert_eq!(v["verdict"], "clean", "Ø{d}: {v:#}");
+        assert_eq!(out.code, 0, "Ø{d}");
+        assert!(
+            v["warnings"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|w| w["code"] == "LS-LATER-CUT" && w["line"] == 19),
+            "Ø{d}: {v:#}"
+        );
+    }
+}
+
 /// A Haas G71/G70 whose shape ends with the return to the start (`N20 G00 G40 Z2.54`,
 /// docs/field-rules.md §3) and a W allowance: the G70's intended shape kept the return, and
 /// its run back along the bar's diameter closed the part against the roughed stock, leaving

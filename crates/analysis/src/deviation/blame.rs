@@ -45,7 +45,8 @@ pub(super) fn blame(
                 &boxes[g],
                 &sweep,
                 edge_sliver(&gouges[g].shape),
-            ) {
+            ) && thicker_than(&gouges[g].shape, &sweep, chord_tol)
+            {
                 gouges[g].made_by = Some(i);
                 unnamed.retain(|&u| u != g);
             }
@@ -137,6 +138,26 @@ fn may_sweep_over(bb: &Rect, seg: &Segment, outline: &Outline) -> bool {
 /// the face above a drilled hole was named the hole's maker, or not, with the bar's length.
 pub(super) fn edge_sliver(region: &Shape) -> f64 {
     (1e-6 * super::perimeter(region)).max(SLIVER)
+}
+
+/// Whether the overlap of the convex `sweep` parts with `region` is thicker than `min`
+/// (mm, 2·area/perimeter) in some piece. A finishing pass along a surface overlaps a gouge
+/// that reaches that surface by the removal's discretisation only (a band 5·10⁻⁵ mm thick
+/// along a finished Ø38.2, where a part-off slot at the shape's end joined it): on some
+/// diameters that band was more than a sliver of area, and the G70's last move, not the
+/// blade, was named the slot's maker.
+fn thicker_than(region: &Shape, sweep: &[Vec<P>], min: f64) -> bool {
+    let parts: Vec<Shape> = sweep
+        .iter()
+        .map(|p| Shape {
+            outer: p.clone(),
+            holes: vec![],
+        })
+        .collect();
+    let swept = boolean(&parts, &[], BoolOp::Union);
+    boolean(std::slice::from_ref(region), &swept, BoolOp::Intersection)
+        .iter()
+        .any(|piece| 2.0 * area(std::slice::from_ref(piece)) > min * super::perimeter(piece))
 }
 
 /// Less overlap than this is no overlap, mm².
