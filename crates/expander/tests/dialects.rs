@@ -337,6 +337,27 @@ fn m_codes_by_control_with_one_warning_per_unknown_code() {
         "M3 S500\nG0 X20 Z2\nM19\nG1 Z-5 F0.1\nM30\n",
     );
     assert!(codes(&tp.warnings).contains(&"LS-SPINDLE-STOPPED"));
+    // A Haas G84 starts the spindle itself (Haas's G84 page; field run 3: a course program
+    // stops it with M05 before tapping): no warning, and cutting after it still is. A
+    // FANUC G84 does not.
+    let tap = "G21 G99 M5 S200\nG0 X0 Z5\nG84 X0 Z-10 R2 F1.25\nG80\n";
+    let tp = run_on(Control::Haas, &format!("{tap}M30\n"));
+    assert!(
+        !codes(&tp.warnings).contains(&"LS-SPINDLE-STOPPED"),
+        "{:?}",
+        tp.warnings
+    );
+    let tp = run_on(
+        Control::Haas,
+        &format!("{tap}G0 X20 Z2\nG1 Z-5 F0.1\nM30\n"),
+    );
+    assert!(codes(&tp.warnings).contains(&"LS-SPINDLE-STOPPED"));
+    let tp = run_on(Control::FanucA, &format!("{tap}M30\n").replace("R2", "R-3"));
+    assert!(
+        codes(&tp.warnings).contains(&"LS-SPINDLE-STOPPED"),
+        "{:?}",
+        tp.warnings
+    );
     // Haas M11 opens the chuck: cutting after it is warned.
     let tp = run_on(
         Control::Haas,

@@ -59,7 +59,15 @@ impl Interp<'_> {
         self.out.warnings.append(&mut out.warnings);
         self.out.dwell_s += out.dwell_s;
         self.record_intended(std::mem::take(&mut out.intended), b.span);
-        self.emit_cycle(out, b.span)
+        // a Haas G84 starts the spindle itself ("it is not necessary to start the spindle
+        // CW before this canned cycle", Haas's G84 page): no spindle-stopped warning, and
+        // the spindle is as the program left it afterwards
+        let haas_tap = code == crate::codes::G84 && self.machine.control == crate::Control::Haas;
+        let spindle = self.spindle_on;
+        self.spindle_on |= haas_tap;
+        let flow = self.emit_cycle(out, b.span);
+        self.spindle_on = spindle;
+        flow
     }
 
     /// The shapes a cycle intends, for the analysis. G73 then G70 on one shape hand it over
