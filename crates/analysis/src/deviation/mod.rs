@@ -234,7 +234,7 @@ fn in_later_contour(
 /// Whether `g` is a hole on the axis and `intent` claims it only as the core under its
 /// profile: an OD contour's part runs down to the axis and states nothing of a centre hole
 /// or a drilled core, drilled before it as well as after (face, centre drill, turn). An ID
-/// contour's part stops at its bore: a drill too large for it stays a gouge.
+/// contour's part stops at its bore: what a drill cuts of it is judged as before.
 fn core_hole(g: &Finding, intent: &Intent) -> bool {
     const ON_AXIS: f64 = 1e-6;
     let reaches_axis = |ring: &[P]| ring.iter().any(|p| p[1] <= ON_AXIS);

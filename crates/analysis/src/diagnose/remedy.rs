@@ -232,9 +232,6 @@ fn num(v: f64) -> String {
     format!("{v:.3}").trim_end_matches('0').to_string()
 }
 
-/// Tools with more trailing clearance than `flank` (plus 1°) for the same tip: the table's
-/// turning tools first, then ISO ones (a 35° V on 93°: 52°; on 72.5°: 72.5°), as
-/// (name, entry fields, clearance).
 /// The ISO 1832 metric nose code nearest the radius `r` (mm): a V insert offered for the
 /// trailing edge keeps the nose the program was written for (an r0.4 for a sharp tool
 /// traded the flank's gouge for the uncompensated nose's 0.4 mm).
@@ -251,6 +248,9 @@ fn nose_code(r: f64) -> String {
     format!("{nearest:02}")
 }
 
+/// Tools with more trailing clearance than `flank` (plus 1°) for the same tip: the table's
+/// turning tools first, then ISO ones (a 35° V on 93°: 52°; on 72.5°: 72.5°; the program's nose), as
+/// (name, entry fields, clearance).
 fn candidates(tools: &ToolTable, t: u32, f: &Facts, flank: f64) -> Vec<(String, String, f64)> {
     let mut out = Vec::new();
     for n in tools.numbers() {
