@@ -6,6 +6,61 @@ use crate::cli::RunArgs;
 use crate::diag;
 use crate::input::{self, Loaded};
 
+/// The program read with `tools`; when it feeds a tool whose tip came from its holder's
+/// hand letter clearly the other way along Z, read again with the tip its feeds give, and
+/// a warning LS-HOLDER-HAND (docs/field-rules.md §14: a left-hand holder mounted upside
+/// down, or behind the centre line with M04, cuts toward the chuck).
+fn load_with_tips(
+    args: &RunArgs,
+    path: &std::path::Path,
+    tools: stock::ToolTable,
+) -> Result<(stock::ToolTable, Loaded), ()> {
+    let loaded = input::load_program(&args.program, path, &tools, args.tool)?;
+    let read = tools.tips_from_use(&loaded.toolpath.segments);
+    if read.is_empty() {
+        return Ok((tools, loaded));
+    }
+    let notes: Vec<expander::Diagnostic> = read
+        .iter()
+        .map(|r| hand_note(r, &tools, &loaded.toolpath.segments))
+        .collect();
+    let tools = tools.with_tips(&read);
+    let mut loaded = input::load_program(&args.program, path, &tools, args.tool)?;
+    loaded.toolpath.warnings.extend(notes);
+    Ok((tools, loaded))
+}
+
+/// The warning of a tool read with the other tip than its holder's hand gives.
+fn hand_note(
+    r: &stock::TipFromUse,
+    tools: &stock::ToolTable,
+    segments: &[expander::Segment],
+) -> expander::Diagnostic {
+    let (hand, usual, way) = match r.hand {
+        3 | 2 => ("right-hand", "toward the chuck", "toward the tailstock"),
+        _ => ("left-hand", "toward the tailstock", "toward the chuck"),
+    };
+    let (along, total) = match r.tip {
+        3 | 2 => (r.toward_chuck, r.toward_chuck + r.toward_tailstock),
+        _ => (r.toward_tailstock, r.toward_chuck + r.toward_tailstock),
+    };
+    let name = tools
+        .designation(r.t)
+        .map_or(String::new(), |d| format!(" ({d})"));
+    expander::Diagnostic::new(
+        segments[r.first].span,
+        "LS-HOLDER-HAND",
+        format!(
+            "T{:02}{name}: a {hand} holder cuts {usual} mounted upright with M03 (tip {}), but the program feeds it {way} ({along:.1} of {total:.1} mm along Z): read as tip {}, as the holder cuts mounted upside down or behind the centre line with M04",
+            r.t, r.hand, r.tip
+        ),
+        format!(
+            "state the tip in the tool table: tip = {} (or check the holder's hand and the spindle's direction)",
+            r.tip
+        ),
+    )
+}
+
 /// Chord tolerance of a `--target` profile's arcs, mm: as fine as a DXF drawing's arcs are
 /// read (`tooling_iso::dxf_io::ReadOptions`), so the intended part drawn and written back
 /// with `--dxf` stays within 0.0005 mm of the true arcs.
@@ -26,7 +81,7 @@ impl Job {
     pub(crate) fn load(args: &RunArgs, path: &std::path::Path, batch: bool) -> Result<Self, ()> {
         let blank = input::load_blank(args)?;
         let tools = input::load_tools(args.tools.as_deref())?;
-        let Ok(loaded) = input::load_program(&args.program, path, &tools, args.tool) else {
+        let Ok((tools, loaded)) = load_with_tips(args, path, tools) else {
             if batch {
                 println!(
                     "{}: UNUSABLE — not simulated (see the message above)",

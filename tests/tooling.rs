@@ -36,3 +36,58 @@ fn cnmg_in_pclnr_cuts_seed_004_like_the_explicit_tool() {
     assert_eq!(iso, explicit);
     assert!(iso["removed_area_mm2"].as_f64().unwrap() > 50.0);
 }
+
+/// Field run 3 (a public bush whose setup sheet names PCLNL and SVJBL holders): a left-hand
+/// holder gives tip 4, toward the tailstock, but the holder cuts toward the chuck mounted
+/// upside down or behind the centre line with M04, and the tip is the program's. A G71/G70
+/// that feeds it toward the chuck made 8 certain crashes; the tip is now read from the
+/// program (3), with a warning LS-HOLDER-HAND at its first feed that way: CLEAN, as with
+/// `tip = 3` stated. A stated `tip = 4` is kept (the crashes stay), and a right-hand holder
+/// fed toward the chuck gets no warning.
+#[test]
+fn a_left_hand_holder_fed_toward_the_chuck_is_read_as_tip_3() {
+    let program = "O0116\nG21 G40 G99 G18\nT0101\nG96 S200 M03\nG50 S3000\nG00 X42. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20.\nX30.\nZ-35.\nN20 X42.\nG70 P10 Q20 F0.1\nG28 U0. W0.\nM30\n";
+    let (dir, path) = temp_program("lh.nc", program.as_bytes());
+    let run = |holder: &str, tip: &str| {
+        let table = dir.path().join("tools.toml");
+        let entry = format!(
+            "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"{holder}\"\n{tip}"
+        );
+        std::fs::write(&table, entry).unwrap();
+        let json = dir.path().join("r.json");
+        let out = latsim(&[
+            "run",
+            path.to_str().unwrap(),
+            "--control",
+            "fanuc-a",
+            "--stock",
+            "40x60",
+            "--tools",
+            table.to_str().unwrap(),
+            "--json",
+            json.to_str().unwrap(),
+        ]);
+        let v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap();
+        let hand: Vec<serde_json::Value> = v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|w| w["code"] == "LS-HOLDER-HAND")
+            .cloned()
+            .collect();
+        (out.code, v["verdict"].clone(), hand)
+    };
+    let (code, verdict, hand) = run("PCLNL 2525M12", "");
+    assert_eq!((code, verdict.as_str()), (0, Some("clean")), "{hand:?}");
+    assert_eq!(hand.len(), 1);
+    assert_eq!(hand[0]["line"], 8);
+    let message = hand[0]["message"].as_str().unwrap();
+    assert!(message.contains("read as tip 3"), "{message}");
+    let (code, verdict, hand) = run("PCLNL 2525M12", "tip = 4\n");
+    assert_eq!((code, verdict.as_str()), (1, Some("crash")));
+    assert!(hand.is_empty());
+    let (code, verdict, hand) = run("PCLNR 2525M12", "");
+    assert_eq!((code, verdict.as_str()), (0, Some("clean")));
+    assert!(hand.is_empty());
+}

@@ -6,12 +6,14 @@
 
 mod bodies;
 mod facts;
+mod hand;
 mod kinds;
 mod outline_choice;
 mod schema;
 
 use crate::StockError;
 pub use bodies::{Body, HolderSize};
+pub use hand::TipFromUse;
 pub use kinds::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool};
 pub(crate) use outline_choice::hint_key;
 
@@ -30,6 +32,8 @@ pub struct ToolTable {
     noses: Vec<u32>,
     /// The grooving entries whose width the table states.
     widths: Vec<u32>,
+    /// The turning entries whose tip their holder's hand letter gave (no `tip` stated).
+    hand_tips: Vec<u32>,
 }
 
 impl ToolTable {
@@ -47,6 +51,7 @@ impl ToolTable {
             designations: Vec::new(),
             sizes: Vec::new(),
             assumed: Vec::new(),
+            hand_tips: Vec::new(),
         }
     }
 
@@ -69,11 +74,13 @@ impl ToolTable {
         out.assumed.retain(|n| *n != t);
         out.noses.retain(|n| *n != t);
         out.widths.retain(|n| *n != t);
+        out.hand_tips.retain(|n| *n != t);
         out.designations.extend(one.designations);
         out.sizes.extend(one.sizes);
         out.assumed.extend(one.assumed);
         out.noses.extend(one.noses);
         out.widths.extend(one.widths);
+        out.hand_tips.extend(one.hand_tips);
         Ok(out)
     }
 
@@ -95,6 +102,11 @@ impl ToolTable {
             widths: entries
                 .iter()
                 .filter(|e| e.width_stated)
+                .map(|e| e.t)
+                .collect(),
+            hand_tips: entries
+                .iter()
+                .filter(|e| e.tip_from_hand)
                 .map(|e| e.t)
                 .collect(),
             tools: entries.into_iter().map(|e| (e.t, e.tool)).collect(),

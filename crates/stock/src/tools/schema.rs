@@ -60,6 +60,8 @@ pub(super) struct Entry {
     pub(super) nose_stated: bool,
     /// Whether a grooving entry states its width.
     pub(super) width_stated: bool,
+    /// Whether a turning entry's tip is its holder's hand letter's (a holder, no `tip`).
+    pub(super) tip_from_hand: bool,
 }
 
 /// The table's entries in file order; a T number given twice is an error.
@@ -85,6 +87,7 @@ pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
             nose_stated: raw.kind == "turning"
                 && (raw.nose_radius.is_some() || designation.is_some()),
             width_stated: raw.kind == "grooving" && raw.width.is_some(),
+            tip_from_hand: raw.kind == "turning" && raw.holder.is_some() && raw.tip.is_none(),
             tool,
             designation,
             size,
