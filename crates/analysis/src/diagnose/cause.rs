@@ -270,29 +270,38 @@ fn other_owner(g: &Finding, intents: &[Intent], seg: &Segment, i: usize) -> Opti
         .map(|o| (o.tool, o.finish))
 }
 
-/// The steepness of the intended part's boundary nearest `p`, degrees from the Z axis (0: a
-/// diameter, 90: a face).
-fn flank_deg(intents: &[Intent], p: P) -> Option<f64> {
-    let mut best: Option<(f64, f64)> = None;
-    for it in intents {
-        for (line, closed) in &it.outline {
+/// Every edge of the intended parts' outlines (a closed ring's closing edge too).
+fn outline_edges(intents: &[Intent]) -> impl Iterator<Item = (P, P)> + '_ {
+    intents
+        .iter()
+        .flat_map(|it| &it.outline)
+        .flat_map(|(line, closed)| {
             let n = line.len();
             let edges = if *closed { n } else { n.saturating_sub(1) };
-            for k in 0..edges {
-                let (a, b) = (line[k], line[(k + 1) % n]);
-                let d = geom::flat::segment_distance(p, a, b);
-                let dz = (b[0] - a[0]).abs();
-                let dr = (b[1] - a[1]).abs();
-                if dz + dr > 0.0 && best.is_none_or(|(bd, _)| d < bd) {
-                    best = Some((d, dr.atan2(dz).to_degrees()));
-                }
-            }
+            (0..edges).map(move |k| (line[k], line[(k + 1) % n]))
+        })
+}
+
+/// The steepness of the edge from `a` to `b`, degrees from the Z axis (0: a diameter, 90: a
+/// face); `None` for an edge of no length.
+fn steepness(a: P, b: P) -> Option<f64> {
+    let (dz, dr) = ((b[0] - a[0]).abs(), (b[1] - a[1]).abs());
+    (dz + dr > 0.0).then(|| dr.atan2(dz).to_degrees())
+}
+
+/// The steepness ([`steepness`]) of the intended part's boundary nearest `p`.
+fn flank_deg(intents: &[Intent], p: P) -> Option<f64> {
+    let mut best: Option<(f64, f64)> = None;
+    for (a, b) in outline_edges(intents) {
+        let d = geom::flat::segment_distance(p, a, b);
+        if let Some(deg) = steepness(a, b).filter(|_| best.is_none_or(|(bd, _)| d < bd)) {
+            best = Some((d, deg));
         }
     }
     best.map(|(_, deg)| deg)
 }
 
-/// The steepness (as [`flank_deg`]) of the steepest edge of the intended part that the
+/// The steepness ([`steepness`]) of the steepest edge of the intended part that the
 /// region `shape` lies against: the flank a trailing edge could not descend. Its deepest
 /// point is often nearest the diameter above the flank (a D insert's wedge under the
 /// shoulder): that diameter is 0°, the flank 83°. `None` when the region touches no edge.
@@ -300,29 +309,14 @@ fn steepest_touched(intents: &[Intent], shape: &stock::Shape) -> Option<f64> {
     const TOUCH: f64 = 1e-3;
     let pts = &shape.outer;
     let bbox = geom::Rect::of(pts.iter().map(|&p| geom::Pt::from(p))).grown(TOUCH);
-    let mut best: Option<f64> = None;
-    for it in intents {
-        for (line, closed) in &it.outline {
-            let n = line.len();
-            let edges = if *closed { n } else { n.saturating_sub(1) };
-            for k in 0..edges {
-                let (a, b) = (line[k], line[(k + 1) % n]);
-                let (dz, dr) = ((b[0] - a[0]).abs(), (b[1] - a[1]).abs());
-                let edge_box = geom::Rect::of([geom::Pt::from(a), geom::Pt::from(b)]);
-                if dz + dr == 0.0 || !edge_box.intersects(&bbox) {
-                    continue;
-                }
-                let touches = pts
-                    .iter()
-                    .any(|&p| geom::flat::segment_distance(p, a, b) <= TOUCH);
-                let deg = dr.atan2(dz).to_degrees();
-                if touches && best.is_none_or(|d| deg > d) {
-                    best = Some(deg);
-                }
-            }
-        }
-    }
-    best
+    outline_edges(intents)
+        .filter(|&(a, b)| geom::Rect::of([geom::Pt::from(a), geom::Pt::from(b)]).intersects(&bbox))
+        .filter(|&(a, b)| {
+            pts.iter()
+                .any(|&p| geom::flat::segment_distance(p, a, b) <= TOUCH)
+        })
+        .filter_map(|(a, b)| steepness(a, b))
+        .reduce(f64::max)
 }
 
 fn trailing(g: &Finding, intents: &[Intent], f: &Facts, seg: &Segment) -> Cause {
