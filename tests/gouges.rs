@@ -19,6 +19,33 @@ fn a(p: &str) -> String {
     asset(p).to_str().unwrap().to_string()
 }
 
+/// `program` run as `name` under FANUC system A on a `stock` bar with the tool table `tools`.
+fn run_fanuc(name: &str, program: &str, tools: &str, stock: &str) -> (Out, serde_json::Value) {
+    let (dir, path) = temp_program(name, program.as_bytes());
+    let table = dir.path().join("tools.toml");
+    std::fs::write(&table, tools).unwrap();
+    run_json(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        stock,
+        "--tools",
+        table.to_str().unwrap(),
+    ])
+}
+
+/// The report's warnings of this code.
+fn warnings<'a>(v: &'a serde_json::Value, code: &str) -> Vec<&'a serde_json::Value> {
+    v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == code)
+        .collect()
+}
+
 /// O0008 with the blade referenced at the wrong corner: the groove lands a blade width
 /// (4 mm) toward +Z — a gouge along the 45° flank and a leftover along the 30° flank, each
 /// 4 mm × 10 mm = 40 mm², 4·sin 45° and 4·sin 30° deep.
@@ -349,28 +376,11 @@ fn a_groove_cut_after_the_finish_by_another_tool_is_its_own() {
 fn a_hole_drilled_below_the_faced_end_is_the_drills_whatever_the_bar() {
     let program = "O0703\nG21 G40 G99\nT0101\nG50 S3000\nG96 S200 M03\nG00 X44. Z0.\nG01 X-1.6 F0.15\nG00 Z2.\nG00 X42.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.3\nN10 G00 X14.\nG01 X20. Z-1. F0.1\nZ-20.\nN20 X42.\nG70 P10 Q20\nG28 U0.\nG28 W0.\nT0404\nG97 S1200 M03\nG00 X22. Z5.\nG76 P010060 Q50 R0.05\nG76 X18.16 Z-17. P920 Q300 F1.5\nG00 X44.\nG28 U0.\nG28 W0.\nT0505\nG97 S1200 M03\nG00 X0. Z2.\nG74 R0.5\nG74 Z-15. Q3000 F0.08\nG00 Z5.\nG28 U0.\nG28 W0.\nM30\n";
     let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\ntip_flat = 0.0\n[[tool]]\nt = 5\nkind = \"drill\"\ndiameter = 8.0\npoint_angle = 118\nreach = 60.0\n";
-    let (dir, path) = temp_program("o0703.nc", program.as_bytes());
-    let table = dir.path().join("tools.toml");
-    std::fs::write(&table, tools).unwrap();
     for stock in ["40x60", "40x70"] {
-        let (out, v) = run_json(&[
-            "run",
-            path.to_str().unwrap(),
-            "--control",
-            "fanuc-a",
-            "--stock",
-            stock,
-            "--tools",
-            table.to_str().unwrap(),
-        ]);
+        let (out, v) = run_fanuc("o0703.nc", program, tools, stock);
         assert_eq!(v["verdict"], "clean", "{stock}: {v:#}");
         assert_eq!(out.code, 0, "{stock}");
-        let later: Vec<&serde_json::Value> = v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .filter(|w| w["code"] == "LS-LATER-CUT")
-            .collect();
+        let later = warnings(&v, "LS-LATER-CUT");
         assert_eq!(later.len(), 1, "{stock}: {v:#}");
         assert!(later[0]["message"]
             .as_str()
@@ -395,28 +405,10 @@ fn a_hole_drilled_before_the_finish_is_the_drills() {
     let run = |name: &str, body: String| {
         let program =
             format!("O0106\nG21 G40 G99 G18\nG28 U0. W0.\nT0101\nG96 S200 M03\n{body}M30\n");
-        let (dir, path) = temp_program(name, program.as_bytes());
-        let table = dir.path().join("tools.toml");
-        std::fs::write(&table, tools).unwrap();
-        let stock = ["--control", "fanuc-a", "--stock", "40x60"];
-        let (out, v) = run_json(
-            &[
-                &["run", path.to_str().unwrap()],
-                &stock[..],
-                &["--tools", table.to_str().unwrap()],
-            ]
-            .concat(),
-        );
+        let (out, v) = run_fanuc(name, &program, tools, "40x60");
         (out.code, v)
     };
-    let later = |v: &serde_json::Value| {
-        v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .filter(|w| w["code"] == "LS-LATER-CUT")
-            .count()
-    };
+    let later = |v: &serde_json::Value| warnings(v, "LS-LATER-CUT").len();
     for (name, body) in [
         (
             "rough-drill-finish.nc",
@@ -450,27 +442,11 @@ fn a_part_off_at_the_shapes_end_is_the_blades_whatever_the_diameter() {
     let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 6\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 25.0\n";
     for d in ["38.0", "38.08", "38.1", "38.2", "44.7"] {
         let program = format!("O0115\nG21 G40 G99 G18\nT0101\nG96 S200 M03\nG50 S3000\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20.\nX{d}\nZ-40.\nN20 X52.\nG70 P10 Q20 F0.1\nG28 U0. W0.\nT0606\nG96 S120 M03\nG00 X52. Z-40.\nG01 X8. F0.05\nG00 X52.\nG28 U0. W0.\nM30\n");
-        let (dir, path) = temp_program("partoff.nc", program.as_bytes());
-        let table = dir.path().join("tools.toml");
-        std::fs::write(&table, tools).unwrap();
-        let (out, v) = run_json(&[
-            "run",
-            path.to_str().unwrap(),
-            "--control",
-            "fanuc-a",
-            "--stock",
-            "50x70",
-            "--tools",
-            table.to_str().unwrap(),
-        ]);
+        let (out, v) = run_fanuc("partoff.nc", &program, tools, "50x70");
         assert_eq!(v["verdict"], "clean", "Ø{d}: {v:#}");
         assert_eq!(out.code, 0, "Ø{d}");
         assert!(
-            v["warnings"]
-                .as_array()
-                .unwrap()
-                .iter()
-                .any(|w| w["code"] == "LS-LATER-CUT" && w["line"] == 19),
+            warnings(&v, "LS-LATER-CUT").iter().any(|w| w["line"] == 19),
             "Ø{d}: {v:#}"
         );
     }
