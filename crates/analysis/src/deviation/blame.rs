@@ -154,8 +154,8 @@ fn thicker_than(region: &Shape, sweep: &[Vec<P>], min: f64) -> bool {
             holes: vec![],
         })
         .collect();
-    let swept = boolean(&parts, &[], BoolOp::Union);
-    boolean(std::slice::from_ref(region), &swept, BoolOp::Intersection)
+    // the parts overlap one another: the boolean's non-zero rule joins them, as in `overlaps`
+    boolean(&parts, std::slice::from_ref(region), BoolOp::Intersection)
         .iter()
         .any(|piece| 2.0 * area(std::slice::from_ref(piece)) > min * super::perimeter(piece))
 }
