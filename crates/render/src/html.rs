@@ -30,7 +30,7 @@ use crate::layout::{colour, main_window};
 use crate::path::thin_ring;
 use crate::report::{Crash, Diagnostic, Gouge, PathKind, Report, Shape, Snapshot};
 use crate::scale::Bbox;
-use crate::text::{duration, esc, grouped, mm, num, quantity};
+use crate::text::{duration, esc, grouped, mm, num, push_num, quantity};
 
 /// Cap on toolpath points embedded for the slider; beyond it only every k-th move is
 /// listed.
@@ -96,9 +96,12 @@ fn dist2(a: [f64; 2], b: [f64; 2]) -> f64 {
     dz * dz + dr * dr
 }
 
-/// Push `[z, r]` as `z,x` (x = 2r).
+/// Push `[z, r]` as `,z,x` (x = 2r).
 fn push_zx(out: &mut String, p: [f64; 2]) {
-    let _ = write!(out, ",{},{}", c4(p[0]), c4(2.0 * p[1]));
+    out.push(',');
+    push_num(out, p[0].clamp(-CLAMP_MM, CLAMP_MM), 4);
+    out.push(',');
+    push_num(out, (2.0 * p[1]).clamp(-CLAMP_MM, CLAMP_MM), 4);
 }
 
 /// All rings of some shapes, thinned with `md` doubled until at most `cap` points remain.
@@ -127,37 +130,45 @@ fn rings_json(out: &mut String, rings: &[Vec<[f64; 2]>]) {
             out.push(',');
         }
         out.push('[');
-        let mut s = String::with_capacity(r.len() * 16);
+        let start = out.len();
         for p in r {
-            push_zx(&mut s, *p);
+            push_zx(out, *p);
         }
-        out.push_str(s.strip_prefix(',').unwrap_or(&s));
+        // the first point's comma
+        if out.len() > start {
+            out.remove(start);
+        }
         out.push(']');
     }
     out.push(']');
 }
 
 /// The toolpath chosen for the slider: per move, its finite points with interior points
-/// closer than `md` merged; every `stride`-th move (and the last) when over the cap.
+/// closer than `md` merged ([`thin_move`]); every `stride`-th move (and the last) when over
+/// the cap.
 struct Moves {
-    /// `(move number, kept points)`.
-    list: Vec<(usize, Vec<[f64; 2]>)>,
+    /// The moves listed, 1-based, ascending.
+    list: Vec<usize>,
     /// 1 when every move is listed.
     stride: usize,
+    /// The merge distance, squared.
+    md2: f64,
 }
 
-fn thin_move(pts: &[[f64; 2]], md2: f64) -> Vec<[f64; 2]> {
-    let fin: Vec<[f64; 2]> = pts.iter().copied().filter(finite).collect();
-    let n = fin.len();
-    let mut kept: Vec<[f64; 2]> = Vec::with_capacity(n.min(64));
-    for (i, p) in fin.iter().enumerate() {
-        let last = i + 1 == n;
-        match kept.last() {
-            Some(l) if !last && dist2(*l, *p) <= md2 => {}
-            _ => kept.push(*p),
+/// Calls `keep` with the finite points of `pts` that the slider shows: the first and the
+/// last, and each one farther than `md2` (squared) from the one kept before it.
+fn thin_move(pts: &[[f64; 2]], md2: f64, mut keep: impl FnMut([f64; 2])) {
+    let last = pts.iter().rposition(finite);
+    let mut kept: Option<[f64; 2]> = None;
+    for (i, p) in pts.iter().enumerate().filter(|(_, p)| finite(p)) {
+        match kept {
+            Some(l) if Some(i) != last && dist2(l, *p) <= md2 => {}
+            _ => {
+                keep(*p);
+                kept = Some(*p);
+            }
         }
     }
-    kept
 }
 
 fn choose_moves(report: &Report, md: f64) -> Moves {
@@ -167,7 +178,11 @@ fn choose_moves(report: &Report, md: f64) -> Moves {
     let counts: Vec<usize> = report
         .toolpath
         .iter()
-        .map(|l| thin_move(&l.points, md2).len())
+        .map(|l| {
+            let mut c = 0;
+            thin_move(&l.points, md2, |_| c += 1);
+            c
+        })
         .collect();
     let total: usize = counts.iter().sum();
     let mut stride = 1usize;
@@ -187,14 +202,11 @@ fn choose_moves(report: &Report, md: f64) -> Moves {
             stride = (stride + (stride / 4).max(2)) | 1;
         }
     }
-    let list = report
-        .toolpath
-        .iter()
-        .enumerate()
-        .filter(|(i, _)| i % stride == 0 || i + 1 == n)
-        .map(|(i, l)| (i + 1, thin_move(&l.points, md2)))
+    let list = (0..n)
+        .filter(|i| i % stride == 0 || i + 1 == n)
+        .map(|i| i + 1)
         .collect();
-    Moves { list, stride }
+    Moves { list, stride, md2 }
 }
 
 /// The drawing's window in `[z, r]`: the report picture's window, upper half plus a
@@ -272,7 +284,7 @@ fn data_json(report: &Report) -> (String, Moves) {
     out.push_str("],\"snapshots\":");
     snapshots_json(&mut out, &report.snapshots, md);
     out.push_str(",\"path\":[\n");
-    for (j, (i, pts)) in moves.list.iter().enumerate() {
+    for (j, &i) in moves.list.iter().enumerate() {
         if j > 0 {
             out.push_str(",\n");
         }
@@ -283,9 +295,7 @@ fn data_json(report: &Report) -> (String, Moves) {
             PathKind::Thread => 2,
         };
         let _ = write!(out, "[{i},{kind},{}", l.line);
-        for p in pts {
-            push_zx(&mut out, *p);
-        }
+        thin_move(&l.points, moves.md2, |p| push_zx(&mut out, p));
         out.push(']');
     }
     out.push_str("]}");
@@ -330,8 +340,12 @@ fn snapshots_json(out: &mut String, snaps: &[Snapshot], md: f64) {
 
 /// Make JSON safe inside a `<script>` element: `<` only occurs in strings, where
 /// `\u003c` means the same.
-fn script_safe(json: &str) -> String {
-    json.replace('<', "\\u003c")
+fn script_safe(json: String) -> String {
+    if json.contains('<') {
+        json.replace('<', "\\u003c")
+    } else {
+        json
+    }
 }
 
 /// A `<tr>` of label and value (value already escaped).
@@ -694,7 +708,7 @@ pub(crate) fn page_head(out: &mut String, title: &str, verdict: &str, colour: &s
 /// The whole page, showing `svg`, the report picture of `report`.
 pub(crate) fn html(report: &Report, svg: &str) -> String {
     let (data, moves) = data_json(report);
-    let data = script_safe(&data);
+    let data = script_safe(data);
     let n = report.toolpath.len();
 
     let mut title = if report.program.is_empty() {
@@ -827,7 +841,7 @@ mod tests {
     #[test]
     fn json_is_made_script_safe() {
         assert_eq!(
-            script_safe(r#"{"a":"</script>"}"#),
+            script_safe(r#"{"a":"</script>"}"#.to_string()),
             r#"{"a":"\u003c/script>"}"#
         );
     }

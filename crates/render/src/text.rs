@@ -5,6 +5,8 @@
 //! (Chinese, Japanese, Korean, full-width forms: 1 em in the CJK font) counts as two
 //! columns, 1.2 em; lengths below are in such columns.
 
+use std::fmt::Write as _;
+
 /// Average advance of one character in em for `DejaVu Sans` (mixed text is ~0.55).
 const EM_PER_CHAR: f64 = 0.6;
 
@@ -138,60 +140,80 @@ pub(crate) fn wrap(s: &str, max: usize, max_lines: usize) -> Vec<String> {
 /// Format a number for SVG path data: up to `decimals` decimals, trailing zeros trimmed,
 /// never `-0`.
 pub(crate) fn num(v: f64, decimals: usize) -> String {
-    if !v.is_finite() {
-        return "0".to_string();
-    }
-    if let Some(s) = num_by_integer(v, decimals) {
-        return s;
-    }
-    let mut s = format!("{v:.decimals$}");
-    if s.contains('.') {
-        while s.ends_with('0') {
-            s.pop();
-        }
-        if s.ends_with('.') {
-            s.pop();
-        }
-    }
-    if s == "-0" {
-        s = "0".to_string();
-    }
+    let mut s = String::with_capacity(24);
+    push_num(&mut s, v, decimals);
     s
 }
 
-/// [`num`] by integer arithmetic, for the millions of toolpath coordinates of a long
-/// program (`format!` was 9 % of a 10⁶-move HTML report): `v · 10^decimals` rounded, when
-/// that product is below 10¹² (its rounding error is then at most 1.2·10⁻⁴) and its
-/// fraction is not within 10⁻³ of one half, so the rounding cannot differ from that of the
-/// exact decimal value `format!` rounds. `None` otherwise (and the caller formats).
-fn num_by_integer(v: f64, decimals: usize) -> Option<String> {
+/// Append [`num`]`(v, decimals)` to `out`, without a string of its own: the millions of
+/// toolpath coordinates of a long program's HTML data went through a `String` and
+/// `format!` each (11 % of a 10⁵-move contour's HTML-only run).
+pub(crate) fn push_num(out: &mut String, v: f64, decimals: usize) {
+    if !v.is_finite() {
+        out.push('0');
+    } else if !push_num_by_integer(out, v, decimals) {
+        let start = out.len();
+        let _ = write!(out, "{v:.decimals$}");
+        if out[start..].contains('.') {
+            let trimmed = out.trim_end_matches('0').trim_end_matches('.').len();
+            out.truncate(trimmed);
+        }
+        if &out[start..] == "-0" {
+            out.truncate(start);
+            out.push('0');
+        }
+    }
+}
+
+/// [`push_num`] by integer arithmetic: `v · 10^decimals` rounded, when that product is
+/// below 10¹² (its rounding error is then at most 1.2·10⁻⁴) and its fraction is not within
+/// 10⁻³ of one half, so the rounding cannot differ from that of the exact decimal value
+/// `format!` rounds. `false` (nothing written) otherwise, and the caller formats.
+fn push_num_by_integer(out: &mut String, v: f64, decimals: usize) -> bool {
     const POW10: [f64; 7] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6];
-    let scale = *POW10.get(decimals)?;
+    let Some(&scale) = POW10.get(decimals) else {
+        return false;
+    };
     let scaled = v * scale;
     if scaled.abs() >= 1e12 || ((scaled - scaled.trunc()).abs() - 0.5).abs() < 1e-3 {
-        return None;
+        return false;
     }
     let r = scaled.round() as i64;
-    let unit = scale as i64;
-    let (whole, mut frac) = (
-        r.unsigned_abs() / unit as u64,
-        r.unsigned_abs() % unit as u64,
-    );
-    let mut s = String::with_capacity(24);
-    if r < 0 {
-        s.push('-');
-    }
-    s.push_str(&whole.to_string());
+    let unit = scale as u64;
+    let (whole, mut frac) = (r.unsigned_abs() / unit, r.unsigned_abs() % unit);
+    // at most 13 digits, a sign and a point
+    let mut buf = [0u8; 24];
+    let mut at = buf.len();
+    let mut digits = decimals;
     if frac > 0 {
-        let mut digits = decimals;
         while frac % 10 == 0 {
             frac /= 10;
             digits -= 1;
         }
-        s.push('.');
-        s.push_str(&format!("{frac:0digits$}"));
+        for _ in 0..digits {
+            at -= 1;
+            buf[at] = b'0' + (frac % 10) as u8;
+            frac /= 10;
+        }
+        at -= 1;
+        buf[at] = b'.';
     }
-    Some(s)
+    let mut w = whole;
+    loop {
+        at -= 1;
+        buf[at] = b'0' + (w % 10) as u8;
+        w /= 10;
+        if w == 0 {
+            break;
+        }
+    }
+    if r < 0 {
+        at -= 1;
+        buf[at] = b'-';
+    }
+    // ASCII digits, sign and point only
+    out.push_str(std::str::from_utf8(&buf[at..]).unwrap_or("0"));
+    true
 }
 
 /// Format a tick label: `decimals` fixed, with a typographic minus.
@@ -326,7 +348,7 @@ mod tests {
             for v in [v, -v, v * 1e-3, 0.0, -0.0, 1e-12, -1e-12] {
                 let got = num(v, d);
                 assert_eq!(got, slow(v, d), "{v:e} with {d} decimals");
-                fast_paths += usize::from(num_by_integer(v, d).is_some());
+                fast_paths += usize::from(push_num_by_integer(&mut String::new(), v, d));
             }
         }
         assert!(fast_paths > 2_000_000, "{fast_paths}");
