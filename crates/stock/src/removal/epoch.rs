@@ -154,13 +154,13 @@ impl Strips {
 
     /// The stock as it stands: every strip's tiles joined.
     pub(crate) fn stock(&self, engine: &mut Engine) -> IShapes {
-        let mut parts: Vec<IShapes> = Vec::new();
+        let mut tiles = Vec::new();
         for m in &self.nodes {
             m.lock()
                 .unwrap_or_else(|e| e.into_inner())
-                .gather(&mut parts);
+                .gather(&mut tiles);
         }
-        engine.union(&parts)
+        joined(&tiles, engine)
     }
 
     /// The vertices of the stock and the tiles holding them.
@@ -180,15 +180,34 @@ impl Strips {
         })
     }
 
-    /// The stock of every tile, the strips taken apart.
-    pub(super) fn into_parts(self) -> Vec<IShapes> {
-        let mut parts: Vec<IShapes> = Vec::new();
+    /// The stock of every tile with the tile's box, the strips taken apart.
+    pub(super) fn into_parts(self) -> Vec<(IBox, IShapes)> {
+        let mut parts = Vec::new();
         for m in self.nodes {
             m.into_inner()
                 .unwrap_or_else(|e| e.into_inner())
                 .collect(&mut parts);
         }
         parts
+    }
+}
+
+/// The union of the tiles' stock: stitched along the tile sides where they meet as cut
+/// tiles do, else by the boolean union (a debug build checks the stitch against it).
+pub(super) fn joined(tiles: &[(IBox, IShapes)], engine: &mut Engine) -> IShapes {
+    let union = |engine: &mut Engine| {
+        let parts: Vec<IShapes> = tiles.iter().map(|(_, s)| s.clone()).collect();
+        engine.union(&parts)
+    };
+    match super::stitch::stitch(tiles) {
+        Some(stitched) => {
+            debug_assert!(
+                stitched == union(engine),
+                "the stitch differs from the union"
+            );
+            stitched
+        }
+        None => union(engine),
     }
 }
 

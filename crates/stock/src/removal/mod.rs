@@ -26,6 +26,7 @@
 mod batch;
 mod crash;
 mod epoch;
+mod stitch;
 #[cfg(test)]
 pub(crate) mod tests;
 mod tile;
@@ -208,9 +209,15 @@ fn assemble(
     (grid, engine): (&Grid, &mut Engine),
     warnings: Vec<(usize, String)>,
 ) -> Simulation {
-    let mut parts = strips.into_parts();
-    parts.extend(cuts.fallen.iter().map(|(_, f)| f.clone()));
-    let final_shapes = grid.shapes_to_float(&engine.union(&parts));
+    let tiles = strips.into_parts();
+    let stock = if cuts.fallen.is_empty() {
+        epoch::joined(&tiles, engine)
+    } else {
+        let mut parts: Vec<IShapes> = tiles.into_iter().map(|(_, s)| s).collect();
+        parts.extend(cuts.fallen.iter().map(|(_, f)| f.clone()));
+        engine.union(&parts)
+    };
+    let final_shapes = grid.shapes_to_float(&stock);
     let crashes = crash::merge_fragments(cuts.fragments);
     let removed_area = area(shapes) - area(&final_shapes);
     let removed_volume = revolved_volume(shapes) - revolved_volume(&final_shapes);

@@ -360,10 +360,10 @@ impl Node {
         }
     }
 
-    /// A copy of the stock of every leaf (for a snapshot).
-    pub(super) fn gather(&self, out: &mut Vec<IShapes>) {
+    /// A copy of the stock of every leaf, with the leaf's box (for a snapshot).
+    pub(super) fn gather(&self, out: &mut Vec<(IBox, IShapes)>) {
         match self {
-            Self::Leaf(tile) => out.push(tile.stock.clone()),
+            Self::Leaf(tile) => out.push((tile.rect, tile.stock.clone())),
             Self::Split(children, ..) => {
                 children[0].gather(out);
                 children[1].gather(out);
@@ -371,10 +371,10 @@ impl Node {
         }
     }
 
-    /// The stock of every leaf, the tree taken apart.
-    pub(super) fn collect(self, out: &mut Vec<IShapes>) {
+    /// The stock of every leaf with the leaf's box, the tree taken apart.
+    pub(super) fn collect(self, out: &mut Vec<(IBox, IShapes)>) {
         match self {
-            Self::Leaf(tile) => out.push(tile.stock),
+            Self::Leaf(tile) => out.push((tile.rect, tile.stock)),
             Self::Split(children, ..) => {
                 let [a, b] = *children;
                 a.collect(out);
