@@ -305,25 +305,29 @@ fn join(
 }
 
 /// Removes the points where a ring goes on straight (or back), as the union's output has
-/// none.
+/// none, in one pass: each point is checked against the last one kept, then the ring's
+/// ends against each other. The first point stays first unless it is removed.
 fn drop_collinear(ring: &mut Vec<IPt>) {
-    loop {
-        let n = ring.len();
-        if n < 3 {
-            return;
+    let mut kept: Vec<IPt> = Vec::with_capacity(ring.len());
+    for &p in ring.iter() {
+        while kept.len() >= 2 && !turns(kept[kept.len() - 2], kept[kept.len() - 1], p) {
+            kept.pop();
         }
-        let keep: Vec<bool> = (0..n)
-            .map(|i| turns(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]))
-            .collect();
-        if keep.iter().all(|&k| k) {
-            return;
-        }
-        let mut i = 0;
-        ring.retain(|_| {
-            i += 1;
-            keep[i - 1]
-        });
+        kept.push(p);
     }
+    let mut first = 0;
+    while kept.len() - first >= 3 {
+        let n = kept.len();
+        if !turns(kept[n - 2], kept[n - 1], kept[first]) {
+            kept.pop();
+        } else if !turns(kept[n - 1], kept[first], kept[first + 1]) {
+            first += 1;
+        } else {
+            break;
+        }
+    }
+    kept.drain(..first);
+    *ring = kept;
 }
 
 /// Whether the path `a`, `b`, `c` turns at `b` (does not go on straight or back).
