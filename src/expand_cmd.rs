@@ -56,7 +56,8 @@ pub(crate) fn expand(args: &ExpandArgs) -> u8 {
         crate::diag::print_plain("expand takes one program", "run expand once per program");
         return EXIT_UNUSABLE;
     };
-    let Ok(loaded) = input::load_program(&args.program, path, &tools, None) else {
+    // the tools' tips read from the program's feeds as `run` reads them (LS-HOLDER-HAND)
+    let Ok((_, loaded)) = crate::job::load_with_tips(&args.program, path, tools, None) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);

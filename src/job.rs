@@ -2,7 +2,7 @@
 //! program, the workholding and the intended part. Each reader prints its own message; a
 //! job that cannot be read is not simulated (exit 2).
 
-use crate::cli::RunArgs;
+use crate::cli::{ProgramArgs, RunArgs};
 use crate::diag;
 use crate::input::{self, Loaded};
 
@@ -10,12 +10,13 @@ use crate::input::{self, Loaded};
 /// hand letter clearly the other way along Z, read again with the tip its feeds give, and
 /// a warning LS-HOLDER-HAND (docs/field-rules.md §14: a left-hand holder mounted upside
 /// down, or behind the centre line with M04, cuts toward the chuck).
-fn load_with_tips(
-    args: &RunArgs,
+pub(crate) fn load_with_tips(
+    program: &ProgramArgs,
     path: &std::path::Path,
     tools: stock::ToolTable,
+    start_tool: Option<u32>,
 ) -> Result<(stock::ToolTable, Loaded), ()> {
-    let loaded = input::load_program(&args.program, path, &tools, args.tool)?;
+    let loaded = input::load_program(program, path, &tools, start_tool)?;
     let read = tools.tips_from_use(&loaded.toolpath.segments);
     if read.is_empty() {
         return Ok((tools, loaded));
@@ -25,7 +26,7 @@ fn load_with_tips(
         .map(|r| hand_note(r, &tools, &loaded.toolpath.segments))
         .collect();
     let tools = tools.with_tips(&read);
-    let mut loaded = input::load_program(&args.program, path, &tools, args.tool)?;
+    let mut loaded = input::load_program(program, path, &tools, start_tool)?;
     loaded.toolpath.warnings.extend(notes);
     Ok((tools, loaded))
 }
@@ -81,7 +82,7 @@ impl Job {
     pub(crate) fn load(args: &RunArgs, path: &std::path::Path, batch: bool) -> Result<Self, ()> {
         let blank = input::load_blank(args)?;
         let tools = input::load_tools(args.tools.as_deref())?;
-        let Ok((tools, loaded)) = load_with_tips(args, path, tools) else {
+        let Ok((tools, loaded)) = load_with_tips(&args.program, path, tools, args.tool) else {
             if batch {
                 println!(
                     "{}: UNUSABLE — not simulated (see the message above)",

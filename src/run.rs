@@ -25,7 +25,9 @@ pub(crate) fn check(args: &CheckArgs) -> u8 {
 }
 
 fn check_one(args: &CheckArgs, path: &Path, tools: &stock::ToolTable) -> u8 {
-    let Ok(loaded) = input::load_program(&args.program, path, tools, None) else {
+    // the tools' tips read from the program's feeds as `run` reads them (LS-HOLDER-HAND)
+    let Ok((_, loaded)) = crate::job::load_with_tips(&args.program, path, tools.clone(), None)
+    else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);

@@ -91,3 +91,48 @@ fn a_left_hand_holder_fed_toward_the_chuck_is_read_as_tip_3() {
     assert_eq!((code, verdict.as_str()), (0, Some("clean")));
     assert!(hand.is_empty());
 }
+
+/// `latsim check` and `latsim expand` read a holder's tip from the program's feeds as `run`
+/// does: a left-hand holder fed toward the chuck under G42 expands as with `tip = 3`
+/// stated (its nose compensated to that side), not as the hand's tip 4, and `check` warns
+/// LS-HOLDER-HAND as `run` does.
+#[test]
+fn check_and_expand_read_the_holders_tip_as_run_does() {
+    let program = "O0117\nG21 G40 G99 G18\nT0101\nG96 S200 M03\nG50 S3000\nG00 X42. Z2.\nG42 G00 X20. Z2.\nG01 Z-20. F0.1\nX30.\nZ-35.\nX42.\nG40 G00 X45. Z2.\nM30\n";
+    let (dir, path) = temp_program("lh-g42.nc", program.as_bytes());
+    let with = |tip: &str| {
+        let table = dir.path().join(format!("tools{}.toml", tip.len()));
+        let entry = format!(
+            "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNL 2525M12\"\n{tip}"
+        );
+        std::fs::write(&table, entry).unwrap();
+        let (p, t) = (path.to_str().unwrap(), table.to_str().unwrap());
+        let expand = latsim(&[
+            "expand",
+            p,
+            "--control",
+            "fanuc-a",
+            "--tools",
+            t,
+            "--format",
+            "json",
+        ]);
+        let check = latsim(&["check", p, "--control", "fanuc-a", "--tools", t]);
+        (expand.stdout, check)
+    };
+    let (read, check) = with("");
+    let (stated_3, _) = with("tip = 3\n");
+    let (stated_4, check_4) = with("tip = 4\n");
+    assert_eq!(read, stated_3);
+    assert_ne!(
+        read, stated_4,
+        "tip 4 compensates the nose to the other side"
+    );
+    assert_eq!(check.code, 0, "{}", check.stderr);
+    assert!(check.stderr.contains("LS-HOLDER-HAND"), "{}", check.stderr);
+    assert!(
+        !check_4.stderr.contains("LS-HOLDER-HAND"),
+        "{}",
+        check_4.stderr
+    );
+}
