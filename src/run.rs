@@ -91,29 +91,31 @@ fn render_all(
     targets: &[(PathBuf, &str)],
     dxf_x: crate::cli::DxfXArg,
 ) -> Vec<Result<Vec<u8>, String>> {
-    let picture = targets
-        .iter()
-        .any(|(_, kind)| shows_picture(kind))
-        .then(|| render::Picture::draw(report));
-    let picture = || {
-        picture
-            .as_ref()
-            .expect("drawn for the reports that show it")
-    };
-    let one = |kind: &str| match kind {
-        "svg" => Ok(picture().svg().as_bytes().to_vec()),
-        "json" => Ok(render::json(report).into_bytes()),
-        "html" => Ok(picture().html(report).into_bytes()),
-        "dxf" => crate::cad::section_dxf(report, dxf_x),
-        // "png"
-        _ => picture()
-            .png()
-            .map_err(|e| format!("cannot render the PNG: {e}")),
-    };
+    // the HTML page's data needs no picture: worked out while the picture is drawn
+    let (picture, mut html_data) = std::thread::scope(|s| {
+        let data = targets
+            .iter()
+            .any(|(_, kind)| *kind == "html")
+            .then(|| s.spawn(|| render::HtmlData::of(report)));
+        let picture = targets
+            .iter()
+            .any(|(_, kind)| shows_picture(kind))
+            .then(|| render::Picture::draw(report));
+        let data = data.map(|t| t.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
+        (picture, data)
+    });
     std::thread::scope(|s| {
         let threads: Vec<_> = targets
             .iter()
-            .map(|(_, kind)| s.spawn(|| one(kind)))
+            .map(|(_, kind)| {
+                let data = if *kind == "html" {
+                    html_data.take()
+                } else {
+                    None
+                };
+                let picture = picture.as_ref();
+                s.spawn(move || render_one(report, kind, picture, data, dxf_x))
+            })
             .collect();
         threads
             .into_iter()
@@ -121,6 +123,32 @@ fn render_all(
             .map(|t| t.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
             .collect()
     })
+}
+
+/// One report's bytes, from the picture drawn for it (`svg`, `png`, `html`) and the HTML
+/// page's data worked out beforehand.
+fn render_one(
+    report: &render::Report,
+    kind: &str,
+    picture: Option<&render::Picture>,
+    html_data: Option<render::HtmlData>,
+    dxf_x: crate::cli::DxfXArg,
+) -> Result<Vec<u8>, String> {
+    let picture = || picture.expect("drawn for the reports that show it");
+    match kind {
+        "svg" => Ok(picture().svg().as_bytes().to_vec()),
+        "json" => Ok(render::json(report).into_bytes()),
+        "html" => Ok(match html_data {
+            Some(data) => picture().html_with(report, data),
+            None => picture().html(report),
+        }
+        .into_bytes()),
+        "dxf" => crate::cad::section_dxf(report, dxf_x),
+        // "png"
+        _ => picture()
+            .png()
+            .map_err(|e| format!("cannot render the PNG: {e}")),
+    }
 }
 
 /// Program files to run: the files given, and the program files directly inside the

@@ -706,9 +706,32 @@ pub(crate) fn page_head(out: &mut String, title: &str, verdict: &str, colour: &s
 }
 
 /// The whole page, showing `svg`, the report picture of `report`.
+/// The page's data block, worked out apart from the picture (a long program's toolpath
+/// data is most of the page's work, and needs no picture): escaped, with the slider's
+/// stride.
+pub(crate) struct Data {
+    json: String,
+    stride: usize,
+}
+
+impl Data {
+    pub(crate) fn of(report: &Report) -> Self {
+        let (json, moves) = data_json(report);
+        Self {
+            json: script_safe(json),
+            stride: moves.stride,
+        }
+    }
+}
+
+/// The page of `report`, whose picture is `svg`.
 pub(crate) fn html(report: &Report, svg: &str) -> String {
-    let (data, moves) = data_json(report);
-    let data = script_safe(data);
+    page(report, svg, Data::of(report))
+}
+
+/// The page of `report` from its picture and its data block.
+pub(crate) fn page(report: &Report, svg: &str, data: Data) -> String {
+    let Data { json: data, stride } = data;
     let n = report.toolpath.len();
 
     let mut title = if report.program.is_empty() {
@@ -737,7 +760,7 @@ pub(crate) fn html(report: &Report, svg: &str) -> String {
     solid::section(&mut out, report);
 
     // 4. The move slider.
-    player_section(&mut out, report, n, moves.stride);
+    player_section(&mut out, report, n, stride);
 
     // 5. Tables.
     tables_section(&mut out, report);

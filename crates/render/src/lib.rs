@@ -99,6 +99,24 @@ impl Picture {
     pub fn html(&self, report: &Report) -> String {
         html::html(report, &self.0)
     }
+
+    /// The same page from its data block worked out beforehand ([`HtmlData::of`], on
+    /// another thread while the picture is drawn).
+    pub fn html_with(&self, report: &Report, data: HtmlData) -> String {
+        html::page(report, &self.0, data.0)
+    }
+}
+
+/// The HTML page's data for its move slider (the toolpath, the stock snapshots, the
+/// layers), which needs no picture: for a long program most of the page's work, so a
+/// caller can work it out while the picture is drawn ([`Picture::html_with`]).
+pub struct HtmlData(html::Data);
+
+impl HtmlData {
+    /// The data of `report`'s page.
+    pub fn of(report: &Report) -> Self {
+        Self(html::Data::of(report))
+    }
 }
 
 /// The report as one self-contained HTML page (no network, no external files; works
