@@ -82,15 +82,23 @@ fn shows_picture(kind: &str) -> bool {
     matches!(kind, "svg" | "png" | "html")
 }
 
-/// The bytes of each report `targets` asks for, in its order, each made on a thread of its
-/// own. The picture is drawn once, on this thread, for the SVG, the PNG and the HTML page
-/// that show it (drawn on a new thread, its million-move scratch memory came from a new
-/// malloc arena instead of the memory the run had freed: 252 MiB peak against 181).
-fn render_all(
+/// Why a report was not staged: it could not be made, or not written.
+enum Unstaged {
+    Render(String),
+    Write(String),
+}
+
+/// Each report `targets` asks for, in its order, made and staged on disk
+/// ([`write::stage`]) on a thread of its own, so that the writes and their flushes to disk
+/// overlap. The picture is drawn once, on this thread, for the SVG, the PNG and the HTML
+/// page that show it (drawn on a new thread, its million-move scratch memory came from a
+/// new malloc arena instead of the memory the run had freed: 252 MiB peak against 181).
+fn render_and_stage(
     report: &render::Report,
     targets: &[(PathBuf, &str)],
     dxf_x: crate::cli::DxfXArg,
-) -> Vec<Result<Vec<u8>, String>> {
+    inputs: &[PathBuf],
+) -> Vec<Result<write::Staged, Unstaged>> {
     // the HTML page's data needs no picture: worked out while the picture is drawn
     let (picture, mut html_data) = std::thread::scope(|s| {
         let data = targets
@@ -107,14 +115,18 @@ fn render_all(
     std::thread::scope(|s| {
         let threads: Vec<_> = targets
             .iter()
-            .map(|(_, kind)| {
+            .map(|(path, kind)| {
                 let data = if *kind == "html" {
                     html_data.take()
                 } else {
                     None
                 };
                 let picture = picture.as_ref();
-                s.spawn(move || render_one(report, kind, picture, data, dxf_x))
+                s.spawn(move || {
+                    let bytes =
+                        render_one(report, kind, picture, data, dxf_x).map_err(Unstaged::Render)?;
+                    write::stage(path, &bytes, inputs).map_err(Unstaged::Write)
+                })
             })
             .collect();
         threads
@@ -535,25 +547,25 @@ pub(crate) fn print_over_budget(path: &Path, over: &stock::OverBudget) {
     );
 }
 
-/// Renders every report first, then writes them all to disk, then makes them visible: a
-/// failure anywhere leaves the previous reports as they were (and is printed).
+/// Renders and writes every report to disk, then makes them visible: a failure anywhere
+/// leaves the previous reports as they were (the first, in the targets' order, is printed;
+/// the reports staged are dropped unseen).
 fn write_reports(
     report: &render::Report,
     targets: &[(PathBuf, &'static str)],
     dxf_x: crate::cli::DxfXArg,
     inputs: &[PathBuf],
 ) -> Result<(), ()> {
-    let mut staged = vec![];
-    for ((path, _), bytes) in targets.iter().zip(render_all(report, targets, dxf_x)) {
-        let bytes = bytes.map_err(|e| diag::print_plain(&e, ""))?;
-        let s = write::stage(path, &bytes, inputs).map_err(|e| {
-            diag::print_plain(
+    let staged = render_and_stage(report, targets, dxf_x, inputs)
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| match e {
+            Unstaged::Render(e) => diag::print_plain(&e, ""),
+            Unstaged::Write(e) => diag::print_plain(
                 &e,
                 "choose another output path with --out, --svg, --png, --json or --html",
-            );
+            ),
         })?;
-        staged.push(s);
-    }
     write::commit(staged)
         .map_err(|e| diag::print_plain(&e, "check the output folder: free space, permissions"))
 }
