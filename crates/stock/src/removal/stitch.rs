@@ -51,16 +51,16 @@ pub(crate) fn stitch(tiles: &[(IBox, IShapes)]) -> Option<IShapes> {
             rings.push((&shape[0], *tile));
         }
     }
-    let mut runs_of_cut: Vec<(IPt, IPt, Piece)> = Vec::new();
-    let cancelled = cancelled_edges(&rings, &mut runs_of_cut)?;
+    let mut pieces: Vec<(IPt, IPt, Piece)> = Vec::new();
+    let cancelled = cancelled_edges(&rings, &mut pieces)?;
     let mut out: Vec<Vec<IPt>> = Vec::new();
     for (k, (ring, _)) in rings.iter().enumerate() {
         match cancelled.get(&k) {
             None => out.push(ring.to_vec()),
-            Some(gone) => runs(k, ring, gone, &mut runs_of_cut),
+            Some(gone) => runs(k, ring, gone, &mut pieces),
         }
     }
-    join(&runs_of_cut, &rings, &mut out)?;
+    join(&pieces, &rings, &mut out)?;
     let mut keyed: Vec<((i32, i32), Vec<IPt>)> = Vec::with_capacity(out.len());
     for mut ring in out {
         // as the union starts them: at the point before the lowest-leftmost one, or at that
