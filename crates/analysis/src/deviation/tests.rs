@@ -154,14 +154,14 @@ fn finishing_shape_sides() {
     let blank = [rect(-50.0, 0.0, 0.0, 25.0)];
     let od = Intent::finishing(
         &[[5.0, 30.0], [0.0, 10.0], [-10.0, 10.0], [-10.0, 20.0]],
-        &blank,
+        &only(&blank),
     )
     .unwrap();
     let kept = boolean(&blank, &od.part, BoolOp::Intersection);
     let kept = boolean(&kept, &od.zone, BoolOp::Intersection);
     assert!((area(&kept) - 100.0).abs() < 1e-6, "{}", area(&kept));
     // ID: A below
-    let id = Intent::finishing(&[[5.0, 5.0], [0.0, 12.0], [-10.0, 12.0]], &blank).unwrap();
+    let id = Intent::finishing(&[[5.0, 5.0], [0.0, 12.0], [-10.0, 12.0]], &only(&blank)).unwrap();
     let kept = boolean(&blank, &id.part, BoolOp::Intersection);
     let kept = boolean(&kept, &id.zone, BoolOp::Intersection);
     assert!((area(&kept) - 130.0).abs() < 1e-6, "{}", area(&kept));
@@ -182,6 +182,21 @@ fn within_tolerance_and_outside_the_zone_is_not_a_finding() {
     assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
 }
 
+/// The stock a contour is read against: `began` when its cycle began, `finished` at the
+/// end, on `blank`.
+fn stages<'a>(began: &'a [Shape], finished: &'a [Shape], blank: &'a [Shape]) -> Stages<'a> {
+    Stages {
+        began,
+        finished,
+        blank,
+    }
+}
+
+/// One stock for all three stages.
+fn only(stock: &[Shape]) -> Stages<'_> {
+    stages(stock, stock, stock)
+}
+
 fn zone_z(i: &Intent) -> (f64, f64) {
     let (lo, hi) = bbox(&i.zone[0].outer);
     (lo[0], hi[0])
@@ -196,10 +211,11 @@ fn assert_span(got: (f64, f64), want: (f64, f64)) {
 }
 
 /// Issue 13 item 3: `N10 G00 X20` at Z2, `G01 Z0`, `Z-20`, `X30`, `Z-35`, `N20 X41` on a
-/// Φ40 blank whose face at Z1 was faced to Z0 before the cycle. The lead-in Z2 → Z0 runs
-/// in front of that stock: no part of the shape, which starts at Z0 (the profile's
-/// vertex). On the unfaced blank the lead-in runs through 1 mm of stock and claims it:
-/// facing it away afterwards is a gouge of 10 × 1 = 10 mm², 1 mm deep.
+/// Φ40 blank whose face is at Z1. The lead-in Z2 → Z0 runs in front of the face at Z0: no
+/// part of the shape, which starts at Z0 (the profile's vertex), whether the face was faced
+/// to Z0 before the cycle or is faced after it (field run 4: "rough face, G71/G70, finish
+/// face" counted the 1 mm stub in front of Z0 as part, a gouge of 10 mm², 1 mm deep). A
+/// face cut 1 mm too deep after it is still found: 10 mm².
 #[test]
 fn a_lead_in_in_front_of_the_stock_is_no_part() {
     let path = [
@@ -213,21 +229,23 @@ fn a_lead_in_in_front_of_the_stock_is_no_part() {
     ];
     let blank = [rect(-60.0, 1.0, 0.0, 20.0)];
     let faced = [rect(-60.0, 0.0, 0.0, 20.0)];
-    let finished = boolean(
-        &[
-            rect(-60.0, -35.0, 0.0, 20.0),
-            rect(-35.0, -20.0, 0.0, 15.0),
-            rect(-20.0, 0.0, 0.0, 10.0),
-        ],
-        &[],
-        BoolOp::Union,
-    );
-    let run = |stock: &[Shape]| {
-        let i = Intent::finishing(&path, stock).unwrap();
+    let finished_at = |front: f64| {
+        boolean(
+            &[
+                rect(-60.0, -35.0, 0.0, 20.0),
+                rect(-35.0, -20.0, 0.0, 15.0),
+                rect(-20.0, front, 0.0, 10.0),
+            ],
+            &[],
+            BoolOp::Union,
+        )
+    };
+    let run = |began: &[Shape], finished: &[Shape]| {
+        let i = Intent::finishing(&path, &stages(began, finished, &blank)).unwrap();
         let z = zone_z(&i);
         let d = deviation(
             &blank,
-            &finished,
+            finished,
             &[i],
             0.01,
             &[],
@@ -236,14 +254,17 @@ fn a_lead_in_in_front_of_the_stock_is_no_part() {
         );
         (z, d)
     };
-    let (z, d) = run(&faced);
-    assert_span(z, (-35.0, 0.0));
-    assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
-    let (z, d) = run(&blank);
-    assert_span(z, (-35.0, 1.0));
-    assert_eq!(d.gouges.len(), 1, "{d:?}");
-    assert!((d.gouges[0].area - 10.0).abs() < 1e-6, "{:?}", d.gouges[0]);
-    assert!((d.gouges[0].depth - 1.0).abs() < 1e-6, "{:?}", d.gouges[0]);
+    for began in [&faced[..], &blank[..]] {
+        let (z, d) = run(began, &finished_at(0.0));
+        assert_span(z, (-35.0, 0.0));
+        assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
+        // (its depth is measured to the part beyond the zone, the blank's face at Z1 as
+        // much as Z0: field run 4's item 5e, left)
+        let (z, d) = run(began, &finished_at(-1.0));
+        assert_span(z, (-35.0, 0.0));
+        assert_eq!(d.gouges.len(), 1, "{d:?}");
+        assert!((d.gouges[0].area - 10.0).abs() < 1e-6, "{:?}", d.gouges[0]);
+    }
 }
 
 /// Item 3: a diameter reached straight from the approach (`G00 X20` at Z2, `G01 Z-20`)
@@ -262,8 +283,6 @@ fn approach_and_retract_are_no_part() {
         [-35.0, 15.0],
         [-36.5, 22.0],
     ];
-    let i = Intent::finishing(&path, &faced).unwrap();
-    assert_span(zone_z(&i), (-35.0, 0.0));
     let finished = boolean(
         &[
             rect(-60.0, -35.0, 0.0, 20.0),
@@ -273,6 +292,8 @@ fn approach_and_retract_are_no_part() {
         &[],
         BoolOp::Union,
     );
+    let i = Intent::finishing(&path, &stages(&faced, &finished, &blank)).unwrap();
+    assert_span(zone_z(&i), (-35.0, 0.0));
     let d = deviation(
         &blank,
         &finished,
@@ -283,9 +304,13 @@ fn approach_and_retract_are_no_part() {
         0.001,
     );
     assert!(d.gouges.is_empty() && d.leftovers.is_empty(), "{d:?}");
-    // on the unfaced blank the Φ20 diameter starts at the blank's face Z1
-    let i = Intent::finishing(&path, &blank).unwrap();
+    // on a blank never faced the Φ20 diameter starts at the blank's face Z1; faced to Z0
+    // after the cycle (turn first, face last), at Z0: the shape states no face, and what
+    // the program faces off in front of its part was never part
+    let i = Intent::finishing(&path, &only(&blank)).unwrap();
     assert_span(zone_z(&i), (-35.0, 1.0));
+    let i = Intent::finishing(&path, &stages(&blank, &finished, &blank)).unwrap();
+    assert_span(zone_z(&i), (-35.0, 0.0));
     // a face gouged 1 mm too deep before a shape that marks its face (`G01 Z0`, `Z-20`)
     // is still found: the lead-in is dropped, the profile keeps its vertex at Z0
     let deep = [rect(-60.0, -1.0, 0.0, 20.0)];
@@ -296,7 +321,7 @@ fn approach_and_retract_are_no_part() {
         [-20.0, 10.0],
         [-20.0, 15.0],
     ];
-    let i = Intent::finishing(&marked, &deep).unwrap();
+    let i = Intent::finishing(&marked, &stages(&deep, &deep, &blank)).unwrap();
     assert_span(zone_z(&i), (-20.0, 0.0));
 }
 
@@ -311,7 +336,7 @@ fn a_lead_in_along_the_chamfer_line_is_no_part() {
         &[],
         BoolOp::Union,
     );
-    let i = Intent::compensated(&[[-12.0, 27.0], [-7.0, 32.0]], false, &stock).unwrap();
+    let i = Intent::compensated(&[[-12.0, 27.0], [-7.0, 32.0]], false, &only(&stock)).unwrap();
     assert_span(zone_z(&i), (-10.0, -9.0));
     let blank = [rect(-60.0, 0.0, 0.0, 30.0)];
     let finished = boolean(
@@ -354,7 +379,7 @@ fn a_retract_off_the_last_diameter_does_not_turn_the_side() {
         BoolOp::Union,
     );
     let path = [[2.0, 10.0], [-1.0, 13.0], [-2.0, 13.0], [-2.0, 16.0]];
-    let i = Intent::compensated(&path, true, &stock).unwrap();
+    let i = Intent::compensated(&path, true, &only(&stock)).unwrap();
     // OD: closed toward −r over the chamfer's Z span from the face
     assert_span(zone_z(&i), (-2.0, 0.0));
     let (lo, _) = bbox(&i.zone[0].outer);

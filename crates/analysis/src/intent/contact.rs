@@ -1,6 +1,6 @@
 //! Where a contour touches the stock: approach and retract are no part of it.
 
-use super::bbox;
+use super::{bbox, Stages};
 use geom::flat::{dist, lerp, P};
 use stock::{boolean, BoolOp, Shape};
 
@@ -10,27 +10,34 @@ use stock::{boolean, BoolOp, Shape};
 const CONTACT: f64 = 1e-3;
 
 /// The stretch of `path` that is profile (spec/simulation.md, "The intended shape": approach
-/// and retract are no part), judged against `stock`, the stock when the path began:
-/// - leading segments that do not touch the stock (a lead-in along Z to a faced front, an
-///   approach along the chamfer's own line) are dropped; when none was, the first segment
-///   starts where it first touches the stock (a diameter reached straight from the
-///   approach starts at the stock's front), else at its programmed vertex (a face marked by
-///   `G01 Z0` stays at Z0, so a face cut too deep before is still found);
+/// and retract are no part), judged against `stages`, chiefly the stock when the path
+/// began:
+/// - leading segments that do not touch that stock are dropped (a lead-in along Z to a
+///   faced front, an approach along the chamfer's own line), and so is a leading segment
+///   along Z that ends at or in front of the finished part's front: a lead-in in front of
+///   the face, also where it runs through face stock the program faces later;
+/// - the first segment kept starts at its programmed vertex where the segment dropped
+///   before it ran on the blank (a face marked by `G01 Z0` stays at Z0, so a face cut too
+///   deep is still found); else (it is the first, or the moves before it were in the air,
+///   as a CAM lead-in to an extended chamfer) where it first touches the stock, and not in
+///   front of the finished part's front (what the program faces off later was never part
+///   of a profile that states no face);
 /// - trailing moves off the last diameter that end beyond the stock's radial extent are
 ///   dropped (also where they cut the corner on the way), and trailing segments that no
 ///   longer touch the stock, and the end of the last one past its last contact.
 ///
 /// A segment touches where its band of ±[`CONTACT`] meets the stock. Empty when the path
 /// never touches the stock.
-pub(super) fn in_contact(path: &[P], stock: &[Shape]) -> Vec<P> {
+pub(super) fn in_contact(path: &[P], stages: &Stages) -> Vec<P> {
+    let stock = stages.began;
+    let front = front_of(stages.finished);
     // the first segment that touches (the ones before are dropped at once, not one by one)
     let mut first = 0;
     let mut start = None;
     while first + 1 < path.len() {
         let (a, b) = (path[first], path[first + 1]);
-        if let Some((t, _)) =
-            contact(a, b, stock).filter(|(t, _)| (1.0 - t) * dist(a, b) > 2.0 * CONTACT)
-        {
+        let touch = contact(a, b, stock).filter(|(t, _)| (1.0 - t) * dist(a, b) > 2.0 * CONTACT);
+        if let (Some((t, _)), false) = (touch, lead_in_along_z(a, b, front)) {
             start = Some(t);
             break;
         }
@@ -38,7 +45,9 @@ pub(super) fn in_contact(path: &[P], stock: &[Shape]) -> Vec<P> {
     }
     let mut s = path[first..].to_vec();
     if let Some(t) = start {
-        if first == 0 && t * dist(s[0], s[1]) > CONTACT {
+        let stated = first > 0 && runs_on(path[first - 1], path[first], stages.blank);
+        let t = t.max(front.map_or(0.0, |f| crossing(s[0], s[1], f)));
+        if !stated && t * dist(s[0], s[1]) > CONTACT {
             s[0] = lerp(s[0], s[1], t);
         }
     }
@@ -76,6 +85,36 @@ pub(super) fn in_contact(path: &[P], stock: &[Shape]) -> Vec<P> {
         s.clear();
     }
     s
+}
+
+/// The finished part's front (its largest Z), `None` when there is no part.
+fn front_of(finished: &[Shape]) -> Option<f64> {
+    finished
+        .iter()
+        .flat_map(|m| m.outer.iter().map(|p| p[0]))
+        .reduce(f64::max)
+}
+
+/// Whether `a -> b` runs along Z toward the chuck and ends at or in front of the finished
+/// part's `front`: a lead-in to the face, not a diameter of the part.
+fn lead_in_along_z(a: P, b: P, front: Option<f64>) -> bool {
+    front.is_some_and(|f| (a[1] - b[1]).abs() <= 1e-9 && b[0] < a[0] && b[0] >= f - CONTACT)
+}
+
+/// Where `a -> b` crosses the finished part's `front` toward the chuck (0 where it starts
+/// behind it).
+fn crossing(a: P, b: P, front: f64) -> f64 {
+    if a[0] > front + CONTACT && b[0] < front {
+        (a[0] - front) / (a[0] - b[0])
+    } else {
+        0.0
+    }
+}
+
+/// Whether `a -> b` runs on the blank, inside it or along its edge, over more than a
+/// point: a stated surface (a face at Z0), not an approach that ends at the bar.
+fn runs_on(a: P, b: P, blank: &[Shape]) -> bool {
+    contact(a, b, blank).is_some_and(|(lo, hi)| (hi - lo) * dist(a, b) > 2.0 * CONTACT)
 }
 
 /// Where the segment `a -> b` touches `stock`: the first and last parameter (0 at `a`, 1 at

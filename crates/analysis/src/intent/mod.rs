@@ -41,6 +41,19 @@ pub struct Owner {
     pub finish: usize,
 }
 
+/// The stock a contour the program cuts is read against ([`Intent::finishing`],
+/// [`Intent::compensated`]): as it stood when the contour's cycle began, the part the run
+/// finished with, and the blank.
+#[derive(Debug, Clone, Copy)]
+pub struct Stages<'a> {
+    /// The stock when the contour's cycle began.
+    pub began: &'a [Shape],
+    /// The part at the end of the run.
+    pub finished: &'a [Shape],
+    /// The blank.
+    pub blank: &'a [Shape],
+}
+
 /// The side toward which an open intended path is closed: where the part lies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Toward {
@@ -105,10 +118,11 @@ impl Intent {
     /// it (OD), above it when A is below (ID), left of it when A is to its right (facing).
     /// The comparison is limited to the shape's Z span (its X span for facing).
     ///
-    /// Only the profile bounds the part (spec, "The intended shape"); `stock` is the stock
-    /// when the cycle began, and what the shape runs through before it first touches that
-    /// stock, and after it last leaves it, is approach and retract ([`in_contact`]).
-    pub fn finishing(path: &[[f64; 2]], stock: &[Shape]) -> Option<Self> {
+    /// Only the profile bounds the part (spec, "The intended shape"): what the shape runs
+    /// through before it first touches the stock when the cycle began, and after it last
+    /// leaves it, is approach and retract, and so is a lead-in in front of the finished
+    /// part's face ([`in_contact`]).
+    pub fn finishing(path: &[[f64; 2]], stages: &Stages) -> Option<Self> {
         let (a, shape) = path.split_first()?;
         let (lo, hi) = bbox(shape);
         let toward = if a[1] >= hi[1] - 1e-9 {
@@ -120,7 +134,7 @@ impl Intent {
         } else {
             return None;
         };
-        Self::open_path(&in_contact(shape, stock), toward)
+        Self::open_path(&in_contact(shape, stages), toward)
     }
 
     /// A contour cut under G41/G42: the part lies on the side of the path away from the
@@ -128,10 +142,10 @@ impl Intent {
     /// toward the side the path's normals on the part side point to on average (below for
     /// OD turning, above for ID boring, left for facing); the comparison is limited to the
     /// path's Z span (its X span when closed along Z). As for a finishing shape, approach
-    /// and retract are no part (`stock`: when the contour began), also when deciding the
-    /// side: a retract off the last diameter would otherwise turn an OD contour into a face.
-    pub fn compensated(path: &[[f64; 2]], part_on_left: bool, stock: &[Shape]) -> Option<Self> {
-        let path = in_contact(path, stock);
+    /// and retract are no part, also when deciding the side: a retract off the last
+    /// diameter would otherwise turn an OD contour into a face.
+    pub fn compensated(path: &[[f64; 2]], part_on_left: bool, stages: &Stages) -> Option<Self> {
+        let path = in_contact(path, stages);
         let mut n = [0.0, 0.0];
         for w in path.windows(2) {
             let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];

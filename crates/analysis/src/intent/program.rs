@@ -2,7 +2,7 @@
 //! contours), where the thread moves' own teeth are left out of every intent, and the
 //! stock snapshots reading them needs.
 
-use super::Intent;
+use super::{Intent, Stages};
 use crate::Intents;
 use expander::{IntendedKind, Motion, Segment, Toolpath};
 use stock::{boolean, BoolOp, Shape, ToolTable};
@@ -84,6 +84,7 @@ fn thread_bands(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
 fn own(toolpath: &Toolpath, stock_at: &dyn Fn(usize) -> Vec<Shape>) -> Vec<Intent> {
     let intended = &toolpath.intended;
     let segments = &toolpath.segments;
+    let (blank, finished) = (stock_at(0), stock_at(usize::MAX));
     intended
         .iter()
         .enumerate()
@@ -109,16 +110,23 @@ fn own(toolpath: &Toolpath, stock_at: &dyn Fn(usize) -> Vec<Shape>) -> Vec<Inten
             // read against the stock where its cycle began; a contour wholly in the air
             // there (a guessed tool's roughing cut the wall on the wrong side, another tool
             // cut deeper) against the blank, rather than dropped
-            let read = |stock: &[Shape]| match i.kind {
-                IntendedKind::Groove => Some(Intent::groove(&pts)),
-                IntendedKind::FinishingContour => Intent::finishing(&pts, stock),
-                IntendedKind::Compensated { part_on_left } => {
-                    Intent::compensated(&pts, part_on_left != below, stock)
+            let read = |began: &[Shape]| {
+                let stages = Stages {
+                    began,
+                    finished: &finished,
+                    blank: &blank,
+                };
+                match i.kind {
+                    IntendedKind::Groove => Some(Intent::groove(&pts)),
+                    IntendedKind::FinishingContour => Intent::finishing(&pts, &stages),
+                    IntendedKind::Compensated { part_on_left } => {
+                        Intent::compensated(&pts, part_on_left != below, &stages)
+                    }
                 }
             };
             let intent = read(&stock_at(i.after_move))
                 .filter(|it| !it.part.is_empty())
-                .or_else(|| read(&stock_at(0)));
+                .or_else(|| read(&blank));
             if i.kind == IntendedKind::Groove {
                 intent
             } else {
