@@ -290,6 +290,31 @@ M99 ;
     assert_eq!(tp.segments.len(), 1 + 3 * 4);
 }
 
+/// Field run 4: a bar-fed job ends its main program with `M99` (the control starts the
+/// next part: dialects.md §5.8 for FANUC, §3.6 for Haas). Simulated once with the warning
+/// LS-M99-MAIN under every control, not an alarm (it stopped FANUC and GSK programs).
+#[test]
+fn m99_ending_the_main_program_runs_it_once_under_every_control() {
+    let src = "O1001 ;\nG00 X24. Z2. ;\nG01 Z-10. F0.2 ;\nG00 X26. ;\nZ2. ;\nM99 ;\n";
+    for control in [
+        Control::FanucA,
+        Control::FanucB,
+        Control::Gsk980,
+        Control::Haas,
+    ] {
+        let tp = expand_on(src, control, false);
+        assert!(tp.alarms.is_empty(), "{control:?}: {:?}", tp.alarms);
+        assert_eq!(tp.segments.len(), 4, "{control:?}");
+        let warned: Vec<_> = tp
+            .warnings
+            .iter()
+            .filter(|w| w.code == "LS-M99-MAIN")
+            .collect();
+        assert_eq!(warned.len(), 1, "{control:?}: {:?}", tp.warnings);
+        assert_eq!(warned[0].span.line, 6);
+    }
+}
+
 /// Without custom macro B: FANUC `M99 P` back to the caller's call, and a Haas `M99 P`
 /// branch in the main program, are alarms at the M99.
 #[test]

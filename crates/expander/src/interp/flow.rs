@@ -229,24 +229,18 @@ impl Interp<'_> {
     }
 
     /// M99 at `span`: the return to the caller (to its block `N seq`, if given). In the main
-    /// program M99 would repeat it endlessly: once on a Haas, else an alarm.
+    /// program M99 loops to its start, as a bar-fed job ends its part (dialects.md §3.6,
+    /// §5.8: FANUC and Haas alike; "Bounded execution": ended by the loop rule of §3.6): the
+    /// program is simulated once, with a warning.
     fn leave(&mut self, depth: u32, seq: Option<u32>, span: Span) -> Result<Exit, Diagnostic> {
-        if depth == 0 && self.machine.control == Control::Haas {
+        if depth == 0 {
             self.warn(
                 span,
                 "LS-M99-MAIN",
-                "M99 in the main program loops to its start on a Haas: simulated once",
+                "M99 in the main program loops to its start (a bar feeder's next part): simulated once",
                 "end the main program with M30 to run it once",
             );
             return Ok(Exit::End);
-        }
-        if depth == 0 {
-            return Err(alarm(
-                span,
-                "LS-M99-MAIN",
-                "M99 in the main program would repeat it endlessly",
-                "end the main program with M30 (or M02); M99 belongs at the end of a subprogram",
-            ));
         }
         Ok(Exit::Return(seq.map(|seq| (seq, span))))
     }

@@ -150,7 +150,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
         }
         match result {
             Ok(Exit::End) => {}
-            Ok(Exit::Return(_)) => unreachable!("M99 in the main program ends it or is an alarm"),
+            Ok(Exit::Return(_)) => unreachable!("M99 in the main program ends it"),
             Err(alarm) => it.out.alarms.push(alarm),
         }
         it.finish_macros(program);
