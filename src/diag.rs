@@ -313,3 +313,9 @@ mod tests {
         assert!(s.contains("t.nc"), "{s}");
     }
 }
+
+/// `v` rounded to tenths for the terminal, never `-0.0` (a change or a removal too small to
+/// print is none: a blank the program only grazes removed −2·10⁻⁶ mm²).
+pub(crate) fn tenths(v: f64) -> f64 {
+    (v * 10.0).round() / 10.0 + 0.0
+}

@@ -272,7 +272,7 @@ pub(crate) fn summary_lines(d: &DiffReport) -> Vec<String> {
     let [old, new] = d.cycle_time_s;
     out.push(format!(
         "  cycle time {old:.1} s → {new:.1} s ({:+.1} s)",
-        tenths(new - old)
+        diag::tenths(new - old)
     ));
     let s = |v: Option<f64>| v.map_or("—".to_string(), |v| format!("{v:.1} s"));
     for t in d.changed_tools(0.05) {
@@ -292,11 +292,6 @@ pub(crate) fn summary_lines(d: &DiffReport) -> Vec<String> {
         }
     }
     out
-}
-
-/// `v` rounded to tenths, never `-0.0` (a change too small to print is none).
-fn tenths(v: f64) -> f64 {
-    (v * 10.0).round() / 10.0 + 0.0
 }
 
 fn count(n: usize, what: &str) -> String {
@@ -324,7 +319,7 @@ pub(crate) fn verdict_suffix(d: &DiffReport) -> String {
         return format!(
             "; against {}: same part, cycle time {:+.1} s",
             d.old,
-            tenths(new - old)
+            diag::tenths(new - old)
         );
     }
     let first = d
@@ -342,7 +337,7 @@ pub(crate) fn verdict_suffix(d: &DiffReport) -> String {
         count(d.lost.len(), "region"),
         d.gained_area(),
         count(d.gained.len(), "region"),
-        tenths(new - old)
+        diag::tenths(new - old)
     )
 }
 

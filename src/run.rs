@@ -582,8 +582,8 @@ fn verdict_line(
         name,
         render::verdict_word(report.verdict).to_uppercase(),
         report.segments,
-        report.removed_area_mm2,
-        report.removed_volume_mm3,
+        diag::tenths(report.removed_area_mm2),
+        report.removed_volume_mm3.round() + 0.0,
         report.cycle_time_s,
         // (the report lists the first alarms only)
         report.alarms.len() + loaded.toolpath.alarms.len().saturating_sub(MAX_LISTED),

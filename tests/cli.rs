@@ -376,3 +376,29 @@ fn reports_picks_what_out_writes() {
         std::fs::read(json_only.path().join("O0002.json")).unwrap()
     );
 }
+
+/// Field run 4: a facing pass that grazes the bar's face removes −2·10⁻⁶ mm² (boolean
+/// noise, kept as it is in the JSON); the verdict line prints `removed 0.0 mm² / 0 mm³`,
+/// never `-0.0`.
+#[test]
+fn the_verdict_line_never_prints_a_negative_zero_removal() {
+    let program = "%\nO01011\nG20\nG28 U0.\nT101\nG50 S3000\nG96 S500 M03\nG00 X1.1 Z0.1\nG01 X-0.06 F0.006\nG00 X1.1 Z0.1\nM30\n%\n";
+    let (_dir, path) = temp_program("graze.nc", program.as_bytes());
+    let out = latsim(&[
+        "run",
+        path.to_str().unwrap(),
+        "--stock",
+        "25.4x50",
+        "--control",
+        "haas",
+        "--reports",
+        "none",
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(
+        out.stdout.contains("removed 0.0 mm² / 0 mm³"),
+        "{}",
+        out.stdout
+    );
+    assert!(!out.stdout.contains("-0"), "{}", out.stdout);
+}
