@@ -272,6 +272,12 @@ pub(crate) fn offset_of(text: &str, line: usize, column: usize) -> usize {
     text.len()
 }
 
+/// `v` rounded to tenths for the terminal, never `-0.0` (a change or a removal too small to
+/// print is none: a blank the program only grazes removed −2·10⁻⁶ mm²).
+pub(crate) fn tenths(v: f64) -> f64 {
+    (v * 10.0).round() / 10.0 + 0.0
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -312,10 +318,4 @@ mod tests {
         let s = shown("G0", 50, 5);
         assert!(s.contains("t.nc"), "{s}");
     }
-}
-
-/// `v` rounded to tenths for the terminal, never `-0.0` (a change or a removal too small to
-/// print is none: a blank the program only grazes removed −2·10⁻⁶ mm²).
-pub(crate) fn tenths(v: f64) -> f64 {
-    (v * 10.0).round() / 10.0 + 0.0
 }
