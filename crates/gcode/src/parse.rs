@@ -190,6 +190,18 @@ mod tests {
     }
 
     #[test]
+    fn a_program_number_alone_before_the_first_percent_is_leader() {
+        // field run 4: a training app writes `O0090 (CONE)` above the opening `%`; the `%`
+        // was read as the closing one: "nothing to simulate, the file has no blocks"
+        let p = parse("O0090 (CONE D50)\n%\nG0 X1\nG0 X2\nM30\n%\n").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 3, "{:?}", notes(&p));
+        assert!(notes(&p)[0].contains("O0090 (CONE D50)"), "{:?}", notes(&p));
+        // a program number followed by blocks is the program, as before
+        let p = parse(":12 (X)\nG0 X1\n%\nG0 X2\n").unwrap();
+        assert_eq!(p.programs[0].blocks.len(), 1);
+    }
+
+    #[test]
     fn percent_glued_to_the_program_number_starts_the_tape() {
         // issue 31: `%O1200(TOKARKA)` on line 1 was read as the closing % — no blocks
         let p = parse("%O1200(TOKARKA)\nG0 X10 Z2\nG1 Z-5 F.1\nM30\n%\n").unwrap();

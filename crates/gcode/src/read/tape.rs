@@ -28,10 +28,35 @@ fn has_address(line: &str) -> bool {
     false
 }
 
+/// Whether a line holds a program number and nothing else but comments (`O0090 (CONE)`).
+fn program_number_only(line: &str) -> bool {
+    let mut depth = 0;
+    let code: String = line
+        .chars()
+        .filter(|&c| match c {
+            '(' => {
+                depth += 1;
+                false
+            }
+            ')' if depth > 0 => {
+                depth -= 1;
+                false
+            }
+            _ => depth == 0 && !c.is_whitespace() && !c.is_control(),
+        })
+        .collect();
+    let digits = code
+        .strip_prefix(['O', 'o', ':'])
+        .filter(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit()));
+    digits.is_some()
+}
+
 /// Where the leader ends: if a `%` comes before the first line holding a program number or
 /// an address word, everything up to the end of that `%`'s line (spec/dialects.md §1).
 /// A line that starts with `%` and goes on with the first block (`%O1200(TOKARKA)`, as CAM
 /// systems write it) ends the leader right after that `%`: its words are the program's.
+/// A program number alone on its line before the first `%` (`O0090 (CONE)`, then `%`, as
+/// a training app writes its files) is leader too: the tape starts at that `%`.
 pub(super) fn leader_end(src: &str) -> Option<usize> {
     let mut offset = 0;
     for line in src.split_inclusive('\n') {
@@ -44,7 +69,7 @@ pub(super) fn leader_end(src: &str) -> Option<usize> {
         if line[lead..].starts_with('%') && has_address(&line[lead + 1..]) {
             return Some(offset + lead + 1);
         }
-        if has_address(line) {
+        if has_address(line) && !program_number_only(line) {
             return None;
         }
         offset += line.len();
