@@ -19,7 +19,7 @@
 
 use std::collections::HashMap;
 
-use crate::overlay::{IBox, IPt, IShapes};
+use crate::overlay::{ring_area2, IBox, IPt, IShapes};
 
 /// How far (grid steps) from a tile's side a point of a piece may lie and belong to that
 /// side: a crossing is rounded by half a step, a crossing on an edge so rounded by another.
@@ -73,7 +73,7 @@ pub(crate) fn stitch(tiles: &[(IBox, IShapes)]) -> Option<IShapes> {
         let key = (ring[low].x, ring[low].y);
         ring.rotate_left(if straight { low } else { before });
         drop_collinear(&mut ring);
-        if ring.len() < 3 || twice_area(&ring) <= 0 {
+        if ring.len() < 3 || ring_area2(&ring) <= 0 {
             return None;
         }
         keyed.push((key, ring));
@@ -341,17 +341,6 @@ fn turns(a: IPt, b: IPt, c: IPt) -> bool {
         i64::from(c.y) - i64::from(b.y),
     );
     ux * vy - uy * vx != 0
-}
-
-/// Twice the signed area of a ring (counter-clockwise positive).
-fn twice_area(ring: &[IPt]) -> i128 {
-    let n = ring.len();
-    (0..n)
-        .map(|i| {
-            let (a, b) = (ring[i], ring[(i + 1) % n]);
-            i128::from(a.x) * i128::from(b.y) - i128::from(b.x) * i128::from(a.y)
-        })
-        .sum()
 }
 
 #[cfg(test)]
