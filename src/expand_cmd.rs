@@ -57,7 +57,7 @@ pub(crate) fn expand(args: &ExpandArgs) -> u8 {
         return EXIT_UNUSABLE;
     };
     // the tools' tips read from the program's feeds as `run` reads them (LS-HOLDER-HAND)
-    let Ok((_, loaded)) = crate::job::load_with_tips(&args.program, path, tools, None) else {
+    let Ok((_, loaded)) = crate::job::load_with_use(&args.program, path, tools, None) else {
         return EXIT_UNUSABLE;
     };
     input::print_diagnostics(&loaded, args.program.quiet);

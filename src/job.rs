@@ -6,11 +6,25 @@ use crate::cli::{ProgramArgs, RunArgs};
 use crate::diag;
 use crate::input::{self, Loaded};
 
-/// The program read with `tools`; when it feeds a tool whose tip came from its holder's
-/// hand letter clearly the other way along Z, read again with the tip its feeds give, and
-/// a warning LS-HOLDER-HAND (docs/field-rules.md §14: a left-hand holder mounted upside
-/// down, or behind the centre line with M04, cuts toward the chuck).
-pub(crate) fn load_with_tips(
+/// The program read with `tools`, and the tools as its moves use them: when it feeds a
+/// tool whose tip came from its holder's hand letter clearly the other way along Z, read
+/// again with the tip its feeds give, and a warning LS-HOLDER-HAND (docs/field-rules.md
+/// §14: a left-hand holder mounted upside down, or behind the centre line with M04, cuts
+/// toward the chuck); a tool with no entry that only cuts thread passes is taken for a
+/// threading insert (`stock::ThreadFromUse`, docs/field-rules.md §17).
+pub(crate) fn load_with_use(
+    program: &ProgramArgs,
+    path: &std::path::Path,
+    tools: stock::ToolTable,
+    start_tool: Option<u32>,
+) -> Result<(stock::ToolTable, Loaded), ()> {
+    let (tools, loaded) = load_with_hand_tips(program, path, tools, start_tool)?;
+    let threads = tools.threads_from_use(&loaded.toolpath.segments);
+    Ok((tools.with_threads_from_use(&threads), loaded))
+}
+
+/// The program read with `tools`, and again with the tips its feeds give (above).
+fn load_with_hand_tips(
     program: &ProgramArgs,
     path: &std::path::Path,
     tools: stock::ToolTable,
@@ -82,7 +96,7 @@ impl Job {
     pub(crate) fn load(args: &RunArgs, path: &std::path::Path, batch: bool) -> Result<Self, ()> {
         let blank = input::load_blank(args)?;
         let tools = input::load_tools(args.tools.as_deref())?;
-        let Ok((tools, loaded)) = load_with_tips(&args.program, path, tools, args.tool) else {
+        let Ok((tools, loaded)) = load_with_use(&args.program, path, tools, args.tool) else {
             if batch {
                 println!(
                     "{}: UNUSABLE — not simulated (see the message above)",

@@ -101,7 +101,7 @@ fn tool_list(
         .map(|&(t, secs)| render::ToolEntry {
             number: t,
             offsets: offsets.iter().filter(|o| o.0 == t).map(|o| o.1).collect(),
-            description: tools.get(t).unwrap_or(&stock::Tool::DEFAULT).describe(),
+            description: tools.tool_or_default(t).describe(),
             designation: tools.designation(t).map(str::to_string),
             assumed: !tools.size_stated(t, expander::ToolHint::Table),
             in_table: tools.get(t).is_some(),

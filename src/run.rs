@@ -26,7 +26,7 @@ pub(crate) fn check(args: &CheckArgs) -> u8 {
 
 fn check_one(args: &CheckArgs, path: &Path, tools: &stock::ToolTable) -> u8 {
     // the tools' tips read from the program's feeds as `run` reads them (LS-HOLDER-HAND)
-    let Ok((_, loaded)) = crate::job::load_with_tips(&args.program, path, tools.clone(), None)
+    let Ok((_, loaded)) = crate::job::load_with_use(&args.program, path, tools.clone(), None)
     else {
         return EXIT_UNUSABLE;
     };

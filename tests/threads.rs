@@ -564,3 +564,83 @@ fn a_fanuc_g92_pulls_out_by_its_profile() {
     assert!((chamfered - 9.0 * v).abs() < 2e-3, "{chamfered}");
     assert!((run(false) - 4.065).abs() < 2e-3);
 }
+
+/// Field run 4 (5d), in its style: T01 turns Φ34, and T05 (`(THREAD 16ER 1.5ISO)` in a
+/// comment only) cuts an M34 × 1.5 by G92 from Z4 to Z−18. The table lists T01 alone.
+const G92_NO_ENTRY: &str = "O6002\nG21 G40 G99\nT0101\nG96 S200 M03\nG00 X36. Z2.\nG01 Z0. F0.1\nX34. Z-1.\nZ-25.\nX42.\nG28 U0. W0.\nT0505 (THREAD 16ER 1.5ISO)\nG97 S1000 M03\nG00 X36. Z4.\nG92 X33.4 Z-18. F1.5\nX33.0\nX32.7\nX32.45\nX32.25\nX32.16\nG00 X40.\nG28 U0. W0.\nM30\n";
+
+fn run_no_entry(program: &str, table: Option<&str>, stock: &[&str]) -> serde_json::Value {
+    let (dir, path) = common::temp_program("no-entry.nc", program.as_bytes());
+    let json = dir.path().join("out.json");
+    let tools = dir.path().join("tools.toml");
+    let mut args = vec!["run", path.to_str().unwrap(), "--control", "fanuc-a"];
+    args.extend_from_slice(stock);
+    if let Some(t) = table {
+        std::fs::write(&tools, t).unwrap();
+        args.extend_from_slice(&["--tools", tools.to_str().unwrap()]);
+    }
+    args.extend_from_slice(&["--json", json.to_str().unwrap(), "--quiet"]);
+    let out = common::latsim(&args);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap()
+}
+
+fn warnings<'a>(j: &'a serde_json::Value, code: &str) -> Vec<&'a str> {
+    j["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == code)
+        .map(|w| w["message"].as_str().unwrap())
+        .collect()
+}
+
+/// A tool with no entry that cuts only thread passes is taken for a sharp 60° threading
+/// insert (docs/field-rules.md §17), with or without a table: the thread reads 60°, not
+/// the 96.3° the 55° turning default cut, and its pull-outs scrape nothing (the default's
+/// trailing edge made five LS-RAPID-SCRAPE warnings). Its first pass is 0.3 deep (Φ34 to
+/// X33.4), measured from a whole crest: the pass ends 14⅔ leads from its start, and the
+/// lead at its end holds only the ridge between the last two stamps, 0.054 below the crest.
+#[test]
+fn a_thread_tool_with_no_entry_is_a_60_degree_threading_insert() {
+    let turning = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n";
+    for table in [Some(turning), None] {
+        let j = run_no_entry(G92_NO_ENTRY, table, &["--stock", "40x60"]);
+        assert_eq!(j["verdict"], "clean", "{j:#}");
+        let t = &j["threads"][0];
+        assert_eq!(t["side"], "od", "{t:#}");
+        let x = |k: &str| t[k].as_f64().unwrap();
+        assert!((x("included_angle_deg") - 60.0).abs() < 0.05, "{t:#}");
+        assert!((x("achieved_x") - 32.16).abs() < 2e-3, "{t:#}");
+        assert!((t["pass_depths_mm"][0].as_f64().unwrap() - 0.3).abs() < 1e-3, "{t:#}");
+        assert!(warnings(&j, "LS-RAPID-SCRAPE").is_empty(), "{j:#}");
+        let stock = warnings(&j, "LS-STOCK");
+        assert!(
+            stock
+                .iter()
+                .any(|m| m.contains("T05") && m.contains("taken for a threading insert")),
+            "{stock:?}"
+        );
+    }
+}
+
+/// The side is the one the passes come in from: an internal M30 × 2 by G76 in a Φ27.9
+/// bore with no table is an ID insert (the wall stays, the thread reaches its major Φ30),
+/// not the OD guess that warned "state T04 with side = id"; a tool with no entry that
+/// also turns keeps the 55° turning default.
+#[test]
+fn a_thread_tool_with_no_entry_takes_the_side_its_passes_come_from() {
+    let j = run_no_entry(M30_ID, None, &["--stock", "40x40", "--bore", "27.9"]);
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+    let t = &j["threads"][0];
+    assert_eq!(t["side"], "id", "{t:#}");
+    assert!((t["achieved_x"].as_f64().unwrap() - 30.0).abs() < 2e-3, "{t:#}");
+    assert!(warnings(&j, "LS-ASSUMED-TOOL").is_empty(), "{j:#}");
+    let turned_too = M30_ID.replace("G00 X26 Z50", "G00 X26 Z50\nG01 Z40 F0.2");
+    let j = run_no_entry(&turned_too, None, &["--stock", "40x40", "--bore", "27.9"]);
+    let stock = warnings(&j, "LS-STOCK");
+    assert!(
+        stock.iter().any(|m| m.contains("turning D 55°")),
+        "{stock:?}"
+    );
+}

@@ -19,7 +19,7 @@ fn leading_edge(seg: &Segment, tools: &ToolTable, rear: bool) -> Option<(f64, [f
     if seg.hint != ToolHint::Table {
         return None;
     }
-    let tool = tools.get(seg.tool).cloned().unwrap_or(Tool::DEFAULT);
+    let tool = tools.tool_or_default(seg.tool).clone();
     let Tool::Turning {
         tip,
         entering_angle,
@@ -79,7 +79,7 @@ pub(crate) fn is_retract(c: &Crash, segments: &[Segment], tools: &ToolTable, rea
 /// The warning of a retract scrape, with its fix.
 pub(crate) fn note(c: &Crash, segments: &[Segment], tools: &ToolTable) -> Note {
     let seg = &segments[c.segment];
-    let kr = match tools.get(seg.tool).cloned().unwrap_or(Tool::DEFAULT) {
+    let kr = match *tools.tool_or_default(seg.tool) {
         Tool::Turning { entering_angle, .. } => entering_angle,
         _ => 90.0,
     };

@@ -28,7 +28,7 @@ fn tool_of(seg: &Segment, s: &Settings) -> Tool {
     } else {
         seg.tool
     };
-    s.tools.get(t).cloned().unwrap_or(Tool::DEFAULT)
+    s.tools.tool_or_default(t).clone()
 }
 
 /// The cause of a crash: the workholding, the tool's body, or a rapid into uncut stock

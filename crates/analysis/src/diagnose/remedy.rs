@@ -8,7 +8,7 @@ use crate::findings::{CauseKind, Crash, Remedy};
 use crate::Findings;
 use expander::Segment;
 use geom::flat::P;
-use stock::{Tool, ToolTable};
+use stock::ToolTable;
 
 /// A change to try on the program or its tools.
 #[derive(Debug, Clone, PartialEq)]
@@ -133,7 +133,7 @@ impl Tries<'_> {
         }
         let flank = cause.numbers.iter().find(|(k, _)| *k == "flank_deg")?.1;
         let seg = &self.segments[g.made_by?];
-        let f = Facts::of(&self.tools.get(seg.tool).cloned().unwrap_or(Tool::DEFAULT))?;
+        let f = Facts::of(self.tools.tool_or_default(seg.tool))?;
         for (name, entry, clearance) in candidates(self.tools, seg.tool, &f, flank) {
             let change = Change::Tool { t: seg.tool, entry };
             if self.fixes(&change, Cured::Gouge(g)) {

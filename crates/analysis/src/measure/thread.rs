@@ -385,7 +385,11 @@ impl ThreadPasses {
                     .reduce(|d, p| if deeper(p.to.r, d.to.r) { p } else { d })
                     .expect("a thread has a pass");
                 let end = deepest.to;
-                let toward_start = (deepest.from.z - end.z).signum() * deepest.lead;
+                // two leads back from the end: the stamps are a lead apart from the pass's
+                // start, so the lead at the end may hold only the narrow ridge between the
+                // last stamp and the end; two hold a whole crest (within the pass)
+                let back = (deepest.from.z - end.z).abs().min(2.0 * deepest.lead);
+                let toward_start = (deepest.from.z - end.z).signum() * back;
                 let crest = crest_radius(shapes, end.z, end.z + toward_start, surface);
                 // each start (multi-start: each phase) goes down from the crest on its own; a
                 // thread cut in the air has no crest, and its first depth is 0

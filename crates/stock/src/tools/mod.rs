@@ -5,6 +5,7 @@
 //! a cycle's hint, [`facts`] what the interpreter is told about the table.
 
 mod bodies;
+mod by_use;
 mod facts;
 mod hand;
 mod kinds;
@@ -13,6 +14,7 @@ mod schema;
 
 use crate::StockError;
 pub use bodies::{Body, HolderSize};
+pub use by_use::ThreadFromUse;
 pub use hand::TipFromUse;
 pub use kinds::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool};
 pub(crate) use outline_choice::hint_key;
@@ -34,6 +36,9 @@ pub struct ToolTable {
     widths: Vec<u32>,
     /// The turning entries whose tip their holder's hand letter gave (no `tip` stated).
     hand_tips: Vec<u32>,
+    /// Tools with no entry, taken for what their moves say they are ([`by_use`]): they
+    /// cut as these, and their size stays unstated.
+    by_use: Vec<(u32, Tool)>,
 }
 
 impl ToolTable {
@@ -52,6 +57,7 @@ impl ToolTable {
             sizes: Vec::new(),
             assumed: Vec::new(),
             hand_tips: Vec::new(),
+            by_use: Vec::new(),
         }
     }
 
@@ -75,6 +81,7 @@ impl ToolTable {
         out.noses.retain(|n| *n != t);
         out.widths.retain(|n| *n != t);
         out.hand_tips.retain(|n| *n != t);
+        out.by_use.retain(|(n, _)| *n != t);
         out.designations.extend(one.designations);
         out.sizes.extend(one.sizes);
         out.assumed.extend(one.assumed);
@@ -110,6 +117,7 @@ impl ToolTable {
                 .map(|e| e.t)
                 .collect(),
             tools: entries.into_iter().map(|e| (e.t, e.tool)).collect(),
+            by_use: Vec::new(),
         })
     }
 
@@ -119,6 +127,22 @@ impl ToolTable {
             return self.tools.first().map(|(_, tool)| tool);
         }
         self.tools
+            .iter()
+            .find(|(n, _)| *n == t)
+            .map(|(_, tool)| tool)
+    }
+
+    /// The tool that cuts for `t` outside the cycles' hints: its entry, else what its moves
+    /// say it is ([`ToolTable::threads_from_use`]), else the default insert.
+    pub fn tool_or_default(&self, t: u32) -> &Tool {
+        self.get(t)
+            .or_else(|| self.use_default(t))
+            .unwrap_or(&Tool::DEFAULT)
+    }
+
+    /// What tool `t`, which has no entry, is taken for from its moves.
+    fn use_default(&self, t: u32) -> Option<&Tool> {
+        self.by_use
             .iter()
             .find(|(n, _)| *n == t)
             .map(|(_, tool)| tool)
@@ -153,7 +177,7 @@ impl ToolTable {
                 Some(d) => format!("T{t:02} {} ({d})", tool.describe()),
                 None => format!("T{t:02} {}", tool.describe()),
             },
-            None => format!("T{t:02} {} (default)", Tool::DEFAULT.describe()),
+            None => format!("T{t:02} {} (default)", self.tool_or_default(t).describe()),
         }
     }
 }
