@@ -216,6 +216,8 @@ fn m20_thread_reports_its_minor() {
     assert_eq!(t["side"], "od");
     assert_eq!(t["lead_mm"], 1.5);
     assert_eq!(t["passes"], 8);
+    // the compound infeed moves each pass's start along Z: still one start
+    assert_eq!(t["starts"], 1);
     let x = |k: &str| t[k].as_f64().unwrap();
     assert!((x("x") - 18.05).abs() < 1e-9);
     assert!((x("achieved_x") - 18.05).abs() < 2e-3, "{t:#}");
@@ -612,7 +614,10 @@ fn a_thread_tool_with_no_entry_is_a_60_degree_threading_insert() {
         let x = |k: &str| t[k].as_f64().unwrap();
         assert!((x("included_angle_deg") - 60.0).abs() < 0.05, "{t:#}");
         assert!((x("achieved_x") - 32.16).abs() < 2e-3, "{t:#}");
-        assert!((t["pass_depths_mm"][0].as_f64().unwrap() - 0.3).abs() < 1e-3, "{t:#}");
+        assert!(
+            (t["pass_depths_mm"][0].as_f64().unwrap() - 0.3).abs() < 1e-3,
+            "{t:#}"
+        );
         assert!(warnings(&j, "LS-RAPID-SCRAPE").is_empty(), "{j:#}");
         let stock = warnings(&j, "LS-STOCK");
         assert!(
@@ -634,7 +639,10 @@ fn a_thread_tool_with_no_entry_takes_the_side_its_passes_come_from() {
     assert_eq!(j["verdict"], "clean", "{j:#}");
     let t = &j["threads"][0];
     assert_eq!(t["side"], "id", "{t:#}");
-    assert!((t["achieved_x"].as_f64().unwrap() - 30.0).abs() < 2e-3, "{t:#}");
+    assert!(
+        (t["achieved_x"].as_f64().unwrap() - 30.0).abs() < 2e-3,
+        "{t:#}"
+    );
     assert!(warnings(&j, "LS-ASSUMED-TOOL").is_empty(), "{j:#}");
     let turned_too = M30_ID.replace("G00 X26 Z50", "G00 X26 Z50\nG01 Z40 F0.2");
     let j = run_no_entry(&turned_too, None, &["--stock", "40x40", "--bore", "27.9"]);
@@ -643,4 +651,45 @@ fn a_thread_tool_with_no_entry_takes_the_side_its_passes_come_from() {
         stock.iter().any(|m| m.contains("turning D 55°")),
         "{stock:?}"
     );
+}
+
+/// Field run 4 (4): a FANUC two-block G76 has no start angle, so a two-start thread is cut
+/// as two G76 run from start points half a lead apart (Z5, then Z6.5 for lead 3). Each
+/// pass's helix is where its stamps fall modulo the lead: two starts, pitch 1.5, the 60°
+/// of the tool (it read one start at 98.2°, the two grooves of a lead taken for one), and
+/// the second start's first pass 0.25 deep from the crest (it read 0.67, from the first
+/// start's root).
+#[test]
+fn two_g76_half_a_lead_apart_are_two_starts() {
+    let cycle = "G76 P010060 Q50 R0.02\nG76 X18.16 Z-20. P920 Q250 F3.0\n";
+    let program = format!(
+        "G99 M03 S600 T0404\nG00 X22. Z5.\n{cycle}G00 X22. Z6.5\n{cycle}G00 X50. Z50.\nM30\n"
+    );
+    let (code, j) = run_json(&program, &[]);
+    assert_eq!(code, 0, "{j:#}");
+    let t = &j["threads"];
+    assert_eq!(t.as_array().unwrap().len(), 1, "{t:#}");
+    let t = &t[0];
+    assert_eq!(t["starts"], 2, "{t:#}");
+    assert!(
+        (t["included_angle_deg"].as_f64().unwrap() - 60.0).abs() < 0.05,
+        "{t:#}"
+    );
+    // sharp 60° V to the root r9.08, pitch 1.5: d2 = 2 (9.08 + 0.75 / (2 tan 30°))
+    let d2 = 2.0 * (9.08 + 0.75 / (2.0 * 30f64.to_radians().tan()));
+    assert!(
+        (t["pitch_diameter"].as_f64().unwrap() - d2).abs() < 2e-3,
+        "{t:#}"
+    );
+    let depths = t["pass_depths_mm"].as_array().unwrap();
+    let half = depths.len() / 2;
+    assert_eq!(depths.len(), 2 * half, "{t:#}");
+    for k in 0..half {
+        let (a, b) = (
+            depths[k].as_f64().unwrap(),
+            depths[half + k].as_f64().unwrap(),
+        );
+        assert!((a - b).abs() < 1e-6, "pass {k}: {a} vs {b}: {t:#}");
+    }
+    assert!((depths[0].as_f64().unwrap() - 0.25).abs() < 1e-3, "{t:#}");
 }

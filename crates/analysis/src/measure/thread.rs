@@ -391,22 +391,17 @@ impl ThreadPasses {
                 let back = (deepest.from.z - end.z).abs().min(2.0 * deepest.lead);
                 let toward_start = (deepest.from.z - end.z).signum() * back;
                 let crest = crest_radius(shapes, end.z, end.z + toward_start, surface);
-                // each start (multi-start: each phase) goes down from the crest on its own; a
-                // thread cut in the air has no crest, and its first depth is 0
-                let mut before: Vec<(f64, f64)> = vec![];
+                // each start goes down from the crest on its own; a thread cut in the air
+                // has no crest, and its first depth is 0
+                let (start_of, starts) = starts_of(&passes);
+                let mut before: Vec<Option<f64>> = vec![None; starts];
                 let pass_depths = passes
                     .iter()
-                    .map(|p| {
-                        let k = match before.iter().position(|b| b.0 == p.thread_phase) {
-                            Some(k) => k,
-                            None => {
-                                before.push((p.thread_phase, crest.unwrap_or(p.to.r)));
-                                before.len() - 1
-                            }
-                        };
-                        let d = (before[k].1 - p.to.r).abs();
-                        before[k].1 = p.to.r;
-                        d
+                    .zip(&start_of)
+                    .map(|(p, &k)| {
+                        let last = before[k].or(crest).unwrap_or(p.to.r);
+                        before[k] = Some(p.to.r);
+                        (last - p.to.r).abs()
                     })
                     .collect();
                 // the infeed direction: from the first pass to the last
@@ -416,12 +411,9 @@ impl ThreadPasses {
                         Surface::Outer => last > first,
                         Surface::Bore => last < first,
                     };
-                let mut phases: Vec<f64> = passes.iter().map(|p| p.thread_phase).collect();
-                phases.sort_by(f64::total_cmp);
-                phases.dedup();
                 Thread {
                     first_move,
-                    starts: phases.len(),
+                    starts,
                     wrong_side,
                     span: passes[0].span,
                     surface,
@@ -432,6 +424,72 @@ impl ThreadPasses {
             })
             .collect()
     }
+}
+
+/// Passes whose helices are this far apart (a fraction of the lead, around the circle)
+/// or more cut different starts. A compound (flank) infeed moves each pass's start along
+/// Z by its infeed × tan 30°: from one pass to the next a few hundredths of a lead, over a
+/// whole start about 0.35 of its pitch; the starts of an n-start thread are 1/n apart.
+const START_GAP: f64 = 0.125;
+
+/// Which start each pass cuts (numbered in the order the starts are first cut), and how
+/// many there are. A pass's helix is where its stamps fall along the thread, modulo the
+/// lead: its start point's place and its start angle (multi-start Q). Two cycles run from
+/// start points half a lead apart (a FANUC two-block G76 has no start angle) cut two
+/// starts as surely as a Q does. The helices are grouped around the circle: a gap of
+/// [`START_GAP`] or more separates two starts.
+fn starts_of(passes: &[&Segment]) -> (Vec<usize>, usize) {
+    let helix: Vec<f64> = passes.iter().map(|p| helix_phase(p)).collect();
+    let mut order: Vec<usize> = (0..helix.len()).collect();
+    order.sort_by(|&a, &b| helix[a].total_cmp(&helix[b]));
+    let gap_after = |k: usize| {
+        let (a, b) = (helix[order[k]], helix[order[(k + 1) % order.len()]]);
+        (b - a).rem_euclid(1.0)
+    };
+    // cut the circle after each wide gap; one start when there is none but the wrap
+    let cuts: Vec<usize> = (0..order.len())
+        .filter(|&k| gap_after(k) >= START_GAP)
+        .collect();
+    let mut group = vec![0; helix.len()];
+    if cuts.len() > 1 {
+        for (g, w) in cuts.iter().enumerate() {
+            let next = cuts[(g + 1) % cuts.len()];
+            let mut k = (w + 1) % order.len();
+            loop {
+                group[order[k]] = g;
+                if k == next {
+                    break;
+                }
+                k = (k + 1) % order.len();
+            }
+        }
+    }
+    // number the starts in program order
+    let mut seen: Vec<usize> = vec![];
+    let start_of = group
+        .iter()
+        .map(|g| match seen.iter().position(|s| s == g) {
+            Some(k) => k,
+            None => {
+                seen.push(*g);
+                seen.len() - 1
+            }
+        })
+        .collect();
+    (start_of, seen.len())
+}
+
+/// Where the stamps of thread move `p` fall along its main axis, as a fraction of the lead
+/// (see `stock`'s thread stamps: from its start point every lead, shifted by the start
+/// angle, toward its end).
+fn helix_phase(p: &Segment) -> f64 {
+    let (dz, dr) = (p.to.z - p.from.z, p.to.r - p.from.r);
+    let (at, way) = if dz.abs() >= dr.abs() {
+        (p.from.z, dz.signum())
+    } else {
+        (p.from.r, dr.signum())
+    };
+    (at / p.lead + way * p.thread_phase).rem_euclid(1.0)
 }
 
 /// The threads' passes, each by the index of its main thread move (of a run of thread
