@@ -489,3 +489,42 @@ fn a_haas_shape_return_leaves_no_band_through_the_core() {
         "{area} mm² left: {leftovers:#?}"
     );
 }
+
+/// Field run 4 (5e): a face cut 0.3 too deep before a G71/G70 shape whose chamfer starts at
+/// X20 Z0 is a gouge 0.3 deep, 3.045 mm² (r 10 → 10.3 over 0.3), made by the programmed
+/// path (the facing feed, line 11), whatever the bar's face stock: with none it was no
+/// gouge at all (the shape was trimmed where the over-faced stock began), with 0.5 or 1 mm
+/// it read 0.8 or 1.3 deep (measured from the bar's face), blamed on a nose "not
+/// compensated".
+#[test]
+fn a_face_cut_too_deep_is_as_deep_as_it_cuts_below_the_shape() {
+    let program = common::asset("corpus/fanuc-a/overfaced-with-face-stock.nc");
+    let tools = common::asset("corpus/tools/shop.toml");
+    for stock_z in ["0", "0.5", "1"] {
+        let (out, v) = run_json(&[
+            "run",
+            program.to_str().unwrap(),
+            "--control",
+            "fanuc-a",
+            "--stock",
+            "40x50",
+            "--stock-z",
+            stock_z,
+            "--tools",
+            tools.to_str().unwrap(),
+        ]);
+        assert_eq!(out.code, 1, "stock-z {stock_z}: {v:#}");
+        let g = v["gouges"].as_array().unwrap();
+        assert_eq!(g.len(), 1, "stock-z {stock_z}: {g:#?}");
+        assert_eq!(g[0]["line"], 11);
+        assert!(
+            (g[0]["depth_mm"].as_f64().unwrap() - 0.3).abs() < 1e-3,
+            "{stock_z}: {g:#?}"
+        );
+        assert!(
+            (g[0]["area_mm2"].as_f64().unwrap() - 3.045).abs() < 2e-3,
+            "{stock_z}: {g:#?}"
+        );
+        assert_eq!(g[0]["cause"]["kind"], "program", "{stock_z}: {g:#?}");
+    }
+}
