@@ -161,7 +161,7 @@ fn faced(part: &[Shape], zone: &[Shape], final_shapes: &[Shape], world: &Rect) -
         .flat_map(|s| pts(&s.outer))
         .map(|p| p.z)
         .fold(f64::NEG_INFINITY, f64::max);
-    if !(front < world.max.z) {
+    if !front.is_finite() || front >= world.max.z {
         return part.to_vec();
     }
     let ahead = vec![rect(front, world.max.z, world.min.r, world.max.r)];
