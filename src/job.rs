@@ -11,7 +11,8 @@ use crate::input::{self, Loaded};
 /// again with the tip its feeds give, and a warning LS-HOLDER-HAND (docs/field-rules.md
 /// §14: a left-hand holder mounted upside down, or behind the centre line with M04, cuts
 /// toward the chuck); a tool with no entry that only cuts thread passes is taken for a
-/// threading insert (`stock::ThreadFromUse`, docs/field-rules.md §17).
+/// threading insert, one that only feeds along the axis for a drill (`stock::ToolFromUse`,
+/// docs/field-rules.md §17).
 pub(crate) fn load_with_use(
     program: &ProgramArgs,
     path: &std::path::Path,
@@ -19,8 +20,8 @@ pub(crate) fn load_with_use(
     start_tool: Option<u32>,
 ) -> Result<(stock::ToolTable, Loaded), ()> {
     let (tools, loaded) = load_with_hand_tips(program, path, tools, start_tool)?;
-    let threads = tools.threads_from_use(&loaded.toolpath.segments);
-    Ok((tools.with_threads_from_use(&threads), loaded))
+    let found = tools.tools_from_use(&loaded.toolpath.segments);
+    Ok((tools.with_tools_from_use(&found), loaded))
 }
 
 /// The program read with `tools`, and again with the tips its feeds give (above).

@@ -136,3 +136,54 @@ fn check_and_expand_read_the_holders_tip_as_run_does() {
         check_4.stderr
     );
 }
+
+/// A program with no tool table, run as `run` runs it, and its JSON.
+fn run_without_table(program: &str) -> serde_json::Value {
+    let (dir, path) = temp_program("drill.nc", program.as_bytes());
+    let json = dir.path().join("r.json");
+    let out = latsim(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        "40x60",
+        "--json",
+        json.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap()
+}
+
+/// Field run 3 (D): a tool with no entry that only feeds along the axis at X0 is taken for
+/// a drill, Ø10 with a 118° point, its size assumed (docs/field-rules.md §17). Drilled to
+/// Z-20 by its tip, by G01 or by a G74 peck cycle, it leaves the same hole: Ø10 over
+/// Z0 … Z-16.996 and the point's cone, 3.004 long (5 / tan 59°), in the half section
+/// 5 · 16.996 + 5 · 3.004 / 2 = 92.49 mm². The default 55° insert plunged there with its
+/// edge across the face, and the default G74 blade, standing 20 mm along X, hollowed the
+/// whole section as it pecked (400 mm²).
+#[test]
+fn a_tool_that_only_feeds_along_the_axis_is_a_drill() {
+    let g01 =
+        "O0201\nG21 G99\nT0303 (DRILL)\nG97 S1200 M03\nG00 X0. Z3.\nG01 Z-20. F0.1\nG00 Z5.\nM30\n";
+    let g74 = "O0202\nG21 G99\nT0303 (DRILL)\nG97 S1200 M03\nG00 X0. Z3.\nG74 R0.5\nG74 Z-20. Q5000 F0.1\nG00 Z5.\nM30\n";
+    let hand = 5.0 * (20.0 - 5.0 / 59f64.to_radians().tan()) + 2.5 * 5.0 / 59f64.to_radians().tan();
+    for program in [g01, g74] {
+        let v = run_without_table(program);
+        let removed = v["removed_area_mm2"].as_f64().unwrap();
+        assert!((removed - hand).abs() < 0.01, "{removed} vs {hand}");
+        let notes: Vec<&str> = v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|w| w["code"] == "LS-STOCK")
+            .map(|w| w["message"].as_str().unwrap())
+            .collect();
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].contains("T03") && notes[0].contains("taken for a drill"),
+            "{notes:?}"
+        );
+    }
+}

@@ -216,8 +216,8 @@ fn cut_later(
     let (i, seg) = seg;
     let cuts_features = tools.blade_cuts(seg)
         || matches!(
-            tools.get(seg.tool),
-            Some(Tool::Drill { .. } | Tool::Threading { .. })
+            tools.tool_or_default(seg.tool),
+            Tool::Drill { .. } | Tool::Threading { .. }
         );
     if seg.motion == expander::Motion::Rapid || !cuts_features {
         return false;

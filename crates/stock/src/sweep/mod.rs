@@ -256,14 +256,17 @@ impl<'a> SweepBuilder<'a> {
     }
 
     /// Tool `t` under `hint` as mounted, for its cutting outline: warns once per tool (and
-    /// hint) when a default stands in, at move `idx`.
+    /// hint) when a default stands in, at move `idx`, and once for the same words (a tool
+    /// taken for a drill from its moves stands in under a grooving cycle's hint and without).
     fn edge(&mut self, t: u32, hint: ToolHint, idx: usize) -> Arc<Mounted> {
         let m = self.mounts.get(t, hint);
         if let Some(w) = &m.warning {
             let key = hint_key(t, hint);
             if !self.warned.contains(&key) {
                 self.warned.push(key);
-                self.warnings.push((idx, w.clone()));
+                if !self.warnings.iter().any(|(_, said)| said == w) {
+                    self.warnings.push((idx, w.clone()));
+                }
             }
         }
         m

@@ -1,54 +1,80 @@
-//! A tool with no entry, taken for what its moves say it is. A tool that only cuts thread
-//! passes (G32, G92, G76) is a threading insert, not the 55° turning default: that default
-//! cut a 96° thread and scraped the flank at every pull-out (field run 4, 5d). Its side is
-//! the side its passes come in from: from outside the thread (an OD insert) or from the
-//! bore (an ID one). Its size is a guess all the same, so its findings stay possible ones
-//! (spec/simulation.md, "Findings from assumed tools"; docs/field-rules.md §17).
+//! A tool with no entry, taken for what its moves say it is (docs/field-rules.md §17):
+//! - one that only cuts thread passes (G32, G92, G76) is a sharp 60° threading insert, not
+//!   the 55° turning default: that default cut a 96° thread and scraped the flank at every
+//!   pull-out (field run 4, 5d). Its side is the side its passes come in from: from outside
+//!   the thread (an OD insert) or from the bore (an ID one);
+//! - one that only feeds along the axis at X0 (a centre drill, a G74 or G83 peck drill) is
+//!   a drill: the 55° insert plunged there with its edge across the face, and the default
+//!   G74 blade, standing along X, hollowed the whole part as it pecked (field run 3, D).
 //!
-//! The program is not expanded again: the interpreter has compensated the tool as one with
-//! no entry (the default nose), which only a thread pass under G41/G42 would show, and the
-//! thread cycles cut their passes without compensation.
+//! Their size is a guess all the same, so their findings stay possible ones
+//! (spec/simulation.md, "Findings from assumed tools"). The program is not expanded again:
+//! the interpreter has compensated the tool as one with no entry (the default nose), which
+//! only a thread pass or a drilling feed under G41/G42 would show.
 
 use super::{ThreadSide, Tool, ToolTable};
 use expander::{Motion, Segment};
 
-/// A tool with no entry whose every cutting move is a thread pass.
+/// What a tool with no entry is taken for from its moves.
 #[derive(Debug, Clone, PartialEq)]
-pub struct ThreadFromUse {
+pub struct ToolFromUse {
     /// The T number.
     pub t: u32,
-    /// The side its passes come in from.
-    pub side: ThreadSide,
-    /// The index of its first thread move.
+    /// The tool it is taken for.
+    pub tool: Tool,
+    /// The index of its first cutting move.
     pub first: usize,
 }
 
-impl ThreadFromUse {
-    /// The threading insert it is taken for: 60° (metric and unified threads), sharp.
-    pub fn tool(&self) -> Tool {
-        Tool::Threading {
-            angle: 60.0,
-            tip_flat: 0.0,
-            side: self.side,
-        }
-    }
-}
+/// The drill a tool that only feeds along the axis is taken for: Ø10, the usual 118° point,
+/// as long as a jobber drill's flutes.
+const ASSUMED_DRILL: Tool = Tool::Drill {
+    diameter: 10.0,
+    point_angle: 118.0,
+    reach: 60.0,
+};
 
 /// What the moves of one tool with no entry say.
 struct Tally {
     t: u32,
     first: usize,
-    /// Feeds other than thread passes.
+    threads: usize,
+    /// Feeds along the axis at X0.
+    on_axis: usize,
+    /// Other feeds.
     feeds: usize,
     /// Thread runs entered from outside the thread (+) or from inside it (−), and left the
     /// same way.
     outside: i64,
 }
 
+impl Tally {
+    fn taken_for(&self) -> Option<Tool> {
+        if self.feeds > 0 {
+            return None;
+        }
+        match (self.threads, self.on_axis) {
+            (0, 0) => None,
+            (0, _) => Some(ASSUMED_DRILL),
+            (_, 0) => Some(Tool::Threading {
+                angle: 60.0,
+                tip_flat: 0.0,
+                // a thread that says nothing of its side is an outside one, the usual
+                side: if self.outside < 0 {
+                    ThreadSide::Id
+                } else {
+                    ThreadSide::Od
+                },
+            }),
+            _ => None,
+        }
+    }
+}
+
 impl ToolTable {
-    /// The tools with no entry (and a T word: tool 0 is the table's first entry) whose
-    /// cutting moves in `segments` are all thread passes.
-    pub fn threads_from_use(&self, segments: &[Segment]) -> Vec<ThreadFromUse> {
+    /// The tools with no entry (and a T word: tool 0 is the table's first entry) that
+    /// `segments` use only for thread passes or only for feeds along the axis.
+    pub fn tools_from_use(&self, segments: &[Segment]) -> Vec<ToolFromUse> {
         let mut tallies: Vec<Tally> = vec![];
         for (i, s) in segments.iter().enumerate() {
             if s.motion == Motion::Rapid || s.tool == 0 || self.get(s.tool).is_some() {
@@ -60,6 +86,8 @@ impl ToolTable {
                     tallies.push(Tally {
                         t: s.tool,
                         first: i,
+                        threads: 0,
+                        on_axis: 0,
                         feeds: 0,
                         outside: 0,
                     });
@@ -68,14 +96,18 @@ impl ToolTable {
             };
             let tally = &mut tallies[k];
             if s.motion == Motion::Feed {
-                tally.feeds += 1;
+                if along_axis(s) {
+                    tally.on_axis += 1;
+                } else {
+                    tally.feeds += 1;
+                }
                 continue;
             }
+            tally.threads += 1;
             // a thread run's ends: the move that brought the tool in, and the one out
-            let r = s.from.r;
             if let Some(p) = i.checked_sub(1).map(|j| &segments[j]) {
                 if p.motion != Motion::Thread {
-                    tally.outside += side_of(p.from.r - r);
+                    tally.outside += side_of(p.from.r - s.from.r);
                 }
             }
             if let Some(n) = segments.get(i + 1).filter(|n| n.motion != Motion::Thread) {
@@ -83,29 +115,44 @@ impl ToolTable {
             }
         }
         tallies
-            .into_iter()
-            .filter(|t| t.feeds == 0)
-            .map(|t| ThreadFromUse {
-                t: t.t,
-                // a thread that says nothing of its side is an outside one, the usual
-                side: if t.outside < 0 {
-                    ThreadSide::Id
-                } else {
-                    ThreadSide::Od
-                },
-                first: t.first,
+            .iter()
+            .filter_map(|t| {
+                t.taken_for().map(|tool| ToolFromUse {
+                    t: t.t,
+                    tool,
+                    first: t.first,
+                })
             })
             .collect()
     }
 
-    /// The table with the tools `found` taken for threading inserts: still no entries
-    /// ([`ToolTable::get`] has none of them, their size is not stated), but what cuts
-    /// for them ([`ToolTable::outline_for`], [`ToolTable::tool_or_default`]).
-    pub fn with_threads_from_use(&self, found: &[ThreadFromUse]) -> Self {
+    /// The table with the tools `found` taken for what their moves say: still no entries
+    /// ([`ToolTable::get`] has none of them, their size is not stated), but what cuts for
+    /// them ([`ToolTable::outline_for`], [`ToolTable::tool_or_default`]).
+    pub fn with_tools_from_use(&self, found: &[ToolFromUse]) -> Self {
         let mut out = self.clone();
-        out.by_use.extend(found.iter().map(|f| (f.t, f.tool())));
+        out.by_use
+            .extend(found.iter().map(|f| (f.t, f.tool.clone())));
         out
     }
+}
+
+/// The warning for tool `t`, which has no entry and is taken for `tool` from its moves.
+pub(super) fn taken_note(t: u32, tool: &Tool) -> String {
+    let what = match tool {
+        Tool::Drill { .. } => "only feeds along the axis: taken for a drill",
+        _ => "cuts only thread passes: taken for a threading insert",
+    };
+    format!(
+        "T{t:02} has no entry in the tool table and {what} ({}, its size assumed); state T{t:02} to check it",
+        tool.describe()
+    )
+}
+
+/// Whether feed `s` runs along the axis at X0 (a drill's feed).
+fn along_axis(s: &Segment) -> bool {
+    const ON_AXIS: f64 = 1e-9;
+    s.arc.is_none() && s.from.r.abs() <= ON_AXIS && s.to.r.abs() <= ON_AXIS && s.from.z != s.to.z
 }
 
 /// +1 when `dr` (a move's radial travel away from the thread) is outward, −1 inward.

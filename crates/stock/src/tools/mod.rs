@@ -14,7 +14,7 @@ mod schema;
 
 use crate::StockError;
 pub use bodies::{Body, HolderSize};
-pub use by_use::ThreadFromUse;
+pub use by_use::ToolFromUse;
 pub use hand::TipFromUse;
 pub use kinds::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool};
 pub(crate) use outline_choice::hint_key;
@@ -133,7 +133,7 @@ impl ToolTable {
     }
 
     /// The tool that cuts for `t` outside the cycles' hints: its entry, else what its moves
-    /// say it is ([`ToolTable::threads_from_use`]), else the default insert.
+    /// say it is ([`ToolTable::tools_from_use`]), else the default insert.
     pub fn tool_or_default(&self, t: u32) -> &Tool {
         self.get(t)
             .or_else(|| self.use_default(t))

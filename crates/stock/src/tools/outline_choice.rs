@@ -204,16 +204,9 @@ impl ToolTable {
     /// The tool that cuts for tool `t` under `hint` (see [`ToolTable::outline_for`]), with
     /// the warning when a default stands in.
     pub(super) fn resolve(&self, t: u32, hint: ToolHint) -> (Tool, Option<String>) {
-        let table = || {
-            match (self.get(t), self.use_default(t)) {
+        let table = || match (self.get(t), self.use_default(t)) {
             (Some(tool), _) => (tool.clone(), None),
-            (None, Some(tool)) => (
-                tool.clone(),
-                Some(format!(
-                    "T{t:02} has no entry in the tool table and cuts only thread passes: taken for a threading insert ({}); state T{t:02} to check its form",
-                    tool.describe()
-                )),
-            ),
+            (None, Some(tool)) => (tool.clone(), Some(super::by_use::taken_note(t, tool))),
             (None, None) => {
                 let why = if self.tools.is_empty() {
                     format!("no tool table: T{t:02} is taken as the default")
@@ -225,13 +218,13 @@ impl ToolTable {
                     Some(format!("{why} ({})", Tool::DEFAULT.describe())),
                 )
             }
-        }
         };
         match hint {
             ToolHint::Table => table(),
-            ToolHint::Grooving => match self.get(t) {
-                Some(tool) => (tool.clone(), None),
-                None => (
+            ToolHint::Grooving => match (self.get(t), self.use_default(t)) {
+                (Some(tool), _) => (tool.clone(), None),
+                (None, Some(tool)) => (tool.clone(), Some(super::by_use::taken_note(t, tool))),
+                (None, None) => (
                     Tool::DEFAULT_BLADE,
                     Some(format!("T{t:02} has no entry in the tool table: the grooving cycle uses the default ({})", Tool::DEFAULT_BLADE.describe())),
                 ),
