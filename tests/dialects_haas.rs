@@ -642,3 +642,25 @@ fn haas_g74_peck_drilling_in_mm() {
         ("LS-ONE-BLOCK-FORM", 11)
     );
 }
+
+/// Field run 4 (5b): Haas `M143 P1500` starts the sub-spindle at 1500 rpm (M133 P: a live
+/// tool's speed); it was the alarm "address P has no meaning in this block". The P is that
+/// spindle's speed and moves nothing of the main spindle's section; under FANUC, where
+/// M143 means nothing, the P still has no meaning.
+#[test]
+fn haas_sub_spindle_and_live_tool_speeds_take_p() {
+    let program = "O01430\nG21 G99\nT101\nG97 S1000 M03\nM143 P1500\nM133 P2000\nM135\nG00 X42. Z2.\nG01 Z-10. F0.2\nM145\nG00 X60. Z20.\nM30\n";
+    let tp = expand(program, &haas(), &stock::ToolTable::empty());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert!(tp.segments.iter().any(|s| s.motion == Motion::Feed));
+    let fanuc = expand(
+        program,
+        &Machine::for_control(Control::FanucA),
+        &stock::ToolTable::empty(),
+    );
+    assert!(
+        fanuc.alarms.iter().any(|a| a.code == "LS-WORD-UNUSED"),
+        "{:?}",
+        fanuc.alarms
+    );
+}

@@ -140,7 +140,7 @@ impl Interp<'_> {
                     w.span,
                     "LS-NOT-SIMULATED",
                     format!("{} is not simulated: {reason}", g_name(w)),
-                    "latsim simulates one turned 2D section; run this part of the program on a simulator for live tooling",
+                    "latsim simulates one turned 2D section; run this part of the program on a mill-turn simulator (live tools, C axis, a second spindle)",
                 ));
             }
             if let Some(letters) = codes::no_effect(t) {
@@ -461,6 +461,12 @@ impl Interp<'_> {
                         ),
                         "call a subprogram with M98 P<program number> under this control",
                     ))
+                }
+                m @ (133 | 134 | 143 | 144) if self.machine.control == crate::Control::Haas => {
+                    // P is the live tool's or the sub-spindle's speed (rpm, Haas lathe
+                    // manual, M133/M134, M143/M144): nothing of the main spindle's section
+                    used.take('P');
+                    self.machine_function(m, w)
                 }
                 m => self.machine_function(m, w),
             }
