@@ -76,24 +76,37 @@ impl ToolTable {
     /// `segments` use only for thread passes or only for feeds along the axis.
     pub fn tools_from_use(&self, segments: &[Segment]) -> Vec<ToolFromUse> {
         let mut tallies: Vec<Tally> = vec![];
+        // the tally of the last tool looked up (`None`: it has an entry): a program's
+        // moves come a tool at a time, and a million of them are read here
+        let mut last: Option<(u32, Option<usize>)> = None;
         for (i, s) in segments.iter().enumerate() {
-            if s.motion == Motion::Rapid || s.tool == 0 || self.get(s.tool).is_some() {
+            if s.motion == Motion::Rapid || s.tool == 0 {
                 continue;
             }
-            let k = match tallies.iter().position(|t| t.t == s.tool) {
-                Some(k) => k,
-                None => {
-                    tallies.push(Tally {
-                        t: s.tool,
-                        first: i,
-                        threads: 0,
-                        on_axis: 0,
-                        feeds: 0,
-                        outside: 0,
+            let k = match last {
+                Some((t, k)) if t == s.tool => k,
+                _ => {
+                    let k = self.get(s.tool).is_none().then(|| {
+                        tallies
+                            .iter()
+                            .position(|t| t.t == s.tool)
+                            .unwrap_or_else(|| {
+                                tallies.push(Tally {
+                                    t: s.tool,
+                                    first: i,
+                                    threads: 0,
+                                    on_axis: 0,
+                                    feeds: 0,
+                                    outside: 0,
+                                });
+                                tallies.len() - 1
+                            })
                     });
-                    tallies.len() - 1
+                    last = Some((s.tool, k));
+                    k
                 }
             };
+            let Some(k) = k else { continue };
             let tally = &mut tallies[k];
             if s.motion == Motion::Feed {
                 if along_axis(s) {
