@@ -693,3 +693,22 @@ fn two_g76_half_a_lead_apart_are_two_starts() {
     }
     assert!((depths[0].as_f64().unwrap() - 0.25).abs() < 1e-3, "{t:#}");
 }
+
+/// Field run 2 (N2) with the fifth run's binary: a sleeve with no tool table, its bore
+/// roughed and finished by G71/G70 (T03, the default insert) and then an internal
+/// M30 × 1.5 by G76 (T04, taken for an ID threading insert). The default insert's wall cut
+/// is a possible gouge; it was certain (GOUGE, exit 1) because the G70's path along the
+/// Ø28.4 bore ran through the thread's band, where no intent speaks and the "part" is
+/// the blank: the reference point counts only where it enters what an intent keeps.
+#[test]
+fn an_inside_thread_band_is_no_place_the_reference_point_enters_the_part() {
+    let program = "O0301\nG18 G21 G40 G80 G99\nT0303\nG96 S150 M03\nG00 X18. Z2.\nG71 U1.5 R0.5\nG71 P30 Q40 U-0.4 W0.1 F0.2\nN30 G00 X32.\nG01 X28.4 Z-0.8 F0.1\nZ-25.\nN40 X18.\nG70 P30 Q40\nG00 Z5.\nG28 U0. W0.\nT0404\nG97 S700 M03\nG00 X26. Z5.\nG76 P010060 Q50 R0.05\nG76 X30. Z-22. P812 Q250 F1.5\nG00 Z10.\nG28 U0. W0.\nM30\n";
+    let j = run_no_entry(program, None, &["--stock", "50x40", "--bore", "20"]);
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+    let gouges = j["gouges"].as_array().unwrap();
+    assert!(
+        gouges.iter().all(|g| g["assumed_tool"] == true),
+        "{gouges:#?}"
+    );
+    assert_eq!(j["threads"][0]["side"], "id", "{j:#}");
+}

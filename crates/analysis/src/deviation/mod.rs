@@ -145,7 +145,15 @@ pub fn deviation(
             g.assumed = true;
         }
     }
-    mark_assumed(&mut out.gouges, &part, segments, &mut mounts, chord_tol);
+    // the reference point makes a gouge certain where it enters what an intent keeps; in
+    // no intent's zone (a thread's teeth, the bar beyond a contour) the part is anything
+    mark_assumed(
+        &mut out.gouges,
+        &should_stay,
+        segments,
+        &mut mounts,
+        chord_tol,
+    );
     out
 }
 
