@@ -591,7 +591,16 @@ fn verdict_line(
         f.deviation
             .as_ref()
             .map_or(0, |d| d.gouges.iter().filter(|g| !g.assumed).count())
-    )
+    ) + &threads_too_deep(f, report.tolerance_mm)
+}
+
+/// ", 1 thread(s) too deep" when threads cut too deep fail the run (a gouge's verdict
+/// beside "0 gouge(s)" read as a contradiction), else nothing.
+fn threads_too_deep(f: &Findings, tol: f64) -> String {
+    match f.threads.iter().filter(|t| t.too_deep(tol)).count() {
+        0 => String::new(),
+        n => format!(", {n} thread(s) too deep"),
+    }
 }
 
 /// Where each crash and gouge is, `file:line` (the file a subprogram came from), for the

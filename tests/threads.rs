@@ -712,3 +712,57 @@ fn an_inside_thread_band_is_no_place_the_reference_point_enters_the_part() {
     );
     assert_eq!(j["threads"][0]["side"], "id", "{j:#}");
 }
+
+/// Field run 5 (D), in the style of a CAM job sheet's "clip thread" operation: an
+/// M30 × 2 by G92 to X27.6, then a 3 mm blade chamfers the first turn down to X26. The
+/// thread is measured as it cut itself, once its last pass ran: X27.6 reached, no depth
+/// error, 60°. It read "0.800 mm too deep (X26.000 reached)", the blade's chamfer taken
+/// for the thread's depth, and a thread too deep fails the run: GOUGE with 0 gouges.
+#[test]
+fn a_thread_deburred_later_is_measured_as_it_cut_itself() {
+    let table = "[[tool]]\nt = 7\nkind = \"threading\"\n[[tool]]\nt = 9\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"-z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
+    let program = "O5010\nG21 G40 G99\nT0707\nG97 S600 M03\nG00 X32. Z5.\nG92 X29.3 Z-20. F2.\nX28.8\nX28.4\nX28.0\nX27.7\nX27.6\nG00 X50. Z50.\nT0909\nG97 S600 M03\nG00 X32. Z2.\nG01 X26. Z-1. F0.05\nG00 X32.\nG00 X50. Z50.\nM30\n";
+    let j = run_no_entry(program, Some(table), &["--stock", "30x40"]);
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+    let t = &j["threads"][0];
+    let x = |k: &str| t[k].as_f64().unwrap();
+    assert!((x("achieved_x") - 27.6).abs() < 2e-3, "{t:#}");
+    assert!(x("depth_error_mm").abs() < 1e-3, "{t:#}");
+    assert!((x("included_angle_deg") - 60.0).abs() < 0.05, "{t:#}");
+    assert!(warnings(&j, "LS-THREAD-DEPTH").is_empty(), "{j:#}");
+}
+
+/// A thread cut 0.2 too deep against its drawing fails the run as a gouge does; the verdict
+/// line names it (it read "GOUGE … 0 gouge(s)", a contradiction; field run 5, D).
+#[test]
+fn a_thread_too_deep_is_named_on_the_verdict_line() {
+    let (dir, target) = common::temp_program(
+        "m20.toml",
+        b"start = [0.0, 0.0]\npath = [\n  { to = [0.0, 18.05] },\n  { to = [-25.0, 18.05] },\n  { to = [-25.0, 20.0] },\n  { to = [-40.0, 20.0] },\n  { to = [-40.0, 0.0] },\n]\n",
+    );
+    let (pdir, path) = common::temp_program(
+        "deep.nc",
+        M20.replace("X18.05 Z-25", "X17.65 Z-25").as_bytes(),
+    );
+    let _keep = (dir, pdir);
+    let tools = common::asset("tools/thread60.toml");
+    let out = common::latsim(&[
+        "run",
+        path.to_str().unwrap(),
+        "--stock",
+        "20x40",
+        "--tools",
+        tools.to_str().unwrap(),
+        "--target",
+        target.to_str().unwrap(),
+        "--reports",
+        "none",
+        "--quiet",
+    ]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let line = out.stdout.lines().last().unwrap_or_default();
+    assert!(
+        line.contains("GOUGE") && line.ends_with("0 gouge(s), 1 thread(s) too deep"),
+        "{line}"
+    );
+}

@@ -257,12 +257,14 @@ fn check_threads(
     beside: &Beside,
     tol: f64,
 ) -> threads::Checked {
-    let thread_stock: Vec<(usize, Vec<Shape>)> = beside
-        .thread_passes
-        .starts()
-        .into_iter()
-        .filter_map(|k| stocks.kept_at(k).map(|st| (k, st)))
-        .collect();
+    let kept = |marks: Vec<usize>| -> Vec<(usize, Vec<Shape>)> {
+        marks
+            .into_iter()
+            .filter_map(|k| stocks.kept_at(k).map(|st| (k, st)))
+            .collect()
+    };
+    let thread_stock = kept(beside.thread_passes.starts());
+    let thread_done = kept(beside.thread_passes.ends(&toolpath.segments));
     let target = match intents {
         Intents::Target(_) => intents_read.first().map(|i| i.part.as_slice()),
         Intents::Program => None,
@@ -272,7 +274,7 @@ fn check_threads(
         (&toolpath.segments, stocks.s.tools),
         &sim.final_shapes,
         target,
-        &thread_stock,
+        (&thread_stock, &thread_done),
         tol,
     )
 }

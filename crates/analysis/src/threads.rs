@@ -22,17 +22,23 @@ pub(crate) struct Checked {
 /// Checks every thread of `passes` in `shapes` (the final part). `before`: the stock each
 /// thread cut into, by its first move, where it was kept: the depth is measured only where
 /// that stock came up to the root (a relief groove cut deeper before is not the thread's
-/// depth).
+/// depth). `done`: the stock once each thread's last pass ran, by [`Thread::done_at`],
+/// where it was kept: its depth and form are measured there, as the thread cut itself (a
+/// later tool deburring its first turn made it "0.8 too deep", a gouge; field run 5, D).
 pub(crate) fn check(
     passes: &ThreadPasses,
     (segments, tools): (&[Segment], &ToolTable),
     shapes: &[Shape],
     target: Option<&[Shape]>,
-    before: &[(usize, Vec<Shape>)],
+    (before, done): (&[(usize, Vec<Shape>)], &[(usize, Vec<Shape>)]),
     tol: f64,
 ) -> Checked {
     let mut out = Checked::default();
     for t in passes.measure(segments, shapes) {
+        let shapes = done
+            .iter()
+            .find(|(k, _)| *k == t.done_at)
+            .map_or(shapes, |(_, s)| s.as_slice());
         if t.wrong_side {
             let tool = segments[t.first_move].tool;
             if tools.get(tool).is_some() {

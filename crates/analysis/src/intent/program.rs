@@ -177,6 +177,7 @@ pub fn stock_marks(toolpath: &Toolpath, tools: &ToolTable) -> Vec<usize> {
         .filter(|(k, i)| i.kind != IntendedKind::Groove && !overcut_later(intended, *k, i))
         .map(|(_, i)| i.after_move)
         .chain(crate::measure::thread_starts(segments, tools))
+        .chain(crate::measure::ThreadPasses::of(segments, tools).ends(segments))
         .collect();
     marks.sort_unstable();
     marks.dedup();

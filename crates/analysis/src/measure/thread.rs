@@ -157,6 +157,9 @@ pub struct Thread {
     /// Index of the first pass's first move in the toolpath: the stock before it is what
     /// the thread cuts into.
     pub first_move: usize,
+    /// The number of moves once its last pass has run: the stock then is the thread as it
+    /// cut itself, before a later tool chamfers or deburrs its first turn.
+    pub done_at: usize,
 }
 
 /// The form a thread leaves in the section, measured where a thread gauge or the
@@ -357,24 +360,35 @@ impl ThreadPasses {
         self.0.iter().map(|(_, passes)| passes[0]).collect()
     }
 
+    /// The number of moves once each thread's last pass has run (its thread moves, the
+    /// pull-out chamfer among them), in program order.
+    pub fn ends(&self, segments: &[Segment]) -> Vec<usize> {
+        self.0
+            .iter()
+            .map(|(_, passes)| pass_end(segments, passes[passes.len() - 1]))
+            .collect()
+    }
+
     /// The threads measured in the final section `shapes` (see [`threads`]); `segments`
     /// are the moves the passes were found in.
     pub fn measure(&self, segments: &[Segment], shapes: &[Shape]) -> Vec<Thread> {
-        let groups: Vec<(Surface, Vec<&Segment>, usize)> = self
+        let groups: Vec<(Surface, Vec<&Segment>, usize, usize)> = self
             .0
             .iter()
-            .map(|&(surface, ref passes)| {
+            .zip(self.ends(segments))
+            .map(|(&(surface, ref passes), done_at)| {
                 let first = passes[0];
                 (
                     surface,
                     passes.iter().map(|&i| &segments[i]).collect(),
                     first,
+                    done_at,
                 )
             })
             .collect();
         groups
             .into_iter()
-            .map(|(surface, passes, first_move)| {
+            .map(|(surface, passes, first_move, done_at)| {
                 let deeper = |a: f64, b: f64| match surface {
                     Surface::Outer => a < b,
                     Surface::Bore => a > b,
@@ -413,6 +427,7 @@ impl ThreadPasses {
                     };
                 Thread {
                     first_move,
+                    done_at,
                     starts,
                     wrong_side,
                     span: passes[0].span,
@@ -538,6 +553,15 @@ fn thread_groups(segments: &[Segment], tools: &ToolTable) -> Vec<(Surface, Vec<u
         }
     }
     groups
+}
+
+/// The number of moves once the pass whose main move is `main` has run: past the thread
+/// moves of its run.
+fn pass_end(segments: &[Segment], main: usize) -> usize {
+    segments[main..]
+        .iter()
+        .position(|s| s.motion != Motion::Thread)
+        .map_or(segments.len(), |k| main + k)
 }
 
 /// Of the thread moves `from..to` (one pass), the one most nearly along Z (the first of
@@ -674,6 +698,7 @@ mod tests {
             wrong_side: false,
             starts,
             first_move: 0,
+            done_at: 0,
         }
     }
 
