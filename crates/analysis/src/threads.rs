@@ -11,6 +11,9 @@ use crate::measure::{least_gap, Reference, Surface, Thread, ThreadPasses};
 use expander::Segment;
 use stock::{Shape, ToolTable};
 
+/// The stock after so many moves, where the run kept it.
+type KeptStock = (usize, Vec<Shape>);
+
 /// The threads' checks, with the notes they raise.
 #[derive(Debug, Default)]
 pub(crate) struct Checked {
@@ -30,7 +33,7 @@ pub(crate) fn check(
     (segments, tools): (&[Segment], &ToolTable),
     shapes: &[Shape],
     target: Option<&[Shape]>,
-    (before, done): (&[(usize, Vec<Shape>)], &[(usize, Vec<Shape>)]),
+    (before, done): (&[KeptStock], &[KeptStock]),
     tol: f64,
 ) -> Checked {
     let mut out = Checked::default();
