@@ -478,3 +478,32 @@ fn blocks_read_ahead_run_as_the_blocks_held() {
         }
     }
 }
+
+/// Field run 5 (G): two pins cut from one bar, the first in G54, the second in G55, with
+/// no G55 origin in the profile: the second was cut on top of the first, CLEAN. Switching
+/// work systems after cutting needs both origins (spec/dialects.md §6: a missing work
+/// offset is an error): the alarm LS-WORK-OFFSET at the G55. With the profile's G55 (or a
+/// G10 L2 P2 in the program) the second pin is cut 50 mm back; a program that selects
+/// G55 before it cuts anything is in one work system, the stock's frame.
+#[test]
+fn switching_to_a_work_system_of_unknown_origin_after_cutting_is_an_alarm() {
+    let pin = "G00 X32. Z2.\nG01 X20. F0.2\nZ-15.\nX32.\nG00 X50. Z50.\n";
+    let two = format!("G21 G99 M03 S500\nG54\n{pin}G55\n{pin}M30\n");
+    let tp = run(&two);
+    assert_eq!(tp.alarms.len(), 1, "{:?}", tp.alarms);
+    assert_eq!(tp.alarms[0].code, "LS-WORK-OFFSET");
+    assert_eq!(tp.alarms[0].span.line, 8);
+    let m = Machine::from_toml("[work_offsets]\ng55 = [-50.0, 0.0]").unwrap();
+    let tp = run_with(&two, &m, &Options::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let deepest = tp
+        .segments
+        .iter()
+        .map(|s| s.to.z)
+        .fold(f64::INFINITY, f64::min);
+    assert!((deepest + 65.0).abs() < 1e-9, "{deepest}");
+    let set = format!("G21 G99 M03 S500\nG10 L2 P2 Z-50.\nG54\n{pin}G55\n{pin}M30\n");
+    assert!(run(&set).alarms.iter().all(|a| a.code != "LS-WORK-OFFSET"));
+    let only = format!("G21 G99 M03 S500\nG00 X50. Z50.\nG55\n{pin}M30\n");
+    assert!(run(&only).alarms.is_empty(), "{:?}", run(&only).alarms);
+}

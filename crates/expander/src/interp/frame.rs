@@ -21,6 +21,10 @@ pub(crate) struct Frames {
     origin: Pt,
     /// G54–G59 origins, as the profile gives them and G10 L2 changes them.
     offsets: [Pt; 6],
+    /// Which of them the profile or a G10 L2 states.
+    stated: [bool; 6],
+    /// The number of moves when the work system in force was selected.
+    selected_at: usize,
     /// G54.1 P / G154 P origins, from the profile and G10 L20.
     extra: BTreeMap<u32, Pt>,
     /// The external work shift (G10 P0 / L2 P0).
@@ -36,6 +40,8 @@ impl Frames {
             work: Work::Fixed(0),
             origin: Pt::default(),
             offsets: machine.work_offsets,
+            stated: machine.work_offsets_stated,
+            selected_at: 0,
             extra: machine.extra_offsets.clone(),
             ext_shift: Pt::default(),
             local: Pt::default(),
@@ -44,11 +50,35 @@ impl Frames {
 }
 
 impl Interp<'_> {
-    /// G54–G59: the work system `i` (0 = G54), with the G52 local shift kept.
-    pub(super) fn select_work_offset(&mut self, i: usize) {
+    /// G54–G59 (`g`): the work system `i` (0 = G54), with the G52 local shift kept. A
+    /// program that has cut in one work system and switches to another needs both origins
+    /// (spec/dialects.md §6: a missing work offset is an error); one work system alone is
+    /// the frame the stock is given in, whichever it is (docs/field-rules.md §18).
+    pub(super) fn select_work_offset(&mut self, g: &Word, i: usize) -> Result<(), Diagnostic> {
+        if let Work::Fixed(now) = self.frames.work {
+            let cut = self.out.segments[self.frames.selected_at.min(self.out.segments.len())..]
+                .iter()
+                .any(|s| s.motion != crate::Motion::Rapid);
+            let unknown = [now, i].into_iter().find(|&k| !self.frames.stated[k]);
+            if let (true, true, Some(k)) = (i != now, cut, unknown) {
+                return Err(alarm(
+                    g.span,
+                    "LS-WORK-OFFSET",
+                    format!(
+                        "G{} follows cutting in G{}, and the machine profile gives no origin for G{}: where one work system lies from the other is unknown",
+                        54 + i,
+                        54 + now,
+                        54 + k
+                    ),
+                    format!("add g{} = [z, x] under [work_offsets] in the --machine profile (its zero in G54's frame), or set it with G10 L2 P{}", 54 + k, k + 1),
+                ));
+            }
+        }
         self.frames.work = Work::Fixed(i);
+        self.frames.selected_at = self.out.segments.len();
         self.frames.origin = self.frames.offsets[i] + self.frames.ext_shift;
         self.shift = self.frames.origin + self.frames.local;
+        Ok(())
     }
 
     /// The work system in force again after its offset changed (G10).
@@ -272,7 +302,10 @@ impl Interp<'_> {
                 self.frames.extra.insert(n, new);
             }
             (false, 0) => self.frames.ext_shift = new,
-            (false, n) => self.frames.offsets[n as usize - 1] = new,
+            (false, n) => {
+                self.frames.offsets[n as usize - 1] = new;
+                self.frames.stated[n as usize - 1] = true;
+            }
         }
         let name = match (extra, n) {
             (true, n) => format!("additional work offset P{n}"),

@@ -321,6 +321,10 @@ pub struct Machine {
     pub max_rpm: f64,
     /// Origins of G54..G59 relative to G54, (z, r).
     pub work_offsets: [Pt; 6],
+    /// Which of [`Machine::work_offsets`] the profile states (G54 always: the frame the
+    /// stock is given in); a program that cuts in one work system and then switches to
+    /// one of unknown origin is an alarm.
+    pub work_offsets_stated: [bool; 6],
     /// F in force at power-on (0: none, so a cutting move before any F is alarm PS011,
     /// as on FANUC; a GSK keeps its last F, which a profile can give here).
     pub power_on_feed: f64,
@@ -391,6 +395,7 @@ impl Machine {
             home: Pt::new(150.0, 125.0),
             max_rpm: 4000.0,
             work_offsets: [Pt::default(); 6],
+            work_offsets_stated: [true, false, false, false, false, false],
             power_on_feed: 0.0,
             rapid_cut_tol: 0.1,
             machine_zero: Pt::new(150.0, 125.0),

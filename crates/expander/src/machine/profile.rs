@@ -342,7 +342,10 @@ impl Machine {
                 .and_then(|n| n.parse::<u32>().ok())
                 .filter(|n| (1..=300).contains(n));
             match (fixed, extra) {
-                (Some(i), _) => self.work_offsets[i] = text.point(&name, v)?,
+                (Some(i), _) => {
+                    self.work_offsets[i] = text.point(&name, v)?;
+                    self.work_offsets_stated[i] = true;
+                }
                 (None, Some(n)) => {
                     self.extra_offsets.insert(n, text.point(&name, v)?);
                 }
