@@ -766,3 +766,33 @@ fn a_thread_too_deep_is_named_on_the_verdict_line() {
         "{line}"
     );
 }
+
+/// Field run 5 (F): under G20 a FANUC G76's P and Q are in the inch increment, 0.0001 in
+/// (cycles.md: least input increments), not 0.001 mm: `P0479 Q0100` is k = 0.0479 in and
+/// Δd = 0.0100 in, so a 1/2-13 to X0.4056 starts at X0.4056 + 2 (0.0479 − 0.0100) =
+/// 0.4814 in (12.22756 mm). It started at X0.4056 + 2 (0.479 − 0.100) mm, 0.758 mm higher,
+/// with a 0.82 mm first chip; a G75's P and Q the same.
+#[test]
+fn inch_g76_p_and_q_are_in_the_inch_increment() {
+    let text = "G20 G99 M03 S800 T0303\nG00 X0.6 Z0.25\nG76 P010060 Q0020 R0.001\nG76 X0.4056 Z-1.0 P0479 Q0100 F0.076923\nG00 X0.8\nM30\n";
+    let program = gcode::parse(text).unwrap();
+    let machine = expander::Machine::for_control(expander::Control::FanucA);
+    let tp = expander::expand(&program, &machine, &Default::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    let first = tp
+        .segments
+        .iter()
+        .find(|s| s.motion == expander::Motion::Thread)
+        .unwrap();
+    assert!(
+        (2.0 * first.from.r - 0.4814 * 25.4).abs() < 1e-6,
+        "{first:?}"
+    );
+    let deepest = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Thread)
+        .map(|s| 2.0 * s.to.r)
+        .fold(f64::INFINITY, f64::min);
+    assert!((deepest - 0.4056 * 25.4).abs() < 1e-6, "{deepest}");
+}

@@ -317,7 +317,9 @@ fn peck(
     }
     let q = match rules {
         Rules::Haas | Rules::LinuxCnc => c.words.mm('Q', c.unit),
-        Rules::Fanuc => c.words.increments('Q', c.machine.increment.mm())?,
+        Rules::Fanuc => c
+            .words
+            .increments('Q', c.machine.increment_mm_under(c.unit))?,
     };
     if q.is_none() && rules == Rules::LinuxCnc && prev.is_none_or(|p| p.q <= 0.0) {
         return Err(c.alarm(

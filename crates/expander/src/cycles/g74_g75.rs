@@ -170,7 +170,7 @@ struct Words {
 fn read(c: &mut Cycle, haas: bool) -> Result<Words, Diagnostic> {
     let x = c.x_target()?;
     let z = c.z_target()?;
-    let pq = c.machine.pq_mm();
+    let pq = c.machine.pq_mm_under(c.unit);
     let (p, q, escape, e) = if haas {
         (
             c.words.mm('I', c.unit),
@@ -378,7 +378,7 @@ fn count(
     let estimate = plunges * (2.0 * pecks + 3.0) + 1.0;
     if estimate > MAX_MOVES as f64 {
         let (in_word, shift_word) = axes.order(w.p_word, w.q_word);
-        let pq = c.machine.pq_mm();
+        let pq = c.machine.pq_mm_under(c.unit);
         return Err(c.alarm(
             "LS-CYCLE-TOO-LONG",
             format!(

@@ -437,12 +437,26 @@ impl Machine {
                 ))
     }
 
-    /// Millimetres per P/Q unit of the grooving/threading cycles.
+    /// Millimetres per P/Q unit of the grooving/threading cycles (metric).
     pub fn pq_mm(&self) -> f64 {
+        self.pq_mm_under(1.0)
+    }
+
+    /// Millimetres per P/Q unit under the units in force (`unit`: 1, or 25.4 under G20):
+    /// the least input increment is 0.001 mm or 0.0001 in (IS-B), a tenth of that under
+    /// IS-C, so an inch increment is 2.54 metric ones (cycles.md: P and Q in least input
+    /// increments; a FANUC inch G76 P0479 is 0.0479 in, not 0.479 mm).
+    pub fn pq_mm_under(&self, unit: f64) -> f64 {
         match self.pq_units {
-            PqUnits::Increment => self.increment.mm(),
-            PqUnits::Mm => 1.0,
+            PqUnits::Increment => self.increment_mm_under(unit),
+            PqUnits::Mm => unit,
         }
+    }
+
+    /// Millimetres per least input increment under the units in force (see
+    /// [`Machine::pq_mm_under`]).
+    pub fn increment_mm_under(&self, unit: f64) -> f64 {
+        self.increment.mm() * if unit == 1.0 { 1.0 } else { unit / 10.0 }
     }
 }
 

@@ -9,7 +9,7 @@ use crate::{Diagnostic, Pt};
 pub(super) fn geometry_block(c: &mut Cycle) -> Result<Geometry, Diagnostic> {
     let x = c.x_target()?;
     let z = c.z_target()?;
-    let pq = c.machine.pq_mm();
+    let pq = c.machine.pq_mm_under(c.unit);
     let p = c.words.increments('P', pq)?;
     let q = c.words.increments('Q', pq)?;
     let h = c.words.mm('H', c.unit);

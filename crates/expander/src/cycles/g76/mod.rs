@@ -307,7 +307,7 @@ impl OneBlockConfig {
 pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
     let g_span = c.g.map_or(c.words.span(), |w| w.span);
     let block = c.words.block;
-    let pq_mm = c.machine.pq_mm();
+    let pq_mm = c.machine.pq_mm_under(c.unit);
     let unit = c.unit;
     let first = c.retained.g76.unwrap_or_default();
     let haas = c.machine.control == crate::Control::Haas;
