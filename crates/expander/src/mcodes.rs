@@ -23,6 +23,9 @@ pub(crate) enum Effect {
     ThreadChamfer(bool),
     /// The tailstock advances (`true`: its centre is an obstacle again) or retracts.
     Tailstock(bool),
+    /// The C axis engages (`true`: the spindle is indexed, a hole off the axis is a hole
+    /// in one place) or disengages.
+    CAxis(bool),
 }
 
 /// The control's name and effect of machine function `m`; `None` when its table does not
@@ -57,7 +60,8 @@ pub(crate) fn machine_function(control: Control, m: u32) -> Option<(&'static str
             130 => Some(("show a media file", None)),
             133..=135 => Some(("live tool CW / CCW / stop", None)),
             143..=145 => Some(("sub-spindle CW / CCW / stop", None)),
-            154 | 155 => Some(("C axis engage / disengage", None)),
+            154 => Some(("C axis engage", CAxis(true))),
+            155 => Some(("C axis disengage", CAxis(false))),
             _ => Option::None,
         },
         Control::Gsk980 => match m {

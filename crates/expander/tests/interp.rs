@@ -507,3 +507,48 @@ fn switching_to_a_work_system_of_unknown_origin_after_cutting_is_an_alarm() {
     let only = format!("G21 G99 M03 S500\nG00 X50. Z50.\nG55\n{pin}M30\n");
     assert!(run(&only).alarms.is_empty(), "{:?}", run(&only).alarms);
 }
+
+/// Field run 5 (B): an indexable drill offset in X (`G83 X2.`, Haas `G81 X0.0708`) with
+/// the spindle turning cuts a round hole about the axis, 2 mm larger than the drill, as
+/// G01 at X2 already did: it runs, warned W-OFF-AXIS-DRILL, its moves at r 1. Off the axis
+/// with the spindle stopped, with the C axis engaged (Haas M154), or for a tap (G84), a
+/// hole is in one place: the alarm LS-OFF-AXIS.
+#[test]
+fn an_offset_drill_with_the_spindle_turning_cuts_a_round_hole() {
+    let fanuc = Machine::for_control(expander::Control::FanucA);
+    let drill = |spindle: &str, code: &str| {
+        format!("G21 G99\n{spindle}\nG00 X2. Z5.\n{code} X2. Z-20. R-3. F0.08\nG80\nG00 X50. Z50.\nM30\n")
+    };
+    let tp = run_with(&drill("M03 S1200", "G83"), &fanuc, &Options::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert!(tp.warnings.iter().any(|w| w.code == "W-OFF-AXIS-DRILL"));
+    let feeds: Vec<_> = tp
+        .segments
+        .iter()
+        .filter(|s| s.motion == expander::Motion::Feed)
+        .collect();
+    assert!(
+        !feeds.is_empty() && feeds.iter().all(|s| (s.to.r - 1.0).abs() < 1e-9),
+        "{feeds:?}"
+    );
+    for (spindle, code) in [("M05", "G83"), ("M03 S1200", "G84")] {
+        let tp = run_with(&drill(spindle, code), &fanuc, &Options::default());
+        assert!(
+            tp.alarms.iter().any(|a| a.code == "LS-OFF-AXIS"),
+            "{spindle} {code}: {:?}",
+            tp.alarms
+        );
+    }
+    let haas = Machine::for_control(expander::Control::Haas);
+    let indexed = drill("M03 S1200\nM154", "G81");
+    let tp = run_with(&indexed, &haas, &Options::default());
+    assert!(
+        tp.alarms.iter().any(|a| a.code == "LS-OFF-AXIS"),
+        "{:?}",
+        tp.alarms
+    );
+    let free = drill("M03 S1200\nM154\nM155", "G81");
+    assert!(run_with(&free, &haas, &Options::default())
+        .alarms
+        .is_empty());
+}

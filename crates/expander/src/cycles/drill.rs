@@ -109,6 +109,7 @@ pub(super) fn run(c: &mut Cycle) -> Result<Output, Diagnostic> {
         dwell_s: (0..hole.times).fold(0.0, |sum, _| sum + hole.words.dwell),
         ..Output::default()
     };
+    out.warnings.extend(hole.off_axis);
     if c.code == G84 && c.g.is_some() {
         out.warnings.push(c.alarm(
             "LS-TAP",
@@ -168,6 +169,10 @@ struct Hole {
     words: DrillWords,
     times: u32,
     pecks: usize,
+    /// Its radius: 0 on the axis, else an offset drill's ([`hole_radius`]).
+    radius: f64,
+    /// The warning of a drill off the axis.
+    off_axis: Option<Diagnostic>,
 }
 
 /// Read the block's words, the retained ones of the same cycle filling what it omits, and
@@ -178,7 +183,7 @@ fn read(c: &mut Cycle, rules: Rules) -> Result<Hole, Diagnostic> {
         .retained
         .drill
         .filter(|d| d.code == c.code || c.g.is_none());
-    x_on_axis(c, &name)?;
+    let (radius, off_axis) = hole_radius(c, &name)?;
     let initial = prev.map_or(c.start.z, |p| p.initial);
     let r = r_point(c, rules.r_is_plane(), &name, initial, prev)?;
     let w_word = c.words.block.get('W');
@@ -232,24 +237,41 @@ fn read(c: &mut Cycle, rules: Rules) -> Result<Hole, Diagnostic> {
         words,
         times,
         pecks: pecks as usize,
+        radius,
+        off_axis,
     })
 }
 
-/// X: on the axis only.
-fn x_on_axis(c: &mut Cycle, name: &str) -> Result<(), Diagnostic> {
+/// X: the hole's radius. On the axis; off it only a drill (not a tap nor a boring bar)
+/// with the spindle turning and its C axis free: an offset indexable drill cuts a round
+/// hole about the axis, as G01 at that X does (**Interpretation**, docs/field-rules.md
+/// §19), warned. Else a hole off the axis is a hole in one place: an alarm.
+fn hole_radius(c: &mut Cycle, name: &str) -> Result<(f64, Option<Diagnostic>), Diagnostic> {
     let x_word = c.words.block.get('X').or_else(|| c.words.block.get('U'));
     let x = c.x_target()?.unwrap_or(c.start.r);
     if x.abs() <= 1e-6 {
-        return Ok(());
+        return Ok((0.0, None));
+    }
+    let span = x_word.map_or(c.span(), |w| w.span);
+    // the X as the program writes it (a diameter, in its units)
+    let written = 2.0 * x / c.unit;
+    if c.turning_free && matches!(c.code, G81 | G82 | G83 | DRILL_CHIP_BREAK) {
+        let warning = Diagnostic::new(
+            span,
+            "W-OFF-AXIS-DRILL",
+            format!(
+                "{name} at X{written:.4} with the spindle turning: an offset drill, its hole {:.3} mm larger in diameter than the drill",
+                2.0 * x.abs()
+            ),
+            "the hole is drawn round about the axis; with the C axis engaged (M154) it would be an alarm",
+        );
+        return Ok((x, Some(warning)));
     }
     Err(Diagnostic::new(
-        x_word.map_or(c.span(), |w| w.span),
+        span,
         "LS-OFF-AXIS",
-        format!(
-            "{name} at X{:.3}: a hole off the spindle axis is not axisymmetric",
-            2.0 * x
-        ),
-        "drill on the axis: position at X0 before the cycle (or give X0)",
+        format!("{name} at X{written:.4}: a hole off the spindle axis is not axisymmetric"),
+        "drill on the axis: position at X0 before the cycle (or give X0); an offset drill needs the spindle turning (M03/M04)",
     ))
 }
 
@@ -417,7 +439,7 @@ fn moves(c: &Cycle, hole: &Hole) -> Vec<Move> {
         DrillReturn::Initial => w.initial,
         DrillReturn::RPoint => w.r,
     };
-    let at = |z: f64| Pt::new(z, 0.0);
+    let at = |z: f64| Pt::new(z, hole.radius);
     let dir = (w.bottom - w.r).signum();
     let delta = w.clearance;
     let full_retract = match c.code {

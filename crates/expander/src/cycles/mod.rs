@@ -142,6 +142,10 @@ pub(crate) struct Cycle<'a, 'b> {
     pub(crate) feed_mm: f64,
     /// Where a drilling cycle returns (G98/G99 in systems B/C; the profile elsewhere).
     pub(crate) drill_return: crate::DrillReturn,
+    /// The spindle turns (M03/M04 in force) and its C axis is not engaged: a drill off
+    /// the axis cuts a round hole about it (an offset indexable drill), not a hole in
+    /// one place.
+    pub(crate) turning_free: bool,
     /// The modes a `LinuxCNC` G76 reads (G7, compensation, spindle).
     pub(crate) linuxcnc: g76_linuxcnc::Modes,
 }

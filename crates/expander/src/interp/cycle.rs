@@ -42,6 +42,7 @@ impl Interp<'_> {
                 thread_chamfer: self.thread_chamfer,
                 feed_mm,
                 drill_return: self.drill_return,
+                turning_free: self.spindle_on && !self.c_axis,
                 linuxcnc: cycles::g76_linuxcnc::Modes {
                     x_diameter: self.x_diameter,
                     compensating: self.comp.is_some(),

@@ -207,6 +207,8 @@ pub(crate) struct Interp<'m> {
     noted: Vec<&'static str>,
     /// Work offsets and shifts (G54–G59, G54.1/G154, G10, G52).
     frames: frame::Frames,
+    /// The C axis is engaged (Haas M154 until M155): the spindle is indexed, not turning.
+    pub(crate) c_axis: bool,
     /// Haas M23 (on, the power-on state, **Interpretation**) / M24 (off): the thread
     /// pull-out chamfer of G76 (spec/dialects.md §3.5).
     pub(crate) thread_chamfer: bool,
@@ -289,6 +291,7 @@ impl<'m> Interp<'m> {
             noted: vec![],
             frames: frame::Frames::new(machine),
             thread_chamfer: true,
+            c_axis: false,
             thread_phase: 0.0,
             corner: None,
             parts: [0.0; 2],

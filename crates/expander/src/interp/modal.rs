@@ -487,6 +487,7 @@ impl Interp<'_> {
             }
             Some(Effect::ChuckCloses) => self.chuck_open = false,
             Some(Effect::ThreadChamfer(on)) => self.thread_chamfer = on,
+            Some(Effect::CAxis(on)) => self.c_axis = on,
             Some(Effect::Tailstock(engaged)) => {
                 // inside a G41/G42 section the moves are emitted when it ends
                 if self.section.is_some() {
