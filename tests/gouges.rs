@@ -528,3 +528,38 @@ fn a_face_cut_too_deep_is_as_deep_as_it_cuts_below_the_shape() {
         assert_eq!(g[0]["cause"]["kind"], "program", "{stock_z}: {g:#?}");
     }
 }
+
+/// Field run 5 (C), in the style of a tooling maker's job sheet: a Ø40 pin turned by
+/// G71/G70 to Z-16, then parted off at Z-13 by T09, which chamfers the back edge under G42
+/// first; no tool table. The blade is the default insert, so what its outline cuts into
+/// the pin is a possible gouge only (it was a certain 3.2 mm GOUGE: the part-off's own
+/// G42 chamfer, which begins after the plunge, claimed the place); and the back chamfer's
+/// intent speaks of the stock within its own Z span, not of the bar toward the chuck (it
+/// drew a 118 mm² leftover band the length of the bar).
+#[test]
+fn a_part_off_chamfering_under_g42_with_no_table_is_clean() {
+    let program = "O0519\nG21 G40 G99\nT0101\nG96 S200 M03\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X36.\nG01 Z0. F0.1\nX40. Z-2.\nZ-16.\nN20 X52.\nG70 P10 Q20\nG28 U0. W0.\nT0909\nG96 S120 M03\nG00 X52. Z-14.1\nG01 X50. F0.1\nX48. Z-13.\nX39.5\nX43.\nZ-12.3\nG42 X40.6\nX39.1 Z-13.\nX30.\nG00 G40 X52.\nG28 U0. W0.\nM30\n";
+    let (dir, path) = temp_program("partoff.nc", program.as_bytes());
+    let _keep = dir;
+    let (out, v) = run_json(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        "50x40",
+    ]);
+    assert_eq!(out.code, 0, "{v:#}");
+    let gouges = v["gouges"].as_array().unwrap();
+    assert!(
+        gouges.iter().all(|g| g["assumed_tool"] == true),
+        "{gouges:#?}"
+    );
+    let left: f64 = v["leftovers"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["area_mm2"].as_f64().unwrap())
+        .sum();
+    assert!(left < 1.0, "{left}: {:#}", v["leftovers"]);
+}

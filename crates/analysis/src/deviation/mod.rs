@@ -140,7 +140,7 @@ pub fn deviation(
         if g.made_by.is_some_and(|i| {
             tools.get(segments[i].tool).is_none()
                 && segments[i].motion != expander::Motion::Rapid
-                && in_later_contour(g, intents, (i, &segments[i]), &world_box)
+                && in_later_contour(g, intents, (i, &segments[i]), &world_box, true)
         }) {
             g.assumed = true;
         }
@@ -230,17 +230,21 @@ fn cut_later(
     if seg.motion == expander::Motion::Rapid || !cuts_features {
         return false;
     }
-    in_later_contour(g, intents, (i, seg), world)
+    in_later_contour(g, intents, (i, seg), world, false)
 }
 
 /// Whether every contour that claims the place of `g` (at least one) was finished by
 /// another tool than move `i`'s and began before `i` ([`Intent::owner`]), or claims it
-/// only as the core under an OD profile ([`core_hole`]).
+/// only as the core under an OD profile ([`core_hole`]). `own_later`: a contour of move
+/// `i`'s own tool that begins after it does not count (for a tool the table says nothing
+/// of, whose finding then is only possible: a part-off's plunge before its own chamfer
+/// under G42; field run 5, C).
 fn in_later_contour(
     g: &Finding,
     intents: &[Intent],
     (i, seg): (usize, &Segment),
     world: &Rect,
+    own_later: bool,
 ) -> bool {
     let region = std::slice::from_ref(&g.shape);
     let claiming = intents.iter().filter(|intent| {
@@ -253,6 +257,7 @@ fn in_later_contour(
             Some(o) if o.tool != seg.tool && (i >= o.began || core_hole(g, intent)) => {
                 any = true;
             }
+            Some(o) if own_later && o.tool == seg.tool && o.began > i => {}
             _ => return false,
         }
     }

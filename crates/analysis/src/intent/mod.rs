@@ -184,7 +184,12 @@ impl Intent {
             Toward::MinusZ | Toward::PlusZ => {
                 let z = if toward == Toward::MinusZ { -FAR } else { FAR };
                 ring.extend([[z, last[1]], [z, first[1]]]);
-                rect(-FAR, FAR, lo[1], hi[1])
+                // a back face (its part toward +Z: a part-off's chamfer and parting line)
+                // speaks of the stock it cuts, within its own Z span; behind it lies the bar
+                // that holds the part, the next part's stock, not stock to be gone (it drew
+                // a leftover band the length of the bar; field run 5, C)
+                let back = if toward == Toward::PlusZ { lo[0] } else { -FAR };
+                rect(back, FAR, lo[1], hi[1])
             }
         };
         let part = boolean(
