@@ -506,6 +506,20 @@ fn switching_to_a_work_system_of_unknown_origin_after_cutting_is_an_alarm() {
     assert!(run(&set).alarms.iter().all(|a| a.code != "LS-WORK-OFFSET"));
     let only = format!("G21 G99 M03 S500\nG00 X50. Z50.\nG55\n{pin}M30\n");
     assert!(run(&only).alarms.is_empty(), "{:?}", run(&only).alarms);
+    // a reset to G54 before M30, with no cut after it, is no switch (review)
+    let reset = format!("G21 G99 M03 S500\nG55\n{pin}G54\nM30\n");
+    assert!(run(&reset).alarms.is_empty(), "{:?}", run(&reset).alarms);
+    // after cutting in an additional work system, an unknown G55 is one too
+    let p1 = Machine::from_toml("[work_offsets]\np1 = [-50.0, 0.0]").unwrap();
+    let extra = format!("G21 G99 M03 S500\nG54.1 P1\n{pin}G55\n{pin}M30\n");
+    let tp = run_with(&extra, &p1, &Options::default());
+    assert!(
+        tp.alarms
+            .iter()
+            .any(|a| a.code == "LS-WORK-OFFSET" && a.span.line == 8),
+        "{:?}",
+        tp.alarms
+    );
 }
 
 /// Field run 5 (B): an indexable drill offset in X (`G83 X2.`, Haas `G81 X0.0708`) with

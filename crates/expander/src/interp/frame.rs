@@ -23,8 +23,10 @@ pub(crate) struct Frames {
     offsets: [Pt; 6],
     /// Which of them the profile or a G10 L2 states.
     stated: [bool; 6],
-    /// The number of moves when the work system in force was selected.
-    selected_at: usize,
+    /// The word that selected the work system in force (none: G54 at power-on).
+    selected_by: Option<gcode::Span>,
+    /// The work system the last cutting move ran in.
+    cut_in: Option<Work>,
     /// G54.1 P / G154 P origins, from the profile and G10 L20.
     extra: BTreeMap<u32, Pt>,
     /// The external work shift (G10 P0 / L2 P0).
@@ -41,7 +43,8 @@ impl Frames {
             origin: Pt::default(),
             offsets: machine.work_offsets,
             stated: machine.work_offsets_stated,
-            selected_at: 0,
+            selected_by: None,
+            cut_in: None,
             extra: machine.extra_offsets.clone(),
             ext_shift: Pt::default(),
             local: Pt::default(),
@@ -50,35 +53,55 @@ impl Frames {
 }
 
 impl Interp<'_> {
-    /// G54–G59 (`g`): the work system `i` (0 = G54), with the G52 local shift kept. A
-    /// program that has cut in one work system and switches to another needs both origins
-    /// (spec/dialects.md §6: a missing work offset is an error); one work system alone is
-    /// the frame the stock is given in, whichever it is (docs/field-rules.md §18).
-    pub(super) fn select_work_offset(&mut self, g: &Word, i: usize) -> Result<(), Diagnostic> {
-        if let Work::Fixed(now) = self.frames.work {
-            let cut = self.out.segments[self.frames.selected_at.min(self.out.segments.len())..]
-                .iter()
-                .any(|s| s.motion != crate::Motion::Rapid);
-            let unknown = [now, i].into_iter().find(|&k| !self.frames.stated[k]);
-            if let (true, true, Some(k)) = (i != now, cut, unknown) {
-                return Err(alarm(
-                    g.span,
-                    "LS-WORK-OFFSET",
-                    format!(
-                        "G{} follows cutting in G{}, and the machine profile gives no origin for G{}: where one work system lies from the other is unknown",
-                        54 + i,
-                        54 + now,
-                        54 + k
-                    ),
-                    format!("add g{} = [z, x] under [work_offsets] in the --machine profile (its zero in G54's frame), or set it with G10 L2 P{}", 54 + k, k + 1),
-                ));
-            }
-        }
+    /// G54–G59 (`g`): the work system `i` (0 = G54), with the G52 local shift kept.
+    pub(super) fn select_work_offset(&mut self, g: &Word, i: usize) {
         self.frames.work = Work::Fixed(i);
-        self.frames.selected_at = self.out.segments.len();
+        self.frames.selected_by = Some(g.span);
         self.frames.origin = self.frames.offsets[i] + self.frames.ext_shift;
         self.shift = self.frames.origin + self.frames.local;
-        Ok(())
+    }
+
+    /// Before a cutting move: a program that cuts in one work system and then in another
+    /// needs both origins (spec/dialects.md §6: a missing work offset is an error), an
+    /// alarm at the word that selected the second; one work system alone, whichever, is the
+    /// frame the stock is given in, and selecting one without cutting in it (a reset
+    /// before M30) is no matter (docs/field-rules.md §18).
+    pub(super) fn cut_in_work_system(&mut self) -> Result<(), Diagnostic> {
+        let now = self.frames.work;
+        let known = |w: Work| match w {
+            Work::Fixed(k) => self.frames.stated[k],
+            // an additional offset is always the profile's or a G10's
+            Work::Extra(_) => true,
+        };
+        match self.frames.cut_in {
+            Some(before) if before != now && !(known(before) && known(now)) => {
+                let name = |w: Work| match w {
+                    Work::Fixed(k) => format!("G{}", 54 + k),
+                    Work::Extra(n) => format!("P{n}"),
+                };
+                let unknown = if known(now) { before } else { now };
+                let key = match unknown {
+                    Work::Fixed(k) => (format!("g{}", 54 + k), format!("G10 L2 P{}", k + 1)),
+                    Work::Extra(n) => (format!("p{n}"), format!("G10 L20 P{n}")),
+                };
+                let span = self.frames.selected_by.unwrap_or_default();
+                Err(alarm(
+                    span,
+                    "LS-WORK-OFFSET",
+                    format!(
+                        "{} cuts after cutting in {}, and the machine profile gives no origin for {}: where one work system lies from the other is unknown",
+                        name(now),
+                        name(before),
+                        name(unknown)
+                    ),
+                    format!("add {} = [z, x] under [work_offsets] in the --machine profile (its zero in G54's frame), or set it with {}", key.0, key.1),
+                ))
+            }
+            _ => {
+                self.frames.cut_in = Some(now);
+                Ok(())
+            }
+        }
     }
 
     /// The work system in force again after its offset changed (G10).
@@ -124,6 +147,7 @@ impl Interp<'_> {
             ));
         };
         self.frames.work = Work::Extra(n);
+        self.frames.selected_by = Some(g.span);
         self.frames.origin = o + self.frames.ext_shift;
         self.shift = self.frames.origin + self.frames.local;
         Ok(())

@@ -195,7 +195,7 @@ impl Interp<'_> {
             G54 if b.has('P') => self.select_extra_offset(w, used)?,
             G54_1 | G154 => self.select_extra_offset(w, used)?,
             t if codes::work_offset(t).is_some() => {
-                self.select_work_offset(w, codes::work_offset(t).unwrap_or(0))?;
+                self.select_work_offset(w, codes::work_offset(t).unwrap_or(0));
             }
             G96 => self.css = true,
             G97 => self.css = false,

@@ -202,6 +202,9 @@ impl Interp<'_> {
                 "check for a loop or a repeat count that is far too large, or raise --max-moves if the program really makes this many moves",
             ));
         }
+        if motion != Motion::Rapid {
+            self.cut_in_work_system()?;
+        }
         let feed = self.feed_for(span, motion)?;
         let feed = self.feed_id(span, feed)?;
         Ok(Segment {
