@@ -507,9 +507,12 @@ fn build_report(
     } else {
         vec![]
     };
-    let stock_marks = analysis::stock_marks(&job.loaded.toolpath, &job.tools);
+    // the snapshots the analysis asked for are not the player's
+    let toolpath = &job.loaded.toolpath;
+    let mut asked = analysis::stock_marks(toolpath, &job.tools);
+    asked.extend(analysis::thread_marks(toolpath, &job.tools));
     sim.snapshots
-        .retain(|(k, _)| marks.contains(k) || !stock_marks.contains(k));
+        .retain(|(k, _)| marks.contains(k) || !asked.contains(k));
     let mut report = crate::report::report(
         &crate::report::Run {
             loaded: &job.loaded,

@@ -730,6 +730,15 @@ fn a_thread_deburred_later_is_measured_as_it_cut_itself() {
     assert!(x("depth_error_mm").abs() < 1e-3, "{t:#}");
     assert!((x("included_angle_deg") - 60.0).abs() < 0.05, "{t:#}");
     assert!(warnings(&j, "LS-THREAD-DEPTH").is_empty(), "{j:#}");
+    // the same after 5 100 moves in the air (review: past 5 000 moves the stock after the
+    // thread was not kept, and the deburred thread was "0.8 too deep" again)
+    let air: String = (0..5_100)
+        .map(|k| format!("G00 X{}. Z20.\n", 40 + k % 2))
+        .collect();
+    let long = program.replacen("T0707\n", &format!("T0707\n{air}"), 1);
+    let j = run_no_entry(&long, Some(table), &["--stock", "30x40"]);
+    assert_eq!(j["verdict"], "clean", "{:#}", j["threads"]);
+    assert!(j["segments"].as_u64().unwrap() > 5_000);
 }
 
 /// A thread cut 0.2 too deep against its drawing fails the run as a gouge does; the verdict
@@ -795,4 +804,22 @@ fn inch_g76_p_and_q_are_in_the_inch_increment() {
         .map(|s| 2.0 * s.to.r)
         .fold(f64::INFINITY, f64::min);
     assert!((deepest - 0.4056 * 25.4).abs() < 1e-6, "{deepest}");
+}
+
+/// Review of the threading insert taken by use: a rear-post tool with no entry threads at
+/// negative X (M04), its passes entered from X-32, farther from the axis: an OD insert, as
+/// at +X (5.131 mm², the corpus `thread-tool-not-in-table` mirrored). The side was read from
+/// the signed X: "from inside", an ID insert, whose body hollowed the bar in a certain crash.
+#[test]
+fn a_rear_post_thread_tool_with_no_entry_is_an_od_insert() {
+    let program = "O6010\nG21 G40 G99\nT0505\nG97 S900 M04\nG00 X-32. Z3.\nG92 X-29.4 Z-15. F1.5\nX-29.\nX-28.7\nX-28.45\nX-28.25\nX-28.16\nG00 X-40.\nM30\n";
+    let j = run_no_entry(program, None, &["--stock", "30x40"]);
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+    let removed = j["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - 5.131).abs() < 0.005, "{removed}");
+    let stock = warnings(&j, "LS-STOCK");
+    assert!(
+        stock.iter().any(|m| m.contains("threading 60°")),
+        "{stock:?}"
+    );
 }

@@ -28,7 +28,7 @@ pub use findings::{
     Cause, CauseKind, Crash, Findings, GrooveCheck, Note, Remedy, ThreadCheck, Verdict,
 };
 pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH, TAILSTOCK_CENTRE};
-pub use intent::program::stock_marks;
+pub use intent::program::{stock_marks, thread_marks};
 pub use intent::{Intent, Owner, Stages};
 pub use measure::{
     deepest_radius, groove_deviation, least_gap, surface_radius_at, thread_starts, threads,
@@ -137,6 +137,7 @@ pub fn pipeline(
 ) -> (Simulation, Findings) {
     let mut opts = opts.clone();
     opts.snapshot_after.extend(stock_marks(toolpath, s.tools));
+    opts.snapshot_exact.extend(thread_marks(toolpath, s.tools));
     opts.snapshot_after.sort_unstable();
     opts.snapshot_after.dedup();
     let (sim, beside) = std::thread::scope(|scope| {

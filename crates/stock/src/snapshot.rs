@@ -41,14 +41,19 @@ pub fn player_marks(moves: usize) -> Vec<usize> {
 }
 
 /// Where the removal of a program of `moves` moves ends its epochs besides its usual ends:
-/// for a program of up to [`EXACT_MAX_MOVES`] moves, at the player's counts and at the
-/// counts `asked` (ascending, those in `1..moves`); none for a longer one.
-pub(crate) fn stops(asked: &[usize], moves: usize) -> Vec<usize> {
-    if moves > EXACT_MAX_MOVES {
-        return Vec::new();
-    }
-    let mut stops = player_marks(moves);
-    stops.extend(asked.iter().copied().filter(|&k| k > 0 && k < moves));
+/// at the counts `exact` asks for whatever its length; for a program of up to
+/// [`EXACT_MAX_MOVES`] moves also at the player's counts and at the counts `asked` (those
+/// in `1..moves`), ascending.
+pub(crate) fn stops(asked: &[usize], exact: &[usize], moves: usize) -> Vec<usize> {
+    let mut stops = if moves > EXACT_MAX_MOVES {
+        Vec::new()
+    } else {
+        let mut s = player_marks(moves);
+        s.extend_from_slice(asked);
+        s
+    };
+    stops.extend_from_slice(exact);
+    stops.retain(|&k| k > 0 && k < moves);
     stops.sort_unstable();
     stops.dedup();
     stops
@@ -60,6 +65,8 @@ pub(crate) struct Snapshots {
     exact: bool,
     /// The counts asked for, ascending.
     marks: Vec<usize>,
+    /// The counts taken exactly although the program is long (epochs end there), ascending.
+    pinned: Vec<usize>,
     /// Counts before this index were served (epoch mode).
     served: usize,
     /// (move count, stock after that many moves), ascending.
@@ -69,18 +76,27 @@ pub(crate) struct Snapshots {
 impl Snapshots {
     /// Snapshots after each of `marks` moves (those in `1..moves`): exact when `moves` is
     /// at most [`EXACT_MAX_MOVES`] ([`Snapshots::at_stop`]), else at epoch ends
-    /// ([`Snapshots::at_epoch_end`]).
-    pub(crate) fn new(marks: &[usize], moves: usize) -> Self {
-        let mut m: Vec<usize> = marks
-            .iter()
-            .copied()
-            .filter(|&k| k > 0 && k < moves)
-            .collect();
-        m.sort_unstable();
-        m.dedup();
+    /// ([`Snapshots::at_epoch_end`]); after each of `exact` moves exactly either way.
+    pub(crate) fn new(marks: &[usize], exact: &[usize], moves: usize) -> Self {
+        let counts = |ks: &mut dyn Iterator<Item = usize>| {
+            let mut m: Vec<usize> = ks.filter(|&k| k > 0 && k < moves).collect();
+            m.sort_unstable();
+            m.dedup();
+            m
+        };
+        let short = moves <= EXACT_MAX_MOVES;
+        let (marks, pinned) = if short {
+            (counts(&mut marks.iter().chain(exact).copied()), vec![])
+        } else {
+            (
+                counts(&mut marks.iter().copied()),
+                counts(&mut exact.iter().copied()),
+            )
+        };
         Self {
-            exact: moves <= EXACT_MAX_MOVES,
-            marks: m,
+            exact: short,
+            marks,
+            pinned,
             served: 0,
             out: Vec::new(),
         }
@@ -92,9 +108,10 @@ impl Snapshots {
         self.exact
     }
 
-    /// Whether a snapshot is wanted after `moves` moves (exact mode).
+    /// Whether a snapshot is wanted exactly after `moves` moves (exact mode, or pinned).
     pub(crate) fn wanted(&self, moves: usize) -> bool {
-        self.exact && self.marks.binary_search(&moves).is_ok()
+        (self.exact && self.marks.binary_search(&moves).is_ok())
+            || self.pinned.binary_search(&moves).is_ok()
     }
 
     /// At an epoch that ended at a stop after `moves` moves (exact mode): takes the

@@ -159,16 +159,13 @@ fn overcut_later(all: &[expander::Intended], k: usize, i: &expander::Intended) -
 }
 
 /// The move counts after which [`read`] wants the stock (to take them in the removal pass,
-/// `stock::SimOptions::snapshot_after`): one per contour that stays an intent, and the
-/// first move of every thread (what it cuts into, `Thread::achieved_x`). A snapshot costs a
-/// second removal up to its count, so only programs of up to [`MAX_MOVES_FOR_MARKS`] moves
-/// get them, and at most [`MAX_STOCK_MARKS`]; other contours are read against the final
-/// part (which has at most less material than the stock of their cycle: a lead-in in front
-/// of either is dropped), and other threads are measured over their whole length.
-pub fn stock_marks(toolpath: &Toolpath, tools: &ToolTable) -> Vec<usize> {
+/// `stock::SimOptions::snapshot_after`): one per contour that stays an intent. Only
+/// programs of up to [`MAX_MOVES_FOR_MARKS`] moves get them, at most [`MAX_STOCK_MARKS`];
+/// other contours are read against the final part (which has at most less material than
+/// the stock of their cycle: a lead-in in front of either is dropped).
+pub fn stock_marks(toolpath: &Toolpath, _tools: &ToolTable) -> Vec<usize> {
     let intended = &toolpath.intended;
-    let segments = &toolpath.segments;
-    if segments.len() > MAX_MOVES_FOR_MARKS {
+    if toolpath.segments.len() > MAX_MOVES_FOR_MARKS {
         return vec![];
     }
     let mut marks: Vec<usize> = intended
@@ -176,8 +173,6 @@ pub fn stock_marks(toolpath: &Toolpath, tools: &ToolTable) -> Vec<usize> {
         .enumerate()
         .filter(|(k, i)| i.kind != IntendedKind::Groove && !overcut_later(intended, *k, i))
         .map(|(_, i)| i.after_move)
-        .chain(crate::measure::thread_starts(segments, tools))
-        .chain(crate::measure::ThreadPasses::of(segments, tools).ends(segments))
         .collect();
     marks.sort_unstable();
     marks.dedup();
@@ -185,7 +180,25 @@ pub fn stock_marks(toolpath: &Toolpath, tools: &ToolTable) -> Vec<usize> {
     marks
 }
 
-/// Most stock snapshots taken for reading intents.
+/// The move counts after which the threads want the stock exactly, whatever the program's
+/// length (`stock::SimOptions::snapshot_exact`): each thread's first move (what it cuts
+/// into, `Thread::achieved_x`) and the end of its last pass (the thread as it cut itself,
+/// before a later tool deburrs it: a thread's verdict must not depend on how many moves
+/// come before it), for the first [`MAX_STOCK_MARKS`] / 2 threads; later ones are
+/// measured in the final part.
+pub fn thread_marks(toolpath: &Toolpath, tools: &ToolTable) -> Vec<usize> {
+    let segments = &toolpath.segments;
+    let passes = crate::measure::ThreadPasses::of(segments, tools);
+    passes
+        .starts()
+        .into_iter()
+        .zip(passes.ends(segments))
+        .take(MAX_STOCK_MARKS / 2)
+        .flat_map(|(start, end)| [start, end])
+        .collect()
+}
+
+/// Most stock snapshots taken for reading contours, and for threads.
 const MAX_STOCK_MARKS: usize = 64;
 /// Programs longer than this read their intents against the final part.
 const MAX_MOVES_FOR_MARKS: usize = 5_000;

@@ -297,7 +297,7 @@ impl<'a> Epochs<'a> {
         let mut builder = SweepBuilder::new(grid, clip, tools, tol, merge_tol);
         builder.set_rear(crate::section::rear_tools(segments));
         builder.set_feed_paths(opts.feed_paths);
-        let snapshots = Snapshots::new(&opts.snapshot_after, segments.len());
+        let snapshots = Snapshots::new(&opts.snapshot_after, &opts.snapshot_exact, segments.len());
         // a group's passes are one sweep: only where snapshots are not taken move by move
         builder.set_pass_groups(opts.pass_groups && !snapshots.exact());
         Self {
@@ -309,7 +309,11 @@ impl<'a> Epochs<'a> {
             } else {
                 (segments.len() / 30).clamp(1024, EPOCH)
             },
-            stops: crate::snapshot::stops(&opts.snapshot_after, segments.len()),
+            stops: crate::snapshot::stops(
+                &opts.snapshot_after,
+                &opts.snapshot_exact,
+                segments.len(),
+            ),
             snapshots,
             segments,
             tools,

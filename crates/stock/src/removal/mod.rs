@@ -86,6 +86,10 @@ pub struct SimOptions {
     /// in the same pass. Counts of 0 or of all the moves and more are ignored: those are
     /// the blank and [`Simulation::final_shapes`].
     pub snapshot_after: Vec<usize>,
+    /// Move counts after which the stock is wanted exactly whatever the program's length:
+    /// an epoch ends at each (a long program's [`SimOptions::snapshot_after`] are taken at
+    /// the removal's own epoch ends). Few: a thread's first move and its end.
+    pub snapshot_exact: Vec<usize>,
     /// The run's memory budget (`None`: no limit). Over it the removal stops where it is
     /// ([`Simulation::over_budget`]).
     pub max_memory: Option<RunMemory>,
@@ -101,6 +105,7 @@ impl Default for SimOptions {
             cover: true,
             pass_groups: true,
             snapshot_after: Vec::new(),
+            snapshot_exact: Vec::new(),
             max_memory: None,
         }
     }
@@ -160,7 +165,9 @@ pub fn simulate(
     warnings.append(&mut cuts.warnings);
     warnings.append(&mut epochs.builder.warnings);
     warnings.sort_by_key(|w| w.0);
-    let snapshots = std::mem::take(&mut epochs.snapshots.out);
+    let mut snapshots = std::mem::take(&mut epochs.snapshots.out);
+    // (a pinned count's snapshot comes before the epoch end's that holds fewer cut moves)
+    snapshots.sort_by_key(|(k, _)| *k);
     assemble(
         &shapes,
         strips,

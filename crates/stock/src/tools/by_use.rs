@@ -117,14 +117,15 @@ impl ToolTable {
                 continue;
             }
             tally.threads += 1;
-            // a thread run's ends: the move that brought the tool in, and the one out
+            // a thread run's ends: the move that brought the tool in, and the one out,
+            // away from the axis or toward it (a rear post's moves at negative X too)
             if let Some(p) = i.checked_sub(1).map(|j| &segments[j]) {
                 if p.motion != Motion::Thread {
-                    tally.outside += side_of(p.from.r - s.from.r);
+                    tally.outside += side_of(p.from.r.abs() - s.from.r.abs());
                 }
             }
             if let Some(n) = segments.get(i + 1).filter(|n| n.motion != Motion::Thread) {
-                tally.outside += side_of(n.to.r - s.to.r);
+                tally.outside += side_of(n.to.r.abs() - s.to.r.abs());
             }
         }
         tallies
