@@ -18,8 +18,7 @@ const CONTACT: f64 = 1e-3;
 ///   the face, also where it runs through face stock the program faces later;
 /// - the first segment kept starts at its programmed vertex where the segment dropped
 ///   before it ran on the blank (a face marked by `G01 Z0` stays at Z0, so a face cut too
-///   deep is still found) or where that vertex lies on the blank's face (a chamfer from
-///   the bar's face); else (it is the first, or the moves before it were in the air,
+///   deep is still found); else (it is the first, or the moves before it were in the air,
 ///   as a CAM lead-in to an extended chamfer) where it first touches the stock, and not in
 ///   front of the finished part's front (what the program faces off later was never part
 ///   of a profile that states no face);
@@ -46,9 +45,7 @@ pub(super) fn in_contact(path: &[P], stages: &Stages) -> Vec<P> {
     }
     let mut s = path[first..].to_vec();
     if let Some(t) = start {
-        let stated = first > 0
-            && (runs_on(path[first - 1], path[first], stages.blank)
-                || on_blank_front(path[first], stages.blank));
+        let stated = first > 0 && runs_on(path[first - 1], path[first], stages.blank);
         let t = t.max(front.map_or(0.0, |f| crossing(s[0], s[1], f)));
         if !stated && t * dist(s[0], s[1]) > CONTACT {
             s[0] = lerp(s[0], s[1], t);
@@ -118,31 +115,6 @@ fn crossing(a: P, b: P, front: f64) -> f64 {
 /// point: a stated surface (a face at Z0), not an approach that ends at the bar.
 fn runs_on(a: P, b: P, blank: &[Shape]) -> bool {
     contact(a, b, blank).is_some_and(|(lo, hi)| (hi - lo) * dist(a, b) > 2.0 * CONTACT)
-}
-
-/// Whether `p` lies on the blank's front face (within [`CONTACT`]): a profile that starts
-/// there states the part's face where the bar's is (a chamfer from X20 Z0 on a bar whose
-/// face `--stock-z` puts at Z0), unlike a CAM lead-in's extended chamfer begun in the air
-/// in front of the bar. On a diameter the blank states nothing of the part: an edge
-/// chamfer extended to the bar's Ø52 past an OD turned to Ø50 is still a lead-in.
-fn on_blank_front(p: P, blank: &[Shape]) -> bool {
-    let Some(front) = front_of(blank) else {
-        return false;
-    };
-    let near_edge = |ring: &[P]| {
-        (0..ring.len()).any(|k| {
-            let (a, b) = (ring[k], ring[(k + 1) % ring.len()]);
-            let to = |q: P| geom::Pt::new(q[0], q[1]);
-            geom::distance::point_segment(to(p), to(a), to(b)).0 <= CONTACT
-        })
-    };
-    (p[0] - front).abs() <= CONTACT
-        && blank.iter().any(|m| {
-            shape_contains(m, p)
-                || std::iter::once(&m.outer)
-                    .chain(&m.holes)
-                    .any(|r| near_edge(r))
-        })
 }
 
 /// Where the segment `a -> b` touches `stock`: the first and last parameter (0 at `a`, 1 at
