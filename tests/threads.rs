@@ -823,3 +823,30 @@ fn a_rear_post_thread_tool_with_no_entry_is_an_od_insert() {
         "{stock:?}"
     );
 }
+
+/// Review of the thread starts: ten starts by a GSK `G92 … L10` (start angles 36° apart,
+/// 0.1 of the lead) and six by six FANUC G76 run a pitch apart (start points 1/6 of the
+/// lead apart, each spread by its own flank infeed) are ten and six starts. The first read
+/// one start (the places within a fixed 0.125 of the lead), the second one start at 147.8°.
+#[test]
+fn many_starts_by_start_angle_or_by_start_point() {
+    let l10 = "G21 G99 M03 S200 T0404\nG00 X24. Z5.\nG92 X19.4 Z-20. F10 L10\nX19.0\nX18.8\nG00 X50. Z50.\nM30\n";
+    let (code, j) = run_json(l10, &["--control", "gsk980"]);
+    assert_eq!(code, 0, "{j:#}");
+    assert_eq!(j["threads"][0]["starts"], 10, "{:#}", j["threads"]);
+    let cycle = "G76 P010060 Q30 R0.02\nG76 X18.8 Z-20. P600 Q150 F6\n";
+    let six: String = (0..6)
+        .map(|k| format!("G00 X24. Z{}.\n{cycle}", 5 + k))
+        .collect();
+    let (code, j) = run_json(
+        &format!("G21 G99 M03 S300 T0404\n{six}G00 X50. Z50.\nM30\n"),
+        &["--control", "fanuc-a"],
+    );
+    assert_eq!(code, 0, "{j:#}");
+    let t = &j["threads"][0];
+    assert_eq!(t["starts"], 6, "{t:#}");
+    assert!(
+        (t["included_angle_deg"].as_f64().unwrap() - 60.0).abs() < 0.05,
+        "{t:#}"
+    );
+}

@@ -441,46 +441,40 @@ impl ThreadPasses {
     }
 }
 
-/// Passes whose helices are this far apart (a fraction of the lead, around the circle)
-/// or more cut different starts. A compound (flank) infeed moves each pass's start along
-/// Z by its infeed × tan 30°: from one pass to the next a few hundredths of a lead, over a
-/// whole start about 0.35 of its pitch; the starts of an n-start thread are 1/n apart.
-const START_GAP: f64 = 0.125;
+/// Passes of one start angle whose start points lie this far apart along the thread (a
+/// fraction of the lead, around the circle) or more may cut different starts; see
+/// [`starts_of`]. A compound (flank) infeed moves each pass's start along Z by its infeed
+/// × tan 30°: from one pass to the next a few hundredths of a lead.
+const START_GAP: f64 = 0.04;
 
 /// Which start each pass cuts (numbered in the order the starts are first cut), and how
-/// many there are. A pass's helix is where its stamps fall along the thread, modulo the
-/// lead: its start point's place and its start angle (multi-start Q). Two cycles run from
-/// start points half a lead apart (a FANUC two-block G76 has no start angle) cut two
-/// starts as surely as a Q does. The helices are grouped around the circle: a gap of
-/// [`START_GAP`] or more separates two starts.
+/// many there are. Passes of different start angles (multi-start Q, GSK L) cut different
+/// starts. Among passes of one start angle, the start is where its stamps fall along the
+/// thread, modulo the lead: two FANUC two-block G76 run from start points half a lead
+/// apart cut two starts as surely as a Q does. Those places are grouped around the
+/// circle: the gaps between starts are the widest (1/n of the lead, less the flank
+/// infeed's spread of about 0.35 of the pitch), so a gap of half the widest one, and at
+/// least [`START_GAP`], separates two starts; a single start's widest gap is the rest of
+/// the circle.
 fn starts_of(passes: &[&Segment]) -> (Vec<usize>, usize) {
-    let helix: Vec<f64> = passes.iter().map(|p| helix_phase(p)).collect();
-    let mut order: Vec<usize> = (0..helix.len()).collect();
-    order.sort_by(|&a, &b| helix[a].total_cmp(&helix[b]));
-    let gap_after = |k: usize| {
-        let (a, b) = (helix[order[k]], helix[order[(k + 1) % order.len()]]);
-        (b - a).rem_euclid(1.0)
-    };
-    // cut the circle after each wide gap; one start when there is none but the wrap
-    let cuts: Vec<usize> = (0..order.len())
-        .filter(|&k| gap_after(k) >= START_GAP)
+    let mut group = vec![(0.0, 0usize); passes.len()];
+    let mut angles: Vec<f64> = passes
+        .iter()
+        .map(|p| p.thread_phase.rem_euclid(1.0))
         .collect();
-    let mut group = vec![0; helix.len()];
-    if cuts.len() > 1 {
-        for (g, w) in cuts.iter().enumerate() {
-            let next = cuts[(g + 1) % cuts.len()];
-            let mut k = (w + 1) % order.len();
-            loop {
-                group[order[k]] = g;
-                if k == next {
-                    break;
-                }
-                k = (k + 1) % order.len();
-            }
+    angles.sort_by(f64::total_cmp);
+    angles.dedup();
+    for angle in angles {
+        let own: Vec<usize> = (0..passes.len())
+            .filter(|&k| passes[k].thread_phase.rem_euclid(1.0) == angle)
+            .collect();
+        let place: Vec<f64> = own.iter().map(|&k| start_place(passes[k])).collect();
+        for (k, g) in own.iter().zip(places_grouped(&place)) {
+            group[*k] = (angle, g);
         }
     }
     // number the starts in program order
-    let mut seen: Vec<usize> = vec![];
+    let mut seen: Vec<(f64, usize)> = vec![];
     let start_of = group
         .iter()
         .map(|g| match seen.iter().position(|s| s == g) {
@@ -494,17 +488,53 @@ fn starts_of(passes: &[&Segment]) -> (Vec<usize>, usize) {
     (start_of, seen.len())
 }
 
-/// Where the stamps of thread move `p` fall along its main axis, as a fraction of the lead
-/// (see `stock`'s thread stamps: from its start point every lead, shifted by the start
-/// angle, toward its end).
-fn helix_phase(p: &Segment) -> f64 {
-    let (dz, dr) = (p.to.z - p.from.z, p.to.r - p.from.r);
-    let (at, way) = if dz.abs() >= dr.abs() {
-        (p.from.z, dz.signum())
-    } else {
-        (p.from.r, dr.signum())
+/// The group of each of `place` (fractions of the lead on a circle), cut after each gap of
+/// half the widest one or more (and at least [`START_GAP`]).
+fn places_grouped(place: &[f64]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..place.len()).collect();
+    order.sort_by(|&a, &b| place[a].total_cmp(&place[b]));
+    let gap_after = |k: usize| {
+        let (a, b) = (place[order[k]], place[order[(k + 1) % order.len()]]);
+        let gap = (b - a).rem_euclid(1.0);
+        // one place alone (or all at one) has the whole circle after it
+        if order.len() == 1 || gap == 0.0 && k + 1 == order.len() {
+            1.0
+        } else {
+            gap
+        }
     };
-    (at / p.lead + way * p.thread_phase).rem_euclid(1.0)
+    let widest = (0..order.len()).map(gap_after).fold(0.0, f64::max);
+    let cuts: Vec<usize> = (0..order.len())
+        .filter(|&k| gap_after(k) >= (widest / 2.0).max(START_GAP))
+        .collect();
+    let mut group = vec![0; place.len()];
+    if cuts.len() > 1 {
+        for (g, w) in cuts.iter().enumerate() {
+            let next = cuts[(g + 1) % cuts.len()];
+            let mut k = (w + 1) % order.len();
+            loop {
+                group[order[k]] = g;
+                if k == next {
+                    break;
+                }
+                k = (k + 1) % order.len();
+            }
+        }
+    }
+    group
+}
+
+/// Where thread move `p` starts along its main axis, as a fraction of the lead: with its
+/// start angle, where its stamps fall (`stock`'s thread stamps: from its start point every
+/// lead, shifted by the start angle, toward its end).
+fn start_place(p: &Segment) -> f64 {
+    let (dz, dr) = (p.to.z - p.from.z, p.to.r - p.from.r);
+    let at = if dz.abs() >= dr.abs() {
+        p.from.z
+    } else {
+        p.from.r
+    };
+    (at / p.lead).rem_euclid(1.0)
 }
 
 /// The threads' passes, each by the index of its main thread move (of a run of thread
