@@ -476,6 +476,13 @@ pub(crate) fn note(what: &str, depth: f64, seg: &Segment, tools: &ToolTable) -> 
         seg.tool
     };
     let tool = match tools.get(t) {
+        // a tool taken for what its moves say (a threading insert, a drill), or the default
+        None if *tools.tool_or_default(t) != stock::Tool::DEFAULT => {
+            format!(
+                "the {} it is taken for",
+                tools.describe_for(seg.tool, seg.hint)
+            )
+        }
         None => format!("the default {}", tools.describe_for(seg.tool, seg.hint)),
         Some(_) => format!("as assumed ({})", tools.describe_for(seg.tool, seg.hint)),
     };

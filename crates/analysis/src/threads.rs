@@ -122,7 +122,7 @@ fn default_side(t: &Thread, tool: u32) -> Note {
         span: t.span,
         code: "LS-ASSUMED-TOOL",
         message: format!(
-            "the thread passes go deeper {toward}; T{tool:02} is not in the tool table and the default threading insert is {default} one, whose body sweeps through the part: state T{tool:02} with `side = \"{other}\"` to check this thread"
+            "the thread passes go deeper {toward}; T{tool:02} is not in the tool table and the tool it is taken for is {default} insert, whose body sweeps through the part: state T{tool:02} with `side = \"{other}\"` to check this thread"
         ),
     }
 }
