@@ -730,6 +730,8 @@ fn a_thread_deburred_later_is_measured_as_it_cut_itself() {
     assert!(x("depth_error_mm").abs() < 1e-3, "{t:#}");
     assert!((x("included_angle_deg") - 60.0).abs() < 0.05, "{t:#}");
     assert!(warnings(&j, "LS-THREAD-DEPTH").is_empty(), "{j:#}");
+    // a deburred first turn is no cut through the thread
+    assert!(warnings(&j, "LS-THREAD-CUT").is_empty(), "{j:#}");
     // the same after 5 100 moves in the air (review: past 5 000 moves the stock after the
     // thread was not kept, and the deburred thread was "0.8 too deep" again)
     let air: String = (0..5_100)
@@ -848,5 +850,28 @@ fn many_starts_by_start_angle_or_by_start_point() {
     assert!(
         (t["included_angle_deg"].as_f64().unwrap() - 60.0).abs() < 0.05,
         "{t:#}"
+    );
+}
+
+/// Review: measured as it cut itself, a thread that a later tool turns 0.3 below its root
+/// over four leads (T01 at X27 from Z2 to Z-8 after an M30 × 2 to X27.6) was CLEAN with no
+/// word of it (no intent speaks within a thread's band): the warning LS-THREAD-CUT at the
+/// turning line names the stretch cut through.
+#[test]
+fn a_later_cut_through_a_thread_is_warned() {
+    let program = "O5020\nG21 G40 G99\nT0707\nG97 S600 M03\nG00 X32. Z5.\nG92 X29.3 Z-20. F2.\nX28.8\nX28.4\nX28.0\nX27.7\nX27.6\nG00 X50. Z50.\nT0101\nG96 S180 M03\nG00 X27. Z2.\nG01 Z-8. F0.2\nX32.\nG00 X50. Z50.\nM30\n";
+    let table = "[[tool]]\nt = 7\nkind = \"threading\"\n[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n";
+    let j = run_no_entry(program, Some(table), &["--stock", "30x40"]);
+    let cut: Vec<&serde_json::Value> = j["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-THREAD-CUT")
+        .collect();
+    assert_eq!(cut.len(), 1, "{j:#}");
+    assert_eq!(cut[0]["line"], 16, "{cut:?}");
+    assert!(
+        cut[0]["message"].as_str().unwrap().contains("to Z-7.7"),
+        "{cut:?}"
     );
 }

@@ -38,10 +38,14 @@ pub(crate) fn check(
 ) -> Checked {
     let mut out = Checked::default();
     for t in passes.measure(segments, shapes) {
+        let final_shapes = shapes;
         let shapes = done
             .iter()
             .find(|(k, _)| *k == t.done_at)
             .map_or(shapes, |(_, s)| s.as_slice());
+        if let Some(cut) = t.cut_through_later(shapes, final_shapes, tol) {
+            out.warnings.push(cut_through(&t, cut, segments));
+        }
         if t.wrong_side {
             let tool = segments[t.first_move].tool;
             if tools.get(tool).is_some() {
@@ -123,6 +127,27 @@ fn default_side(t: &Thread, tool: u32) -> Note {
         code: "LS-ASSUMED-TOOL",
         message: format!(
             "the thread passes go deeper {toward}; T{tool:02} is not in the tool table and the tool it is taken for is {default} insert, whose body sweeps through the part: state T{tool:02} with `side = \"{other}\"` to check this thread"
+        ),
+    }
+}
+
+/// The warning of a thread that a later move cuts through over `(z0, z1)`, at that move's
+/// line: measured as it cut itself, the thread is right, and no intent speaks within its
+/// band (the thread's own business), so nothing else would say so (review of field run 5,
+/// D).
+fn cut_through(t: &Thread, (z0, z1): (f64, f64), segments: &[Segment]) -> Note {
+    let later = segments[t.done_at.min(segments.len())..].iter().find(|s| {
+        s.motion != expander::Motion::Rapid
+            && s.from.z.min(s.to.z) <= z1
+            && s.from.z.max(s.to.z) >= z0
+    });
+    Note {
+        span: later.map_or(t.span, |s| s.span),
+        code: "LS-THREAD-CUT",
+        message: format!(
+            "the thread of line {} is cut below its root from Z{z1:.3} to Z{z0:.3} after its last pass{}",
+            t.span.line,
+            later.map_or(String::new(), |s| format!(" (line {})", s.span.line)),
         ),
     }
 }

@@ -182,6 +182,59 @@ impl Thread {
         2.0 * self.root[1][1]
     }
 
+    /// The longest stretch of the root line's Z span where the section `later` (after the
+    /// moves that came later) lies deeper than `done` (the thread as it cut itself) by
+    /// more than `tol`, when it is longer than two leads: a later tool cutting through the
+    /// thread, not a chamfer or a deburr of its first or last turn (a 3 mm blade deburring
+    /// the first turn of a 2 mm lead cuts 1.9 leads of it).
+    pub fn cut_through_later(
+        &self,
+        done: &[Shape],
+        later: &[Shape],
+        tol: f64,
+    ) -> Option<(f64, f64)> {
+        const MOST_SAMPLES: f64 = 4_000.0;
+        let (z0, z1) = self.z_span();
+        let (lo, hi) = (z0.min(z1), z0.max(z1));
+        let step = (self.lead / 8.0).max((hi - lo) / MOST_SAMPLES);
+        if !(step > 0.0) {
+            return None;
+        }
+        let zs: Vec<f64> = (0..=((hi - lo) / step) as usize)
+            .map(|k| lo + k as f64 * step)
+            .collect();
+        let (before, after) = (
+            radii_at(done, &zs, self.surface),
+            radii_at(later, &zs, self.surface),
+        );
+        let deeper = |k: usize| match (before[k], after[k], self.surface) {
+            (Some(_), None, _) => true,
+            (Some(b), Some(a), Surface::Outer) => a < b - tol,
+            (Some(b), Some(a), Surface::Bore) => a > b + tol,
+            _ => false,
+        };
+        let (mut best, mut run): (Option<(f64, f64)>, Option<f64>) = (None, None);
+        for (k, &z) in zs.iter().enumerate() {
+            match (deeper(k), run) {
+                (true, None) => run = Some(z),
+                (false, Some(from)) => {
+                    let prev = zs[k - 1];
+                    if best.is_none_or(|(a, b)| prev - from > b - a) {
+                        best = Some((from, prev));
+                    }
+                    run = None;
+                }
+                _ => {}
+            }
+        }
+        if let Some(from) = run {
+            if best.is_none_or(|(a, b)| hi - from > b - a) {
+                best = Some((from, hi));
+            }
+        }
+        best.filter(|(a, b)| b - a > 2.0 * self.lead)
+    }
+
     /// The Z span the thread's root is checked over.
     pub fn z_span(&self) -> (f64, f64) {
         (self.root[0][0], self.root[1][0])
