@@ -197,7 +197,7 @@ impl Thread {
         let (z0, z1) = self.z_span();
         let (lo, hi) = (z0.min(z1), z0.max(z1));
         let step = (self.lead / 8.0).max((hi - lo) / MOST_SAMPLES);
-        if !(step > 0.0) {
+        if step.is_nan() || step <= 0.0 {
             return None;
         }
         let zs: Vec<f64> = (0..=((hi - lo) / step) as usize)
