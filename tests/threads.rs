@@ -875,3 +875,13 @@ fn a_later_cut_through_a_thread_is_warned() {
         "{cut:?}"
     );
 }
+
+/// Review: with no tool table and no T word (tool 0), a program that only threads is cut
+/// by a 60° threading insert too (it read 96.3°, the 55° default's form).
+#[test]
+fn a_thread_with_no_t_word_and_no_table_is_cut_by_a_threading_insert() {
+    let program = "G21 G99 M03 S500\nG00 X32. Z3.\nG92 X29.4 Z-15. F1.5\nX29.\nX28.7\nX28.45\nX28.25\nX28.16\nG00 X40.\nM30\n";
+    let j = run_no_entry(program, None, &["--stock", "30x40"]);
+    let angle = j["threads"][0]["included_angle_deg"].as_f64().unwrap();
+    assert!((angle - 60.0).abs() < 0.05, "{angle}");
+}

@@ -72,15 +72,17 @@ impl Tally {
 }
 
 impl ToolTable {
-    /// The tools with no entry (and a T word: tool 0 is the table's first entry) that
-    /// `segments` use only for thread passes or only for feeds along the axis.
+    /// The tools with no entry (tool 0, no T word yet, is the table's first entry, when
+    /// there is a table) that `segments` use only for thread passes or only for feeds
+    /// along the axis.
     pub fn tools_from_use(&self, segments: &[Segment]) -> Vec<ToolFromUse> {
         let mut tallies: Vec<Tally> = vec![];
         // the tally of the last tool looked up (`None`: it has an entry): a program's
         // moves come a tool at a time, and a million of them are read here
         let mut last: Option<(u32, Option<usize>)> = None;
         for (i, s) in segments.iter().enumerate() {
-            if s.motion == Motion::Rapid || s.tool == 0 {
+            // tool 0 (no T word yet) is the table's first entry; with no table, a tool too
+            if s.motion == Motion::Rapid || (s.tool == 0 && !self.tools.is_empty()) {
                 continue;
             }
             let k = match last {

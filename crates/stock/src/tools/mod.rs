@@ -2,7 +2,9 @@
 //!
 //! One concern a file: [`kinds`] the tools and their defaults, [`schema`] the TOML format
 //! and its validation (errors at their line), [`outline_choice`] which outline cuts under
-//! a cycle's hint, [`facts`] what the interpreter is told about the table.
+//! a cycle's hint, [`facts`] what the interpreter is told about the table, [`hand`] a
+//! holder's tip read from the program's feeds, [`by_use`] what a tool with no entry is
+//! taken for from its moves.
 
 mod bodies;
 mod by_use;
