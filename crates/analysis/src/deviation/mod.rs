@@ -173,7 +173,20 @@ fn faced(part: &[Shape], zone: &[Shape], final_shapes: &[Shape], world: &Rect) -
         return part.to_vec();
     }
     let ahead = vec![rect(front, world.max.z, world.min.r, world.max.r)];
-    let faced_off = boolean(&ahead, final_shapes, BoolOp::Difference);
+    // only the final part ahead of the front takes part (a long part's section is not cut
+    // whole for a face)
+    let box_ahead = Rect::new(
+        geom::Pt::new(front, world.min.r),
+        geom::Pt::new(world.max.z, world.max.r),
+    );
+    let faced_off = boolean(
+        &ahead,
+        &clip_to_box(final_shapes, &box_ahead),
+        BoolOp::Difference,
+    );
+    if area(&faced_off) <= 0.0 {
+        return part.to_vec();
+    }
     boolean(part, &faced_off, BoolOp::Difference)
 }
 
