@@ -566,3 +566,23 @@ fn an_offset_drill_with_the_spindle_turning_cuts_a_round_hole() {
         .alarms
         .is_empty());
 }
+
+/// Field run 5: under a GSK's power-on G98 (feed per minute) a program written with feeds
+/// per revolution (`F0.15`) ran a 67-hour cycle time with no word: a feed per minute under
+/// 1 mm/min is warned once, W-FEED-PER-MINUTE; G99, or F150 under G98, is not.
+#[test]
+fn a_feed_per_minute_slower_than_any_cut_is_warned() {
+    let warned = |src: &str| {
+        run(src)
+            .warnings
+            .iter()
+            .filter(|w| w.code == "W-FEED-PER-MINUTE")
+            .count()
+    };
+    assert_eq!(
+        warned("M03 S800\nG00 X42 Z2\nG01 Z-20 F0.15\nX50 Z-25\nM30\n"),
+        1
+    );
+    assert_eq!(warned("G99 M03 S800\nG00 X42 Z2\nG01 Z-20 F0.15\nM30\n"), 0);
+    assert_eq!(warned("M03 S800\nG00 X42 Z2\nG01 Z-20 F150\nM30\n"), 0);
+}

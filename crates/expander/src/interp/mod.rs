@@ -175,6 +175,8 @@ pub(crate) struct Interp<'m> {
     s_clamp: f64,
     spindle_on: bool,
     spindle_warned: bool,
+    /// A feed per minute too slow for any cut (a feed per revolution under G98) was warned.
+    slow_feed_warned: bool,
     feed: f64,
     tool: u32,
     retained: Retained,
@@ -266,6 +268,7 @@ impl<'m> Interp<'m> {
             s_clamp: 0.0,
             spindle_on: false,
             spindle_warned: false,
+            slow_feed_warned: false,
             feed: machine.power_on_feed,
             tool: opts.start_tool.unwrap_or(0),
             retained: Retained::default(),

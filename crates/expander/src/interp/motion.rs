@@ -8,6 +8,11 @@ use crate::words::Words;
 use crate::{Arc, Diagnostic, Feed, Motion, Pt, RapidPath, Segment, Span, Spindle};
 use gcode::Block;
 
+/// A feed per minute (G98) slower than this, mm/min, cuts nothing a lathe cuts: a feed per
+/// revolution written under the wrong mode (a GSK's power-on G98 with `F0.15` ran a
+/// 67-hour cycle time with no word; field run 5).
+const SLOWEST_MM_PER_MIN: f64 = 1.0;
+
 impl Interp<'_> {
     /// The target of X/U Z/W in the G54 frame; `None` when no axis word is given. In
     /// system B/C, X and Z follow G90/G91, and U/W are incremental axes as the profile's
@@ -83,6 +88,7 @@ impl Interp<'_> {
         Ok(())
     }
 
+    /// The feed of a cutting move, warning once of a feed per minute slower than any cut.
     pub(super) fn feed_for(&mut self, span: Span, motion: Motion) -> Result<Feed, Diagnostic> {
         if motion == Motion::Rapid {
             return Ok(Feed::Rapid);
@@ -114,6 +120,22 @@ impl Interp<'_> {
             ));
         }
         let f = self.feed * self.unit();
+        if !self.per_rev
+            && motion == Motion::Feed
+            && f < SLOWEST_MM_PER_MIN
+            && !self.slow_feed_warned
+        {
+            self.slow_feed_warned = true;
+            self.warn(
+                span,
+                "W-FEED-PER-MINUTE",
+                format!(
+                    "F{} is {f:.3} mm/min under G98 (feed per minute): slower than any cut, it reads as a feed per revolution",
+                    self.feed
+                ),
+                "write G99 (feed per revolution) before the cut, or F in mm/min under G98; the cycle time follows the feed as written",
+            );
+        }
         if motion == Motion::Thread {
             return Ok(Feed::PerRev {
                 feed: f,
