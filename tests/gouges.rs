@@ -562,4 +562,30 @@ fn a_part_off_chamfering_under_g42_with_no_table_is_clean() {
         .map(|l| l["area_mm2"].as_f64().unwrap())
         .sum();
     assert!(left < 1.0, "{left}: {:#}", v["leftovers"]);
+    // faced first by a G72 shape on a bar with 1.5 of face stock: the back face's part ends
+    // at the finished part's front, not in the face stock (a certain 1.5 mm gouge at Z0)
+    let faced = program.replacen(
+        "G00 X52. Z2.\nG71",
+        "G00 X52. Z2.\nG72 W1.2 R0.5\nG72 P1 Q2 U0.2 W0.3 F0.25\nN1 G00 Z0.\nG01 X-1.6 F0.1\nN2 Z2.\nG00 X52. Z2.\nG71",
+        1,
+    );
+    assert_ne!(faced, program);
+    let (dir, path) = temp_program("partoff-faced.nc", faced.as_bytes());
+    let _keep = dir;
+    let (out, v) = run_json(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        "50x40",
+        "--stock-z",
+        "1.5",
+    ]);
+    assert_eq!(out.code, 0, "{:#}", v["gouges"]);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert!(
+        gouges.iter().all(|g| g["assumed_tool"] == true),
+        "{gouges:#?}"
+    );
 }

@@ -88,7 +88,7 @@ pub(super) fn in_contact(path: &[P], stages: &Stages) -> Vec<P> {
 }
 
 /// The finished part's front (its largest Z), `None` when there is no part.
-fn front_of(finished: &[Shape]) -> Option<f64> {
+pub(super) fn front_of(finished: &[Shape]) -> Option<f64> {
     finished
         .iter()
         .flat_map(|m| m.outer.iter().map(|p| p[0]))

@@ -134,7 +134,7 @@ impl Intent {
         } else {
             return None;
         };
-        Self::open_path(&in_contact(shape, stages), toward)
+        Self::open_path(&in_contact(shape, stages), toward, None)
     }
 
     /// A contour cut under G41/G42: the part lies on the side of the path away from the
@@ -164,11 +164,13 @@ impl Intent {
         } else {
             Toward::PlusZ
         };
-        Self::open_path(&path, toward)
+        Self::open_path(&path, toward, contact::front_of(stages.finished))
     }
 
     /// The part bounded by an open path and closed far away `toward` one side.
-    fn open_path(shape: &[[f64; 2]], toward: Toward) -> Option<Self> {
+    /// `front`: the finished part's front, where a back face's part (closed toward +Z)
+    /// ends: in front of it is the face stock the program faced off, not part.
+    fn open_path(shape: &[[f64; 2]], toward: Toward, front: Option<f64>) -> Option<Self> {
         let (first, last) = (*shape.first()?, *shape.last()?);
         if shape.len() < 2 {
             return None;
@@ -182,14 +184,21 @@ impl Intent {
                 rect(lo[0], hi[0], -FAR, FAR)
             }
             Toward::MinusZ | Toward::PlusZ => {
-                let z = if toward == Toward::MinusZ { -FAR } else { FAR };
+                let z = match toward {
+                    Toward::MinusZ => -FAR,
+                    _ => front.filter(|f| *f > hi[0]).unwrap_or(FAR),
+                };
                 ring.extend([[z, last[1]], [z, first[1]]]);
                 // a back face (its part toward +Z: a part-off's chamfer and parting line)
                 // speaks of the stock it cuts, within its own Z span; behind it lies the bar
                 // that holds the part, the next part's stock, not stock to be gone (it drew
                 // a leftover band the length of the bar; field run 5, C)
-                let back = if toward == Toward::PlusZ { lo[0] } else { -FAR };
-                rect(back, FAR, lo[1], hi[1])
+                let (back, ahead) = if toward == Toward::PlusZ {
+                    (lo[0], z)
+                } else {
+                    (-FAR, FAR)
+                };
+                rect(back, ahead, lo[1], hi[1])
             }
         };
         let part = boolean(
