@@ -20,8 +20,23 @@ pub(crate) fn load_with_use(
     start_tool: Option<u32>,
 ) -> Result<(stock::ToolTable, Loaded), ()> {
     let (tools, loaded) = load_with_hand_tips(program, path, tools, start_tool)?;
-    let found = tools.tools_from_use(&loaded.toolpath.segments);
-    Ok((tools.with_tools_from_use(&found), loaded))
+    let found = tools.tools_from_use(&loaded.toolpath.segments, &loaded.toolpath.intended);
+    let tools = tools.with_tools_from_use(&found);
+    // a boring bar compensates as one (its tip): the program read again with it
+    if found
+        .iter()
+        .any(|f| matches!(f.tool, stock::Tool::Turning { .. }))
+    {
+        let mut again = input::load_program(program, path, &tools, start_tool)?;
+        // (the holders' hands were read from the first reading)
+        let hands = loaded.toolpath.warnings.into_iter();
+        again
+            .toolpath
+            .warnings
+            .extend(hands.filter(|w| w.code == "LS-HOLDER-HAND"));
+        return Ok((tools, again));
+    }
+    Ok((tools, loaded))
 }
 
 /// The program read with `tools`, and again with the tips its feeds give (above).

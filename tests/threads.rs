@@ -711,6 +711,19 @@ fn an_inside_thread_band_is_no_place_the_reference_point_enters_the_part() {
         "{gouges:#?}"
     );
     assert_eq!(j["threads"][0]["side"], "id", "{j:#}");
+    // T03 roughs and finishes the bore only: a boring bar (tip 2), not the OD default that
+    // cut the wall away on the wrong side of its ID G71 (372 mm² removed; the bore Ø20 →
+    // Ø28.4 over 25 mm and the thread are about 110)
+    let removed = j["removed_area_mm2"].as_f64().unwrap();
+    assert!(removed < 115.0, "{removed}");
+    assert!(gouges.is_empty(), "{gouges:#?}");
+    let stock = warnings(&j, "LS-STOCK");
+    assert!(
+        stock
+            .iter()
+            .any(|m| m.contains("T03") && m.contains("boring bar")),
+        "{stock:?}"
+    );
 }
 
 /// Field run 5 (D), in the style of a CAM job sheet's "clip thread" operation: an

@@ -5,15 +5,20 @@
 //!   the thread (an OD insert) or from the bore (an ID one);
 //! - one that only feeds along the axis at X0 (a centre drill, a G74 or G83 peck drill) is
 //!   a drill: the 55° insert plunged there with its edge across the face, and the default
-//!   G74 blade, standing along X, hollowed the whole part as it pecked (field run 3, D).
+//!   G74 blade, standing along X, hollowed the whole part as it pecked (field run 3, D);
+//! - one whose every finishing contour (G70–G73 shape) lies in a bore is a boring bar: the
+//!   default insert as an ID tool (tip 2); the OD default roughed the wall on the wrong
+//!   side of an ID G71, whose contour was then read against that stock (field run 2, N2).
+//!   The program is read again with it: its nose compensates as a boring bar's.
 //!
 //! Their size is a guess all the same, so their findings stay possible ones
-//! (spec/simulation.md, "Findings from assumed tools"). The program is not expanded again:
-//! the interpreter has compensated the tool as one with no entry (the default nose), which
-//! only a thread pass or a drilling feed under G41/G42 would show.
+//! (spec/simulation.md, "Findings from assumed tools"). For a threading insert or a drill
+//! the program is not expanded again: the interpreter has compensated the tool as one with
+//! no entry (the default nose), which only a thread pass or a drilling feed under G41/G42
+//! would show.
 
 use super::{ThreadSide, Tool, ToolTable};
-use expander::{Motion, Segment};
+use expander::{Intended, IntendedKind, Motion, Segment};
 
 /// What a tool with no entry is taken for from its moves.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,10 +39,24 @@ const ASSUMED_DRILL: Tool = Tool::Drill {
     reach: 60.0,
 };
 
+/// The boring bar a tool whose every contour lies in a bore is taken for: the default
+/// insert (55°, r0.4, 93°, 11 mm edges) as an ID tool, tip 2, cutting toward the chuck.
+const ASSUMED_BORING_BAR: Tool = Tool::Turning {
+    insert: super::Insert::D,
+    nose_radius: toolfacts::Nose::DEFAULT.radius,
+    tip: 2,
+    entering_angle: 93.0,
+    edge: 11.0,
+};
+
 /// What the moves of one tool with no entry say.
 struct Tally {
     t: u32,
     first: usize,
+    /// Finishing contours it roughs or finishes in a bore (its shape's start point below
+    /// it), and elsewhere.
+    bores: usize,
+    others: usize,
     threads: usize,
     /// Feeds along the axis at X0.
     on_axis: usize,
@@ -50,13 +69,8 @@ struct Tally {
 
 impl Tally {
     fn taken_for(&self) -> Option<Tool> {
-        if self.feeds > 0 {
-            return None;
-        }
-        match (self.threads, self.on_axis) {
-            (0, 0) => None,
-            (0, _) => Some(ASSUMED_DRILL),
-            (_, 0) => Some(Tool::Threading {
+        match (self.threads, self.on_axis, self.feeds) {
+            (1.., 0, 0) => Some(Tool::Threading {
                 angle: 60.0,
                 tip_flat: 0.0,
                 // a thread that says nothing of its side is an outside one, the usual
@@ -66,6 +80,8 @@ impl Tally {
                     ThreadSide::Od
                 },
             }),
+            (0, 1.., 0) => Some(ASSUMED_DRILL),
+            (0, _, _) if self.bores > 0 && self.others == 0 => Some(ASSUMED_BORING_BAR),
             _ => None,
         }
     }
@@ -75,7 +91,7 @@ impl ToolTable {
     /// The tools with no entry (tool 0, no T word yet, is the table's first entry, when
     /// there is a table) that `segments` use only for thread passes or only for feeds
     /// along the axis.
-    pub fn tools_from_use(&self, segments: &[Segment]) -> Vec<ToolFromUse> {
+    pub fn tools_from_use(&self, segments: &[Segment], intended: &[Intended]) -> Vec<ToolFromUse> {
         let mut tallies: Vec<Tally> = vec![];
         // the tally of the last tool looked up (`None`: it has an entry): a program's
         // moves come a tool at a time, and a million of them are read here
@@ -96,6 +112,8 @@ impl ToolTable {
                                 tallies.push(Tally {
                                     t: s.tool,
                                     first: i,
+                                    bores: 0,
+                                    others: 0,
                                     threads: 0,
                                     on_axis: 0,
                                     feeds: 0,
@@ -130,6 +148,23 @@ impl ToolTable {
                 tally.outside += side_of(n.to.r.abs() - s.to.r.abs());
             }
         }
+        for shape in intended
+            .iter()
+            .filter(|i| i.kind == IntendedKind::FinishingContour)
+        {
+            let bore = in_bore(shape);
+            for k in [shape.began, shape.after_move] {
+                let tool = segments.get(k).map(|s| s.tool);
+                let Some(t) = tallies.iter_mut().find(|t| Some(t.t) == tool) else {
+                    continue;
+                };
+                if bore {
+                    t.bores += 1;
+                } else {
+                    t.others += 1;
+                }
+            }
+        }
         tallies
             .iter()
             .filter_map(|t| {
@@ -157,12 +192,24 @@ impl ToolTable {
 pub(super) fn taken_note(t: u32, tool: &Tool) -> String {
     let what = match tool {
         Tool::Drill { .. } => "only feeds along the axis: taken for a drill",
-        _ => "cuts only thread passes: taken for a threading insert",
+        Tool::Threading { .. } => "cuts only thread passes: taken for a threading insert",
+        _ => "roughs and finishes in bores only: taken for a boring bar",
     };
     format!(
         "T{t:02} has no entry in the tool table and {what} ({}, its size assumed); state T{t:02} to check it",
         tool.describe()
     )
+}
+
+/// Whether a finishing shape lies in a bore: its start point (the cycle's A) lies below the
+/// shape (spec/simulation.md: the part lies on the side away from A), by |X| for a rear
+/// post's shape.
+fn in_bore(shape: &Intended) -> bool {
+    let Some((a, rest)) = shape.points.split_first() else {
+        return false;
+    };
+    rest.iter().all(|p| p.r.abs() >= a.r.abs() - 1e-9)
+        && rest.iter().any(|p| p.r.abs() > a.r.abs() + 1e-9)
 }
 
 /// Whether feed `s` runs along the axis at X0 (a drill's feed).

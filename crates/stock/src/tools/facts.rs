@@ -10,9 +10,16 @@ impl ToolTable {
     /// kinds have no nose, and compensation is ignored for them with a warning), the
     /// default nose ([`Tool::DEFAULT`]'s, the same constant), and every radial grooving blade by tool number.
     pub fn facts(&self) -> ToolFacts {
+        // a boring bar taken from its moves (`by_use`) compensates as one; the other tools
+        // taken by use keep the default nose (a thread or a drill is not compensated)
         let noses = self
             .tools
             .iter()
+            .chain(
+                self.by_use
+                    .iter()
+                    .filter(|(_, tool)| matches!(tool, Tool::Turning { .. })),
+            )
             .map(|(t, tool)| (*t, nose(tool)))
             .collect();
         let blades = self
