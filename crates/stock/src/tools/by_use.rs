@@ -148,23 +148,7 @@ impl ToolTable {
                 tally.outside += side_of(n.to.r.abs() - s.to.r.abs());
             }
         }
-        for shape in intended
-            .iter()
-            .filter(|i| i.kind == IntendedKind::FinishingContour)
-        {
-            let bore = in_bore(shape);
-            for k in [shape.began, shape.after_move] {
-                let tool = segments.get(k).map(|s| s.tool);
-                let Some(t) = tallies.iter_mut().find(|t| Some(t.t) == tool) else {
-                    continue;
-                };
-                if bore {
-                    t.bores += 1;
-                } else {
-                    t.others += 1;
-                }
-            }
-        }
+        count_contours(&mut tallies, segments, intended);
         tallies
             .iter()
             .filter_map(|t| {
@@ -199,6 +183,28 @@ pub(super) fn taken_note(t: u32, tool: &Tool) -> String {
         "T{t:02} has no entry in the tool table and {what} ({}, its size assumed); state T{t:02} to check it",
         tool.describe()
     )
+}
+
+/// Counts the finishing contours each tool of `tallies` roughs or finishes (the tool of the
+/// cycle's first move and of the shape's), in a bore or elsewhere.
+fn count_contours(tallies: &mut [Tally], segments: &[Segment], intended: &[Intended]) {
+    for shape in intended
+        .iter()
+        .filter(|i| i.kind == IntendedKind::FinishingContour)
+    {
+        let bore = in_bore(shape);
+        for k in [shape.began, shape.after_move] {
+            let tool = segments.get(k).map(|s| s.tool);
+            let Some(t) = tallies.iter_mut().find(|t| Some(t.t) == tool) else {
+                continue;
+            };
+            if bore {
+                t.bores += 1;
+            } else {
+                t.others += 1;
+            }
+        }
+    }
 }
 
 /// Whether a finishing shape lies in a bore: its start point (the cycle's A) lies below the
