@@ -116,3 +116,33 @@ fn the_sheet_names_tools_offsets_designations_times_and_the_chuck() {
         assert!(sheet.contains(needle), "missing {needle}\n{sheet}");
     }
 }
+
+/// A tool with no entry taken for what its moves say is named so on the sheet (it read
+/// "not in the tool table: the default assumed" beside a threading insert's description).
+#[test]
+fn the_sheet_says_a_tool_was_taken_from_its_moves() {
+    let program = "O0036\nG21 G99\nT0101\nM03 S800\nG00 X52. Z2.\nG01 X46. F0.2\nZ-30.\nG00 X60. Z50.\nT0505\nG97 S600 M03\nG00 X48. Z4.\nG92 X45.4 Z-20. F1.5\nX45.0\nX44.2\nG00 X60. Z50.\nM30\n";
+    let (dir, path) = temp_program("sheet.nc", program.as_bytes());
+    let html = dir.path().join("r.html");
+    let out = latsim(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        "50x60",
+        "--html",
+        html.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert!(out.code <= 1, "{}", out.stderr);
+    let page = std::fs::read_to_string(html).unwrap();
+    assert!(
+        page.contains(
+            "threading 60° (not in the tool table: taken from its moves, its size assumed)"
+        ),
+        "{}",
+        &page[..page.len().min(4000)]
+    );
+    assert!(page.contains("(not in the tool table: the default assumed)"));
+}

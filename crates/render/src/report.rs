@@ -320,6 +320,9 @@ pub struct ToolEntry {
     pub assumed: bool,
     /// The tool table has an entry for it (with `assumed`: its size is what is missing).
     pub in_table: bool,
+    /// It has no entry and is taken for what its moves say (a threading insert, a drill, a
+    /// boring bar), not the default insert.
+    pub from_moves: bool,
     /// The time of all its moves, s.
     pub time_s: f64,
     /// The time of its cutting (feed and thread) moves, s.

@@ -70,6 +70,8 @@ fn tool_row(out: &mut String, t: &ToolEntry) {
     if t.assumed && t.in_table {
         // (the setup sheet said "not in the tool table" of a tool the table lists)
         what.push_str(" (its size not in the tool table: assumed)");
+    } else if t.assumed && t.from_moves {
+        what.push_str(" (not in the tool table: taken from its moves, its size assumed)");
     } else if t.assumed {
         what.push_str(" (not in the tool table: the default assumed)");
     }
