@@ -589,3 +589,34 @@ fn a_part_off_chamfering_under_g42_with_no_table_is_clean() {
         "{gouges:#?}"
     );
 }
+
+/// Field run 6 (A): a bush, its OD by G71/G70 started on the bar (X50) with the shape's
+/// exit above it (`N20 X52.`), then its bore by G71/G70. The OD shape was read as a face
+/// (the start point below the shape's top), which kept nothing of the OD: the OD's whole
+/// removal was a certain 3 mm gouge. The side is the shape's first move's: CLEAN.
+#[test]
+fn an_od_shape_leaving_above_its_start_is_still_an_od_shape() {
+    let program = "O0601\nG21 G99\nT0101\nG97 S1000 M03\nG0 X50. Z2.\nG71 U2. R.5\nG71 P10 Q20 U.4 W.1 F.25\nN10 G0 X44.\nG1 Z-30.\nN20 X52.\nG70 P10 Q20 F.1\nG0 X100. Z100.\nT0303\nG97 S900 M03\nG0 X16. Z2.\nG71 U1. R.5\nG71 P30 Q40 U-.3 W.1 F.2\nN30 G0 X24.\nG1 Z-30.\nN40 X16.\nG70 P30 Q40 F.1\nG0 Z2.\nX100. Z100.\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DNMG 110404\"\ntip = 2\nentering_angle = 93\n";
+    let (dir, path) = temp_program("bush.nc", program.as_bytes());
+    let table = dir.path().join("tools.toml");
+    std::fs::write(&table, tools).unwrap();
+    let (out, v) = run_json(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        "50x60",
+        "--bore",
+        "18",
+        "--tools",
+        table.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, 0, "{:#}", v["gouges"]);
+    assert!(
+        v["gouges"].as_array().unwrap().is_empty(),
+        "{:#}",
+        v["gouges"]
+    );
+}

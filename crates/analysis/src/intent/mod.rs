@@ -125,7 +125,15 @@ impl Intent {
     pub fn finishing(path: &[[f64; 2]], stages: &Stages) -> Option<Self> {
         let (a, shape) = path.split_first()?;
         let (lo, hi) = bbox(shape);
-        let toward = if a[1] >= hi[1] - 1e-9 {
+        // the shape's first move from A says the side (an OD shape goes in from A, an ID one
+        // out), whatever its exit does: an OD shape that leaves above A (`N20 X52.` from a
+        // start at X50) was read as a face and kept nothing of the OD (field run 6, A)
+        let first = shape.first()?;
+        let toward = if first[1] < a[1] - 1e-9 {
+            Toward::MinusR
+        } else if first[1] > a[1] + 1e-9 {
+            Toward::PlusR
+        } else if a[1] >= hi[1] - 1e-9 {
             Toward::MinusR
         } else if a[1] <= lo[1] + 1e-9 {
             Toward::PlusR

@@ -57,6 +57,10 @@ struct Tally {
     /// it), and elsewhere.
     bores: usize,
     others: usize,
+    /// The largest |r| its feeds reach, and the largest of its bores' shapes: a boring bar
+    /// cuts nothing outside its bores (a tool that also faces the part from the OD is not).
+    feed_reach: f64,
+    bore_reach: f64,
     threads: usize,
     /// Feeds along the axis at X0.
     on_axis: usize,
@@ -81,7 +85,13 @@ impl Tally {
                 },
             }),
             (0, 1.., 0) => Some(ASSUMED_DRILL),
-            (0, _, _) if self.bores > 0 && self.others == 0 => Some(ASSUMED_BORING_BAR),
+            (0, _, _)
+                if self.bores > 0
+                    && self.others == 0
+                    && self.feed_reach <= self.bore_reach + 1e-6 =>
+            {
+                Some(ASSUMED_BORING_BAR)
+            }
             _ => None,
         }
     }
@@ -114,6 +124,8 @@ impl ToolTable {
                                     first: i,
                                     bores: 0,
                                     others: 0,
+                                    feed_reach: 0.0,
+                                    bore_reach: 0.0,
                                     threads: 0,
                                     on_axis: 0,
                                     feeds: 0,
@@ -129,6 +141,7 @@ impl ToolTable {
             let Some(k) = k else { continue };
             let tally = &mut tallies[k];
             if s.motion == Motion::Feed {
+                tally.feed_reach = tally.feed_reach.max(s.from.r.abs()).max(s.to.r.abs());
                 if along_axis(s) {
                     tally.on_axis += 1;
                 } else {
@@ -200,6 +213,8 @@ fn count_contours(tallies: &mut [Tally], segments: &[Segment], intended: &[Inten
             };
             if bore {
                 t.bores += 1;
+                let reach = shape.points.iter().map(|p| p.r.abs()).fold(0.0, f64::max);
+                t.bore_reach = t.bore_reach.max(reach);
             } else {
                 t.others += 1;
             }
@@ -207,15 +222,15 @@ fn count_contours(tallies: &mut [Tally], segments: &[Segment], intended: &[Inten
     }
 }
 
-/// Whether a finishing shape lies in a bore: its start point (the cycle's A) lies below the
-/// shape (spec/simulation.md: the part lies on the side away from A), by |X| for a rear
-/// post's shape.
+/// Whether a finishing shape lies in a bore: its first move goes out from its start point
+/// (the cycle's A; spec/simulation.md: the part lies on the side away from A), by |X| for
+/// a rear post's shape.
 fn in_bore(shape: &Intended) -> bool {
-    let Some((a, rest)) = shape.points.split_first() else {
-        return false;
-    };
-    rest.iter().all(|p| p.r.abs() >= a.r.abs() - 1e-9)
-        && rest.iter().any(|p| p.r.abs() > a.r.abs() + 1e-9)
+    // the shape's first move from A goes out of the bore's start (as the intents read it)
+    match shape.points.as_slice() {
+        [a, first, ..] => first.r.abs() > a.r.abs() + 1e-9,
+        _ => false,
+    }
 }
 
 /// Whether feed `s` runs along the axis at X0 (a drill's feed).
