@@ -898,3 +898,20 @@ fn a_thread_with_no_t_word_and_no_table_is_cut_by_a_threading_insert() {
     let angle = j["threads"][0]["included_angle_deg"].as_f64().unwrap();
     assert!((angle - 60.0).abs() < 0.05, "{angle}");
 }
+
+/// Field run 6 (B), in a gang-tool lathe's style: every tool behind the centre (X
+/// negative), an M20 × 1.5 by G92 with a stated OD threading insert. Its passes read "deeper
+/// outward" at signed X, the alarm LS-THREAD-SIDE, and "18.780 mm too shallow (X-19.400
+/// expected)": the section sees them folded about the axis, an OD thread to X18.16, 60°.
+#[test]
+fn a_thread_behind_the_centre_is_measured_in_the_section() {
+    let table = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"DNMG 110404\"\ntip = 3\nentering_angle = 93\n[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\nside = \"od\"\n";
+    let program = "O7604\nG21 G99 G40\nT0101\nG96 S180 M03\nG0 X-22. Z2.\nG1 X-19.8 F.2\nZ-25.\nX-22.\nG0 Z5.\nT0404\nG97 S800 M03\nG0 X-22. Z4.\nG92 X-19.4 Z-20. F1.5\nX-18.9\nX-18.5\nX-18.25\nX-18.16\nG0 X-30. Z50.\nM30\n";
+    let j = run_no_entry(program, Some(table), &["--stock", "25x40"]);
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+    let t = &j["threads"][0];
+    let x = |k: &str| t[k].as_f64().unwrap();
+    assert!((x("achieved_x") - 18.16).abs() < 2e-3, "{t:#}");
+    assert!((x("included_angle_deg") - 60.0).abs() < 0.05, "{t:#}");
+    assert_eq!(t["side"], "od", "{t:#}");
+}

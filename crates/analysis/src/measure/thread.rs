@@ -425,7 +425,16 @@ impl ThreadPasses {
     /// The threads measured in the final section `shapes` (see [`threads`]); `segments`
     /// are the moves the passes were found in.
     pub fn measure(&self, segments: &[Segment], shapes: &[Shape]) -> Vec<Thread> {
-        let groups: Vec<(Surface, Vec<&Segment>, usize, usize)> = self
+        // the passes as the section sees them: a rear post's at negative X folded about the
+        // axis (spec/simulation.md, "Tools past the axis"; at signed X a rear OD thread went
+        // "deeper outward", the alarm LS-THREAD-SIDE; field run 6, B)
+        let fold = |s: &Segment| {
+            let mut f = *s;
+            f.from.r = f.from.r.abs();
+            f.to.r = f.to.r.abs();
+            f
+        };
+        let groups: Vec<(Surface, Vec<Segment>, usize, usize)> = self
             .0
             .iter()
             .zip(self.ends(segments))
@@ -433,7 +442,7 @@ impl ThreadPasses {
                 let first = passes[0];
                 (
                     surface,
-                    passes.iter().map(|&i| &segments[i]).collect(),
+                    passes.iter().map(|&i| fold(&segments[i])).collect(),
                     first,
                     done_at,
                 )
@@ -441,7 +450,8 @@ impl ThreadPasses {
             .collect();
         groups
             .into_iter()
-            .map(|(surface, passes, first_move, done_at)| {
+            .map(|(surface, folded, first_move, done_at)| {
+                let passes: Vec<&Segment> = folded.iter().collect();
                 let deeper = |a: f64, b: f64| match surface {
                     Surface::Outer => a < b,
                     Surface::Bore => a > b,
