@@ -105,7 +105,7 @@ fn tool_list(
             designation: tools.designation(t).map(str::to_string),
             assumed: !tools.size_stated(t, expander::ToolHint::Table),
             in_table: tools.get(t).is_some(),
-            from_moves: tools.get(t).is_none() && *tools.tool_or_default(t) != stock::Tool::DEFAULT,
+            from_moves: tools.taken_from_moves(t),
             time_s: secs,
             cut_time_s: cut(t),
         })

@@ -509,7 +509,7 @@ fn build_report(
     };
     // the snapshots the analysis asked for are not the player's
     let toolpath = &job.loaded.toolpath;
-    let mut asked = analysis::stock_marks(toolpath, &job.tools);
+    let mut asked = analysis::stock_marks(toolpath);
     asked.extend(analysis::thread_marks(toolpath, &job.tools));
     sim.snapshots
         .retain(|(k, _)| marks.contains(k) || !asked.contains(k));

@@ -477,7 +477,7 @@ pub(crate) fn note(what: &str, depth: f64, seg: &Segment, tools: &ToolTable) -> 
     };
     let tool = match tools.get(t) {
         // a tool taken for what its moves say (a threading insert, a drill), or the default
-        None if *tools.tool_or_default(t) != stock::Tool::DEFAULT => {
+        None if tools.taken_from_moves(t) => {
             format!(
                 "the {} it is taken for",
                 tools.describe_for(seg.tool, seg.hint)

@@ -96,7 +96,7 @@ struct Beside {
 }
 
 impl Beside {
-    fn of(toolpath: &Toolpath, s: &Settings) -> Self {
+    fn of(toolpath: &Toolpath, s: &Settings, thread_passes: ThreadPasses) -> Self {
         let segments = &toolpath.segments;
         let rear = stock::rear_tools(segments);
         let (outlines, runs) = tool_outlines(s.tools, segments, &rear);
@@ -115,14 +115,15 @@ impl Beside {
                 .fixture
                 .map(|f| f.check(s.tools, segments, CHORD_TOL, &toolpath.tailstock))
                 .unwrap_or_default(),
-            thread_passes: ThreadPasses::of(segments, s.tools),
+            thread_passes,
         }
     }
 }
 
 /// What the run concludes from `sim`, the removal of `toolpath`'s moves from the blank.
 pub fn run(toolpath: &Toolpath, sim: &Simulation, intents: &Intents, s: &Settings) -> Findings {
-    conclude(toolpath, sim, intents, s, Beside::of(toolpath, s))
+    let passes = ThreadPasses::of(&toolpath.segments, s.tools);
+    conclude(toolpath, sim, intents, s, Beside::of(toolpath, s, passes))
 }
 
 /// The whole pipeline after expansion: the removal (`stock::simulate` with `opts`, its
@@ -136,12 +137,18 @@ pub fn pipeline(
     progress: &mut dyn FnMut(usize),
 ) -> (Simulation, Findings) {
     let mut opts = opts.clone();
-    opts.snapshot_after.extend(stock_marks(toolpath, s.tools));
-    opts.snapshot_exact.extend(thread_marks(toolpath, s.tools));
+    // the threads' passes, found once: for their snapshots and for their checks beside
+    let passes = ThreadPasses::of(&toolpath.segments, s.tools);
+    opts.snapshot_after.extend(stock_marks(toolpath));
+    opts.snapshot_exact
+        .extend(intent::program::marks_of_threads(
+            &passes,
+            &toolpath.segments,
+        ));
     opts.snapshot_after.sort_unstable();
     opts.snapshot_after.dedup();
     let (sim, beside) = std::thread::scope(|scope| {
-        let side = scope.spawn(|| Beside::of(toolpath, s));
+        let side = scope.spawn(|| Beside::of(toolpath, s, passes));
         let sim = stock::simulate(s.blank, s.tools, &toolpath.segments, &opts, progress);
         // a panic there is a bug: the caller's guard reports it
         let beside = side.join().unwrap_or_else(|e| std::panic::resume_unwind(e));

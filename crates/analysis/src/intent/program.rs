@@ -163,7 +163,7 @@ fn overcut_later(all: &[expander::Intended], k: usize, i: &expander::Intended) -
 /// programs of up to [`MAX_MOVES_FOR_MARKS`] moves get them, at most [`MAX_STOCK_MARKS`];
 /// other contours are read against the final part (which has at most less material than
 /// the stock of their cycle: a lead-in in front of either is dropped).
-pub fn stock_marks(toolpath: &Toolpath, _tools: &ToolTable) -> Vec<usize> {
+pub fn stock_marks(toolpath: &Toolpath) -> Vec<usize> {
     let intended = &toolpath.intended;
     if toolpath.segments.len() > MAX_MOVES_FOR_MARKS {
         return vec![];
@@ -188,7 +188,14 @@ pub fn stock_marks(toolpath: &Toolpath, _tools: &ToolTable) -> Vec<usize> {
 /// measured in the final part.
 pub fn thread_marks(toolpath: &Toolpath, tools: &ToolTable) -> Vec<usize> {
     let segments = &toolpath.segments;
-    let passes = crate::measure::ThreadPasses::of(segments, tools);
+    marks_of_threads(&crate::measure::ThreadPasses::of(segments, tools), segments)
+}
+
+/// [`thread_marks`] of the threads' `passes` found in `segments`.
+pub(crate) fn marks_of_threads(
+    passes: &crate::measure::ThreadPasses,
+    segments: &[expander::Segment],
+) -> Vec<usize> {
     passes
         .starts()
         .into_iter()

@@ -142,6 +142,12 @@ impl ToolTable {
             .unwrap_or(&Tool::DEFAULT)
     }
 
+    /// Whether tool `t` has no entry and is taken for what its moves say
+    /// ([`ToolTable::tools_from_use`]) rather than the default insert.
+    pub fn taken_from_moves(&self, t: u32) -> bool {
+        self.get(t).is_none() && self.use_default(t).is_some()
+    }
+
     /// What tool `t`, which has no entry, is taken for from its moves.
     fn use_default(&self, t: u32) -> Option<&Tool> {
         self.by_use
