@@ -520,32 +520,25 @@ const START_GAP: f64 = 0.04;
 /// least [`START_GAP`], separates two starts; a single start's widest gap is the rest of
 /// the circle.
 fn starts_of(passes: &[&Segment]) -> (Vec<usize>, usize) {
-    let mut group = vec![(0.0, 0usize); passes.len()];
-    let mut angles: Vec<f64> = passes
-        .iter()
-        .map(|p| p.thread_phase.rem_euclid(1.0))
-        .collect();
-    angles.sort_by(f64::total_cmp);
-    angles.dedup();
-    for angle in angles {
-        let own: Vec<usize> = (0..passes.len())
-            .filter(|&k| passes[k].thread_phase.rem_euclid(1.0) == angle)
-            .collect();
+    let angle = |k: usize| passes[k].thread_phase.rem_euclid(1.0);
+    // the passes by start angle, each angle's grouped by start place (linear after a sort:
+    // a CAM program may give every pass its own Q)
+    let mut by_angle: Vec<usize> = (0..passes.len()).collect();
+    by_angle.sort_by(|&a, &b| angle(a).total_cmp(&angle(b)));
+    let mut group = vec![(0u64, 0usize); passes.len()];
+    for own in by_angle.chunk_by(|&a, &b| angle(a) == angle(b)) {
         let place: Vec<f64> = own.iter().map(|&k| start_place(passes[k])).collect();
-        for (k, g) in own.iter().zip(places_grouped(&place)) {
-            group[*k] = (angle, g);
+        for (&k, g) in own.iter().zip(places_grouped(&place)) {
+            group[k] = (angle(k).to_bits(), g);
         }
     }
     // number the starts in program order
-    let mut seen: Vec<(f64, usize)> = vec![];
+    let mut seen: std::collections::HashMap<(u64, usize), usize> = Default::default();
     let start_of = group
         .iter()
-        .map(|g| match seen.iter().position(|s| s == g) {
-            Some(k) => k,
-            None => {
-                seen.push(*g);
-                seen.len() - 1
-            }
+        .map(|g| {
+            let next = seen.len();
+            *seen.entry(*g).or_insert(next)
         })
         .collect();
     (start_of, seen.len())
