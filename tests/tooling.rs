@@ -139,19 +139,31 @@ fn check_and_expand_read_the_holders_tip_as_run_does() {
 
 /// A program with no tool table, run as `run` runs it, and its JSON.
 fn run_without_table(program: &str) -> serde_json::Value {
+    run_with(program, None, "40x60")
+}
+
+/// A program on a `stock` bar with the tool table `table` (none: no table), and its JSON;
+/// the run must pass.
+fn run_with(program: &str, table: Option<&str>, stock: &str) -> serde_json::Value {
     let (dir, path) = temp_program("drill.nc", program.as_bytes());
     let json = dir.path().join("r.json");
-    let out = latsim(&[
+    let tools = dir.path().join("tools.toml");
+    let mut args = vec![
         "run",
         path.to_str().unwrap(),
         "--control",
         "fanuc-a",
         "--stock",
-        "40x60",
+        stock,
         "--json",
         json.to_str().unwrap(),
         "--quiet",
-    ]);
+    ];
+    if let Some(table) = table {
+        std::fs::write(&tools, table).unwrap();
+        args.extend(["--tools", tools.to_str().unwrap()]);
+    }
+    let out = latsim(&args);
     assert_eq!(out.code, 0, "{}", out.stderr);
     serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap()
 }
@@ -186,4 +198,45 @@ fn a_tool_that_only_feeds_along_the_axis_is_a_drill() {
             "{notes:?}"
         );
     }
+}
+
+/// Field run 6 (E), a sleeve with no tool table: T02 turns the OD under G42, T03 drills
+/// (taken for the Ø10 drill), T04 roughs the bore, pulls out along X19 and finishes it
+/// under G41. T04 finishes nothing but a bore, so it is a boring bar (tip 2) by its moves,
+/// as a G70 bore's tool is; taken for the OD default, its contour was read against the
+/// stock the OD insert left and its rapid out of the bore was a certain 0.39 mm gouge
+/// (0.8 mm in the full CAM program), from two assumed tools. The part is the one the same
+/// program cuts with T04 stated as that boring bar.
+#[test]
+fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
+    let program = "O1004 (SLEEVE)\nG21 G99 G40\nT0202 (OD FINISH)\nG96 S250 M03\nG0 X20. Z3.\nG1 G42 X20. Z1. F.1\nZ-15.\nX28.\nZ-25.\nX32.\nG40 G0 X34.\nZ3.\nT0303 (DRILL 20.)\nG97 S800 M03\nG0 X0. Z5.\nG83 Z-30. Q8000 F.1\nG80\nT0404 (BORING BAR)\nG96 S150 M03\nG0 X23.6 Z3.\nG1 Z-26. F.15\nX19.\nG0 Z3.\nX22. Z3.\nG1 G41 X24. Z1. F.08\nZ-26.\nX19.6\nG40 G0 Z3.\nG0 X100. Z100.\nM30\n";
+    let guessed = run_with(program, None, "30x60");
+    assert_eq!(guessed["verdict"], "clean", "{:#}", guessed["gouges"]);
+    let gouges = guessed["gouges"].as_array().unwrap();
+    assert!(
+        gouges.iter().all(|g| g["assumed_tool"] == true),
+        "{gouges:#?}"
+    );
+    let notes: Vec<&str> = guessed["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-STOCK")
+        .map(|w| w["message"].as_str().unwrap())
+        .collect();
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T04") && m.contains("boring bar")),
+        "{notes:?}"
+    );
+    let bar = "[[tool]]\nt = 4\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n";
+    let stated = run_with(program, Some(bar), "30x60");
+    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
+    assert!(
+        (area(&guessed) - area(&stated)).abs() < 1e-6,
+        "{} vs {}",
+        area(&guessed),
+        area(&stated)
+    );
 }

@@ -6,9 +6,11 @@
 //! - one that only feeds along the axis at X0 (a centre drill, a G74 or G83 peck drill) is
 //!   a drill: the 55° insert plunged there with its edge across the face, and the default
 //!   G74 blade, standing along X, hollowed the whole part as it pecked (field run 3, D);
-//! - one whose every finishing contour (G70–G73 shape) lies in a bore is a boring bar: the
-//!   default insert as an ID tool (tip 2); the OD default roughed the wall on the wrong
-//!   side of an ID G71, whose contour was then read against that stock (field run 2, N2).
+//! - one whose every finishing contour (G70–G73 shape, or a contour under G41/G42) lies in a
+//!   bore is a boring bar: the default insert as an ID tool (tip 2); the OD default roughed
+//!   the wall on the wrong side of an ID G71, whose contour was then read against that
+//!   stock (field run 2, N2), and its rapid out of a bore it finished under G41 was a
+//!   certain gouge (field run 6, E).
 //!   The program is read again with it: its nose compensates as a boring bar's.
 //!
 //! Their size is a guess all the same, so their findings stay possible ones
@@ -199,13 +201,15 @@ pub(super) fn taken_note(t: u32, tool: &Tool) -> String {
 }
 
 /// Counts the finishing contours each tool of `tallies` roughs or finishes (the tool of the
-/// cycle's first move and of the shape's), in a bore or elsewhere.
+/// cycle's first move and of the shape's), in a bore or elsewhere: a G70–G73 shape or a
+/// contour cut under G41/G42 (a bore finished by hand: field run 6, E).
 fn count_contours(tallies: &mut [Tally], segments: &[Segment], intended: &[Intended]) {
-    for shape in intended
-        .iter()
-        .filter(|i| i.kind == IntendedKind::FinishingContour)
-    {
-        let bore = in_bore(shape);
+    for shape in intended {
+        let bore = match shape.kind {
+            IntendedKind::FinishingContour => in_bore(shape),
+            IntendedKind::Compensated { part_on_left } => part_outside(shape, part_on_left),
+            IntendedKind::Groove => continue,
+        };
         for k in [shape.began, shape.after_move] {
             let tool = segments.get(k).map(|s| s.tool);
             let Some(t) = tallies.iter_mut().find(|t| Some(t.t) == tool) else {
@@ -213,7 +217,17 @@ fn count_contours(tallies: &mut [Tally], segments: &[Segment], intended: &[Inten
             };
             if bore {
                 t.bores += 1;
-                let reach = shape.points.iter().map(|p| p.r.abs()).fold(0.0, f64::max);
+                // (a contour under G41/G42 is fed in from its start-up move's start)
+                let start_up = match shape.kind {
+                    IntendedKind::Compensated { .. } => segments.get(shape.after_move),
+                    _ => None,
+                };
+                let reach = shape
+                    .points
+                    .iter()
+                    .map(|p| p.r.abs())
+                    .chain(start_up.map(|s| s.from.r.abs()))
+                    .fold(0.0, f64::max);
                 t.bore_reach = t.bore_reach.max(reach);
             } else {
                 t.others += 1;
@@ -231,6 +245,24 @@ fn in_bore(shape: &Intended) -> bool {
         [a, first, ..] => first.r.abs() > a.r.abs() + 1e-9,
         _ => false,
     }
+}
+
+/// Whether a contour cut under G41/G42 keeps the part outside it, away from the axis (a
+/// bore): the side the part is on, from each move's direction of travel, weighted by its
+/// length (G41 along a bore toward the chuck keeps the part to the right, outward).
+fn part_outside(shape: &Intended, part_on_left: bool) -> bool {
+    let outward: f64 = shape
+        .points
+        .windows(2)
+        .map(|w| {
+            // the part's side of a move (dz, dr) in the (z, r) plane: its left is (−dr, dz)
+            let dz = w[1].z - w[0].z;
+            let r_toward_part = if part_on_left { dz } else { -dz };
+            // below the axis (a rear post) outward is toward −r
+            r_toward_part * (w[0].r + w[1].r).signum()
+        })
+        .sum();
+    outward > 1e-9
 }
 
 /// Whether feed `s` runs along the axis at X0 (a drill's feed).
