@@ -11,7 +11,7 @@ use crate::input::{self, Loaded};
 /// again with the tip its feeds give, and a warning LS-HOLDER-HAND (docs/field-rules.md
 /// §14: a left-hand holder mounted upside down, or behind the centre line with M04, cuts
 /// toward the chuck); a tool with no entry that only cuts thread passes is taken for a
-/// threading insert, one that only feeds along the axis for a drill (`stock::ToolFromUse`,
+/// threading insert, one that only drills for a drill (`stock::ToolFromUse`,
 /// docs/field-rules.md §17).
 pub(crate) fn load_with_use(
     program: &ProgramArgs,
@@ -20,7 +20,7 @@ pub(crate) fn load_with_use(
     start_tool: Option<u32>,
 ) -> Result<(stock::ToolTable, Loaded), ()> {
     let (tools, loaded) = load_with_hand_tips(program, path, tools, start_tool)?;
-    let found = tools.tools_from_use(&loaded.toolpath.segments, &loaded.toolpath.intended);
+    let found = tools.tools_from_use(&loaded.toolpath);
     let tools = tools.with_tools_from_use(&found);
     // a boring bar compensates as one (its tip): the program read again with it
     if found

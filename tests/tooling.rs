@@ -240,3 +240,38 @@ fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
         area(&stated)
     );
 }
+
+/// Field run 6 (C): a tool with no entry that drills off the axis in a drilling cycle with
+/// the spindle turning (an offset indexable drill, docs/field-rules.md §19) is taken for
+/// the Ø10 drill too, at its offset: the hole about the axis is Ø12 (the drill's edge at
+/// 1 + 5), and its bottom the point's cone swept about the axis, deepest (Z-25) at the
+/// drill's centre, 1 mm off the axis. In the half section, with the cone's slope
+/// 1/tan 59°: 25 · 6 − (0.5 + 12.5) / tan 59° = 142.19 mm². Taken for the 55° insert, its
+/// edges swept a cone Ø34 deep into the face (378.6 mm² of possible gouge).
+#[test]
+fn an_offset_drill_with_no_entry_is_a_drill() {
+    let program = "O0905 (U-DRILL OFFSET X2.)\nG21 G99 G40\nT0505\nG97 S1200 M03\nG0 X2. Z5.\nG83 Z-25. F.08\nG80\nG0 X100. Z100.\nM30\n";
+    let v = run_with(program, None, "50x60");
+    let slope = 1.0 / 59f64.to_radians().tan();
+    let hand = 25.0 * 6.0 - (0.5 + 12.5) * slope;
+    let removed = v["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - hand).abs() < 0.01, "{removed} vs {hand}");
+    let notes: Vec<&str> = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-STOCK")
+        .map(|w| w["message"].as_str().unwrap())
+        .collect();
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T05") && m.contains("taken for a drill")),
+        "{notes:?}"
+    );
+    assert!(
+        v["gouges"].as_array().unwrap().is_empty(),
+        "{:#}",
+        v["gouges"]
+    );
+}

@@ -3,9 +3,11 @@
 //!   the 55° turning default: that default cut a 96° thread and scraped the flank at every
 //!   pull-out (field run 4, 5d). Its side is the side its passes come in from: from outside
 //!   the thread (an OD insert) or from the bore (an ID one);
-//! - one that only feeds along the axis at X0 (a centre drill, a G74 or G83 peck drill) is
-//!   a drill: the 55° insert plunged there with its edge across the face, and the default
-//!   G74 blade, standing along X, hollowed the whole part as it pecked (field run 3, D);
+//! - one that only feeds along the axis at X0 (a centre drill, a G74 or G83 peck drill), or
+//!   in a drilling cycle off it (an offset indexable drill, §19), is a drill: the 55°
+//!   insert plunged there with its edge across the face, and the default G74 blade,
+//!   standing along X, hollowed the whole part as it pecked (field run 3, D); the insert
+//!   fed as an offset U-drill hollowed a cone Ø34 deep into the face (field run 6, C);
 //! - one whose every finishing contour (G70–G73 shape, or a contour under G41/G42) lies in a
 //!   bore is a boring bar: the default insert as an ID tool (tip 2); the OD default roughed
 //!   the wall on the wrong side of an ID G71, whose contour was then read against that
@@ -20,7 +22,7 @@
 //! would show.
 
 use super::{ThreadSide, Tool, ToolTable};
-use expander::{Intended, IntendedKind, Motion, Segment};
+use expander::{Intended, IntendedKind, Motion, Segment, Toolpath};
 
 /// What a tool with no entry is taken for from its moves.
 #[derive(Debug, Clone, PartialEq)]
@@ -64,7 +66,7 @@ struct Tally {
     feed_reach: f64,
     bore_reach: f64,
     threads: usize,
-    /// Feeds along the axis at X0.
+    /// Drilling feeds: along the axis at X0, or a drilling cycle's off it.
     on_axis: usize,
     /// Other feeds.
     feeds: usize,
@@ -101,9 +103,11 @@ impl Tally {
 
 impl ToolTable {
     /// The tools with no entry (tool 0, no T word yet, is the table's first entry, when
-    /// there is a table) that `segments` use only for thread passes or only for feeds
-    /// along the axis.
-    pub fn tools_from_use(&self, segments: &[Segment], intended: &[Intended]) -> Vec<ToolFromUse> {
+    /// there is a table) that `toolpath` uses only for thread passes, only to drill, or
+    /// only to finish bores.
+    pub fn tools_from_use(&self, toolpath: &Toolpath) -> Vec<ToolFromUse> {
+        let segments = &toolpath.segments;
+        let offset_drill = OffsetDrills::of(toolpath);
         let mut tallies: Vec<Tally> = vec![];
         // the tally of the last tool looked up (`None`: it has an entry): a program's
         // moves come a tool at a time, and a million of them are read here
@@ -144,7 +148,7 @@ impl ToolTable {
             let tally = &mut tallies[k];
             if s.motion == Motion::Feed {
                 tally.feed_reach = tally.feed_reach.max(s.from.r.abs()).max(s.to.r.abs());
-                if along_axis(s) {
+                if along_axis(s) || offset_drill.feeds(s) {
                     tally.on_axis += 1;
                 } else {
                     tally.feeds += 1;
@@ -163,7 +167,7 @@ impl ToolTable {
                 tally.outside += side_of(n.to.r.abs() - s.to.r.abs());
             }
         }
-        count_contours(&mut tallies, segments, intended);
+        count_contours(&mut tallies, segments, &toolpath.intended);
         tallies
             .iter()
             .filter_map(|t| {
@@ -190,7 +194,7 @@ impl ToolTable {
 /// The warning for tool `t`, which has no entry and is taken for `tool` from its moves.
 pub(super) fn taken_note(t: u32, tool: &Tool) -> String {
     let what = match tool {
-        Tool::Drill { .. } => "only feeds along the axis: taken for a drill",
+        Tool::Drill { .. } => "only drills: taken for a drill",
         Tool::Threading { .. } => "cuts only thread passes: taken for a threading insert",
         _ => "roughs and finishes in bores only: taken for a boring bar",
     };
@@ -263,6 +267,37 @@ fn part_outside(shape: &Intended, part_on_left: bool) -> bool {
         })
         .sum();
     outward > 1e-9
+}
+
+/// The drilling cycles that run off the axis (G81/G82/G83 with the spindle turning: an
+/// offset drill, warned W-OFF-AXIS-DRILL at the cycle's X word), by where that word is.
+struct OffsetDrills(Vec<(u32, u32)>);
+
+impl OffsetDrills {
+    fn of(toolpath: &Toolpath) -> Self {
+        let mut at: Vec<(u32, u32)> = toolpath
+            .warnings
+            .iter()
+            .filter(|w| w.code == "W-OFF-AXIS-DRILL")
+            .map(|w| (w.span.offset, w.span.line))
+            .collect();
+        at.sort_unstable();
+        Self(at)
+    }
+
+    /// Whether feed `s` is a straight feed along Z of one of these cycles (its block holds
+    /// the warned word).
+    fn feeds(&self, s: &Segment) -> bool {
+        if self.0.is_empty() || s.arc.is_some() || s.from.r != s.to.r || s.from.z == s.to.z {
+            return false;
+        }
+        let k = self
+            .0
+            .partition_point(|&(offset, _)| offset < s.span.offset);
+        self.0.get(k).is_some_and(|&(offset, line)| {
+            offset < s.span.offset + s.span.len && line == s.span.line
+        })
+    }
 }
 
 /// Whether feed `s` runs along the axis at X0 (a drill's feed).
