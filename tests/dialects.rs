@@ -293,3 +293,39 @@ fn an_unknown_m_code_is_one_warning() {
     assert_eq!(unknown.len(), 1, "{unknown:?}");
     assert_eq!(unknown[0]["line"], 2);
 }
+
+/// Field run 6 (F): a GSK 980TD program in custom macro A (`G65 H01 P#101 Q30000`: #101 =
+/// 30000) is refused at its `G65 H`, naming macro A, under each setting. It read "`#` needs
+/// custom macro B: … --macro on", and with `--macro on` the block became a macro B call of
+/// program #101: "G65 P: the variable is vacant".
+#[test]
+fn gsk_macro_a_is_refused_at_its_h_word() {
+    let with_hash =
+        "O0457\nN10 G99 T0101\nN20 M03 S900\nN30 G00 X32 Z2\nN40 G65 H01 P#101 Q30000\nN50 G00 X#101\nN60 M30\n";
+    let plain =
+        "O0457\nN10 G99 T0101\nN20 M03 S900\nN30 G00 X32 Z2\nN40 G65 H01 P101 Q30000\nN60 M30\n";
+    for (program, macros, code, at) in [
+        (with_hash, "off", 2, "gsk.nc:5:14"),
+        (with_hash, "on", 1, "gsk.nc:5:9"),
+        (plain, "off", 1, "gsk.nc:5:9"),
+    ] {
+        let (dir, path) = temp_program("gsk.nc", program.as_bytes());
+        let out = latsim(&[
+            "run",
+            path.to_str().unwrap(),
+            "--control",
+            "gsk980",
+            "--macro",
+            macros,
+            "--stock",
+            "30x70",
+            "--json",
+            dir.path().join("r.json").to_str().unwrap(),
+            "--quiet",
+        ]);
+        assert_eq!(out.code, code, "{}", out.stderr);
+        assert!(out.stderr.contains("custom macro A"), "{}", out.stderr);
+        assert!(out.stderr.contains(at), "{}", out.stderr);
+        assert!(!out.stderr.contains("vacant"), "{}", out.stderr);
+    }
+}

@@ -496,6 +496,21 @@ impl Macros {
     }
 }
 
+/// The alarm for `G65 Hm P#i Q#j R#k`, custom macro A (GSK 980TD, older FANUC controls):
+/// its operations (H01 assign … H86 jump) are not simulated; read as a macro B call it
+/// would call program "#i" (field run 6, F: "G65 P: the variable is vacant").
+pub(super) fn macro_a(b: &Block) -> Diagnostic {
+    let h = b.words.iter().find(|w| w.letter == 'H');
+    let span = h.map_or(b.span, |w| w.span);
+    let op = h.map_or(String::new(), |w| format!(" H{:02}", w.value));
+    alarm(
+        span,
+        "LS-MACRO-A",
+        format!("G65{op}: custom macro A (G65 Hm P#i Q#j R#k) is not simulated"),
+        "write the calculation in custom macro B (H01: #101 = 30., H03: #101 = #101 - 3., H84: IF [#101 LT 22.] GOTO 50) and run with --macro on",
+    )
+}
+
 /// Whether the block has a plain `G<code/10>` word (`code` in tenths: 650 is G65).
 fn has_code(b: &Block, code: i32) -> bool {
     b.words
@@ -627,6 +642,10 @@ impl Interp<'_> {
             }
         }
         if let Some(code) = [650, 660].into_iter().find(|&c| has_code(b, c)) {
+            // a GSK 980's G65 with H is its macro A, never a macro B call with argument H
+            if code == 650 && b.has('H') && self.machine.control == crate::Control::Gsk980 {
+                return Err(macro_a(b));
+            }
             let mut notes = vec![];
             let (number, times, locals) =
                 m.g65(b, code, increment, &mut Sys { it: self, span }, &mut notes)?;

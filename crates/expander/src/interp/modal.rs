@@ -208,6 +208,7 @@ impl Interp<'_> {
             G18 => self.plane = None,
             G17 | G19 => self.plane = Some((t, w.span)),
             G80 => self.retained.drill = None,
+            650 if b.has('H') => return Err(super::macros::macro_a(b)),
             G11 => {
                 return Err(alarm(
                     w.span,

@@ -165,6 +165,12 @@ impl Reader<'_> {
                 "'#' where no macro variable can stand",
                 "a variable stands in a statement (#1 = …) or right after an address letter (X#1)",
             )
+        } else if self.macro_a_block() {
+            ParseError::new(
+                span,
+                "`G65 H… P#…`: custom macro A is not simulated",
+                "write the calculation in custom macro B (H01: #101 = 30., H03: #101 = #101 - 3., H84: IF [#101 LT 22.] GOTO 50) and run with --macro on",
+            )
         } else {
             ParseError::new(
                 span,
@@ -172,6 +178,16 @@ impl Reader<'_> {
                 NO_MACRO_HELP,
             )
         }
+    }
+
+    /// Whether the block read so far is a `G65 H…`: custom macro A (GSK 980TD, older
+    /// FANUC), whose `P#101` is no macro B variable either.
+    fn macro_a_block(&self) -> bool {
+        let g65 = self
+            .words
+            .iter()
+            .any(|w| w.letter == 'G' && w.value == 65.0);
+        g65 && self.words.iter().any(|w| w.letter == 'H')
     }
 
     /// End the pending word: its number read, it becomes the block's N, the program's O or
