@@ -253,6 +253,7 @@ fn work_offsets_from_the_profile_and_from_g10() {
     let mut m =
         Machine::from_toml("control = \"haas\"\n[work_offsets]\np3 = [-10.0, 0.0]\n").unwrap();
     m.machine_zero = expander::Pt::new(100.0, 0.0);
+    m.machine_zero_stated = true;
     let tp = run_with(
         &m,
         "G21\nG154 P3\nG0 X40 Z2\nG54\nG10 L2 P1 X0 Z-95.\nG0 X40 Z2\nG10 L20 P7 X0 Z-90.\nG154 P7\nG0 Z0\nG52 Z-1.\nG0 Z0\nM30\n",

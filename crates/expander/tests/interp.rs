@@ -502,8 +502,47 @@ fn switching_to_a_work_system_of_unknown_origin_after_cutting_is_an_alarm() {
         .map(|s| s.to.z)
         .fold(f64::INFINITY, f64::min);
     assert!((deepest + 65.0).abs() < 1e-9, "{deepest}");
+    // field run 6 (D): a G10 L2 value is a machine position; with no machine_zero in the
+    // profile, G55 set by G10 alone was placed against a guessed machine zero (the second
+    // part cut 110 mm in front of the bar, CLEAN): an alarm naming G10
     let set = format!("G21 G99 M03 S500\nG10 L2 P2 Z-50.\nG54\n{pin}G55\n{pin}M30\n");
-    assert!(run(&set).alarms.iter().all(|a| a.code != "LS-WORK-OFFSET"));
+    let tp = run(&set);
+    assert_eq!(tp.alarms.len(), 1, "{:?}", tp.alarms);
+    assert_eq!(tp.alarms[0].code, "LS-WORK-OFFSET");
+    assert_eq!(tp.alarms[0].span.line, 9);
+    assert!(
+        tp.alarms[0].message.contains("G10"),
+        "{}",
+        tp.alarms[0].message
+    );
+    // G54 set by G10 too (with G54 in force) fixes machine zero: G54 stays the stock's
+    // frame and G55 lies by the difference, 50 mm back, in either order (G54 moved to the
+    // guessed machine zero's Z-300 before, and both parts were cut in the air)
+    let deepest = |tp: &Toolpath| {
+        tp.segments
+            .iter()
+            .map(|s| s.to.z)
+            .fold(f64::INFINITY, f64::min)
+    };
+    for order in [
+        "G10 L2 P1 Z-300.\nG10 L2 P2 Z-350.",
+        "G10 L2 P2 Z-350.\nG10 L2 P1 Z-300.",
+    ] {
+        let both = format!("G21 G99 M03 S500\n{order}\nG54\n{pin}G55\n{pin}M30\n");
+        let tp = run(&both);
+        assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+        assert!((deepest(&tp) + 65.0).abs() < 1e-9, "{}", deepest(&tp));
+        let first = tp
+            .segments
+            .iter()
+            .find(|s| s.motion == expander::Motion::Feed);
+        assert!((first.unwrap().to.z - 2.0).abs() < 1e-9, "{first:?}");
+    }
+    // a profile's machine zero places a lone G10 L2 P2: machine zero at Z300, G55 at Z-50
+    let m = Machine::from_toml("machine_zero = [300.0, 200.0]").unwrap();
+    let tp = run_with(&set.replace("Z-50.", "Z-350."), &m, &Options::default());
+    assert!(tp.alarms.is_empty(), "{:?}", tp.alarms);
+    assert!((deepest(&tp) + 65.0).abs() < 1e-9, "{}", deepest(&tp));
     let only = format!("G21 G99 M03 S500\nG00 X50. Z50.\nG55\n{pin}M30\n");
     assert!(run(&only).alarms.is_empty(), "{:?}", run(&only).alarms);
     // a reset to G54 before M30, with no cut after it, is no switch (review)

@@ -33,6 +33,13 @@ pub(crate) struct Frames {
     ext_shift: Pt,
     /// The G52 local shift.
     local: Pt,
+    /// Machine zero in the G54 frame, per axis (z, r): the profile's `machine_zero`, or
+    /// fixed by the first G10 L2 / L20 that sets the work system in force on that axis
+    /// (it stays the stock's frame); `None`: unknown (docs/field-rules.md §18).
+    zero: [Option<f64>; 2],
+    /// G10 values (machine coordinates) not yet placed, their axis's machine zero
+    /// unknown: (work system, axis 0 = Z / 1 = X radius, value).
+    pending: Vec<(Work, usize, f64)>,
 }
 
 impl Frames {
@@ -48,6 +55,52 @@ impl Frames {
             extra: machine.extra_offsets.clone(),
             ext_shift: Pt::default(),
             local: Pt::default(),
+            zero: if machine.machine_zero_stated {
+                [Some(machine.machine_zero.z), Some(machine.machine_zero.r)]
+            } else {
+                [None, None]
+            },
+            pending: vec![],
+        }
+    }
+
+    /// Whether where work system `w` lies from the stock's frame is known: the profile
+    /// states it or a G10 placed it (an additional offset is always one of them), and no
+    /// G10 value of it waits for an unknown machine zero.
+    fn known(&self, w: Work) -> bool {
+        let stated = match w {
+            Work::Fixed(k) => self.stated[k],
+            Work::Extra(_) => true,
+        };
+        stated && !self.waits(w)
+    }
+
+    /// Whether a G10 value of `w` waits for an unknown machine zero.
+    fn waits(&self, w: Work) -> bool {
+        self.pending.iter().any(|&(p, _, _)| p == w)
+    }
+
+    /// The origin of work system `w` (G54 frame), without the external shift.
+    fn offset(&self, w: Work) -> Pt {
+        match w {
+            Work::Fixed(i) => self.offsets[i],
+            Work::Extra(n) => self.extra.get(&n).copied().unwrap_or_default(),
+        }
+    }
+
+    /// Sets axis `axis` of work system `w`'s origin to `v`.
+    fn set_axis(&mut self, w: Work, axis: usize, v: f64) {
+        let mut o = self.offset(w);
+        if axis == 0 {
+            o.z = v;
+        } else {
+            o.r = v;
+        }
+        match w {
+            Work::Fixed(i) => self.offsets[i] = o,
+            Work::Extra(n) => {
+                self.extra.insert(n, o);
+            }
         }
     }
 }
@@ -68,11 +121,7 @@ impl Interp<'_> {
     /// before M30) is no matter (docs/field-rules.md §18).
     pub(super) fn cut_in_work_system(&mut self) -> Result<(), Diagnostic> {
         let now = self.frames.work;
-        let known = |w: Work| match w {
-            Work::Fixed(k) => self.frames.stated[k],
-            // an additional offset is always the profile's or a G10's
-            Work::Extra(_) => true,
-        };
+        let known = |w: Work| self.frames.known(w);
         match self.frames.cut_in {
             Some(before) if before != now && !(known(before) && known(now)) => {
                 let name = |w: Work| match w {
@@ -85,6 +134,19 @@ impl Interp<'_> {
                     Work::Extra(n) => (format!("p{n}"), format!("G10 L20 P{n}")),
                 };
                 let span = self.frames.selected_by.unwrap_or_default();
+                if self.frames.waits(unknown) {
+                    return Err(alarm(
+                        span,
+                        "LS-WORK-OFFSET",
+                        format!(
+                            "{} cuts after cutting in {}, and {} is set by G10 in machine coordinates while the machine profile gives no machine_zero: where one work system lies from the other is unknown",
+                            name(now),
+                            name(before),
+                            name(unknown)
+                        ),
+                        "add machine_zero = [z, x] to the --machine profile (machine zero in G54's frame), or set the first work system by G10 too (G10 L2 P1 for G54): the difference of the two places them",
+                    ));
+                }
                 Err(alarm(
                     span,
                     "LS-WORK-OFFSET",
@@ -106,10 +168,7 @@ impl Interp<'_> {
 
     /// The work system in force again after its offset changed (G10).
     fn reselect_work(&mut self) {
-        let o = match self.frames.work {
-            Work::Fixed(i) => self.frames.offsets[i],
-            Work::Extra(n) => self.frames.extra.get(&n).copied().unwrap_or_default(),
-        };
+        let o = self.frames.offset(self.frames.work);
         self.frames.origin = o + self.frames.ext_shift;
         self.shift = self.frames.origin + self.frames.local;
     }
@@ -253,7 +312,12 @@ impl Interp<'_> {
                 "write e.g. G53 X0 (X to machine zero) or G53 X0 Z0",
             ));
         }
-        let zero = self.machine.machine_zero;
+        // machine zero as the profile gives it or the program's G10s fixed it
+        let guess = self.machine.machine_zero;
+        let zero = Pt::new(
+            self.frames.zero[0].unwrap_or(guess.z),
+            self.frames.zero[1].unwrap_or(guess.r),
+        );
         if zero == self.machine.home {
             self.note_once(
                 g.span,
@@ -306,54 +370,80 @@ impl Interp<'_> {
         let u = self.unit();
         let x = used.take('X').map(|w| w.value * u / 2.0);
         let z = used.take('Z').map(|w| w.value * u);
-        let zero = self.machine.machine_zero;
-        let old = match (extra, n) {
-            (true, n) => self.frames.extra.get(&n).copied().unwrap_or(zero),
-            (false, 0) => self.frames.ext_shift,
-            (false, n) => self.frames.offsets[n as usize - 1],
-        };
-        let new = if !extra && n == 0 {
+        if !extra && n == 0 {
             // The external shift is a shift, not a position.
-            Pt::new(z.unwrap_or(old.z), x.unwrap_or(old.r))
-        } else {
-            Pt::new(
-                z.map_or(old.z, |z| zero.z + z),
-                x.map_or(old.r, |x| zero.r + x),
-            )
-        };
-        match (extra, n) {
-            (true, n) => {
-                self.frames.extra.insert(n, new);
+            let old = self.frames.ext_shift;
+            let new = Pt::new(z.unwrap_or(old.z), x.unwrap_or(old.r));
+            self.frames.ext_shift = new;
+            self.g10_note(l, "the external work shift".to_string(), new - old, "");
+            self.reselect_work();
+            return Ok(());
+        }
+        let work = if extra {
+            if !self.frames.extra.contains_key(&n) {
+                // a new additional offset: in the stock's frame until placed
+                self.frames.extra.insert(n, Pt::default());
             }
-            (false, 0) => self.frames.ext_shift = new,
-            (false, n) => {
-                self.frames.offsets[n as usize - 1] = new;
-                self.frames.stated[n as usize - 1] = true;
+            Work::Extra(n)
+        } else {
+            Work::Fixed(n as usize - 1)
+        };
+        let old = self.frames.offset(work);
+        let active = work == self.frames.work;
+        let mut placed = "";
+        for (axis, value) in [(0, z), (1, x)] {
+            let Some(value) = value else { continue };
+            self.frames
+                .pending
+                .retain(|&(w, a, _)| !(w == work && a == axis));
+            match self.frames.zero[axis] {
+                Some(zero) => self.frames.set_axis(work, axis, zero + value),
+                None if active => {
+                    // the work system in force stays where the stock is: this value fixes
+                    // machine zero, and the values waiting for it are placed
+                    let here = if axis == 0 { old.z } else { old.r };
+                    let zero = here - value;
+                    self.frames.zero[axis] = Some(zero);
+                    let waiting: Vec<(Work, usize, f64)> = self.frames.pending.clone();
+                    self.frames.pending.retain(|&(_, a, _)| a != axis);
+                    for (w, a, v) in waiting.into_iter().filter(|&(_, a, _)| a == axis) {
+                        self.frames.set_axis(w, a, zero + v);
+                    }
+                    placed = "; the profile gives no machine_zero: this work system stays the stock's frame and machine zero is placed from it";
+                }
+                None => {
+                    self.frames.pending.push((work, axis, value));
+                    placed = "; the profile gives no machine_zero: it is placed against the stock once a G10 sets the work system in force";
+                }
             }
         }
-        let name = match (extra, n) {
-            (true, n) => format!("additional work offset P{n}"),
-            (false, 0) => "the external work shift".to_string(),
-            (false, n) => format!("G{}", 53 + n),
+        if let Work::Fixed(i) = work {
+            self.frames.stated[i] = true;
+        }
+        let new = self.frames.offset(work);
+        let name = match work {
+            Work::Extra(n) => format!("additional work offset P{n}"),
+            Work::Fixed(i) => format!("G{}", 54 + i),
         };
-        self.warn(
-            l.span,
-            "W-G10-WORK",
-            format!(
-                "G10 sets {name}: its origin moves by ΔX {:.3} ΔZ {:.3} (diameter, mm) for the rest of the run",
-                2.0 * (new.r - old.r),
-                new.z - old.z
-            ),
-            "the section stays in the profile's G54 frame; work offsets are machine coordinates from the profile's machine_zero",
-        );
-        let active = match self.frames.work {
-            Work::Fixed(i) => !extra && (n == 0 || n as usize == i + 1),
-            Work::Extra(m) => (extra && m == n) || (!extra && n == 0),
-        };
+        self.g10_note(l, name, new - old, placed);
         if active {
             self.reselect_work();
         }
         Ok(())
+    }
+
+    /// The warning W-G10-WORK: G10 moved `name`'s origin by `moved`.
+    fn g10_note(&mut self, l: &Word, name: String, moved: Pt, placed: &str) {
+        self.warn(
+            l.span,
+            "W-G10-WORK",
+            format!(
+                "G10 sets {name}: its origin moves by ΔX {:.3} ΔZ {:.3} (diameter, mm) for the rest of the run{placed}",
+                2.0 * moved.r,
+                moved.z
+            ),
+            "the section stays in the profile's G54 frame; work offsets are machine coordinates from the profile's machine_zero",
+        );
     }
 }
 

@@ -336,6 +336,10 @@ pub struct Machine {
     /// **Interpretation:** the reference point `home` unless the profile says otherwise
     /// (on FANUC and Haas lathes the reference position is usually machine zero).
     pub machine_zero: Pt,
+    /// Whether the profile gives `machine_zero`: a G10 L2 / L20 writes a work offset in
+    /// machine coordinates, placed against the stock only from a stated machine zero (or
+    /// one the program's own G10s fix; docs/field-rules.md §18).
+    pub machine_zero_stated: bool,
     /// System B/C: U and W outside cycles are incremental axes (`true`, with one warning per
     /// program: it depends on the builder, dialects.md §2.2) or an error (`false`).
     pub uw_incremental: bool,
@@ -399,6 +403,7 @@ impl Machine {
             power_on_feed: 0.0,
             rapid_cut_tol: 0.1,
             machine_zero: Pt::new(150.0, 125.0),
+            machine_zero_stated: false,
             // U and W are axes of their own in LinuxCNC
             uw_incremental: control != Control::LinuxCnc,
             power_on_incremental: false,

@@ -297,6 +297,7 @@ impl Machine {
         self.machine_zero = self.home;
         if let Some(z) = f.machine_zero.take() {
             self.machine_zero = text.point("machine_zero", z)?;
+            self.machine_zero_stated = true;
         }
         Ok(())
     }
