@@ -380,10 +380,8 @@ impl Interp<'_> {
             return Ok(());
         }
         let work = if extra {
-            if !self.frames.extra.contains_key(&n) {
-                // a new additional offset: in the stock's frame until placed
-                self.frames.extra.insert(n, Pt::default());
-            }
+            // a new additional offset: in the stock's frame until placed
+            self.frames.extra.entry(n).or_default();
             Work::Extra(n)
         } else {
             Work::Fixed(n as usize - 1)
