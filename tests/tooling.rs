@@ -139,12 +139,12 @@ fn check_and_expand_read_the_holders_tip_as_run_does() {
 
 /// A program with no tool table, run as `run` runs it, and its JSON.
 fn run_without_table(program: &str) -> serde_json::Value {
-    run_with(program, None, "40x60")
+    run_with(program, None, &["--stock", "40x60"])
 }
 
-/// A program on a `stock` bar with the tool table `table` (none: no table), and its JSON;
-/// the run must pass.
-fn run_with(program: &str, table: Option<&str>, stock: &str) -> serde_json::Value {
+/// A program on the blank `stock` (`--stock` and such) with the tool table `table` (none:
+/// no table), and its JSON; the run must pass.
+fn run_with(program: &str, table: Option<&str>, stock: &[&str]) -> serde_json::Value {
     let (dir, path) = temp_program("drill.nc", program.as_bytes());
     let json = dir.path().join("r.json");
     let tools = dir.path().join("tools.toml");
@@ -153,12 +153,11 @@ fn run_with(program: &str, table: Option<&str>, stock: &str) -> serde_json::Valu
         path.to_str().unwrap(),
         "--control",
         "fanuc-a",
-        "--stock",
-        stock,
         "--json",
         json.to_str().unwrap(),
         "--quiet",
     ];
+    args.extend(stock);
     if let Some(table) = table {
         std::fs::write(&tools, table).unwrap();
         args.extend(["--tools", tools.to_str().unwrap()]);
@@ -210,7 +209,7 @@ fn a_tool_that_only_feeds_along_the_axis_is_a_drill() {
 #[test]
 fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
     let program = "O1004 (SLEEVE)\nG21 G99 G40\nT0202 (OD FINISH)\nG96 S250 M03\nG0 X20. Z3.\nG1 G42 X20. Z1. F.1\nZ-15.\nX28.\nZ-25.\nX32.\nG40 G0 X34.\nZ3.\nT0303 (DRILL 20.)\nG97 S800 M03\nG0 X0. Z5.\nG83 Z-30. Q8000 F.1\nG80\nT0404 (BORING BAR)\nG96 S150 M03\nG0 X23.6 Z3.\nG1 Z-26. F.15\nX19.\nG0 Z3.\nX22. Z3.\nG1 G41 X24. Z1. F.08\nZ-26.\nX19.6\nG40 G0 Z3.\nG0 X100. Z100.\nM30\n";
-    let guessed = run_with(program, None, "30x60");
+    let guessed = run_with(program, None, &["--stock", "30x60"]);
     assert_eq!(guessed["verdict"], "clean", "{:#}", guessed["gouges"]);
     let gouges = guessed["gouges"].as_array().unwrap();
     assert!(
@@ -231,7 +230,7 @@ fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
         "{notes:?}"
     );
     let bar = "[[tool]]\nt = 4\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n";
-    let stated = run_with(program, Some(bar), "30x60");
+    let stated = run_with(program, Some(bar), &["--stock", "30x60"]);
     let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
     assert!(
         (area(&guessed) - area(&stated)).abs() < 1e-6,
@@ -251,7 +250,7 @@ fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
 #[test]
 fn an_offset_drill_with_no_entry_is_a_drill() {
     let program = "O0905 (U-DRILL OFFSET X2.)\nG21 G99 G40\nT0505\nG97 S1200 M03\nG0 X2. Z5.\nG83 Z-25. F.08\nG80\nG0 X100. Z100.\nM30\n";
-    let v = run_with(program, None, "50x60");
+    let v = run_with(program, None, &["--stock", "50x60"]);
     let slope = 1.0 / 59f64.to_radians().tan();
     let hand = 25.0 * 6.0 - (0.5 + 12.5) * slope;
     let removed = v["removed_area_mm2"].as_f64().unwrap();
@@ -273,5 +272,48 @@ fn an_offset_drill_with_no_entry_is_a_drill() {
         v["gouges"].as_array().unwrap().is_empty(),
         "{:#}",
         v["gouges"]
+    );
+}
+
+/// Field run 6 (G), a nut with no tool table: T03 bores a tube by hand (no cycle, no
+/// compensation), each pass along Z left toward the axis, as a boring bar leaves the wall;
+/// T05 threads it inside. T03 is a boring bar by its moves: taken for the OD default, it
+/// cut the whole wall away (178 mm² removed instead of 48), and the thread, cut in the air,
+/// had no achieved X, pitch diameter nor angle. The part is the one the same program cuts
+/// with T03 stated as that boring bar, and the thread measures 60°.
+#[test]
+fn a_tool_that_bores_by_hand_is_a_boring_bar() {
+    let program = "O8000 (NUT M24X1.5)\nG21 G18 G40 G99\nT0303 (BORING BAR)\nG96 S150 M03\nG00 X20. Z2.\nG01 Z-20. F0.15\nX19.\nG00 Z2.\nX22.4\nG01 Z0. F0.1\nZ-20.\nX19.\nG00 Z2.\nG28 U0. W0.\nT0505 (ID THREAD 1.5)\nG97 S600 M03\nG00 X21. Z4.\nG76 P010060 Q50 R0.02\nG76 X24. Z-18. P920 Q250 F1.5\nG00 Z5.\nG28 U0. W0.\nM30\n";
+    let blank = ["--stock", "36x30", "--bore", "18"];
+    let guessed = run_with(program, None, &blank);
+    let notes: Vec<&str> = guessed["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-STOCK")
+        .map(|w| w["message"].as_str().unwrap())
+        .collect();
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T03") && m.contains("boring bar")),
+        "{notes:?}"
+    );
+    let thread = &guessed["threads"][0];
+    assert_eq!(thread["side"], "id", "{thread:#}");
+    let angle = thread["included_angle_deg"].as_f64().unwrap();
+    assert!((angle - 60.0).abs() < 0.01, "{thread:#}");
+    assert!(
+        (thread["achieved_x"].as_f64().unwrap() - 24.0).abs() < 2e-3,
+        "{thread:#}"
+    );
+    let bar = "[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n";
+    let stated = run_with(program, Some(bar), &blank);
+    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
+    assert!(
+        (area(&guessed) - area(&stated)).abs() < 1e-6,
+        "{} vs {}",
+        area(&guessed),
+        area(&stated)
     );
 }

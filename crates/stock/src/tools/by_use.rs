@@ -73,6 +73,11 @@ struct Tally {
     /// Thread runs entered from outside the thread (+) or from inside it (−), and left the
     /// same way.
     outside: i64,
+    /// Cutting passes along Z (a chain of feeds more along Z than X) left toward the axis,
+    /// as a boring bar leaves the wall, and away from it; the largest |r| of the first.
+    passes_in: usize,
+    passes_out: usize,
+    pass_reach: f64,
 }
 
 impl Tally {
@@ -89,15 +94,25 @@ impl Tally {
                 },
             }),
             (0, 1.., 0) => Some(ASSUMED_DRILL),
-            (0, _, _)
-                if self.bores > 0
-                    && self.others == 0
-                    && self.feed_reach <= self.bore_reach + 1e-6 =>
-            {
-                Some(ASSUMED_BORING_BAR)
-            }
+            (0, _, _) if self.bores_only() || self.bores_by_hand() => Some(ASSUMED_BORING_BAR),
             _ => None,
         }
+    }
+
+    /// Every finishing contour it cuts lies in a bore, and it feeds nowhere further out.
+    fn bores_only(&self) -> bool {
+        self.bores > 0 && self.others == 0 && self.feed_reach <= self.bore_reach + 1e-6
+    }
+
+    /// It cuts no finishing contour, and every pass along Z it cuts it leaves toward the
+    /// axis, off a wall outside it (a bore turned by hand: an OD tool steps out), feeding
+    /// nowhere further out (field run 6, G: the OD default cut a nut's whole wall away).
+    fn bores_by_hand(&self) -> bool {
+        self.bores == 0
+            && self.others == 0
+            && self.passes_in > 0
+            && self.passes_out == 0
+            && self.feed_reach <= self.pass_reach + 1e-6
     }
 }
 
@@ -136,6 +151,9 @@ impl ToolTable {
                                     on_axis: 0,
                                     feeds: 0,
                                     outside: 0,
+                                    passes_in: 0,
+                                    passes_out: 0,
+                                    pass_reach: 0.0,
                                 });
                                 tallies.len() - 1
                             })
@@ -152,6 +170,7 @@ impl ToolTable {
                     tally.on_axis += 1;
                 } else {
                     tally.feeds += 1;
+                    count_pass(tally, s, segments.get(i + 1));
                 }
                 continue;
             }
@@ -196,7 +215,7 @@ pub(super) fn taken_note(t: u32, tool: &Tool) -> String {
     let what = match tool {
         Tool::Drill { .. } => "only drills: taken for a drill",
         Tool::Threading { .. } => "cuts only thread passes: taken for a threading insert",
-        _ => "roughs and finishes in bores only: taken for a boring bar",
+        _ => "cuts in bores only: taken for a boring bar",
     };
     format!(
         "T{t:02} has no entry in the tool table and {what} ({}, its size assumed); state T{t:02} to check it",
@@ -237,6 +256,24 @@ fn count_contours(tallies: &mut [Tally], segments: &[Segment], intended: &[Inten
                 t.others += 1;
             }
         }
+    }
+}
+
+/// Counts feed `s` in `tally` as the end of a pass along Z when it is one and `next` (the
+/// move after it) leaves it toward the axis or away from it.
+fn count_pass(tally: &mut Tally, s: &Segment, next: Option<&Segment>) {
+    let along_z = |s: &Segment| (s.to.z - s.from.z).abs() > (s.to.r - s.from.r).abs();
+    let Some(next) = next else { return };
+    if !along_z(s) || (next.motion == Motion::Feed && along_z(next) && next.tool == s.tool) {
+        return;
+    }
+    match side_of(next.to.r.abs() - next.from.r.abs()) {
+        -1 => {
+            tally.passes_in += 1;
+            tally.pass_reach = tally.pass_reach.max(s.from.r.abs()).max(s.to.r.abs());
+        }
+        1 => tally.passes_out += 1,
+        _ => {}
     }
 }
 
