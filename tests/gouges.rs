@@ -620,3 +620,51 @@ fn an_od_shape_leaving_above_its_start_is_still_an_od_shape() {
         v["gouges"]
     );
 }
+
+/// Field run 7 (A), the standard shop bush: the OD turned by G90 (no contour states it),
+/// the bore by G71/G70 on a tube Φ40 / Φ20. The bore contour states the bore, not the OD:
+/// the G90's 2.2 mm was a certain gouge of 48.3 mm² (with or without a tool table) as soon
+/// as the bore had a contour (docs/field-rules.md §21). A dig 0.8 mm past the bore's own
+/// surface after the G70 is still a gouge, 0.8 deep, at its line.
+#[test]
+fn a_bore_contour_does_not_state_the_od() {
+    let bush = "O7002 (BUSH - OD BY G90, ID BY G71/G70)\nG21 G40 G99\nT0101\nG96 S200 M03\nG00 X42. Z2.\nG90 X38. Z-22. F0.2\nX36.4\nX35.6 F0.1\nG00 X80. Z50.\nT0303\nG96 S140 M03\nG00 X18. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U-0.3 W0.05 F0.15\nN10 G00 X24.\nG01 Z0. F0.08\nX22.4 Z-0.8\nZ-22.\nN20 X18.\nG70 P10 Q20\nG00 Z50.\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\ntip = 2\nentering_angle = 93\nshank = 16.0\n";
+    let run = |program: &str| {
+        let (dir, path) = temp_program("bush.nc", program.as_bytes());
+        let table = dir.path().join("tools.toml");
+        std::fs::write(&table, tools).unwrap();
+        let (out, v) = run_json(&[
+            "run",
+            path.to_str().unwrap(),
+            "--control",
+            "fanuc-a",
+            "--stock",
+            "40x30",
+            "--bore",
+            "20",
+            "--tools",
+            table.to_str().unwrap(),
+        ]);
+        (out.code, v)
+    };
+    let (code, v) = run(bush);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (0, Some("clean")),
+        "{:#}",
+        v["gouges"]
+    );
+    // a dig into the bore's wall after the finish: the bore contour's own surface
+    let dig = bush.replace(
+        "G70 P10 Q20\nG00 Z50.\n",
+        "G70 P10 Q20\nG00 X20. Z-10.\nG01 X24. F0.05\nX20.\nG00 Z50.\n",
+    );
+    let (code, v) = run(&dig);
+    assert_eq!(code, 1, "{v:#}");
+    let gouges = v["gouges"].as_array().unwrap();
+    assert_eq!(gouges.len(), 1, "{gouges:#?}");
+    assert_eq!(gouges[0]["line"], 22, "{gouges:#?}");
+    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
+    assert!((depth - 0.8).abs() < 0.01, "{gouges:#?}");
+}

@@ -126,6 +126,16 @@ pub fn deviation(
     let gone = boolean(&should_stay, final_shapes, BoolOp::Difference);
     let left = boolean(&final_zone, &part, BoolOp::Difference);
     out.gouges = findings(gone, &faced(&part, &zone, final_shapes, &world_box), tol);
+    // the thread bands (left out of every zone: a thread's own form) are stated too
+    let bands = std::cell::OnceCell::new();
+    let band_edges = || {
+        bands.get_or_init(|| {
+            let shapes = crate::intent::program::thread_bands(segments, tools);
+            outline_index(shapes.iter().map(|s| (&s.outer, true)))
+        })
+    };
+    out.gouges
+        .retain(|g| on_stated_surface(g, intents, &world_box, tol) || meets(g, band_edges(), tol));
     out.leftovers = findings(left, &part, tol);
     let mut mounts = Mounts::new(tools, stock::rear_tools(segments));
     blame::blame(&mut out.gouges, segments, &mut mounts, chord_tol);
@@ -275,6 +285,53 @@ fn in_later_contour(
         }
     }
     any
+}
+
+/// Whether gouge `g` meets a surface an intent states: it comes within `tol` of the
+/// outline of an intent whose zone it lies in. A contour states the surface it finishes,
+/// not the part's other side (spec/simulation.md, "each constrains only its own side"): a
+/// bush whose only contour is its bore, its OD turned by G90, lost "2.2 mm" of an OD no
+/// contour states to a bore contour that claims the wall out to any radius (field run 7,
+/// A; its mirror, a bore opened by G90 under an OD contour, too). Material gone from the
+/// part where no stated surface is, is not judged (**Interpretation**,
+/// docs/field-rules.md §21).
+fn on_stated_surface(g: &Finding, intents: &[Intent], world: &Rect, tol: f64) -> bool {
+    let region = Rect::of(pts(&g.shape.outer));
+    intents.iter().any(|intent| {
+        let zone = clip_to_box(&intent.zone, world);
+        let overlaps = zone.iter().any(|z| {
+            let b = Rect::of(pts(&z.outer));
+            b.min.z.max(region.min.z) < b.max.z.min(region.max.z) - 1e-9
+                && b.min.r.max(region.min.r) < b.max.r.min(region.max.r) - 1e-9
+        });
+        overlaps
+            && meets(
+                g,
+                &outline_index(intent.outline.iter().map(|(l, c)| (l, *c))),
+                tol,
+            )
+    })
+}
+
+/// Whether a vertex of `g` lies within `tol` of an edge of `edges`.
+fn meets(g: &Finding, edges: &EdgeIndex, tol: f64) -> bool {
+    std::iter::once(&g.shape.outer)
+        .chain(&g.shape.holes)
+        .flatten()
+        .any(|&p| edges.nearest(p.into()).is_some_and(|(d, _)| d <= tol))
+}
+
+/// The edges of `lines` (a path and whether it is closed): an open path stays open (a
+/// closing edge would cross the part).
+fn outline_index<'a>(lines: impl Iterator<Item = (&'a Vec<P>, bool)>) -> EdgeIndex {
+    EdgeIndex::new(lines.flat_map(|(line, closed)| {
+        let n = line.len();
+        let edges = if closed { n } else { n.saturating_sub(1) };
+        (0..edges).map(move |i| {
+            let (a, b) = (line[i], line[(i + 1) % n]);
+            (geom::Pt::new(a[0], a[1]), geom::Pt::new(b[0], b[1]))
+        })
+    }))
 }
 
 /// Whether `g` is a hole on the axis and `intent` claims it only as the core under its

@@ -5,17 +5,22 @@ use super::*;
 use crate::intent::*;
 
 /// The deviation of `final_shapes` from `part` within one `zone`, at 0.01 mm, with no
-/// moves to blame.
+/// moves to blame: every edge of `part` is a stated surface, as a drawing's.
 fn deviation_in(
     blank: &[Shape],
     final_shapes: &[Shape],
     part: Vec<Shape>,
     zone: Shape,
 ) -> Deviation {
+    let outline = part
+        .iter()
+        .flat_map(|s| std::iter::once(&s.outer).chain(&s.holes))
+        .map(|ring| (ring.clone(), true))
+        .collect();
     let intent = Intent {
         part,
         zone: vec![zone],
-        outline: vec![],
+        outline,
         owner: None,
     };
     deviation(
@@ -515,4 +520,45 @@ fn box_clip_of_a_concave_ring_is_the_intersection() {
     assert!((area(&norm) - 30.0).abs() < 1e-9, "{}", area(&norm));
     assert!((area(&exact) - 30.0).abs() < 1e-9);
     assert_eq!(norm.len(), 2, "two legs: {norm:?}");
+}
+
+/// Field run 7 (A): an intent states the surface it outlines, not the part's other side.
+/// A bore contour (the part outside r 11.2 over Z0 … −22) on a tube Φ40 / Φ20 whose OD a
+/// G90 turned to Φ35.6: the OD ring, 2.2 deep and 48.4 mm², lies in the bore's zone and
+/// in what it keeps, but no stated surface meets it: no gouge. The same OD cut under an
+/// OD contour at r 18 is one (0.2 deep, 22 × 0.2 = 4.4 mm²).
+#[test]
+fn only_a_stated_surface_is_judged() {
+    let blank = [rect(-30.0, 0.0, 10.0, 20.0)];
+    let bore = vec![[0.0, 11.2], [-22.0, 11.2]];
+    let bore_intent = Intent {
+        part: vec![rect(-22.0, 0.0, 11.2, FAR)],
+        zone: vec![rect(-22.0, 0.0, -FAR, FAR)],
+        outline: vec![(bore.clone(), false)],
+        owner: None,
+    };
+    let turned = boolean(
+        &[rect(-30.0, -22.0, 10.0, 20.0), rect(-22.0, 0.0, 11.2, 17.8)],
+        &[],
+        BoolOp::Union,
+    );
+    let judge = |intents: &[Intent], part: &[Shape]| {
+        deviation(&blank, part, intents, 0.01, &[], &ToolTable::empty(), 0.001)
+    };
+    let d = judge(std::slice::from_ref(&bore_intent), &turned);
+    assert!(d.gouges.is_empty(), "{:?}", d.gouges);
+    // an OD contour at r 18 over the same span: the G90 went 0.2 below it
+    let od_intent = Intent {
+        part: vec![rect(-22.0, 0.0, -FAR, 18.0)],
+        zone: vec![rect(-22.0, 0.0, -FAR, FAR)],
+        outline: vec![(vec![[0.0, 18.0], [-22.0, 18.0]], false)],
+        owner: None,
+    };
+    let d = judge(&[bore_intent, od_intent], &turned);
+    assert_eq!(d.gouges.len(), 1, "{:?}", d.gouges);
+    let g = &d.gouges[0];
+    assert!(
+        (g.depth - 0.2).abs() < 1e-6 && (g.area - 4.4).abs() < 1e-6,
+        "{g:?}"
+    );
 }

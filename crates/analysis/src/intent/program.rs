@@ -34,7 +34,7 @@ pub(crate) fn read(
 /// Where thread moves cut their teeth: above each pass (below, for a tool whose body lies
 /// below its tip) up to the height where the tool's flanks reach their full width, over
 /// the pass's Z span grown by that width. A pass below the axis is seen mirrored.
-fn thread_bands(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
+pub(crate) fn thread_bands(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
     const FAR: f64 = 1e5;
     let mut bands = vec![];
     for s in segments.iter().filter(|s| s.motion == Motion::Thread) {
