@@ -125,3 +125,24 @@ fn a_tube_parted_off_at_its_bore_falls() {
     let removed = j["removed_area_mm2"].as_f64().unwrap();
     assert!((removed - 3.0 * 10.0).abs() < 1e-6, "{removed}");
 }
+
+/// Field run 7 (B): a ring parted off into the hole the program drilled falls. A Φ20 bar
+/// drilled Φ16 (T8) to Z-25 by the tip, then the 3 mm blade at Z-13 down to X10, inside
+/// the hole: the ring Z-10…0 is free. A rapid down through where it was meets air (it was
+/// a certain 5 mm crash: the blade had to reach the blank's own bore, 0 on a bar). The
+/// removed area is the hole, 8 · (25 − 8 / tan 59°) + 8 · (8 / tan 59°) / 2 = 180.772 mm²,
+/// and the kerf through the wall, 2 × 3 = 6 mm².
+#[test]
+fn a_ring_parted_off_into_its_drilled_hole_falls() {
+    let tools = asset("corpus/tools/shop.toml");
+    let j = report_of(
+        "G99 M03 S600 T0808\nG00 X0 Z5\nG01 Z-25 F0.1\nG00 Z5\nT0505\nG00 X22\nG00 Z-13\nG01 X10 F0.05\nG00 X22\nG00 Z-6\nG00 X17\nG00 X50 Z50\nM30\n",
+        &["--stock", "20x40", "--tools", tools.to_str().unwrap()],
+    );
+    assert_eq!(j["verdict"], "clean", "{j:#}");
+    assert!(j["crashes"].as_array().unwrap().is_empty(), "{j:#}");
+    let cone = 8.0 / 59f64.to_radians().tan();
+    let hand = 8.0 * (25.0 - cone) + 8.0 * cone / 2.0 + 6.0;
+    let removed = j["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - hand).abs() < 1e-3, "{removed} vs {hand}");
+}

@@ -264,6 +264,9 @@ pub(super) struct Epochs<'a> {
     tools: &'a ToolTable,
     /// The blank's bore radius (a blade parts off there).
     bore: f64,
+    /// The widest hole opened along Z so far (a drill's edge, a bore an ID tool turned):
+    /// a blade reaching it may part a ring off into it (field run 7, B).
+    hole: f64,
     /// Most moves an epoch holds.
     len: usize,
     /// Move counts where an epoch ends besides (`snapshot::stops`), ascending.
@@ -318,6 +321,7 @@ impl<'a> Epochs<'a> {
             segments,
             tools,
             bore: bore(shapes),
+            hole: 0.0,
             checks: 0,
         }
     }
@@ -476,10 +480,14 @@ impl<'a> Epochs<'a> {
         }
         // a part-off may leave a piece: its epoch ends with it, so that the stock can be
         // looked at before the next move
-        if let Some(k) = segments[start..end]
-            .iter()
-            .position(|s| looking && parts_off(s, tools, bore))
-        {
+        let mut hole = self.hole;
+        let parting_at = segments[start..end].iter().position(|s| {
+            let parts = looking && parts_off(s, tools, bore.max(hole));
+            hole = hole.max(opened(s, tools));
+            parts
+        });
+        self.hole = hole;
+        if let Some(k) = parting_at {
             end = start + k + 1;
         }
         if let Some((idx, pieces)) = fallen {
@@ -489,7 +497,7 @@ impl<'a> Epochs<'a> {
             self.builder
                 .push(start + k, seg, segments.get(start + k + 1));
         }
-        let parting = end > start && looking && parts_off(&segments[end - 1], tools, bore);
+        let parting = parting_at.is_some();
         if end == segments.len() || parting {
             self.builder.flush_run();
         }
@@ -517,7 +525,7 @@ fn bore(shapes: &[Shape]) -> f64 {
 }
 
 /// A part-off: a feed of a blade (a grooving tool, or a grooving cycle's) inward to the
-/// axis or into the blank's bore (`bore`: its inner radius, 0 for a bar); it may leave a
+/// axis or into a bore (`bore`: the blank's inner radius, or a hole opened since); it may leave a
 /// piece that no longer reaches the held bar. (A turning tool facing to the centre leaves,
 /// between passes, only a pip at the axis that its next pass cuts: no part.)
 fn parts_off(seg: &Segment, tools: &ToolTable, bore: f64) -> bool {
@@ -525,6 +533,20 @@ fn parts_off(seg: &Segment, tools: &ToolTable, bore: f64) -> bool {
         && seg.to.r <= bore + 1e-9
         && seg.from.r > seg.to.r
         && tools.blade_cuts(seg)
+}
+
+/// How far out feed `s` opens the part from the inside when it runs along Z: a drill's
+/// edge, an ID turning tool's reference point (the bore it turns); 0 for other moves.
+fn opened(s: &Segment, tools: &ToolTable) -> f64 {
+    if s.motion != Motion::Feed || (s.to.z - s.from.z).abs() <= (s.to.r - s.from.r).abs() {
+        return 0.0;
+    }
+    let r = s.from.r.abs().max(s.to.r.abs());
+    match tools.tool_or_default(s.tool) {
+        crate::Tool::Drill { diameter, .. } => r + diameter / 2.0,
+        crate::Tool::Turning { tip: 1 | 2 | 6, .. } => r,
+        _ => 0.0,
+    }
 }
 
 /// The pieces of `stock` that no longer reach the bar's left end `left_end` (grid units),
