@@ -317,3 +317,41 @@ fn a_tool_that_bores_by_hand_is_a_boring_bar() {
         area(&stated)
     );
 }
+
+/// Field run 7 (D): a tool with no entry that only plunges is a grooving blade (the
+/// default 3 mm one, referenced at its corner toward −Z), its body away from the side it
+/// plunges from: into the wall from a Φ20 bore, an ID blade. Taken for the 55° OD default,
+/// its rapid into the bore swept the wall and the OD contour's finished diameter: a certain
+/// 6.5 mm gouge of 192 mm². The groove is 3 wide (Z-15 … -12) from r10 to r13: 9 mm² more
+/// than the same program without it.
+#[test]
+fn a_tool_that_only_plunges_is_a_blade_on_its_side() {
+    let od = "O7001 (ID RELIEF GROOVE)\nG21 G40 G99\nT0101\nG96 S200 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X44.\nG01 Z0.\nX46. Z-1.\nN20 Z-32.\nG70 P10 Q20 F0.1\nG00 X100. Z50.\n";
+    let groove =
+        "T0505 (ID GROOVE)\nG97 S600 M03\nG00 X18. Z2.\nZ-15.\nG01 X26. F0.05\nG00 X18.\nZ50.\n";
+    let blank = ["--stock", "50x40", "--bore", "20"];
+    let with = run_with(&format!("{od}{groove}M30\n"), None, &blank);
+    assert_eq!(with["verdict"], "clean", "{:#}", with["gouges"]);
+    assert!(
+        with["gouges"].as_array().unwrap().is_empty(),
+        "{:#}",
+        with["gouges"]
+    );
+    let notes: Vec<&str> = with["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-STOCK")
+        .map(|w| w["message"].as_str().unwrap())
+        .collect();
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T05") && m.contains("grooving blade") && m.contains("shank -x")),
+        "{notes:?}"
+    );
+    let without = run_with(&format!("{od}M30\n"), None, &blank);
+    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
+    let groove_area = area(&with) - area(&without);
+    assert!((groove_area - 9.0).abs() < 1e-6, "{groove_area}");
+}

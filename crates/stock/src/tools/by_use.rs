@@ -21,7 +21,7 @@
 //! no entry (the default nose), which only a thread pass or a drilling feed under G41/G42
 //! would show.
 
-use super::{ThreadSide, Tool, ToolTable};
+use super::{AxisDir, GroovingBlade, ThreadSide, Tool, ToolTable};
 use expander::{Intended, IntendedKind, Motion, Segment, Toolpath};
 
 /// What a tool with no entry is taken for from its moves.
@@ -41,6 +41,14 @@ const ASSUMED_DRILL: Tool = Tool::Drill {
     diameter: 10.0,
     point_angle: 118.0,
     reach: 60.0,
+};
+
+/// The blade a tool that only plunges is taken for: the default grooving blade (3 mm,
+/// referenced at its corner toward −Z, 20 mm long), its body away from the side it plunges
+/// from.
+const ASSUMED_BLADE: GroovingBlade = match Tool::DEFAULT_BLADE {
+    Tool::Grooving(b) => b,
+    _ => unreachable!(),
 };
 
 /// The boring bar a tool whose every contour lies in a bore is taken for: the default
@@ -78,6 +86,12 @@ struct Tally {
     passes_in: usize,
     passes_out: usize,
     pass_reach: f64,
+    /// Feeds (off the axis) more along X than Z, as a blade plunges; whether one is a
+    /// facing pass (to the axis at the front, Z > −1: a blade parts off behind it); the
+    /// radial direction of the first plunge (+1 outward, −1 inward).
+    plunges: usize,
+    faces: bool,
+    first_plunge: i64,
 }
 
 impl Tally {
@@ -94,6 +108,17 @@ impl Tally {
                 },
             }),
             (0, 1.., 0) => Some(ASSUMED_DRILL),
+            (0, 0, n) if self.plunges == n && !self.faces && self.first_plunge != 0 => {
+                Some(Tool::Grooving(GroovingBlade {
+                    // a blade plunged outward, from a bore, is an ID one: its body toward the axis
+                    shank_dir: if self.first_plunge > 0 {
+                        AxisDir::MinusX
+                    } else {
+                        AxisDir::PlusX
+                    },
+                    ..ASSUMED_BLADE
+                }))
+            }
             (0, _, _) if self.bores_only() || self.bores_by_hand() => Some(ASSUMED_BORING_BAR),
             _ => None,
         }
@@ -154,6 +179,9 @@ impl ToolTable {
                                     passes_in: 0,
                                     passes_out: 0,
                                     pass_reach: 0.0,
+                                    plunges: 0,
+                                    faces: false,
+                                    first_plunge: 0,
                                 });
                                 tallies.len() - 1
                             })
@@ -171,6 +199,7 @@ impl ToolTable {
                 } else {
                     tally.feeds += 1;
                     count_pass(tally, s, segments.get(i + 1));
+                    count_plunge(tally, s);
                 }
                 continue;
             }
@@ -215,6 +244,7 @@ pub(super) fn taken_note(t: u32, tool: &Tool) -> String {
     let what = match tool {
         Tool::Drill { .. } => "only drills: taken for a drill",
         Tool::Threading { .. } => "cuts only thread passes: taken for a threading insert",
+        Tool::Grooving(_) => "only plunges: taken for a grooving blade",
         _ => "cuts in bores only: taken for a boring bar",
     };
     format!(
@@ -256,6 +286,20 @@ fn count_contours(tallies: &mut [Tally], segments: &[Segment], intended: &[Inten
                 t.others += 1;
             }
         }
+    }
+}
+
+/// Counts feed `s` in `tally` as a plunge when it runs more along X than Z.
+fn count_plunge(tally: &mut Tally, s: &Segment) {
+    let dr = s.to.r.abs() - s.from.r.abs();
+    if s.arc.is_some() || dr.abs() < (s.to.z - s.from.z).abs() {
+        return;
+    }
+    tally.plunges += 1;
+    let to_axis = s.to.r.abs() <= 1e-9 || s.to.r * s.from.r < 0.0;
+    tally.faces |= to_axis && s.to.z > -1.0;
+    if tally.first_plunge == 0 {
+        tally.first_plunge = side_of(dr);
     }
 }
 
