@@ -355,3 +355,33 @@ fn a_tool_that_only_plunges_is_a_blade_on_its_side() {
     let groove_area = area(&with) - area(&without);
     assert!((groove_area - 9.0).abs() < 1e-6, "{groove_area}");
 }
+
+/// Field run 7 (C): a flange faced by G72 with a hub, a CNMG in a PCLNR (no `tip` in the
+/// table: the right-hand holder gives tip 3). The finishing pass steps up the hub along
+/// +Z (7 mm) and feeds toward the chuck not at all; the holder-hand rule read that as a
+/// tool fed the other way, tip 4, and the run had 7 holder crashes 13 mm deep and an 8 mm
+/// gouge. A tool that faces more than it turns says nothing of the way it turns: tip 3, the
+/// part the same program cuts with `tip = 3` stated, and no LS-HOLDER-HAND.
+#[test]
+fn a_g72_hub_step_does_not_turn_the_holders_hand() {
+    let program = "O7007 (FLANGE WITH A HUB)\nG21 G40 G99\nT0101\nG96 S200 M03\nG00 X84. Z2.\nG72 W2. R0.5\nG72 P10 Q20 U0.2 W0.1 F0.25\nN10 G00 Z-8.\nG01 X80.\nX40.\nZ-1.\nX38. Z0.\nN20 X10.\nG70 P10 Q20 F0.1\nG00 X150. Z100.\nM30\n";
+    let table = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n";
+    let blank = ["--stock", "80x30", "--stock-z", "0.5"];
+    let by_hand = run_with(program, Some(table), &blank);
+    assert_eq!(by_hand["verdict"], "clean", "{:#}", by_hand["crashes"]);
+    let hand_notes = by_hand["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-HOLDER-HAND")
+        .count();
+    assert_eq!(hand_notes, 0, "{:#}", by_hand["warnings"]);
+    let stated = run_with(program, Some(&format!("{table}tip = 3\n")), &blank);
+    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
+    assert!(
+        (area(&by_hand) - area(&stated)).abs() < 1e-9,
+        "{} vs {}",
+        area(&by_hand),
+        area(&stated)
+    );
+}

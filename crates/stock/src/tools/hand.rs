@@ -28,7 +28,9 @@ pub struct TipFromUse {
 }
 
 /// The feed the other way must be this many times the feed the hand's way, and at least
-/// [`MIN_FEED`] mm: a right-hand tool's odd move back along Z changes nothing.
+/// [`MIN_FEED`] mm: a right-hand tool's odd move back along Z changes nothing; and the tool
+/// must feed along Z at least as far as across it (a facing tool's step up a hub is no
+/// turning).
 const CLEAR: f64 = 4.0;
 /// See [`CLEAR`].
 const MIN_FEED: f64 = 1.0;
@@ -51,12 +53,14 @@ impl ToolTable {
                     _ => return None,
                 };
                 let (mut minus, mut plus, mut first) = (0.0, 0.0, None);
+                let mut across = 0.0;
                 for (i, s) in segments.iter().enumerate() {
                     let dz = s.to.z - s.from.z;
-                    if s.tool != t
-                        || s.motion != Motion::Feed
-                        || dz.abs() <= (s.to.r - s.from.r).abs()
-                    {
+                    if s.tool != t || s.motion != Motion::Feed {
+                        continue;
+                    }
+                    if dz.abs() <= (s.to.r - s.from.r).abs() {
+                        across += (s.to.r - s.from.r).abs();
                         continue;
                     }
                     if dz < 0.0 {
@@ -73,7 +77,10 @@ impl ToolTable {
                 } else {
                     (plus, minus)
                 };
-                (against >= MIN_FEED && against >= CLEAR * along).then_some(TipFromUse {
+                // a tool that faces more than it turns (a G72 hub's step up along Z) says
+                // nothing of the way it turns (field run 7, C)
+                let turns = along + against >= across;
+                (turns && against >= MIN_FEED && against >= CLEAR * along).then_some(TipFromUse {
                     t,
                     hand: *tip,
                     tip: other,
