@@ -385,3 +385,28 @@ fn a_g72_hub_step_does_not_turn_the_holders_hand() {
         area(&stated)
     );
 }
+
+/// A blade taken from its moves cuts as a blade everywhere (field run 7, p18 and B): a
+/// thread relief plunged by a tool with no entry in a diameter another tool finished is
+/// that operation's own cut (LS-LATER-CUT, no possible gouge), and a ring it parts off into
+/// the hole a tool with no entry drilled falls (the next ring's rapid was a crash).
+#[test]
+fn a_blade_taken_from_its_moves_cuts_features_and_parts_off() {
+    let relief = "O0018\nG99 G21 G40\nT0101 M03 S800\nG00 X42. Z2.\nG71 U2. R1.\nG71 P70 Q130 U0.5 W0.1 F0.25\nN70 G00 X18.\nG01 Z0. F0.1\nX20. Z-1.\nZ-15.\nX30. Z-25.\nZ-40.\nN130 X42.\nG70 P70 Q130\nG00 X200. Z100.\nT0202 M03 S400\nG00 X32. Z-15.\nX22.\nG01 X16. F0.05\nG00 X22.\nX200.\nZ100.\nM30\n";
+    let v = run_with(relief, None, &["--stock", "40x60"]);
+    assert!(
+        v["gouges"].as_array().unwrap().is_empty(),
+        "{:#}",
+        v["gouges"]
+    );
+    let later = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-LATER-CUT" && w["line"] == 19)
+        .count();
+    assert_eq!(later, 1, "{:#}", v["warnings"]);
+    let rings = "O7005 (TWO RINGS)\nG21 G40 G99\nT0202\nG97 S900 M03\nG00 X0. Z5.\nG74 R0.5\nG74 Z-27. Q5000 F0.1\nG00 Z5.\nT0303\nG97 S500 M03\nG00 X34.\nZ-13.\nG01 X8. F0.05\nG00 X34.\nZ5.\nX20.\nZ-12.\nX34.\nZ-26.\nG01 X8. F0.05\nG00 X34.\nZ5.\nM30\n";
+    let v = run_with(rings, None, &["--stock", "30x40"]);
+    assert_eq!(v["verdict"], "clean", "{:#}", v["crashes"]);
+}

@@ -156,11 +156,11 @@ impl ToolTable {
             .map(|(_, tool)| tool)
     }
 
-    /// Whether `seg` is cut by a grooving blade: the table's tool is one, or a grooving
-    /// cycle says so (its hint).
+    /// Whether `seg` is cut by a grooving blade: the table's tool is one (or a tool with
+    /// no entry is taken for one from its moves), or a grooving cycle says so (its hint).
     pub fn blade_cuts(&self, seg: &expander::Segment) -> bool {
         seg.hint != expander::ToolHint::Table
-            || matches!(self.get(seg.tool), Some(Tool::Grooving(_)))
+            || matches!(self.tool_or_default(seg.tool), Tool::Grooving(_))
     }
 
     /// The T numbers in the table, in file order.
