@@ -12,12 +12,16 @@
 //!   bore is a boring bar: the default insert as an ID tool (tip 2); the OD default roughed
 //!   the wall on the wrong side of an ID G71, whose contour was then read against that
 //!   stock (field run 2, N2), and its rapid out of a bore it finished under G41 was a
-//!   certain gouge (field run 6, E).
-//!   The program is read again with it: its nose compensates as a boring bar's.
+//!   certain gouge (field run 6, E); so is one that leaves every pass along Z toward the
+//!   axis (a bore turned by hand). The program is read again with it: its nose
+//!   compensates as a boring bar's;
+//! - one that only plunges (no facing pass) is the default grooving blade, its body away
+//!   from the side it plunges from (field run 7, D: the OD default rapided into a bore for
+//!   a relief groove swept the wall and the finished OD).
 //!
 //! Their size is a guess all the same, so their findings stay possible ones
-//! (spec/simulation.md, "Findings from assumed tools"). For a threading insert or a drill
-//! the program is not expanded again: the interpreter has compensated the tool as one with
+//! (spec/simulation.md, "Findings from assumed tools"). For a threading insert, a drill or
+//! a blade the program is not expanded again: the interpreter has compensated the tool as one with
 //! no entry (the default nose), which only a thread pass or a drilling feed under G41/G42
 //! would show.
 
@@ -143,8 +147,8 @@ impl Tally {
 
 impl ToolTable {
     /// The tools with no entry (tool 0, no T word yet, is the table's first entry, when
-    /// there is a table) that `toolpath` uses only for thread passes, only to drill, or
-    /// only to finish bores.
+    /// there is a table) that `toolpath` uses only for thread passes, only to drill, only
+    /// to plunge, or only in bores.
     pub fn tools_from_use(&self, toolpath: &Toolpath) -> Vec<ToolFromUse> {
         let segments = &toolpath.segments;
         let offset_drill = OffsetDrills::of(toolpath);
