@@ -668,3 +668,51 @@ fn a_bore_contour_does_not_state_the_od() {
     let depth = gouges[0]["depth_mm"].as_f64().unwrap();
     assert!((depth - 0.8).abs() < 0.01, "{gouges:#?}");
 }
+
+/// Field run 8 (B, A): what a later blade cuts of part material that is gone is judged
+/// apart from the rest. A skim 0.4 mm under the finished Φ29.8 (G01 Z-20 at X29), then a
+/// relief groove by the 3 mm blade at Z-22: the skim is a gouge 0.4 deep at its own line (as
+/// without the groove), the groove the blade's own cut (LS-LATER-CUT, 1.9 deep); judged as
+/// one region it was a 1.9 mm gouge at the groove's bottom with no cause. And a bush (OD by
+/// G90, bore by G71/G70) parted off into its bore: the slot joined the G90's OD, which no
+/// contour states, to the bore contour; it was a certain 3 mm gouge at the G90.
+#[test]
+fn a_later_blade_cut_is_judged_apart_from_the_gouge_beside_it() {
+    let skim = "O0005 (SKIM PASS 0.4 UNDER 29.8, THEN A RELIEF GROOVE)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X48. Z2.\nG71 U2. R0.5\nG71 P100 Q200 U0.4 W0.1 F0.25\nN100 G00 G42 X26.\nG01 Z0. F0.15\nX29.8 Z-1.9\nZ-25.\nX38.\nX40. Z-26.\nZ-45.\nN200 G01 G40 X48.\nG70 P100 Q200\nG00 X29. Z2.\nG01 Z-20. F0.1\nG00 X48.\nG00 X150. Z100.\nT0303\nG97 S600 M03\nG00 X42. Z-22.\nG01 X26. F0.05\nG00 X42.\nG00 X150. Z100.\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"-z\"\nshank_dir = \"+x\"\nreach = 15.0\n";
+    let (out, v) = run_fanuc("skim.nc", skim, tools, "45x60");
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert_eq!(gouges.len(), 1, "{gouges:#?}");
+    assert_eq!(gouges[0]["line"], 18, "{gouges:#?}");
+    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
+    assert!((depth - 0.4).abs() < 1e-3, "{gouges:#?}");
+    let later = warnings(&v, "LS-LATER-CUT");
+    assert!(later.iter().any(|w| w["line"] == 24), "{later:#?}");
+
+    let bush = "O0006 (BUSH - OD BY G90, BORE BY G71/G70, PART-OFF INTO THE BORE)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X44. Z2.\nG90 X39. Z-28. F0.25\nX36.\nG00 X150. Z100.\nT0303\nG96 S150 M03\nG00 X24. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U-0.3 W0.05 F0.15\nN10 G00 X30.\nG01 Z-27. F0.08\nN20 X24.\nG70 P10 Q20\nG00 Z5.\nG00 X150. Z100.\nT0505\nG97 S600 M03\nG00 X44. Z-26.\nG01 X28. F0.05\nG00 X44.\nG00 X150. Z100.\nM30\n";
+    let (dir, path) = temp_program("bush.nc", bush.as_bytes());
+    let table = dir.path().join("tools.toml");
+    let bush_tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\ntip = 2\nentering_angle = 93\nshank = 16.0\n[[tool]]\nt = 5\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
+    std::fs::write(&table, bush_tools).unwrap();
+    let (out, v) = run_json(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        "42x40",
+        "--bore",
+        "24",
+        "--tools",
+        table.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        (out.code, v["verdict"].as_str()),
+        (0, Some("clean")),
+        "{:#}",
+        v["gouges"]
+    );
+    let later = warnings(&v, "LS-LATER-CUT");
+    assert!(later.iter().any(|w| w["line"] == 23), "{later:#?}");
+}

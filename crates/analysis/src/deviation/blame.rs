@@ -13,11 +13,13 @@ use stock::{area, boolean, float_sweep, move_path, BoolOp, Mounts, Outline, Shap
 /// again and asked a boolean; a 3 000-pass G73 over small arcs asked for every pass.)
 /// Moves past the axis are folded into the section as the removal folds them
 /// (`stock::float_sweep`), each tool as mounted (`mounts`: rear-post tools mirrored).
+/// Only the moves `maker` accepts are looked at.
 pub(super) fn blame(
     gouges: &mut [Finding],
     segments: &[Segment],
     mounts: &mut Mounts,
     chord_tol: f64,
+    maker: &dyn Fn(&Segment) -> bool,
 ) {
     let boxes: Vec<Rect> = gouges
         .iter()
@@ -27,6 +29,9 @@ pub(super) fn blame(
     for (i, seg) in segments.iter().enumerate() {
         if unnamed.is_empty() {
             break;
+        }
+        if !maker(seg) {
+            continue;
         }
         let mounted = mounts.of(seg);
         let outline = &mounted.edge;
@@ -117,7 +122,7 @@ pub(crate) fn certain(
 }
 
 /// Whether the sweep of `seg` may reach the box `bb` (false only when it surely does not).
-fn may_sweep_over(bb: &Rect, seg: &Segment, outline: &Outline) -> bool {
+pub(super) fn may_sweep_over(bb: &Rect, seg: &Segment, outline: &Outline) -> bool {
     let Some((lo, hi)) = outline.bbox() else {
         return false;
     };

@@ -3,6 +3,7 @@
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
 mod blame;
+mod features;
 pub(crate) use blame::moves_over;
 #[cfg(test)]
 mod tests;
@@ -12,7 +13,7 @@ use expander::Segment;
 use geom::distance::EdgeIndex;
 use geom::flat::{clip_convex, dist, lerp, pts, P};
 use geom::{ring, Rect};
-use stock::{area, boolean, BoolOp, Mounts, Shape, Tool, ToolTable};
+use stock::{area, boolean, BoolOp, Mounts, Shape, ToolTable};
 
 /// One connected region where the part differs from the intent.
 #[derive(Debug, Clone, PartialEq)]
@@ -125,7 +126,25 @@ pub fn deviation(
     let final_zone = boolean(final_shapes, &zone, BoolOp::Intersection);
     let gone = boolean(&should_stay, final_shapes, BoolOp::Difference);
     let left = boolean(&final_zone, &part, BoolOp::Difference);
-    out.gouges = findings(gone, &faced(&part, &zone, final_shapes, &world_box), tol);
+    let mut mounts = Mounts::new(tools, stock::rear_tools(segments));
+    // what the feature cuts swept of it is judged apart, made by them
+    let featured = features::sweeps(&gone, segments, tools, &mut mounts, chord_tol);
+    let (plain, by_features) = if featured.is_empty() {
+        (gone, vec![])
+    } else {
+        (
+            boolean(&gone, &featured, BoolOp::Difference),
+            boolean(&gone, &featured, BoolOp::Intersection),
+        )
+    };
+    let depth_in = faced(&part, &zone, final_shapes, &world_box);
+    let mut plain = findings(plain, &depth_in, tol);
+    let mut by_features = findings(by_features, &depth_in, tol);
+    blame::blame(&mut plain, segments, &mut mounts, chord_tol, &|_| true);
+    let feature = |s: &Segment| features::cuts_features(s, tools);
+    blame::blame(&mut by_features, segments, &mut mounts, chord_tol, &feature);
+    out.gouges = plain;
+    out.gouges.append(&mut by_features);
     // the thread bands (left out of every zone: a thread's own form) are stated too
     let bands = std::cell::OnceCell::new();
     let band_edges = || {
@@ -137,8 +156,6 @@ pub fn deviation(
     out.gouges
         .retain(|g| on_stated_surface(g, intents, &world_box, tol) || meets(g, band_edges(), tol));
     out.leftovers = findings(left, &part, tol);
-    let mut mounts = Mounts::new(tools, stock::rear_tools(segments));
-    blame::blame(&mut out.gouges, segments, &mut mounts, chord_tol);
     let (later, gouges): (Vec<Finding>, Vec<Finding>) = std::mem::take(&mut out.gouges)
         .into_iter()
         .partition(|g| cut_later(g, intents, segments, tools, &world_box));
@@ -245,12 +262,7 @@ fn cut_later(
         return false;
     };
     let (i, seg) = seg;
-    let cuts_features = tools.blade_cuts(seg)
-        || matches!(
-            tools.tool_or_default(seg.tool),
-            Tool::Drill { .. } | Tool::Threading { .. }
-        );
-    if seg.motion == expander::Motion::Rapid || !cuts_features {
+    if !features::cuts_features(seg, tools) {
         return false;
     }
     in_later_contour(g, intents, (i, seg), world, false)
