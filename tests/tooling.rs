@@ -410,3 +410,45 @@ fn a_blade_taken_from_its_moves_cuts_features_and_parts_off() {
     let v = run_with(rings, None, &["--stock", "30x40"]);
     assert_eq!(v["verdict"], "clean", "{:#}", v["crashes"]);
 }
+
+/// Field run 8 (E): a bore turned by hand whose finishing pass is fed in along a 45°
+/// chamfer is a boring bar too (the chamfer is part of the pass it leads into; its start
+/// reached further out than the passes, so the tool stayed the 55° OD default: 708 mm²
+/// removed instead of 394, and the ID thread measured nothing). The part is the one the
+/// same program cuts entered straight.
+#[test]
+fn a_hand_bore_entered_along_a_chamfer_is_a_boring_bar() {
+    let program = |entry: &str| {
+        format!("O0004 (BORE BY HAND)\nG21 G40 G99\nT0303\nG97 S600 M03\nG00 X0. Z5.\nG83 Z-35. Q6000 F0.1\nG80\nG00 X150. Z100.\nT0404\nG96 S150 M03\nG00 X21. Z2.\nG01 Z-31. F0.15\nX20.\nG00 Z2.\n{entry}Z-31.\nX23.\nG00 Z5.\nG00 X150. Z100.\nM30\n")
+    };
+    let chamfered = run_with(
+        &program("X27.4\nG01 X24.4 Z0.5 F0.1\n"),
+        None,
+        &["--stock", "50x40"],
+    );
+    let notes: Vec<&str> = chamfered["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-STOCK")
+        .map(|w| w["message"].as_str().unwrap())
+        .collect();
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T04") && m.contains("boring bar")),
+        "{notes:?}"
+    );
+    let straight = run_with(
+        &program("X24.4\nG01 Z0.5 F0.1\n"),
+        None,
+        &["--stock", "50x40"],
+    );
+    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
+    assert!(
+        (area(&chamfered) - area(&straight)).abs() < 0.5,
+        "{} vs {}",
+        area(&chamfered),
+        area(&straight)
+    );
+}

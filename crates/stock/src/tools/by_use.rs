@@ -90,6 +90,9 @@ struct Tally {
     passes_in: usize,
     passes_out: usize,
     pass_reach: f64,
+    /// The largest |r| of the chain of feeds the last feed belongs to (a chamfer fed into
+    /// a bore is part of the pass that follows it).
+    chain_reach: f64,
     /// Feeds (off the axis) more along X than Z, as a blade plunges; whether one is a
     /// facing pass (to the axis at the front, Z > −1: a blade parts off behind it); the
     /// radial direction of the first plunge (+1 outward, −1 inward).
@@ -183,6 +186,7 @@ impl ToolTable {
                                     passes_in: 0,
                                     passes_out: 0,
                                     pass_reach: 0.0,
+                                    chain_reach: 0.0,
                                     plunges: 0,
                                     faces: false,
                                     first_plunge: 0,
@@ -202,6 +206,16 @@ impl ToolTable {
                     tally.on_axis += 1;
                 } else {
                     tally.feeds += 1;
+                    let chained = i
+                        .checked_sub(1)
+                        .map(|j| &segments[j])
+                        .is_some_and(|p| p.motion == Motion::Feed && p.tool == s.tool);
+                    let reach = s.from.r.abs().max(s.to.r.abs());
+                    tally.chain_reach = if chained {
+                        tally.chain_reach.max(reach)
+                    } else {
+                        reach
+                    };
                     count_pass(tally, s, segments.get(i + 1));
                     count_plunge(tally, s);
                 }
@@ -318,7 +332,7 @@ fn count_pass(tally: &mut Tally, s: &Segment, next: Option<&Segment>) {
     match side_of(next.to.r.abs() - next.from.r.abs()) {
         -1 => {
             tally.passes_in += 1;
-            tally.pass_reach = tally.pass_reach.max(s.from.r.abs()).max(s.to.r.abs());
+            tally.pass_reach = tally.pass_reach.max(tally.chain_reach);
         }
         1 => tally.passes_out += 1,
         _ => {}
