@@ -452,3 +452,27 @@ fn a_hand_bore_entered_along_a_chamfer_is_a_boring_bar() {
         area(&straight)
     );
 }
+
+/// Field run 5's part-off with a back chamfer, no table and no G42: short moves along Z
+/// (1.1 and 0.7 mm, the chamfer's steps) are a blade's, not passes of a bore: T09 only
+/// plunges, a blade; the chamfer's inward steps read as bore passes made it a boring bar
+/// and the part a 10 mm certain gouge.
+#[test]
+fn a_part_off_chamfering_by_hand_with_no_table_is_a_blade() {
+    let program = "O5006 (PIN D40 X 13 - PART OFF WITH A BACK CHAMFER)\nG21 G40 G99\nG50 S3000\nT0101\nG96 S200 M03\nG00 X52. Z2. M08\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X36.\nG01 Z0. F0.1\nX40. Z-2.\nZ-16.\nN20 X52.\nG70 P10 Q20\nG28 U0. W0.\nT0909 (PART-OFF BLADE 3 MM)\nG96 S120 M03\nG00 X52. Z-14.1\nG01 X50. F0.1\nX48. Z-13.\nX39.5\nX43.\nZ-12.3\nX40.6\nX39.1 Z-13.\nX30.\nG00 X52.\nG28 U0. W0.\nM30\n";
+    let v = run_with(program, None, &["--stock", "50x40"]);
+    assert_eq!(v["verdict"], "clean", "{:#}", v["gouges"]);
+    let notes: Vec<&str> = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "LS-STOCK")
+        .map(|w| w["message"].as_str().unwrap())
+        .collect();
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T09") && m.contains("grooving blade")),
+        "{notes:?}"
+    );
+}

@@ -307,10 +307,16 @@ fn count_contours(tallies: &mut [Tally], segments: &[Segment], intended: &[Inten
     }
 }
 
-/// Counts feed `s` in `tally` as a plunge when it runs more along X than Z.
+/// The least travel along Z of a pass: shorter feeds along Z are a blade's chamfer or step
+/// (a part-off's), not a turning or boring pass.
+const MIN_PASS: f64 = 2.0;
+
+/// Counts feed `s` in `tally` as a plunge when it runs more along X than Z, or less than
+/// [`MIN_PASS`] along Z.
 fn count_plunge(tally: &mut Tally, s: &Segment) {
     let dr = s.to.r.abs() - s.from.r.abs();
-    if s.arc.is_some() || dr.abs() < (s.to.z - s.from.z).abs() {
+    let dz = (s.to.z - s.from.z).abs();
+    if s.arc.is_some() || (dr.abs() < dz && dz >= MIN_PASS) {
         return;
     }
     tally.plunges += 1;
@@ -326,7 +332,10 @@ fn count_plunge(tally: &mut Tally, s: &Segment) {
 fn count_pass(tally: &mut Tally, s: &Segment, next: Option<&Segment>) {
     let along_z = |s: &Segment| (s.to.z - s.from.z).abs() > (s.to.r - s.from.r).abs();
     let Some(next) = next else { return };
-    if !along_z(s) || (next.motion == Motion::Feed && along_z(next) && next.tool == s.tool) {
+    if !along_z(s)
+        || (s.to.z - s.from.z).abs() < MIN_PASS
+        || (next.motion == Motion::Feed && along_z(next) && next.tool == s.tool)
+    {
         return;
     }
     match side_of(next.to.r.abs() - next.from.r.abs()) {
