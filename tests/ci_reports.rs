@@ -325,7 +325,9 @@ fn a_possible_gouge_of_an_assumed_tool_does_not_fail() {
     let tools = dir.path().join("t01.toml");
     std::fs::write(
         &tools,
-        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n",
+        // T03 a turning tool whose size is not stated (with no entry at all, a tool that
+        // only plunges is taken for a blade, which cuts nothing of the contour here)
+        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"turning\"\n",
     )
     .unwrap();
     let (junit, sarif) = (dir.path().join("j.xml"), dir.path().join("s.sarif"));

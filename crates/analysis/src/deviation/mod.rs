@@ -127,8 +127,13 @@ pub fn deviation(
     let gone = boolean(&should_stay, final_shapes, BoolOp::Difference);
     let left = boolean(&final_zone, &part, BoolOp::Difference);
     let mut mounts = Mounts::new(tools, stock::rear_tools(segments));
-    // what the feature cuts swept of it is judged apart, made by them
-    let featured = features::sweeps(&gone, segments, tools, &mut mounts, chord_tol);
+    // what the feature cuts swept of it is judged apart, made by them (against a drawing,
+    // `--target`, every cut is judged as it is: no feature is any operation's own)
+    let featured = if intents.iter().any(|i| i.owner.is_some()) {
+        features::sweeps(&gone, segments, tools, &mut mounts, chord_tol)
+    } else {
+        vec![]
+    };
     let (plain, by_features) = if featured.is_empty() {
         (gone, vec![])
     } else {

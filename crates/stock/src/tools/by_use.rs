@@ -338,7 +338,10 @@ fn count_pass(tally: &mut Tally, s: &Segment, next: Option<&Segment>) {
     {
         return;
     }
+    // a move in to the axis after the pass faces the part: no bore's retract
+    let faces = next.to.r.abs() <= 1e-9 || next.to.r * next.from.r < 0.0;
     match side_of(next.to.r.abs() - next.from.r.abs()) {
+        -1 if faces => {}
         -1 => {
             tally.passes_in += 1;
             tally.pass_reach = tally.pass_reach.max(tally.chain_reach);
