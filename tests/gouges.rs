@@ -715,3 +715,37 @@ fn a_later_blade_cut_is_judged_apart_from_the_gouge_beside_it() {
     let later = warnings(&v, "LS-LATER-CUT");
     assert!(later.iter().any(|w| w["line"] == 23), "{later:#?}");
 }
+
+/// Field run 8 (I): a bore finished by hand under G42 with a boring bar whose tip the table
+/// states (tip 2: the part lies outside its path). The control offsets the r0.4 nose into
+/// the wall: the bore comes out Ø31.6 for Ø30, 0.8 deep over 27 mm (21.6 mm²). It was CLEAN
+/// (the contour read as an OD one, its part inside the path), or a 3 mm gouge blamed on the
+/// roughing G90. Now the gouge is at the finishing pass, 0.8 deep, with LS-COMP-SIDE at the
+/// contour; the same program under G41 is clean.
+#[test]
+fn a_bore_finished_under_g42_is_a_gouge_at_the_finishing_pass() {
+    let program = |code: &str| {
+        format!("O0013 (BORE FINISH BY HAND)\nG21 G40 G99\nT0202\nG97 S600 M03\nG00 X0. Z5.\nG74 R1.\nG74 Z-35. Q5000 F0.1\nG00 X150. Z100.\nT0303\nG96 S150 M03\nG00 X24. Z2.\nG90 X27. Z-27. F0.2\nX29.\nG00 X32. Z2.\n{code} G00 X30. Z4.\nG01 Z0. F0.1\nZ-27.\nG40 G01 X24.\nG00 Z5.\nG00 X150. Z100.\nM30\n")
+    };
+    let tools = "[[tool]]\nt = 2\nkind = \"drill\"\ndiameter = 24.0\npoint_angle = 118\nreach = 80.0\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\ntip = 2\nentering_angle = 93\nshank = 16.0\n";
+    let (out, v) = run_fanuc("g42.nc", &program("G42"), tools, "40x40");
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert_eq!(gouges.len(), 1, "{gouges:#?}");
+    assert_eq!(gouges[0]["line"], 16, "{gouges:#?}");
+    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
+    assert!((depth - 0.8).abs() < 1e-3, "{gouges:#?}");
+    let area = gouges[0]["area_mm2"].as_f64().unwrap();
+    assert!((area - 21.6).abs() < 0.01, "{gouges:#?}");
+    let side = warnings(&v, "LS-COMP-SIDE");
+    assert_eq!(side.len(), 1, "{:#}", v["warnings"]);
+    assert_eq!(side[0]["line"], 16);
+    let (out, v) = run_fanuc("g41.nc", &program("G41"), tools, "40x40");
+    assert_eq!(
+        (out.code, v["verdict"].as_str()),
+        (0, Some("clean")),
+        "{:#}",
+        v["gouges"]
+    );
+    assert!(warnings(&v, "LS-COMP-SIDE").is_empty());
+}

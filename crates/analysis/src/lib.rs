@@ -185,6 +185,7 @@ fn conclude(
     });
     let (crashes, scrapes, warnings) = crash_findings(sim, segments, s, &beside);
     let mut part_warnings = part_notes(deviation.as_ref(), segments, s.tools);
+    part_warnings.extend(intent::program::comp_side_notes(toolpath, s.tools));
     let checked = check_threads(
         toolpath,
         sim,

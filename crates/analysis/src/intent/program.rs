@@ -20,7 +20,7 @@ pub(crate) fn read(
 ) -> Vec<Intent> {
     let mut read = match intents {
         Intents::Target(part) => vec![Intent::target(part.clone())],
-        Intents::Program => own(toolpath, stock_at),
+        Intents::Program => own(toolpath, tools, stock_at),
     };
     let bands = thread_bands(&toolpath.segments, tools);
     if !bands.is_empty() {
@@ -81,7 +81,11 @@ pub(crate) fn thread_bands(segments: &[Segment], tools: &ToolTable) -> Vec<Shape
 
 /// The shapes the program defines for itself, in program order, those a later contour
 /// overcuts left out ([`overcut_later`]).
-fn own(toolpath: &Toolpath, stock_at: &dyn Fn(usize) -> Vec<Shape>) -> Vec<Intent> {
+fn own(
+    toolpath: &Toolpath,
+    tools: &ToolTable,
+    stock_at: &dyn Fn(usize) -> Vec<Shape>,
+) -> Vec<Intent> {
     let intended = &toolpath.intended;
     let segments = &toolpath.segments;
     let (blank, finished) = (stock_at(0), stock_at(usize::MAX));
@@ -120,7 +124,10 @@ fn own(toolpath: &Toolpath, stock_at: &dyn Fn(usize) -> Vec<Shape>) -> Vec<Inten
                     IntendedKind::Groove => Some(Intent::groove(&pts)),
                     IntendedKind::FinishingContour => Intent::finishing(&pts, &stages),
                     IntendedKind::Compensated { part_on_left } => {
-                        Intent::compensated(&pts, part_on_left != below, &stages)
+                        // the side the tool's stated tip gives wins over a G41/G42 that
+                        // contradicts it (LS-COMP-SIDE)
+                        let wrong = wrong_side(i, segments, tools);
+                        Intent::compensated(&pts, (part_on_left != below) != wrong, &stages)
                     }
                 }
             };
@@ -133,6 +140,75 @@ fn own(toolpath: &Toolpath, stock_at: &dyn Fn(usize) -> Vec<Shape>) -> Vec<Inten
                 contour(intent)
             }
         })
+        .collect()
+}
+
+/// Whether the compensated contour `i` keeps the part on the other side than its tool's
+/// stated tip says (an ID tip 1, 2 or 6 keeps the part outside its path, an OD tip 3, 4 or
+/// 8 inside): G42 along a bore, G41 along an OD toward the chuck. The control offsets the
+/// nose into the part; the part is the path's other side (field run 8, I: a bore under
+/// G42 was CLEAN with the bore 1.6 mm larger, an OD under G41 a gouge blamed on its
+/// roughing). Front post only (a rear post's tips are not sorted out here).
+fn wrong_side(i: &expander::Intended, segments: &[Segment], tools: &ToolTable) -> bool {
+    let IntendedKind::Compensated { part_on_left } = i.kind else {
+        return false;
+    };
+    let Some(seg) = segments.get(i.after_move) else {
+        return false;
+    };
+    if !tools.tip_stated(seg.tool) || i.points.iter().any(|p| p.r < 0.0) {
+        return false;
+    }
+    let inside_tool = match tools.get(seg.tool) {
+        Some(stock::Tool::Turning { tip: 1 | 2 | 6, .. }) => true,
+        Some(stock::Tool::Turning { tip: 3 | 4 | 8, .. }) => false,
+        _ => return false,
+    };
+    // how far the part lies outward of the path: the part's side of each move (dz, dr)
+    // is its left (−dr, dz) for G42, its right for G41
+    let outward: f64 = i
+        .points
+        .windows(2)
+        .map(|w| {
+            let dz = w[1].z - w[0].z;
+            if part_on_left {
+                dz
+            } else {
+                -dz
+            }
+        })
+        .sum();
+    const CLEAR: f64 = 1.0;
+    (inside_tool && outward < -CLEAR) || (!inside_tool && outward > CLEAR)
+}
+
+/// The warning LS-COMP-SIDE for each contour cut under G41/G42 on the other side than its
+/// tool's stated tip gives ([`wrong_side`]).
+pub(crate) fn comp_side_notes(toolpath: &Toolpath, tools: &ToolTable) -> Vec<crate::Note> {
+    toolpath
+        .intended
+        .iter()
+        .filter(|i| wrong_side(i, &toolpath.segments, tools))
+        .filter_map(|i| {
+            let seg = toolpath.segments.get(i.after_move)?;
+            let IntendedKind::Compensated { part_on_left } = i.kind else {
+                return None;
+            };
+            let (code, other) = if part_on_left {
+                ("G42", "G41")
+            } else {
+                ("G41", "G42")
+            };
+            Some(crate::Note {
+                span: i.span,
+                code: "LS-COMP-SIDE",
+                message: format!(
+                    "{code} keeps T{:02}'s nose on the part's side: its tip says the part lies on the other side of this contour, so the nose is offset into it (write {other}); the contour is read with the part on the tip's side",
+                    seg.tool
+                ),
+            })
+        })
+        .take(crate::MAX_LISTED)
         .collect()
 }
 

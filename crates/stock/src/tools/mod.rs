@@ -38,6 +38,8 @@ pub struct ToolTable {
     widths: Vec<u32>,
     /// The turning entries whose tip their holder's hand letter gave (no `tip` stated).
     hand_tips: Vec<u32>,
+    /// The turning entries whose tip the table states (`tip`, or a holder's hand letter).
+    tips: Vec<u32>,
     /// Tools with no entry, taken for what their moves say they are ([`by_use`]): they
     /// cut as these, and their size stays unstated.
     by_use: Vec<(u32, Tool)>,
@@ -54,6 +56,7 @@ impl ToolTable {
         Self {
             noses: tools.iter().map(|(t, _)| *t).collect(),
             widths: tools.iter().map(|(t, _)| *t).collect(),
+            tips: tools.iter().map(|(t, _)| *t).collect(),
             tools,
             designations: Vec::new(),
             sizes: Vec::new(),
@@ -83,6 +86,7 @@ impl ToolTable {
         out.noses.retain(|n| *n != t);
         out.widths.retain(|n| *n != t);
         out.hand_tips.retain(|n| *n != t);
+        out.tips.retain(|n| *n != t);
         out.by_use.retain(|(n, _)| *n != t);
         out.designations.extend(one.designations);
         out.sizes.extend(one.sizes);
@@ -90,6 +94,7 @@ impl ToolTable {
         out.noses.extend(one.noses);
         out.widths.extend(one.widths);
         out.hand_tips.extend(one.hand_tips);
+        out.tips.extend(one.tips);
         Ok(out)
     }
 
@@ -116,6 +121,11 @@ impl ToolTable {
             hand_tips: entries
                 .iter()
                 .filter(|e| e.tip_from_hand)
+                .map(|e| e.t)
+                .collect(),
+            tips: entries
+                .iter()
+                .filter(|e| e.tip_stated)
                 .map(|e| e.t)
                 .collect(),
             tools: entries.into_iter().map(|e| (e.t, e.tool)).collect(),
@@ -166,6 +176,17 @@ impl ToolTable {
     /// The T numbers in the table, in file order.
     pub fn numbers(&self) -> Vec<u32> {
         self.tools.iter().map(|(t, _)| *t).collect()
+    }
+
+    /// Whether the table states turning tool `t`'s tip (`tip`, or its holder's hand
+    /// letter): where it lies from the part is then known, OD or ID.
+    pub fn tip_stated(&self, t: u32) -> bool {
+        let t = if t == 0 {
+            self.numbers().first().copied().unwrap_or(0)
+        } else {
+            t
+        };
+        self.tips.contains(&t)
     }
 
     /// The ISO designations tool `t` was given by (`"CNMG 120408 in PCLNR 2525M12"`).
