@@ -49,10 +49,16 @@ fn okuma(line: &str) -> Option<String> {
     if first == "DEF" || first == "CLEAR" || first == "DRAW" || l.starts_with("CALL O") {
         return Some(format!("the statement {first}"));
     }
-    let name = first.strip_prefix('N')?;
-    (name.starts_with(|c: char| c.is_ascii_alphabetic())
-        && name.chars().all(|c| c.is_ascii_alphanumeric()))
-    .then(|| format!("the sequence name {first} (N with letters)"))
+    // a sequence name starts a line, or is named by a cycle in it (`G85 NLAP1 D2.5`)
+    let sequence_name = |token: &&str| {
+        token.strip_prefix('N').is_some_and(|name| {
+            name.starts_with(|c: char| c.is_ascii_alphabetic())
+                && name.chars().all(|c| c.is_ascii_alphanumeric())
+        })
+    };
+    let code = without_comments(&l);
+    let name = code.split_whitespace().find(sequence_name)?;
+    Some(format!("the sequence name {name} (N with letters)"))
 }
 
 /// An assignment `NAME=value` or `N1=value` outside comments (a variable or parameter of
@@ -161,6 +167,9 @@ mod tests {
         let whose = |l: &str| construct(l).map(|f| f.whose);
         assert_eq!(whose("$FLANGE.MIN%"), Some("Okuma OSP"));
         assert_eq!(whose("DEF WORK"), Some("Okuma OSP"));
+        // a LAP cycle names its contour's sequence mid-line (field run 8, G)
+        assert_eq!(whose("G85 NLAP1 D2.5 F0.3 U0.2 W0.1"), Some("Okuma OSP"));
+        assert_eq!(whose("N10 G00 X20. (NOTE NLAP1)"), None);
         assert_eq!(whose("CALL OCHEK"), Some("Okuma OSP"));
         assert_eq!(whose("NAT00"), Some("Okuma OSP"));
         let f = construct("PRES=1    (CHUCK PRESSURE *** LOW:0 - HIGH:1)").unwrap();
