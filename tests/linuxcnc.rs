@@ -718,3 +718,31 @@ fn a_subroutine_of_another_file_is_called_by_its_name() {
         "{err}"
     );
 }
+
+/// Field run 8 (F): a centre-drilling position written with both axes, `G0 X0 Y0 Z5` after
+/// `G17`, keeps the tool on the spindle's centre line: Y0 is noted W-Y0 and the run goes
+/// on (it stopped with "the Y axis moves off the spindle centre line"). T3 has no entry and
+/// only drills: the assumed Ø10 drill, 20 deep by its tip, 5 · (20 − 5/tan 59°) + 5 · (5/tan
+/// 59°) / 2 = 92.49 mm². A Y away from the centre stays the alarm.
+#[test]
+fn y0_keeps_the_tool_on_the_centre_line() {
+    let program = "( LinuxCNC lathe: centre drill at X0 Y0 in G17 )\nG7 G18 G21 G90 G95\nT3 M6 G43\nS500 M3\nG17\nG0 X0 Y0 Z5\nG83 Z-20 R2 Q5 F0.08\nG80\nG18\nG0 X100 Z50\nM2\n";
+    let v = report_of(program, &["--stock", "40x40", "--control", "linuxcnc"]);
+    assert_eq!(v["verdict"], "clean", "{v:#}");
+    let noted = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == "W-Y0")
+        .count();
+    assert_eq!(noted, 1, "{:#}", v["warnings"]);
+    let slope = 5.0 / 59f64.to_radians().tan();
+    let hand = 5.0 * (20.0 - slope) + 5.0 * slope / 2.0;
+    let removed = v["removed_area_mm2"].as_f64().unwrap();
+    assert!((removed - hand).abs() < 0.01, "{removed} vs {hand}");
+    let off = report_of(
+        &program.replace("X0 Y0 Z5", "X0 Y2 Z5"),
+        &["--stock", "40x40", "--control", "linuxcnc"],
+    );
+    assert_eq!(off["verdict"], "alarm", "{off:#}");
+}

@@ -142,6 +142,19 @@ impl Interp<'_> {
                 );
                 continue;
             }
+            // Y0 keeps the tool on the spindle's centre line (a Y away from it is the
+            // alarm below, so the tool was never off it): a drilling position written with
+            // both axes, `G0 X0 Y0 Z5` (field run 8, F)
+            if w.letter == 'Y' && w.value == 0.0 {
+                used.mark(i);
+                self.note_once(
+                    w.span,
+                    "W-Y0",
+                    "Y0 ignored: the tool stays on the spindle centre line",
+                    "a turned section has no Y axis; Y0 is where it is",
+                );
+                continue;
+            }
             return Err(alarm(
                 w.span,
                 "LS-NOT-SIMULATED",
