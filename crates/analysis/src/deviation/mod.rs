@@ -158,8 +158,11 @@ pub fn deviation(
             outline_index(shapes.iter().map(|s| (&s.outer, true)))
         })
     };
-    out.gouges
-        .retain(|g| on_stated_surface(g, intents, &world_box, tol) || meets(g, band_edges(), tol));
+    if !out.gouges.is_empty() {
+        let stated = stated_surfaces(intents, &world_box);
+        out.gouges
+            .retain(|g| on_stated_surface(g, &stated, tol) || meets(g, band_edges(), tol));
+    }
     out.leftovers = findings(left, &part, tol);
     let (later, gouges): (Vec<Finding>, Vec<Finding>) = std::mem::take(&mut out.gouges)
         .into_iter()
@@ -312,22 +315,36 @@ fn in_later_contour(
 /// A; its mirror, a bore opened by G90 under an OD contour, too). Material gone from the
 /// part where no stated surface is, is not judged (**Interpretation**,
 /// docs/field-rules.md §21).
-fn on_stated_surface(g: &Finding, intents: &[Intent], world: &Rect, tol: f64) -> bool {
+fn on_stated_surface(g: &Finding, stated: &[Stated], tol: f64) -> bool {
     let region = Rect::of(pts(&g.shape.outer));
-    intents.iter().any(|intent| {
-        let zone = clip_to_box(&intent.zone, world);
-        let overlaps = zone.iter().any(|z| {
-            let b = Rect::of(pts(&z.outer));
+    stated.iter().any(|s| {
+        let overlaps = s.zones.iter().any(|b| {
             b.min.z.max(region.min.z) < b.max.z.min(region.max.z) - 1e-9
                 && b.min.r.max(region.min.r) < b.max.r.min(region.max.r) - 1e-9
         });
-        overlaps
-            && meets(
-                g,
-                &outline_index(intent.outline.iter().map(|(l, c)| (l, *c))),
-                tol,
-            )
+        overlaps && meets(g, &s.outline, tol)
     })
+}
+
+/// Where an intent states a surface: the boxes of its zone (within the world's box) and
+/// the edges of its outline.
+struct Stated {
+    zones: Vec<Rect>,
+    outline: EdgeIndex,
+}
+
+/// Each intent's [`Stated`], made once for all the gouges.
+fn stated_surfaces(intents: &[Intent], world: &Rect) -> Vec<Stated> {
+    intents
+        .iter()
+        .map(|intent| Stated {
+            zones: clip_to_box(&intent.zone, world)
+                .iter()
+                .map(|z| Rect::of(pts(&z.outer)))
+                .collect(),
+            outline: outline_index(intent.outline.iter().map(|(l, c)| (l, *c))),
+        })
+        .collect()
 }
 
 /// Whether a vertex of `g` lies within `tol` of an edge of `edges`.

@@ -164,20 +164,7 @@ fn wrong_side(i: &expander::Intended, segments: &[Segment], tools: &ToolTable) -
         Some(stock::Tool::Turning { tip: 3 | 4 | 8, .. }) => false,
         _ => return false,
     };
-    // how far the part lies outward of the path: the part's side of each move (dz, dr)
-    // is its left (−dr, dz) for G42, its right for G41
-    let outward: f64 = i
-        .points
-        .windows(2)
-        .map(|w| {
-            let dz = w[1].z - w[0].z;
-            if part_on_left {
-                dz
-            } else {
-                -dz
-            }
-        })
-        .sum();
+    let outward = stock::outward_travel(&i.points, part_on_left);
     const CLEAR: f64 = 1.0;
     (inside_tool && outward < -CLEAR) || (!inside_tool && outward > CLEAR)
 }

@@ -402,9 +402,11 @@ impl Interp<'_> {
                     let here = if axis == 0 { old.z } else { old.r };
                     let zero = here - value;
                     self.frames.zero[axis] = Some(zero);
-                    let waiting: Vec<(Work, usize, f64)> = self.frames.pending.clone();
-                    self.frames.pending.retain(|&(_, a, _)| a != axis);
-                    for (w, a, v) in waiting.into_iter().filter(|&(_, a, _)| a == axis) {
+                    let (now, still): (Vec<_>, Vec<_>) = std::mem::take(&mut self.frames.pending)
+                        .into_iter()
+                        .partition(|&(_, a, _)| a == axis);
+                    self.frames.pending = still;
+                    for (w, a, v) in now {
                         self.frames.set_axis(w, a, zero + v);
                     }
                     placed = "; the profile gives no machine_zero: this work system stays the stock's frame and machine zero is placed from it";

@@ -363,21 +363,25 @@ fn in_bore(shape: &Intended) -> bool {
 }
 
 /// Whether a contour cut under G41/G42 keeps the part outside it, away from the axis (a
-/// bore): the side the part is on, from each move's direction of travel, weighted by its
-/// length (G41 along a bore toward the chuck keeps the part to the right, outward).
+/// bore).
 fn part_outside(shape: &Intended, part_on_left: bool) -> bool {
-    let outward: f64 = shape
-        .points
+    outward_travel(&shape.points, part_on_left) > 1e-9
+}
+
+/// How far along Z a contour cut under G41/G42 (`part_on_left`: G42) runs with the part
+/// outward of it, away from the axis, less how far with the part toward it: the part's
+/// side of each move (dz, dr) in the (z, r) plane is its left (−dr, dz) for G42, its right
+/// for G41 (G41 along a bore toward the chuck keeps the part outward); below the axis (a
+/// rear post) outward is toward −r.
+pub fn outward_travel(points: &[expander::Pt], part_on_left: bool) -> f64 {
+    points
         .windows(2)
         .map(|w| {
-            // the part's side of a move (dz, dr) in the (z, r) plane: its left is (−dr, dz)
             let dz = w[1].z - w[0].z;
             let r_toward_part = if part_on_left { dz } else { -dz };
-            // below the axis (a rear post) outward is toward −r
             r_toward_part * (w[0].r + w[1].r).signum()
         })
-        .sum();
-    outward > 1e-9
+        .sum()
 }
 
 /// The drilling cycles that run off the axis (G81/G82/G83 with the spindle turning: an
