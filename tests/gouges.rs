@@ -21,19 +21,27 @@ fn a(p: &str) -> String {
 
 /// `program` run as `name` under FANUC system A on a `stock` bar with the tool table `tools`.
 fn run_fanuc(name: &str, program: &str, tools: &str, stock: &str) -> (Out, serde_json::Value) {
+    run_program(name, program, "fanuc-a", Some(tools), &["--stock", stock])
+}
+
+/// `program` run as `name` under `control` on the blank `blank` (`--stock` and such) with
+/// the tool table `tools` (none: no table).
+fn run_program(
+    name: &str,
+    program: &str,
+    control: &str,
+    tools: Option<&str>,
+    blank: &[&str],
+) -> (Out, serde_json::Value) {
     let (dir, path) = temp_program(name, program.as_bytes());
     let table = dir.path().join("tools.toml");
-    std::fs::write(&table, tools).unwrap();
-    run_json(&[
-        "run",
-        path.to_str().unwrap(),
-        "--control",
-        "fanuc-a",
-        "--stock",
-        stock,
-        "--tools",
-        table.to_str().unwrap(),
-    ])
+    let mut args = vec!["run", path.to_str().unwrap(), "--control", control];
+    args.extend(blank);
+    if let Some(tools) = tools {
+        std::fs::write(&table, tools).unwrap();
+        args.extend(["--tools", table.to_str().unwrap()]);
+    }
+    run_json(&args)
 }
 
 /// The report's warnings of this code.
@@ -460,23 +468,14 @@ fn a_part_off_at_the_shapes_end_is_the_blades_whatever_the_diameter() {
 #[test]
 fn a_haas_shape_return_leaves_no_band_through_the_core() {
     let program = "%\nO2007\nG00 G18 G21 G40 G99\nT0101\nG50 S2500\nG96 S900 M03\nG00 G54 X38.1 Z2.54\nG71 P10 Q20 U0.254 W0.127 D1.27 F0.25\nN10 G00 G42 X-1.575 Z2.54\nG01 Z0.\nX10.904\nX12.7 Z-0.898\nZ-53.264\nX38.1\nN20 G00 G40 Z2.54\nG70 P10 Q20 F0.2\nG00 Z2.54\nM30\n%\n";
-    let (dir, path) = temp_program("o2007.nc", program.as_bytes());
-    let table = dir.path().join("tools.toml");
-    std::fs::write(
-        &table,
-        "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n",
-    )
-    .unwrap();
-    let (out, v) = run_json(&[
-        "run",
-        path.to_str().unwrap(),
-        "--control",
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n";
+    let (out, v) = run_program(
+        "o2007.nc",
+        program,
         "haas",
-        "--stock",
-        "38.1x101.6",
-        "--tools",
-        table.to_str().unwrap(),
-    ]);
+        Some(tools),
+        &["--stock", "38.1x101.6"],
+    );
     assert_eq!(out.code, 0, "{v:#}");
     let leftovers = v["leftovers"].as_array().unwrap();
     let area: f64 = leftovers
@@ -538,16 +537,13 @@ fn a_face_cut_too_deep_is_as_deep_as_it_cuts_below_the_shape() {
 #[test]
 fn a_part_off_chamfering_under_g42_with_no_table_is_clean() {
     let program = "O0519\nG21 G40 G99\nT0101\nG96 S200 M03\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X36.\nG01 Z0. F0.1\nX40. Z-2.\nZ-16.\nN20 X52.\nG70 P10 Q20\nG28 U0. W0.\nT0909\nG96 S120 M03\nG00 X52. Z-14.1\nG01 X50. F0.1\nX48. Z-13.\nX39.5\nX43.\nZ-12.3\nG42 X40.6\nX39.1 Z-13.\nX30.\nG00 G40 X52.\nG28 U0. W0.\nM30\n";
-    let (dir, path) = temp_program("partoff.nc", program.as_bytes());
-    let _keep = dir;
-    let (out, v) = run_json(&[
-        "run",
-        path.to_str().unwrap(),
-        "--control",
+    let (out, v) = run_program(
+        "partoff.nc",
+        program,
         "fanuc-a",
-        "--stock",
-        "50x40",
-    ]);
+        None,
+        &["--stock", "50x40"],
+    );
     assert_eq!(out.code, 0, "{v:#}");
     let gouges = v["gouges"].as_array().unwrap();
     assert!(
@@ -569,18 +565,13 @@ fn a_part_off_chamfering_under_g42_with_no_table_is_clean() {
         1,
     );
     assert_ne!(faced, program);
-    let (dir, path) = temp_program("partoff-faced.nc", faced.as_bytes());
-    let _keep = dir;
-    let (out, v) = run_json(&[
-        "run",
-        path.to_str().unwrap(),
-        "--control",
+    let (out, v) = run_program(
+        "partoff-faced.nc",
+        &faced,
         "fanuc-a",
-        "--stock",
-        "50x40",
-        "--stock-z",
-        "1.5",
-    ]);
+        None,
+        &["--stock", "50x40", "--stock-z", "1.5"],
+    );
     assert_eq!(out.code, 0, "{:#}", v["gouges"]);
     let gouges = v["gouges"].as_array().unwrap();
     assert!(
@@ -597,21 +588,13 @@ fn a_part_off_chamfering_under_g42_with_no_table_is_clean() {
 fn an_od_shape_leaving_above_its_start_is_still_an_od_shape() {
     let program = "O0601\nG21 G99\nT0101\nG97 S1000 M03\nG0 X50. Z2.\nG71 U2. R.5\nG71 P10 Q20 U.4 W.1 F.25\nN10 G0 X44.\nG1 Z-30.\nN20 X52.\nG70 P10 Q20 F.1\nG0 X100. Z100.\nT0303\nG97 S900 M03\nG0 X16. Z2.\nG71 U1. R.5\nG71 P30 Q40 U-.3 W.1 F.2\nN30 G0 X24.\nG1 Z-30.\nN40 X16.\nG70 P30 Q40 F.1\nG0 Z2.\nX100. Z100.\nM30\n";
     let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DNMG 110404\"\ntip = 2\nentering_angle = 93\n";
-    let (dir, path) = temp_program("bush.nc", program.as_bytes());
-    let table = dir.path().join("tools.toml");
-    std::fs::write(&table, tools).unwrap();
-    let (out, v) = run_json(&[
-        "run",
-        path.to_str().unwrap(),
-        "--control",
+    let (out, v) = run_program(
+        "bush.nc",
+        program,
         "fanuc-a",
-        "--stock",
-        "50x60",
-        "--bore",
-        "18",
-        "--tools",
-        table.to_str().unwrap(),
-    ]);
+        Some(tools),
+        &["--stock", "50x60", "--bore", "18"],
+    );
     assert_eq!(out.code, 0, "{:#}", v["gouges"]);
     assert!(
         v["gouges"].as_array().unwrap().is_empty(),
@@ -630,21 +613,8 @@ fn a_bore_contour_does_not_state_the_od() {
     let bush = "O7002 (BUSH - OD BY G90, ID BY G71/G70)\nG21 G40 G99\nT0101\nG96 S200 M03\nG00 X42. Z2.\nG90 X38. Z-22. F0.2\nX36.4\nX35.6 F0.1\nG00 X80. Z50.\nT0303\nG96 S140 M03\nG00 X18. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U-0.3 W0.05 F0.15\nN10 G00 X24.\nG01 Z0. F0.08\nX22.4 Z-0.8\nZ-22.\nN20 X18.\nG70 P10 Q20\nG00 Z50.\nM30\n";
     let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\ntip = 2\nentering_angle = 93\nshank = 16.0\n";
     let run = |program: &str| {
-        let (dir, path) = temp_program("bush.nc", program.as_bytes());
-        let table = dir.path().join("tools.toml");
-        std::fs::write(&table, tools).unwrap();
-        let (out, v) = run_json(&[
-            "run",
-            path.to_str().unwrap(),
-            "--control",
-            "fanuc-a",
-            "--stock",
-            "40x30",
-            "--bore",
-            "20",
-            "--tools",
-            table.to_str().unwrap(),
-        ]);
+        let blank = ["--stock", "40x30", "--bore", "20"];
+        let (out, v) = run_program("bush.nc", program, "fanuc-a", Some(tools), &blank);
         (out.code, v)
     };
     let (code, v) = run(bush);
@@ -690,22 +660,14 @@ fn a_later_blade_cut_is_judged_apart_from_the_gouge_beside_it() {
     assert!(later.iter().any(|w| w["line"] == 24), "{later:#?}");
 
     let bush = "O0006 (BUSH - OD BY G90, BORE BY G71/G70, PART-OFF INTO THE BORE)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X44. Z2.\nG90 X39. Z-28. F0.25\nX36.\nG00 X150. Z100.\nT0303\nG96 S150 M03\nG00 X24. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U-0.3 W0.05 F0.15\nN10 G00 X30.\nG01 Z-27. F0.08\nN20 X24.\nG70 P10 Q20\nG00 Z5.\nG00 X150. Z100.\nT0505\nG97 S600 M03\nG00 X44. Z-26.\nG01 X28. F0.05\nG00 X44.\nG00 X150. Z100.\nM30\n";
-    let (dir, path) = temp_program("bush.nc", bush.as_bytes());
-    let table = dir.path().join("tools.toml");
     let bush_tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\ntip = 2\nentering_angle = 93\nshank = 16.0\n[[tool]]\nt = 5\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
-    std::fs::write(&table, bush_tools).unwrap();
-    let (out, v) = run_json(&[
-        "run",
-        path.to_str().unwrap(),
-        "--control",
+    let (out, v) = run_program(
+        "bush.nc",
+        bush,
         "fanuc-a",
-        "--stock",
-        "42x40",
-        "--bore",
-        "24",
-        "--tools",
-        table.to_str().unwrap(),
-    ]);
+        Some(bush_tools),
+        &["--stock", "42x40", "--bore", "24"],
+    );
     assert_eq!(
         (out.code, v["verdict"].as_str()),
         (0, Some("clean")),

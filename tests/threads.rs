@@ -588,13 +588,7 @@ fn run_no_entry(program: &str, table: Option<&str>, stock: &[&str]) -> serde_jso
 }
 
 fn warnings<'a>(j: &'a serde_json::Value, code: &str) -> Vec<&'a str> {
-    j["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|w| w["code"] == code)
-        .map(|w| w["message"].as_str().unwrap())
-        .collect()
+    common::warning_messages(j, code)
 }
 
 /// A tool with no entry that cuts only thread passes is taken for a sharp 60° threading

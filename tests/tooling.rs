@@ -182,15 +182,9 @@ fn a_tool_that_only_feeds_along_the_axis_is_a_drill() {
     let hand = 5.0 * (20.0 - 5.0 / 59f64.to_radians().tan()) + 2.5 * 5.0 / 59f64.to_radians().tan();
     for program in [g01, g74] {
         let v = run_without_table(program);
-        let removed = v["removed_area_mm2"].as_f64().unwrap();
-        assert!((removed - hand).abs() < 0.01, "{removed} vs {hand}");
-        let notes: Vec<&str> = v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .filter(|w| w["code"] == "LS-STOCK")
-            .map(|w| w["message"].as_str().unwrap())
-            .collect();
+        let area = removed(&v);
+        assert!((area - hand).abs() < 0.01, "{area} vs {hand}");
+        let notes = warning_messages(&v, "LS-STOCK");
         assert_eq!(notes.len(), 1, "{notes:?}");
         assert!(
             notes[0].contains("T03") && notes[0].contains("taken for a drill"),
@@ -216,13 +210,7 @@ fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
         gouges.iter().all(|g| g["assumed_tool"] == true),
         "{gouges:#?}"
     );
-    let notes: Vec<&str> = guessed["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|w| w["code"] == "LS-STOCK")
-        .map(|w| w["message"].as_str().unwrap())
-        .collect();
+    let notes = warning_messages(&guessed, "LS-STOCK");
     assert!(
         notes
             .iter()
@@ -231,12 +219,11 @@ fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
     );
     let bar = "[[tool]]\nt = 4\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n";
     let stated = run_with(program, Some(bar), &["--stock", "30x60"]);
-    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
     assert!(
-        (area(&guessed) - area(&stated)).abs() < 1e-6,
+        (removed(&guessed) - removed(&stated)).abs() < 1e-6,
         "{} vs {}",
-        area(&guessed),
-        area(&stated)
+        removed(&guessed),
+        removed(&stated)
     );
 }
 
@@ -253,15 +240,9 @@ fn an_offset_drill_with_no_entry_is_a_drill() {
     let v = run_with(program, None, &["--stock", "50x60"]);
     let slope = 1.0 / 59f64.to_radians().tan();
     let hand = 25.0 * 6.0 - (0.5 + 12.5) * slope;
-    let removed = v["removed_area_mm2"].as_f64().unwrap();
-    assert!((removed - hand).abs() < 0.01, "{removed} vs {hand}");
-    let notes: Vec<&str> = v["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|w| w["code"] == "LS-STOCK")
-        .map(|w| w["message"].as_str().unwrap())
-        .collect();
+    let area = removed(&v);
+    assert!((area - hand).abs() < 0.01, "{area} vs {hand}");
+    let notes = warning_messages(&v, "LS-STOCK");
     assert!(
         notes
             .iter()
@@ -286,13 +267,7 @@ fn a_tool_that_bores_by_hand_is_a_boring_bar() {
     let program = "O8000 (NUT M24X1.5)\nG21 G18 G40 G99\nT0303 (BORING BAR)\nG96 S150 M03\nG00 X20. Z2.\nG01 Z-20. F0.15\nX19.\nG00 Z2.\nX22.4\nG01 Z0. F0.1\nZ-20.\nX19.\nG00 Z2.\nG28 U0. W0.\nT0505 (ID THREAD 1.5)\nG97 S600 M03\nG00 X21. Z4.\nG76 P010060 Q50 R0.02\nG76 X24. Z-18. P920 Q250 F1.5\nG00 Z5.\nG28 U0. W0.\nM30\n";
     let blank = ["--stock", "36x30", "--bore", "18"];
     let guessed = run_with(program, None, &blank);
-    let notes: Vec<&str> = guessed["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|w| w["code"] == "LS-STOCK")
-        .map(|w| w["message"].as_str().unwrap())
-        .collect();
+    let notes = warning_messages(&guessed, "LS-STOCK");
     assert!(
         notes
             .iter()
@@ -309,12 +284,11 @@ fn a_tool_that_bores_by_hand_is_a_boring_bar() {
     );
     let bar = "[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n";
     let stated = run_with(program, Some(bar), &blank);
-    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
     assert!(
-        (area(&guessed) - area(&stated)).abs() < 1e-6,
+        (removed(&guessed) - removed(&stated)).abs() < 1e-6,
         "{} vs {}",
-        area(&guessed),
-        area(&stated)
+        removed(&guessed),
+        removed(&stated)
     );
 }
 
@@ -337,13 +311,7 @@ fn a_tool_that_only_plunges_is_a_blade_on_its_side() {
         "{:#}",
         with["gouges"]
     );
-    let notes: Vec<&str> = with["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|w| w["code"] == "LS-STOCK")
-        .map(|w| w["message"].as_str().unwrap())
-        .collect();
+    let notes = warning_messages(&with, "LS-STOCK");
     assert!(
         notes
             .iter()
@@ -351,8 +319,7 @@ fn a_tool_that_only_plunges_is_a_blade_on_its_side() {
         "{notes:?}"
     );
     let without = run_with(&format!("{od}M30\n"), None, &blank);
-    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
-    let groove_area = area(&with) - area(&without);
+    let groove_area = removed(&with) - removed(&without);
     assert!((groove_area - 9.0).abs() < 1e-6, "{groove_area}");
 }
 
@@ -369,20 +336,14 @@ fn a_g72_hub_step_does_not_turn_the_holders_hand() {
     let blank = ["--stock", "80x30", "--stock-z", "0.5"];
     let by_hand = run_with(program, Some(table), &blank);
     assert_eq!(by_hand["verdict"], "clean", "{:#}", by_hand["crashes"]);
-    let hand_notes = by_hand["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|w| w["code"] == "LS-HOLDER-HAND")
-        .count();
+    let hand_notes = warning_messages(&by_hand, "LS-HOLDER-HAND").len();
     assert_eq!(hand_notes, 0, "{:#}", by_hand["warnings"]);
     let stated = run_with(program, Some(&format!("{table}tip = 3\n")), &blank);
-    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
     assert!(
-        (area(&by_hand) - area(&stated)).abs() < 1e-9,
+        (removed(&by_hand) - removed(&stated)).abs() < 1e-9,
         "{} vs {}",
-        area(&by_hand),
-        area(&stated)
+        removed(&by_hand),
+        removed(&stated)
     );
 }
 
@@ -426,13 +387,7 @@ fn a_hand_bore_entered_along_a_chamfer_is_a_boring_bar() {
         None,
         &["--stock", "50x40"],
     );
-    let notes: Vec<&str> = chamfered["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|w| w["code"] == "LS-STOCK")
-        .map(|w| w["message"].as_str().unwrap())
-        .collect();
+    let notes = warning_messages(&chamfered, "LS-STOCK");
     assert!(
         notes
             .iter()
@@ -444,12 +399,11 @@ fn a_hand_bore_entered_along_a_chamfer_is_a_boring_bar() {
         None,
         &["--stock", "50x40"],
     );
-    let area = |v: &serde_json::Value| v["removed_area_mm2"].as_f64().unwrap();
     assert!(
-        (area(&chamfered) - area(&straight)).abs() < 0.5,
+        (removed(&chamfered) - removed(&straight)).abs() < 0.5,
         "{} vs {}",
-        area(&chamfered),
-        area(&straight)
+        removed(&chamfered),
+        removed(&straight)
     );
 }
 
@@ -462,17 +416,16 @@ fn a_part_off_chamfering_by_hand_with_no_table_is_a_blade() {
     let program = "O5006 (PIN D40 X 13 - PART OFF WITH A BACK CHAMFER)\nG21 G40 G99\nG50 S3000\nT0101\nG96 S200 M03\nG00 X52. Z2. M08\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X36.\nG01 Z0. F0.1\nX40. Z-2.\nZ-16.\nN20 X52.\nG70 P10 Q20\nG28 U0. W0.\nT0909 (PART-OFF BLADE 3 MM)\nG96 S120 M03\nG00 X52. Z-14.1\nG01 X50. F0.1\nX48. Z-13.\nX39.5\nX43.\nZ-12.3\nX40.6\nX39.1 Z-13.\nX30.\nG00 X52.\nG28 U0. W0.\nM30\n";
     let v = run_with(program, None, &["--stock", "50x40"]);
     assert_eq!(v["verdict"], "clean", "{:#}", v["gouges"]);
-    let notes: Vec<&str> = v["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|w| w["code"] == "LS-STOCK")
-        .map(|w| w["message"].as_str().unwrap())
-        .collect();
+    let notes = warning_messages(&v, "LS-STOCK");
     assert!(
         notes
             .iter()
             .any(|m| m.contains("T09") && m.contains("grooving blade")),
         "{notes:?}"
     );
+}
+
+/// A report's removed area, mm².
+fn removed(v: &serde_json::Value) -> f64 {
+    v["removed_area_mm2"].as_f64().unwrap()
 }

@@ -280,3 +280,14 @@ pub fn report_of(program: &str, args: &[&str]) -> serde_json::Value {
     let (out, report) = run_json(&path, &all);
     report.unwrap_or_else(|| panic!("{}", out.stderr))
 }
+
+/// The messages of a JSON report's warnings of this code.
+pub fn warning_messages<'a>(v: &'a serde_json::Value, code: &str) -> Vec<&'a str> {
+    v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|w| w["code"] == code)
+        .map(|w| w["message"].as_str().unwrap())
+        .collect()
+}
