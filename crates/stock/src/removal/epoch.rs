@@ -133,8 +133,11 @@ impl Strips {
             }
             worker.frags
         };
+        // A worker thread costs tens of µs; an epoch of few sweeps is still worth one: chained
+        // runs make 10⁵ contour moves a few hundred sweeps, which under the old bar of 256
+        // were cut on this thread after the next epoch was built, not beside it.
         let total: usize = lists.iter().map(Vec::len).sum();
-        if self.threads <= 1 || total < 256 {
+        if self.threads <= 1 || total == 0 {
             meanwhile();
             return work(engine);
         }
