@@ -711,3 +711,34 @@ fn a_bore_finished_under_g42_is_a_gouge_at_the_finishing_pass() {
     );
     assert!(warnings(&v, "LS-COMP-SIDE").is_empty());
 }
+
+/// Field run 8 (C): a skim 0.4 mm under the finished Φ29.8 (G01 Z-20 at X29), then an
+/// M30×2 thread cut into that diameter by G76. The skim is the turning tool's cut, judged
+/// as before: a gouge 0.4 deep from the chamfer to Z-20, 7.2 mm², at the skim's line, as without the thread. The thread's band (its passes up to the tool's full
+/// width) hid it: the part, whose crest is 0.8 mm small, was CLEAN. The same skim at
+/// X29.8 is clean: the thread's own teeth stay no gouge.
+#[test]
+fn a_skim_under_a_thread_crest_is_a_gouge_at_the_skim() {
+    let program = |skim: &str| {
+        format!("O0002 (M30X2 SHAFT: HAND SKIM, THEN THREAD)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X48. Z2.\nG71 U2. R0.5\nG71 P100 Q200 U0.4 W0.1 F0.25\nN100 G00 G42 X26.\nG01 Z0. F0.15\nX29.8 Z-1.9\nZ-25.\nX38.\nX40. Z-26.\nZ-45.\nN200 G01 G40 X48.\nG70 P100 Q200\nG00 X{skim} Z2.\nG01 Z-20. F0.1\nG00 X48.\nG00 X150. Z100.\nT0404\nG97 S600 M03\nG00 X32. Z5.\nG76 P020060 Q50 R0.05\nG76 X27.4 Z-22. P1300 Q400 F2.\nG00 X150. Z100.\nM30\n")
+    };
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\ntip_flat = 0.0\n";
+    let (out, v) = run_fanuc("crest.nc", &program("29."), tools, "45x60");
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert_eq!(gouges.len(), 1, "{gouges:#?}");
+    assert_eq!(gouges[0]["line"], 18, "{gouges:#?}");
+    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
+    assert!((depth - 0.4).abs() < 1e-3, "{gouges:#?}");
+    // 0.4 mm × 18.3 mm (from the chamfer's Φ29 at Z-1.7 to Z-20), less the skim's r0.8 nose's fillet at Z-20 and the chamfer's triangle
+    let area = gouges[0]["area_mm2"].as_f64().unwrap();
+    assert!((area - 7.2).abs() < 0.05, "{gouges:#?}");
+
+    let (out, v) = run_fanuc("crest-ok.nc", &program("29.8"), tools, "45x60");
+    assert_eq!(
+        (out.code, v["verdict"].as_str()),
+        (0, Some("clean")),
+        "{:#}",
+        v["gouges"]
+    );
+}

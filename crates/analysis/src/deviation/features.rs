@@ -12,7 +12,7 @@ use stock::{boolean, float_sweep, move_path, BoolOp, Mounts, Shape, Tool, ToolTa
 
 /// Whether `seg` is a feed of a tool that cuts features: a blade (or a grooving cycle's
 /// move), a drill, a threading tool (its own grooves, holes and reliefs).
-pub(super) fn cuts_features(seg: &Segment, tools: &ToolTable) -> bool {
+pub(crate) fn cuts_features(seg: &Segment, tools: &ToolTable) -> bool {
     seg.motion != Motion::Rapid
         && (tools.blade_cuts(seg)
             || matches!(
@@ -30,7 +30,19 @@ pub(super) fn sweeps(
     mounts: &mut Mounts,
     chord_tol: f64,
 ) -> Vec<Shape> {
-    let Some(bx) = gone
+    let features = |s: &Segment| s.motion == Motion::Feed && cuts_features(s, tools);
+    feed_sweeps(gone, segments, mounts, chord_tol, &features)
+}
+
+/// The union of the sweeps of the moves `which` takes that reach the box of `region`.
+pub(crate) fn feed_sweeps(
+    region: &[Shape],
+    segments: &[Segment],
+    mounts: &mut Mounts,
+    chord_tol: f64,
+    which: &dyn Fn(&Segment) -> bool,
+) -> Vec<Shape> {
+    let Some(bx) = region
         .iter()
         .map(|s| Rect::of(pts(&s.outer)))
         .reduce(|a, b| a.union(&b))
@@ -38,10 +50,7 @@ pub(super) fn sweeps(
         return vec![];
     };
     let mut parts: Vec<Shape> = vec![];
-    for seg in segments
-        .iter()
-        .filter(|s| s.motion == Motion::Feed && cuts_features(s, tools))
-    {
+    for seg in segments.iter().filter(|s| which(s)) {
         let mounted = mounts.of(seg);
         let outline = &mounted.edge;
         if !super::blame::may_sweep_over(&bx, seg, outline) {

@@ -3,7 +3,7 @@
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
 mod blame;
-mod features;
+pub(crate) mod features;
 pub(crate) use blame::moves_over;
 #[cfg(test)]
 mod tests;

@@ -11,7 +11,7 @@ use stock::{boolean, BoolOp, Shape, ToolTable};
 /// defines for itself, each read against the stock when its cycle began (`stock_at(k)`: the
 /// stock after `k` moves). What the thread moves cut between their deepest pass and the
 /// top of the tool's flanks is the thread's own business (spec/simulation.md: "its teeth
-/// are cut to this form"): no other intent speaks there.
+/// are cut to this form"): no other intent speaks there ([`thread_own`]).
 pub(crate) fn read(
     intents: &Intents,
     toolpath: &Toolpath,
@@ -22,13 +22,43 @@ pub(crate) fn read(
         Intents::Target(part) => vec![Intent::target(part.clone())],
         Intents::Program => own(toolpath, tools, stock_at),
     };
-    let bands = thread_bands(&toolpath.segments, tools);
-    if !bands.is_empty() {
+    if read.is_empty() {
+        return read;
+    }
+    let threads = thread_own(&toolpath.segments, tools);
+    if !threads.is_empty() {
         for i in &mut read {
-            i.zone = boolean(&i.zone, &bands, BoolOp::Difference);
+            i.zone = boolean(&i.zone, &threads, BoolOp::Difference);
         }
     }
     read
+}
+
+/// The thread bands ([`thread_bands`]) less what a turning tool's feed swept there: a skim
+/// 0.4 mm under the crest the thread is then cut into is the turning tool's cut, judged as
+/// before (README, Interpretation: other turning tools are judged on their own cuts), not
+/// the thread's (field run 8, C: the band hid it, and the part was reported clean).
+/// Blades and drills keep the band: a thread relief is the blade's own anyway.
+fn thread_own(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
+    let bands = thread_bands(segments, tools);
+    if bands.is_empty() {
+        return bands;
+    }
+    let turning = |s: &Segment| {
+        s.motion == Motion::Feed && !crate::deviation::features::cuts_features(s, tools)
+    };
+    let mut mounts = stock::Mounts::new(tools, stock::rear_tools(segments));
+    let swept = crate::deviation::features::feed_sweeps(
+        &bands,
+        segments,
+        &mut mounts,
+        crate::CHORD_TOL,
+        &turning,
+    );
+    if swept.is_empty() {
+        return bands;
+    }
+    boolean(&bands, &swept, BoolOp::Difference)
 }
 
 /// Where thread moves cut their teeth: above each pass (below, for a tool whose body lies
