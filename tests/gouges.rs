@@ -742,3 +742,40 @@ fn a_skim_under_a_thread_crest_is_a_gouge_at_the_skim() {
         v["gouges"]
     );
 }
+
+/// Field run 8 (J): an OD finished by hand under G42 whose start-up move ends on the part's
+/// corner (`G00 X26. Z2.` / `G42 G01 X30. Z0.`): the r0.8 nose, offset along that move,
+/// cuts 0.107 mm into the corner. The gouge is real; its cause named G41 (the code for the
+/// start-up move's own direction), the opposite of the right code the program has. The
+/// cause now names the start-up; the same contour started in the air is clean.
+#[test]
+fn a_nick_at_the_compensation_start_up_names_the_start_up() {
+    let program = |start: &str| {
+        format!("O0014 (OD FINISH BY HAND UNDER G42)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X44. Z2.\nG90 X41. Z-27. F0.2\nG00 X26. Z2.\n{start}Z-27.\nG40 G01 X44.\nG00 X150. Z100.\nM30\n")
+    };
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n";
+    let (out, v) = run_fanuc(
+        "nick.nc",
+        &program("G42 G01 X30. Z0. F0.1\n"),
+        tools,
+        "42x40",
+    );
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert_eq!(gouges.len(), 1, "{gouges:#?}");
+    assert_eq!(gouges[0]["line"], 8, "{gouges:#?}");
+    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
+    assert!((depth - 0.107).abs() < 0.002, "{gouges:#?}");
+    let cause = gouges[0]["cause"]["text"].as_str().unwrap();
+    assert!(cause.contains("starts the compensation"), "{cause}");
+    assert!(!cause.contains("G41"), "{cause}");
+
+    let air = program("G42 G00 X30. Z2.\nG01 Z0. F0.1\n");
+    let (out, v) = run_fanuc("air.nc", &air, tools, "42x40");
+    assert_eq!(
+        (out.code, v["verdict"].as_str()),
+        (0, Some("clean")),
+        "{:#}",
+        v["gouges"]
+    );
+}

@@ -132,7 +132,7 @@ pub(crate) fn gouge(
     // the move whose sweep reaches the deepest point (the one that made the region may
     // only have touched its edge, a compensation corner's arc; a later tool may have cut it
     // deeper, a finishing pass with a bigger nose)
-    let (seg, p) = (i..segments.len())
+    let (j, p) = (i..segments.len())
         .take(MAX_LOOKED_AT)
         .filter(|&j| segments[j].motion != Motion::Rapid)
         .find_map(|j| {
@@ -144,8 +144,9 @@ pub(crate) fn gouge(
                 return None;
             }
             crate::pose::first_reach(&m.edge, &segments[j], g.at, crate::CHORD_TOL, REACH)
-                .map(|p| (&segments[j], p))
+                .map(|p| (j, p))
         })?;
+    let seg = &segments[j];
     let facts = Facts::of(&tool_of(seg, s))?;
     // the deepest point relative to the reference, as mounted on the front post
     let below = p[1] < 0.0;
@@ -166,7 +167,8 @@ pub(crate) fn gouge(
                 ),
                 numbers: vec![("depth_mm", g.depth)],
             },
-            side => nose(g, &facts, seg, segments, (i, side)),
+            side => startup(g, intents, &facts, segments, j)
+                .unwrap_or_else(|| nose(g, &facts, seg, segments, (i, side))),
         },
     })
 }
@@ -359,6 +361,35 @@ fn leading(g: &Finding, intents: &[Intent], f: &Facts, seg: &Segment) -> Cause {
             ("depth_mm", g.depth),
         ],
     }
+}
+
+/// A nick the nose makes at the end of move `j` when that move starts the compensation of
+/// a contour and ends on the part: the control offsets the nose along it, and on the way
+/// the nose cuts the corner it arrives at (field run 8, J: an r0.8 nose from X26 Z2 onto
+/// the corner X30 Z0 under G42). The code is right; the start-up is not: naming G41/G42
+/// sent the programmer to the wrong fix.
+fn startup(
+    g: &Finding,
+    intents: &[Intent],
+    f: &Facts,
+    segments: &[Segment],
+    j: usize,
+) -> Option<Cause> {
+    let seg = &segments[j];
+    let starts = intents.iter().any(|it| {
+        it.owner
+            .is_some_and(|o| o.compensated && o.finish == j && o.tool == seg.tool)
+    });
+    let end = [seg.to.z, seg.to.r.abs()];
+    let at_end = geom::flat::dist([g.at[0], g.at[1].abs()], end) <= f.nose_radius + g.depth;
+    (starts && at_end).then(|| Cause {
+        kind: CauseKind::Compensation,
+        text: format!(
+            "the r{} nose cuts {:.3} mm into the part at line {}, the move that starts the compensation and ends on the part: the nose comes on along it and cuts the corner it arrives at (start the compensation on a move that ends clear of the part, then feed onto the contour)",
+            f.nose_radius, g.depth, seg.span.line
+        ),
+        numbers: vec![("nose_radius", f.nose_radius), ("depth_mm", g.depth)],
+    })
 }
 
 /// A gouge the nose made: its radius not compensated as this tool needs. The side the part

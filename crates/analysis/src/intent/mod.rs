@@ -39,6 +39,8 @@ pub struct Owner {
     pub began: usize,
     /// The index of the first move of the cycle that finishes it.
     pub finish: usize,
+    /// Cut under G41/G42: its first move (`finish`) is the compensation's start-up.
+    pub compensated: bool,
 }
 
 /// The stock a contour the program cuts is read against ([`Intent::finishing`],

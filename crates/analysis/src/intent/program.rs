@@ -139,6 +139,7 @@ fn own(
                 tool: s.tool,
                 began: i.began,
                 finish: i.after_move,
+                compensated: matches!(i.kind, IntendedKind::Compensated { .. }),
             });
             let contour = |intent: Option<Intent>| intent.map(|x| Intent { owner, ..x });
             // read against the stock where its cycle began; a contour wholly in the air
