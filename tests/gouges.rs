@@ -779,3 +779,53 @@ fn a_nick_at_the_compensation_start_up_names_the_start_up() {
         v["gouges"]
     );
 }
+
+/// Field run 7 (E), no table: T03 drills with G74 (taken for a Ø10 drill), T04 roughs a
+/// stepped bore by G71 from X15 (taken for a boring bar; W0.05 left on the Ø18 shoulder's
+/// face at Z-20), finishes by hand under G41 down that face to X18 and cancels with
+/// `G40 G00 X15.` along Z-20. The programmed point runs along the face, through the 0.05 mm
+/// the roughing left: a scrape by itself. The 0.149 mm crash is the outlines': the assumed
+/// bar meeting the stock the assumed Ø10 drill left below the face (with a stated drill of
+/// Ø12 or more there is no crash at all). It is possible: clean, exit 0. The same tool
+/// rapiding on 2 mm into that face (`G00 Z-22.` at X15) stays certain: the point itself
+/// goes 2 mm into the stock.
+#[test]
+fn a_rapid_grazing_a_face_guessed_tools_left_is_a_possible_crash() {
+    let program = |exit: &str| {
+        format!("O7006 (STEPPED BORE, NO TOOL TABLE)\nG21 G40 G99\nT0303\nG97 S700 M03\nG00 X0. Z5.\nG74 R0.5\nG74 Z-34. Q6000 F0.12\nG00 Z50.\nT0404\nG96 S160 M03\nG00 X15. Z3.\nG71 U1. R0.5\nG71 P10 Q20 U-0.4 W0.05 F0.15\nN10 G00 X30.\nG01 Z0.\nX28. Z-1.\nZ-20.\nX18.\nN20 X15.\nG00 Z50.\nG00 X32. Z3.\nG41 G01 X30. Z1. F0.08\nZ0.\nX28. Z-1.\nZ-20.\nX18.\n{exit}Z50.\nM30\n")
+    };
+    let (out, v) = run_program(
+        "bore.nc",
+        &program("G40 G00 X15.\n"),
+        "fanuc-a",
+        None,
+        &["--stock", "40x40"],
+    );
+    assert_eq!(
+        (out.code, v["verdict"].as_str()),
+        (0, Some("clean")),
+        "{:#}",
+        v["crashes"]
+    );
+    let crashes = v["crashes"].as_array().unwrap();
+    assert_eq!(crashes.len(), 1, "{crashes:#?}");
+    assert_eq!(crashes[0]["line"], 27, "{crashes:#?}");
+    assert_eq!(crashes[0]["assumed_tool"], true, "{crashes:#?}");
+
+    let (out, v) = run_program(
+        "deep.nc",
+        &program("G40 G00 X15.\nG00 Z-22.\n"),
+        "fanuc-a",
+        None,
+        &["--stock", "40x40"],
+    );
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let certain: Vec<_> = v["crashes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|c| c["assumed_tool"] != true)
+        .collect();
+    assert_eq!(certain.len(), 1, "{certain:#?}");
+    assert_eq!(certain[0]["line"], 28, "{certain:#?}");
+}

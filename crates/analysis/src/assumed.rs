@@ -201,11 +201,10 @@ fn in_convex(a: P, b: P, poly: &[P]) -> Option<(f64, f64)> {
     Some((lo, hi))
 }
 
-/// The length of `spans` (parameter intervals of a chord of length `len`) not covered by
-/// `cover`.
-fn uncovered(spans: &[(f64, f64)], cover: &mut [(f64, f64)], len: f64) -> f64 {
+/// The parts of `spans` (parameter intervals of a chord) not covered by `cover`.
+fn uncovered(spans: &[(f64, f64)], cover: &mut [(f64, f64)]) -> Vec<(f64, f64)> {
     cover.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let mut left = 0.0;
+    let mut left = Vec::new();
     for &(s0, s1) in spans {
         let mut at = s0;
         for &(c0, c1) in cover.iter() {
@@ -213,15 +212,15 @@ fn uncovered(spans: &[(f64, f64)], cover: &mut [(f64, f64)], len: f64) -> f64 {
                 continue;
             }
             if c0 > at {
-                left += c0 - at;
+                left.push((at, c0));
             }
             at = at.max(c1);
         }
         if s1 > at {
-            left += s1 - at;
+            left.push((at, s1));
         }
     }
-    left * len
+    left
 }
 
 /// The outlines an earlier move may have cut with (`m`: its tool as mounted): the edge and
@@ -260,15 +259,18 @@ fn guessed_feed(tools: &ToolTable, seg: &Segment) -> bool {
     seg.motion == Motion::Feed && guessed(tools, seg)
 }
 
-/// Whether move `i`'s reference path enters uncut stock: the blank less what the moves
-/// before it may have swept ([`may_have_cut`], folded into the section as the removal folds
-/// them). Only the moves whose sweeps can reach the path are looked at.
+/// Whether move `i`'s reference path enters uncut stock deeper than `deeper_than`: the
+/// blank less what the moves before it may have swept ([`may_have_cut`], folded into the
+/// section as the removal folds them). Only the moves whose sweeps can reach the path are
+/// looked at. A path that only grazes uncut stock (a G40 rapid along the 0.05 mm a roughing
+/// left on a shoulder's face, field run 7, E) is a crash only by the size of the outline
+/// around it: of a guessed tool, or of a drill whose size was guessed, no certain one.
 pub(crate) fn enters_uncut(
     i: usize,
     (segments, tools): (&[Segment], &ToolTable),
     blank: &[Shape],
     mounts: &mut Mounts,
-    chord_tol: f64,
+    (chord_tol, deeper_than): (f64, f64),
 ) -> bool {
     let blank = Region::new(blank);
     for [a, b] in section_chords(&segments[i], chord_tol) {
@@ -281,6 +283,8 @@ pub(crate) fn enters_uncut(
             [a[0].max(b[0]), a[1].max(b[1])],
         );
         let mut cover = Vec::new();
+        // every sweep near the chord: how deep a point of it lies in uncut stock
+        let mut near = Vec::new();
         // an earlier feed of a tool the table says nothing of covers this chord
         let mut unknown_near = false;
         for seg in &segments[..i] {
@@ -308,20 +312,46 @@ pub(crate) fn enters_uncut(
                 if seg.motion == Motion::Thread {
                     continue; // a thread's stamps are the removal's; they cut the teeth only
                 }
-                cover.extend(
-                    float_sweep(part, &path)
-                        .iter()
-                        .filter_map(|poly| in_convex(a, b, poly)),
-                );
+                for poly in float_sweep(part, &path) {
+                    cover.extend(in_convex(a, b, &poly));
+                    near.push(poly);
+                }
             }
         }
         let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
         let enters = if unknown_near { UNKNOWN_NOSE } else { ENTERS };
-        if uncovered(&spans, &mut cover, len) > enters {
+        let left = uncovered(&spans, &mut cover);
+        if left.iter().map(|(s0, s1)| s1 - s0).sum::<f64>() * len <= enters {
+            continue;
+        }
+        // how deep a point of the chord lies in the stock: to the blank's edge or the
+        // nearest sweep's, whichever is nearer
+        let depth = |p: P| {
+            near.iter()
+                .map(|poly| convex_distance(p, poly))
+                .fold(blank.depth_at(p, 2.0 * deeper_than), f64::min)
+        };
+        let at = |t: f64| [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
+        let deep = left.iter().any(|&(s0, s1)| {
+            let n =
+                (((s1 - s0) * len / (0.5 * deeper_than)).ceil() as usize).clamp(1, DEPTH_SAMPLES);
+            (0..=n).any(|k| depth(at(s0 + (s1 - s0) * k as f64 / n as f64)) > deeper_than)
+        });
+        if deep {
             return true;
         }
     }
     false
+}
+
+/// Most points of one stretch of a path in uncut stock looked at for its depth.
+const DEPTH_SAMPLES: usize = 64;
+
+/// The distance from `p` (outside it) to the convex polygon `poly`.
+fn convex_distance(p: P, poly: &[P]) -> f64 {
+    (0..poly.len())
+        .map(|k| geom::flat::segment_distance(p, poly[k], poly[(k + 1) % poly.len()]))
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// Near a feed of a tool the table says nothing of, a shorter stretch in uncut stock is no
@@ -522,8 +552,9 @@ mod tests {
         // (grown by ON_EDGE: 1e-7 mm of the 20 mm chord)
         assert!((lo - 0.25).abs() < 1e-8 && (hi - 0.75).abs() < 1e-8);
         assert!(in_convex([-5.0, 20.0], [15.0, 20.0], &square(0.0, 0.0, 10.0).outer).is_none());
-        let left = uncovered(&spans, &mut [(0.2, 0.5)], 20.0);
+        let left = uncovered(&spans, &mut [(0.2, 0.5)]);
+        let length: f64 = left.iter().map(|(a, b)| b - a).sum::<f64>() * 20.0;
         // the cover takes the first 4 mm inside (t 0.25 … 0.45), the second 4 mm stay
-        assert!((left - 4.0).abs() < 1e-12, "{left}");
+        assert!((length - 4.0).abs() < 1e-12, "{left:?}");
     }
 }

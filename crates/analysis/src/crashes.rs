@@ -121,7 +121,7 @@ pub(crate) fn mark_assumed(
                     (segments, s.tools),
                     &s.blank.shapes,
                     &mut mounts,
-                    chord_tol,
+                    (chord_tol, s.machine.rapid_cut_tol),
                 ) || core.is_some_and(|core| {
                     crate::assumed::core_enters_uncut(
                         c.segment,
