@@ -623,6 +623,30 @@ fn a_thread_tool_with_no_entry_is_a_60_degree_threading_insert() {
     }
 }
 
+/// Field run 7: a tool with no entry is taken for a threading insert of the angle its G76
+/// states (P's last two digits), not always 60°: a 55° BSP-style thread by `G76 P010055`
+/// reads 55°, and its pitch diameter is the 55° one's. A of 00 (straight infeed, any
+/// insert) says nothing of the insert: 60°. A stated tool keeps its own angle.
+#[test]
+fn a_thread_tool_with_no_entry_takes_the_angle_its_g76_states() {
+    let program = |a: &str| {
+        format!("O0001\nG21 G99\nT0101\nG97 S800 M03\nG00 X32. Z5.\nG76 P0100{a} Q50 R0.05\nG76 X27.4 Z-22. P1300 Q400 F2.\nG00 X150. Z100.\nM30\n")
+    };
+    let angle = |j: &serde_json::Value| j["threads"][0]["included_angle_deg"].as_f64().unwrap();
+    let j = run_no_entry(&program("55"), None, &["--stock", "30x40"]);
+    assert!((angle(&j) - 55.0).abs() < 0.05, "{:#}", j["threads"]);
+    let stock = warnings(&j, "LS-STOCK");
+    assert!(
+        stock.iter().any(|m| m.contains("threading 55°")),
+        "{stock:?}"
+    );
+    let j = run_no_entry(&program("00"), None, &["--stock", "30x40"]);
+    assert!((angle(&j) - 60.0).abs() < 0.05, "{:#}", j["threads"]);
+    let stated = "[[tool]]\nt = 1\nkind = \"threading\"\nangle = 60\ntip_flat = 0.0\n";
+    let j = run_no_entry(&program("55"), Some(stated), &["--stock", "30x40"]);
+    assert!((angle(&j) - 60.0).abs() < 0.05, "{:#}", j["threads"]);
+}
+
 /// The side is the one the passes come in from: an internal M30 × 2 by G76 in a Φ27.9
 /// bore with no table is an ID insert (the wall stays, the thread reaches its major Φ30),
 /// not the OD guess that warned "state T04 with side = id"; a tool with no entry that

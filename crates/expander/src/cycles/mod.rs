@@ -175,6 +175,9 @@ pub(crate) struct Output {
     /// G70: the move that starts the compensation (the block that wrote G41/G42; 0: the
     /// first move).
     pub(crate) comp_from: usize,
+    /// G76: the tool's included angle, where a word of the program states it (P's a, A);
+    /// a of 0 (straight infeed) says nothing of the insert.
+    pub(crate) tool_angle: Option<f64>,
 }
 
 impl Cycle<'_, '_> {

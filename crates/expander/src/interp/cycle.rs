@@ -57,6 +57,11 @@ impl Interp<'_> {
             self.motion = super::MotionMode::Cycle(code);
         }
         let mut out = out;
+        if let Some(angle) = out.tool_angle {
+            if !self.out.thread_angles.iter().any(|&(t, _)| t == self.tool) {
+                self.out.thread_angles.push((self.tool, angle));
+            }
+        }
         self.out.warnings.append(&mut out.warnings);
         self.out.dwell_s += out.dwell_s;
         self.record_intended(std::mem::take(&mut out.intended), b.span);

@@ -112,6 +112,10 @@ pub struct Toolpath {
     /// The tool offsets the T words called, `(tool, offset)` in order of first use
     /// (`T0101` → `(1, 1)`; offset 00, a cancel, left out): the setup sheet's offsets.
     pub tool_offsets: Vec<(u32, u32)>,
+    /// The included angle the program's first G76 of each tool states for it (P's last two
+    /// digits, Haas A), `(tool, degrees)`: a tool with no entry that threads is taken to be
+    /// of that angle (docs/field-rules.md §17).
+    pub thread_angles: Vec<(u32, f64)>,
 }
 
 /// Expand a parsed program into segments.

@@ -102,10 +102,12 @@ struct Tally {
 }
 
 impl Tally {
-    fn taken_for(&self) -> Option<Tool> {
+    /// What the tool is taken for; a threading one of the included angle its G76 states
+    /// (`thread_angle`), else 60°.
+    fn taken_for(&self, thread_angle: Option<f64>) -> Option<Tool> {
         match (self.threads, self.on_axis, self.feeds) {
             (1.., 0, 0) => Some(Tool::Threading {
-                angle: 60.0,
+                angle: thread_angle.unwrap_or(60.0),
                 tip_flat: 0.0,
                 // a thread that says nothing of its side is an outside one, the usual
                 side: if self.outside < 0 {
@@ -237,7 +239,12 @@ impl ToolTable {
         tallies
             .iter()
             .filter_map(|t| {
-                t.taken_for().map(|tool| ToolFromUse {
+                let angle = toolpath
+                    .thread_angles
+                    .iter()
+                    .find(|&&(tool, _)| tool == t.t)
+                    .map(|&(_, a)| a);
+                t.taken_for(angle).map(|tool| ToolFromUse {
                     t: t.t,
                     tool,
                     first: t.first,

@@ -364,6 +364,7 @@ pub(super) fn run(c: &mut super::Cycle) -> Result<super::Output, Diagnostic> {
         moves,
         lead: Some(params.lead),
         thread_phase: params.start_angle / 360.0,
+        tool_angle: (params.at.a.span.is_some() && params.a > 0.0).then_some(params.a),
         ..super::Output::default()
     };
     if first_depth_exceeds_height(&params) {
