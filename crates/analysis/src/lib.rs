@@ -20,6 +20,7 @@ mod measure;
 mod note;
 mod pose;
 mod retract;
+mod sweeps;
 mod threads;
 
 pub use crashes::MAX_TOOL_POSES;

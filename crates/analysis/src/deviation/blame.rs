@@ -4,7 +4,7 @@ use super::Finding;
 use expander::Segment;
 use geom::flat::{clip_to_hull, pts, P};
 use geom::{ring, Rect};
-use stock::{area, boolean, float_sweep, move_path, BoolOp, Mounts, Outline, Shape};
+use stock::{area, boolean, float_sweep, move_path, BoolOp, Mounts, Shape};
 
 /// For every gouge, the first segment whose tool sweep overlaps it by more than a sliver.
 /// Each segment's sweep is built once and tried on the gouges still unnamed whose box it
@@ -38,7 +38,7 @@ pub(super) fn blame(
         let near: Vec<usize> = unnamed
             .iter()
             .copied()
-            .filter(|&g| may_sweep_over(&boxes[g], seg, outline))
+            .filter(|&g| crate::sweeps::may_sweep_over(&boxes[g], seg, outline))
             .collect();
         if near.is_empty() {
             continue;
@@ -100,7 +100,7 @@ pub(crate) fn certain(
                     && (reach.intersects(&boxes[g])
                         || m.core
                             .as_deref()
-                            .is_some_and(|c| may_sweep_over(&boxes[g], seg, c)))
+                            .is_some_and(|c| crate::sweeps::may_sweep_over(&boxes[g], seg, c)))
             })
             .collect();
         if near.is_empty() {
@@ -119,22 +119,6 @@ pub(crate) fn certain(
         }
     }
     certain
-}
-
-/// Whether the sweep of `seg` may reach the box `bb` (false only when it surely does not).
-pub(super) fn may_sweep_over(bb: &Rect, seg: &Segment, outline: &Outline) -> bool {
-    let Some((lo, hi)) = outline.bbox() else {
-        return false;
-    };
-    let (sz0, sz1) = (seg.from.z.min(seg.to.z), seg.from.z.max(seg.to.z));
-    let (sr0, sr1) = (seg.from.r.min(seg.to.r), seg.from.r.max(seg.to.r));
-    // arcs may bulge beyond their end points by up to their radius
-    let bulge = seg.arc.map_or(0.0, |a| a.center.dist(seg.from));
-    // (a sweep reaching below the axis is folded: only its Z range is known beforehand)
-    let folded = sr0 + lo[1] - bulge < 0.0;
-    !(sz1 + hi[0] + bulge < bb.min.z
-        || sz0 + lo[0] - bulge > bb.max.z
-        || (!folded && (sr1 + hi[1] + bulge < bb.min.r || sr0 + lo[1] - bulge > bb.max.r)))
 }
 
 /// The least overlap that makes a move the maker of `region`: 10⁻⁶ mm times its perimeter
@@ -256,7 +240,7 @@ pub(crate) fn moves_over(
     for (i, seg) in segments.iter().enumerate() {
         let mounted = mounts.of(seg);
         let near: Vec<usize> = (0..regions.len())
-            .filter(|&g| may_sweep_over(&boxes[g], seg, &mounted.edge))
+            .filter(|&g| crate::sweeps::may_sweep_over(&boxes[g], seg, &mounted.edge))
             .collect();
         if near.is_empty() {
             continue;

@@ -3,7 +3,7 @@
 //! moves whose sweeps made it (spec/simulation.md, "The intended shape").
 
 mod blame;
-pub(crate) mod features;
+mod features;
 pub(crate) use blame::moves_over;
 #[cfg(test)]
 mod tests;
@@ -146,7 +146,7 @@ pub fn deviation(
     let mut plain = findings(plain, &depth_in, tol);
     let mut by_features = findings(by_features, &depth_in, tol);
     blame::blame(&mut plain, segments, &mut mounts, chord_tol, &|_| true);
-    let feature = |s: &Segment| features::cuts_features(s, tools);
+    let feature = |s: &Segment| crate::sweeps::cuts_features(s, tools);
     blame::blame(&mut by_features, segments, &mut mounts, chord_tol, &feature);
     out.gouges = plain;
     out.gouges.append(&mut by_features);
@@ -270,7 +270,7 @@ fn cut_later(
         return false;
     };
     let (i, seg) = seg;
-    if !features::cuts_features(seg, tools) {
+    if !crate::sweeps::cuts_features(seg, tools) {
         return false;
     }
     in_later_contour(g, intents, (i, seg), world, false)

@@ -44,17 +44,10 @@ fn thread_own(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
     if bands.is_empty() {
         return bands;
     }
-    let turning = |s: &Segment| {
-        s.motion == Motion::Feed && !crate::deviation::features::cuts_features(s, tools)
-    };
+    let turning = |s: &Segment| s.motion == Motion::Feed && !crate::sweeps::cuts_features(s, tools);
     let mut mounts = stock::Mounts::new(tools, stock::rear_tools(segments));
-    let swept = crate::deviation::features::feed_sweeps(
-        &bands,
-        segments,
-        &mut mounts,
-        crate::CHORD_TOL,
-        &turning,
-    );
+    let swept =
+        crate::sweeps::feed_sweeps(&bands, segments, &mut mounts, crate::CHORD_TOL, &turning);
     if swept.is_empty() {
         return bands;
     }
