@@ -429,3 +429,30 @@ fn a_part_off_chamfering_by_hand_with_no_table_is_a_blade() {
 fn removed(v: &serde_json::Value) -> f64 {
     v["removed_area_mm2"].as_f64().unwrap()
 }
+
+/// Field run 8 (p02): a tool with no entry that only runs a G74 face groove off the axis is
+/// taken for a face-grooving blade, as seed 002 states one (3 mm, its width spanning +x from
+/// its inner corner, its body toward +Z), not the radial default, which stood 20 mm along X
+/// and swept that much of the face (56 mm² of a 24 mm² groove in the field run). O0210 with
+/// no table removes what it removes with seed 002's own table (the drill is the assumed
+/// Ø10 118° one either way).
+#[test]
+fn a_face_groove_with_no_entry_is_cut_by_a_face_blade() {
+    let program = std::fs::read_to_string(asset("programs/O0210.nc")).unwrap();
+    let table = std::fs::read_to_string(asset("tools/seed002-face3-drill10.toml")).unwrap();
+    let stated = run_with(&program, Some(&table), &["--stock", "40x40"]);
+    let guessed = run_with(&program, None, &["--stock", "40x40"]);
+    assert!(
+        (removed(&guessed) - removed(&stated)).abs() < 1e-3,
+        "{} against {}",
+        removed(&guessed),
+        removed(&stated)
+    );
+    let notes = common::warning_messages(&guessed, "LS-STOCK");
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T01") && m.contains("width +x, shank +z")),
+        "{notes:?}"
+    );
+}

@@ -26,7 +26,7 @@
 //! would show.
 
 use super::{AxisDir, GroovingBlade, ThreadSide, Tool, ToolTable};
-use expander::{Intended, IntendedKind, Motion, Segment, Toolpath};
+use expander::{Intended, IntendedKind, Motion, Segment, ToolHint, Toolpath};
 
 /// What a tool with no entry is taken for from its moves.
 #[derive(Debug, Clone, PartialEq)]
@@ -99,6 +99,8 @@ struct Tally {
     plunges: usize,
     faces: bool,
     first_plunge: i64,
+    /// Pecks of a face-grooving cycle off the axis (G74's feeds along Z).
+    face_plunges: usize,
 }
 
 impl Tally {
@@ -117,6 +119,19 @@ impl Tally {
                 },
             }),
             (0, 1.., 0) => Some(ASSUMED_DRILL),
+            // a face groove's blade stands along Z: seed 002's, the width spanning +x from
+            // its inner corner, the body toward +Z (the radial default swept 20 mm of face)
+            (0, 0, n)
+                if self.face_plunges > 0
+                    && self.face_plunges + self.plunges == n
+                    && self.plunges <= self.face_plunges =>
+            {
+                Some(Tool::Grooving(GroovingBlade {
+                    width_dir: AxisDir::PlusX,
+                    shank_dir: AxisDir::PlusZ,
+                    ..ASSUMED_BLADE
+                }))
+            }
             (0, 0, n) if self.plunges == n && !self.faces && self.first_plunge != 0 => {
                 Some(Tool::Grooving(GroovingBlade {
                     // a blade plunged outward, from a bore, is an ID one: its body toward the axis
@@ -192,6 +207,7 @@ impl ToolTable {
                                     plunges: 0,
                                     faces: false,
                                     first_plunge: 0,
+                                    face_plunges: 0,
                                 });
                                 tallies.len() - 1
                             })
@@ -323,6 +339,10 @@ const MIN_PASS: f64 = 2.0;
 fn count_plunge(tally: &mut Tally, s: &Segment) {
     let dr = s.to.r.abs() - s.from.r.abs();
     let dz = (s.to.z - s.from.z).abs();
+    if s.arc.is_none() && s.hint == ToolHint::Grooving && dr.abs() < dz {
+        tally.face_plunges += 1;
+        return;
+    }
     if s.arc.is_some() || (dr.abs() < dz && dz >= MIN_PASS) {
         return;
     }
