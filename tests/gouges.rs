@@ -714,9 +714,10 @@ fn a_bore_finished_under_g42_is_a_gouge_at_the_finishing_pass() {
 
 /// Field run 8 (C): a skim 0.4 mm under the finished Φ29.8 (G01 Z-20 at X29), then an
 /// M30×2 thread cut into that diameter by G76. The skim is the turning tool's cut, judged
-/// as before: a gouge 0.4 deep from the chamfer to Z-20, 7.2 mm², at the skim's line, as without the thread. The thread's band (its passes up to the tool's full
-/// width) hid it: the part, whose crest is 0.8 mm small, was CLEAN. The same skim at
-/// X29.8 is clean: the thread's own teeth stay no gouge.
+/// as before: a gouge 0.4 deep from the chamfer to Z-20, 7.2 mm², at the skim's line, as
+/// without the thread. The thread's band (its passes up to the tool's full width) hid it:
+/// the part, whose crest is 0.8 mm small, was CLEAN. The same skim at X29.8 is clean: the
+/// thread's own teeth stay no gouge.
 #[test]
 fn a_skim_under_a_thread_crest_is_a_gouge_at_the_skim() {
     let program = |skim: &str| {
@@ -828,4 +829,26 @@ fn a_rapid_grazing_a_face_guessed_tools_left_is_a_possible_crash() {
         .collect();
     assert_eq!(certain.len(), 1, "{certain:#?}");
     assert_eq!(certain[0]["line"], 28, "{certain:#?}");
+}
+
+/// Field run 8 (I): an OD finished by hand under G41 with a CNMG r0.8 in a PCLNR (tip 3,
+/// from the holder's hand). The programmed path runs on Ø30; the control offsets the nose
+/// to the part's side, and it cuts 2 × 0.8 = 1.6 mm below the surface over 27 mm. The
+/// gouge's cause said "the programmed path itself cuts 1.600 mm below the intended
+/// surface", which sent the programmer to a path that is right; it now names the code that
+/// is wrong and the one to write.
+#[test]
+fn a_gouge_from_the_wrong_compensation_side_names_the_code() {
+    let program = "O0015 (OD FINISH BY HAND UNDER G41)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X44. Z2.\nG90 X36. Z-27. F0.2\nX31.\nG00 X30. Z4.\nG41 G01 Z2. F0.1\nZ-27.\nG40 G01 X44.\nG00 X150. Z100.\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n";
+    let (out, v) = run_fanuc("g41-od.nc", program, tools, "40x40");
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert_eq!(gouges.len(), 1, "{gouges:#?}");
+    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
+    assert!((depth - 1.6).abs() < 1e-3, "{gouges:#?}");
+    let cause = gouges[0]["cause"]["text"].as_str().unwrap();
+    assert!(cause.starts_with("G41 from line 9"), "{cause}");
+    assert!(cause.contains("write G42"), "{cause}");
+    assert!(!cause.contains("programmed path"), "{cause}");
 }

@@ -30,7 +30,7 @@ pub use findings::{
 };
 pub use fixture::{Fixture, FixtureCrash, Obstacle, GRIPPED_LENGTH, TAILSTOCK_CENTRE};
 pub use intent::program::{stock_marks, thread_marks};
-pub use intent::{Intent, Owner, Stages};
+pub use intent::{Comp, Intent, Owner, Stages};
 pub use measure::{
     deepest_radius, groove_deviation, least_gap, surface_radius_at, thread_starts, threads,
     Reference, Surface, Thread, ThreadForm, ThreadPasses,

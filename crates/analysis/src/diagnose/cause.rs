@@ -118,6 +118,9 @@ pub(crate) fn gouge(
             numbers: vec![("depth_mm", g.depth)],
         });
     }
+    if let Some(cause) = offset_into_part(g, intents, segments, i, s) {
+        return Some(cause);
+    }
     let radius = Facts::of(&tool_of(seg, s)).map_or(0.0, |f| f.nose_radius);
     if let Some(j) = program_enters(g, intents, segments, i, radius) {
         return Some(Cause {
@@ -363,6 +366,41 @@ fn leading(g: &Finding, intents: &[Intent], f: &Facts, seg: &Segment) -> Cause {
     }
 }
 
+/// A gouge along a contour whose G41/G42 contradicts its tool's stated tip (LS-COMP-SIDE):
+/// the programmed path lies on the surface, and the control offsets the nose into the part
+/// (field run 8, I: a G41 OD finish said "the programmed path itself cuts 1.600 mm below
+/// the intended surface").
+fn offset_into_part(
+    g: &Finding,
+    intents: &[Intent],
+    segments: &[Segment],
+    i: usize,
+    s: &Settings,
+) -> Option<Cause> {
+    let seg = &segments[i];
+    let (owner, comp) = intents.iter().find_map(|it| {
+        let o = it.owner?;
+        let c = o.comp?;
+        let along = it.outline.iter().any(|(pts, _)| {
+            pts.windows(2)
+                .any(|w| segment_distance(g.nearest, w[0], w[1]) <= 1e-3)
+        });
+        (c.wrong_side && o.tool == seg.tool && i >= o.finish && along).then_some((o, c))
+    })?;
+    let (code, other) = comp.codes();
+    let radius = Facts::of(&tool_of(seg, s)).map_or(0.0, |f| f.nose_radius);
+    Some(Cause {
+        kind: CauseKind::Compensation,
+        text: format!(
+            "{code} from line {} offsets the r{radius} nose into the part: T{:02}'s tip puts the part on the other side of this contour (LS-COMP-SIDE), so the nose cuts {:.3} mm below the surface (write {other})",
+            segments.get(owner.finish).map_or(seg.span.line, |f| f.span.line),
+            seg.tool,
+            g.depth
+        ),
+        numbers: vec![("nose_radius", radius), ("depth_mm", g.depth)],
+    })
+}
+
 /// A nick the nose makes at the end of move `j` when that move starts the compensation of
 /// a contour and ends on the part: the control offsets the nose along it, and on the way
 /// the nose cuts the corner it arrives at (field run 8, J: an r0.8 nose from X26 Z2 onto
@@ -378,7 +416,7 @@ fn startup(
     let seg = &segments[j];
     let starts = intents.iter().any(|it| {
         it.owner
-            .is_some_and(|o| o.compensated && o.finish == j && o.tool == seg.tool)
+            .is_some_and(|o| o.comp.is_some() && o.finish == j && o.tool == seg.tool)
     });
     let end = [seg.to.z, seg.to.r.abs()];
     let at_end = geom::flat::dist([g.at[0], g.at[1].abs()], end) <= f.nose_radius + g.depth;

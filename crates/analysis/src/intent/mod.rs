@@ -39,8 +39,29 @@ pub struct Owner {
     pub began: usize,
     /// The index of the first move of the cycle that finishes it.
     pub finish: usize,
-    /// Cut under G41/G42: its first move (`finish`) is the compensation's start-up.
-    pub compensated: bool,
+    /// Cut under G41/G42 (its first move, `finish`, is the compensation's start-up): how.
+    pub comp: Option<Comp>,
+}
+
+/// How a contour cut under G41/G42 was compensated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Comp {
+    /// The code the program wrote: G42 keeps the part on the left of the path.
+    pub part_on_left: bool,
+    /// The tool's stated tip puts the part on the other side (LS-COMP-SIDE): the nose is
+    /// offset into the part.
+    pub wrong_side: bool,
+}
+
+impl Comp {
+    /// The code the program wrote and the one its tool needs.
+    pub fn codes(self) -> (&'static str, &'static str) {
+        if self.part_on_left {
+            ("G42", "G41")
+        } else {
+            ("G41", "G42")
+        }
+    }
 }
 
 /// The stock a contour the program cuts is read against ([`Intent::finishing`],

@@ -132,7 +132,13 @@ fn own(
                 tool: s.tool,
                 began: i.began,
                 finish: i.after_move,
-                compensated: matches!(i.kind, IntendedKind::Compensated { .. }),
+                comp: match i.kind {
+                    IntendedKind::Compensated { part_on_left } => Some(super::Comp {
+                        part_on_left,
+                        wrong_side: wrong_side(i, segments, tools),
+                    }),
+                    _ => None,
+                },
             });
             let contour = |intent: Option<Intent>| intent.map(|x| Intent { owner, ..x });
             // read against the stock where its cycle began; a contour wholly in the air
@@ -205,11 +211,11 @@ pub(crate) fn comp_side_notes(toolpath: &Toolpath, tools: &ToolTable) -> Vec<cra
             let IntendedKind::Compensated { part_on_left } = i.kind else {
                 return None;
             };
-            let (code, other) = if part_on_left {
-                ("G42", "G41")
-            } else {
-                ("G41", "G42")
-            };
+            let (code, other) = super::Comp {
+                part_on_left,
+                wrong_side: true,
+            }
+            .codes();
             Some(crate::Note {
                 span: i.span,
                 code: "LS-COMP-SIDE",
