@@ -836,7 +836,7 @@ fn a_rapid_grazing_a_face_guessed_tools_left_is_a_possible_crash() {
 /// to the part's side, and it cuts 2 × 0.8 = 1.6 mm below the surface over 27 mm. The
 /// gouge's cause said "the programmed path itself cuts 1.600 mm below the intended
 /// surface", which sent the programmer to a path that is right; it now names the code that
-/// is wrong and the one to write.
+/// is wrong and the one to write, and offers that change, checked by re-running.
 #[test]
 fn a_gouge_from_the_wrong_compensation_side_names_the_code() {
     let program = "O0015 (OD FINISH BY HAND UNDER G41)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X44. Z2.\nG90 X36. Z-27. F0.2\nX31.\nG00 X30. Z4.\nG41 G01 Z2. F0.1\nZ-27.\nG40 G01 X44.\nG00 X150. Z100.\nM30\n";
@@ -851,4 +851,12 @@ fn a_gouge_from_the_wrong_compensation_side_names_the_code() {
     assert!(cause.starts_with("G41 from line 9"), "{cause}");
     assert!(cause.contains("write G42"), "{cause}");
     assert!(!cause.contains("programmed path"), "{cause}");
+    // the fix, checked by re-running the program with G42 there: the gouge is gone
+    let remedy = &gouges[0]["remedy"];
+    assert_eq!(
+        remedy["text"], "write G42 instead of G41 at line 9",
+        "{remedy:#}"
+    );
+    assert_eq!(remedy["line"], 9, "{remedy:#}");
+    assert_eq!(remedy["verified"], true, "{remedy:#}");
 }

@@ -174,8 +174,7 @@ impl analysis::diagnose::Rerun for Rerunner<'_> {
         let tools = self.settings.tools;
         let (text, tools) = match change {
             Change::Tool { t, entry } => (self.text.to_string(), tools.replaced(*t, entry).ok()?),
-            Change::Insert { line, text } => (inserted(self.text, *line, text)?, tools.clone()),
-            Change::Feed { line } => (fed(self.text, *line)?, tools.clone()),
+            program => (program.edited(self.text)?, tools.clone()),
         };
         let toolpath = expanded(&text, self.macros, &tools)?;
         let settings = analysis::Settings {
@@ -191,34 +190,3 @@ impl analysis::diagnose::Rerun for Rerunner<'_> {
     }
 }
 
-/// `source` with `blocks` inserted before its 1-based line `line` (`src/rerun.rs`).
-fn inserted(source: &str, line: u32, blocks: &str) -> Option<String> {
-    let at = line_start(source, line)?;
-    Some(format!("{}{blocks}\n{}", &source[..at], &source[at..]))
-}
-
-/// `source` with the first rapid word (`G0`, `G00`) of its 1-based line `line` made `G01`
-/// (`src/rerun.rs`).
-fn fed(source: &str, line: u32) -> Option<String> {
-    let at = line_start(source, line)?;
-    let end = source[at..].find('\n').map_or(source.len(), |e| at + e);
-    let text = &source.as_bytes()[at..end];
-    let (word, len) = (0..text.len()).find_map(|k| {
-        let digits = text[k + 1..].iter().take_while(|b| b.is_ascii_digit()).count();
-        let rapid = text[k].eq_ignore_ascii_case(&b'G')
-            && digits > 0
-            && text[k + 1..k + 1 + digits].iter().all(|&b| b == b'0')
-            && text.get(k + 1 + digits) != Some(&b'.');
-        rapid.then_some((k, 1 + digits))
-    })?;
-    Some(format!("{}G01{}", &source[..at + word], &source[at + word + len..]))
-}
-
-/// The byte where 1-based line `line` of `source` starts.
-fn line_start(source: &str, line: u32) -> Option<usize> {
-    let mut at = 0;
-    for _ in 1..line {
-        at += source[at..].find('\n')? + 1;
-    }
-    Some(at)
-}

@@ -72,17 +72,7 @@ impl Rerun for Job {
     fn rerun(&self, change: &Change) -> Option<Rerunning> {
         let (text, tools) = match change {
             Change::Tool { t, entry } => (self.text.clone(), self.tools.replaced(*t, entry).ok()?),
-            Change::Insert { line, text } => {
-                let mut lines: Vec<&str> = self.text.lines().collect();
-                lines.insert(*line as usize - 1, text);
-                (lines.join("\n") + "\n", self.tools.clone())
-            }
-            Change::Feed { line } => {
-                let mut lines: Vec<String> = self.text.lines().map(String::from).collect();
-                let l = &mut lines[*line as usize - 1];
-                *l = l.replacen("G00", "G01", 1);
-                (lines.join("\n") + "\n", self.tools.clone())
-            }
+            program => (program.edited(&self.text)?, self.tools.clone()),
         };
         let (tp, findings) = self.run(&text, &tools);
         Some(Rerunning {

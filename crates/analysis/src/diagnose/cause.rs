@@ -378,15 +378,7 @@ fn offset_into_part(
     s: &Settings,
 ) -> Option<Cause> {
     let seg = &segments[i];
-    let (owner, comp) = intents.iter().find_map(|it| {
-        let o = it.owner?;
-        let c = o.comp?;
-        let along = it.outline.iter().any(|(pts, _)| {
-            pts.windows(2)
-                .any(|w| segment_distance(g.nearest, w[0], w[1]) <= 1e-3)
-        });
-        (c.wrong_side && o.tool == seg.tool && i >= o.finish && along).then_some((o, c))
-    })?;
+    let (owner, comp) = wrong_side_owner(g, intents, segments, i)?;
     let (code, other) = comp.codes();
     let radius = Facts::of(&tool_of(seg, s)).map_or(0.0, |f| f.nose_radius);
     Some(Cause {
@@ -398,6 +390,26 @@ fn offset_into_part(
             g.depth
         ),
         numbers: vec![("nose_radius", radius), ("depth_mm", g.depth)],
+    })
+}
+
+/// The contour `g` lies along whose G41/G42 contradicts its tool's stated tip, when move
+/// `i` (its maker) is that tool's, from the contour's start on.
+pub(super) fn wrong_side_owner(
+    g: &Finding,
+    intents: &[Intent],
+    segments: &[Segment],
+    i: usize,
+) -> Option<(crate::Owner, crate::Comp)> {
+    let seg = &segments[i];
+    intents.iter().find_map(|it| {
+        let o = it.owner?;
+        let c = o.comp?;
+        let along = it.outline.iter().any(|(pts, _)| {
+            pts.windows(2)
+                .any(|w| segment_distance(g.nearest, w[0], w[1]) <= 1e-3)
+        });
+        (c.wrong_side && o.tool == seg.tool && i >= o.finish && along).then_some((o, c))
     })
 }
 

@@ -4,6 +4,7 @@
 //! blank ([`Rerun`]), loses the finding and gains none — otherwise the cause stands alone.
 
 mod cause;
+mod edit;
 mod insert;
 mod remedy;
 

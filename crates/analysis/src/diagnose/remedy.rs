@@ -26,6 +26,11 @@ pub enum Change {
         /// 1-based line of the main program.
         line: u32,
     },
+    /// Line `line`'s G41 made G42, or its G42 made G41.
+    Swap {
+        /// 1-based line of the main program.
+        line: u32,
+    },
     /// These blocks inserted before line `line` of the main program.
     Insert {
         /// 1-based line of the main program.
@@ -128,6 +133,9 @@ impl Tries<'_> {
     /// flank needs (of the table first, else an ISO one).
     pub(crate) fn for_gouge(&mut self, g: &Finding) -> Option<Remedy> {
         let cause = g.cause.as_ref()?;
+        if cause.kind == CauseKind::Compensation {
+            return self.swap_side(g);
+        }
         if cause.kind != CauseKind::TrailingEdge {
             return None;
         }
@@ -152,6 +160,27 @@ impl Tries<'_> {
             }
         }
         None
+    }
+
+    /// A checked remedy for a gouge along a contour compensated to the wrong side of its
+    /// tool's stated tip: the other code where the compensation starts.
+    fn swap_side(&mut self, g: &Finding) -> Option<Remedy> {
+        let i = g.made_by?;
+        let (owner, comp) =
+            super::cause::wrong_side_owner(g, &self.original.intents, self.segments, i)?;
+        let line = self.segments.get(owner.finish)?.span.line;
+        let (code, other) = comp.codes();
+        if !self.fixes(&Change::Swap { line }, Cured::Gouge(g)) {
+            return None;
+        }
+        Some(Remedy {
+            text: format!("write {other} instead of {code} at line {line}"),
+            tool: None,
+            line: Some(line),
+            edit: Some(other.into()),
+            verified: true,
+            ghost: vec![],
+        })
     }
 
     /// The cutting outline of the tool a `Change::Tool` puts on `seg`, as mounted.
