@@ -172,7 +172,12 @@ fn conclude(
         sim,
         moves: segments.len(),
     };
-    let intents_read = intent::program::read(intents, toolpath, s.tools, &|k| stocks.at(k));
+    let intents_read = intent::program::read(
+        intents,
+        toolpath,
+        s.tools,
+        (&|k| stocks.at(k), &|k| stocks.kept_at(k)),
+    );
     let deviation = (!intents_read.is_empty()).then(|| {
         deviation::deviation(
             &s.blank.shapes,

@@ -150,7 +150,8 @@ pub fn deviation(
     blame::blame(&mut by_features, segments, &mut mounts, chord_tol, &feature);
     out.gouges = plain;
     out.gouges.append(&mut by_features);
-    // the thread bands (left out of every zone: a thread's own form) are stated too
+    // the thread bands (what a thread cut of them is left out of every zone: its own
+    // form) are stated too
     let bands = std::cell::OnceCell::new();
     let band_edges = || {
         bands.get_or_init(|| {

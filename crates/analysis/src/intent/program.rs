@@ -7,16 +7,20 @@ use crate::Intents;
 use expander::{IntendedKind, Motion, Segment, Toolpath};
 use stock::{boolean, BoolOp, Shape, ToolTable};
 
+/// The stock after `k` moves where the run kept it (`None` where it did not).
+type KeptAt<'a> = dyn Fn(usize) -> Option<Vec<Shape>> + 'a;
+
 /// The intents the run is judged against: `intents`' drawing, else the shapes the program
 /// defines for itself, each read against the stock when its cycle began (`stock_at(k)`: the
 /// stock after `k` moves). What the thread moves cut between their deepest pass and the
 /// top of the tool's flanks is the thread's own business (spec/simulation.md: "its teeth
-/// are cut to this form"): no other intent speaks there ([`thread_own`]).
+/// are cut to this form"): no other intent speaks where the thread found stock
+/// ([`thread_own`]; `kept_at(k)`: the stock after `k` moves where the run kept it).
 pub(crate) fn read(
     intents: &Intents,
     toolpath: &Toolpath,
     tools: &ToolTable,
-    stock_at: &dyn Fn(usize) -> Vec<Shape>,
+    (stock_at, kept_at): (&dyn Fn(usize) -> Vec<Shape>, &KeptAt<'_>),
 ) -> Vec<Intent> {
     let mut read = match intents {
         Intents::Target(part) => vec![Intent::target(part.clone())],
@@ -25,7 +29,7 @@ pub(crate) fn read(
     if read.is_empty() {
         return read;
     }
-    let threads = thread_own(&toolpath.segments, tools);
+    let threads = thread_own(&toolpath.segments, tools, kept_at);
     if !threads.is_empty() {
         for i in &mut read {
             i.zone = boolean(&i.zone, &threads, BoolOp::Difference);
@@ -34,72 +38,90 @@ pub(crate) fn read(
     read
 }
 
-/// The thread bands ([`thread_bands`]) less what a turning tool's feed swept there: a skim
-/// 0.4 mm under the crest the thread is then cut into is the turning tool's cut, judged as
-/// before (README, Interpretation: other turning tools are judged on their own cuts), not
-/// the thread's (field run 8, C: the band hid it, and the part was reported clean).
-/// Blades and drills keep the band: a thread relief is the blade's own anyway.
-fn thread_own(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
-    let bands = thread_bands(segments, tools);
-    if bands.is_empty() {
-        return bands;
+/// Each thread's band ([`thread_bands`]) where stock stood when the thread began: what a
+/// turning tool had already taken there is that tool's cut, judged as before (README,
+/// Interpretation: other turning tools are judged on their own cuts). A skim 0.4 mm under
+/// the crest, then a thread cut into it, was hidden by the whole band: the part was
+/// reported clean (field run 8, C). A thread whose starting stock the run did not keep
+/// (past the first [`MAX_STOCK_MARKS`] / 2) keeps its whole band.
+fn thread_own(segments: &[Segment], tools: &ToolTable, kept_at: &KeptAt<'_>) -> Vec<Shape> {
+    let starts = crate::measure::ThreadPasses::of(segments, tools).starts();
+    let mut own = vec![];
+    for (k, &start) in starts.iter().enumerate() {
+        let end = starts.get(k + 1).copied().unwrap_or(segments.len());
+        let band = bands_of(&segments[start..end], tools);
+        if band.is_empty() {
+            continue;
+        }
+        match kept_at(start) {
+            Some(stock) => own.extend(boolean(&band, &stock, BoolOp::Intersection)),
+            None => own.extend(band),
+        }
     }
-    let turning = |s: &Segment| s.motion == Motion::Feed && !crate::sweeps::cuts_features(s, tools);
-    let mut mounts = stock::Mounts::new(tools, stock::rear_tools(segments));
-    let swept =
-        crate::sweeps::feed_sweeps(&bands, segments, &mut mounts, crate::CHORD_TOL, &turning);
-    if swept.is_empty() {
-        return bands;
+    // thread moves outside the threads found (a lone pass) keep their bands whole
+    let first = starts.first().copied().unwrap_or(segments.len());
+    own.extend(bands_of(&segments[..first], tools));
+    if own.is_empty() {
+        return own;
     }
-    boolean(&bands, &swept, BoolOp::Difference)
+    boolean(&own, &[], BoolOp::Union)
+}
+
+/// The bands of the thread moves among `segments` ([`thread_bands`]), not joined.
+fn bands_of(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
+    segments
+        .iter()
+        .filter(|s| s.motion == Motion::Thread)
+        .filter_map(|s| band(s, tools))
+        .collect()
 }
 
 /// Where thread moves cut their teeth: above each pass (below, for a tool whose body lies
 /// below its tip) up to the height where the tool's flanks reach their full width, over
 /// the pass's Z span grown by that width. A pass below the axis is seen mirrored.
 pub(crate) fn thread_bands(segments: &[Segment], tools: &ToolTable) -> Vec<Shape> {
-    const FAR: f64 = 1e5;
-    let mut bands = vec![];
-    for s in segments.iter().filter(|s| s.motion == Motion::Thread) {
-        let outline = tools.outline_for(s.tool, s.hint).0;
-        let Some((lo, hi)) = outline.bbox() else {
-            continue;
-        };
-        let up = hi[1] >= -lo[1];
-        let w = lo[0].abs().max(hi[0].abs());
-        // the flank height: the least |r| at which the outline is as wide as it gets
-        let h = outline
-            .parts
-            .iter()
-            .flatten()
-            .filter(|p| p[0].abs() >= w - 1e-9)
-            .map(|p| p[1].abs())
-            .fold(FAR, f64::min);
-        let h = if up { h } else { -h };
-        let (a, b) = if s.from.z <= s.to.z {
-            (s.from, s.to)
-        } else {
-            (s.to, s.from)
-        };
-        let (ra, rb) = if a.r + b.r < 0.0 {
-            (-a.r, -b.r)
-        } else {
-            (a.r, b.r)
-        };
-        bands.push(Shape {
-            outer: vec![
-                [a.z - w, ra],
-                [b.z + w, rb],
-                [b.z + w, rb + h],
-                [a.z - w, ra + h],
-            ],
-            holes: vec![],
-        });
-    }
+    let bands = bands_of(segments, tools);
     if bands.is_empty() {
         return bands;
     }
     boolean(&bands, &[], BoolOp::Union)
+}
+
+/// The band of one thread move ([`thread_bands`]).
+fn band(s: &Segment, tools: &ToolTable) -> Option<Shape> {
+    const FAR: f64 = 1e5;
+    let outline = tools.outline_for(s.tool, s.hint).0;
+    let (lo, hi) = outline.bbox()?;
+    let up = hi[1] >= -lo[1];
+    let w = lo[0].abs().max(hi[0].abs());
+    // the flank height: the least |r| at which the outline is as wide as it gets
+    let h = outline
+        .parts
+        .iter()
+        .flatten()
+        .filter(|p| p[0].abs() >= w - 1e-9)
+        .map(|p| p[1].abs())
+        .fold(FAR, f64::min);
+    let h = if up { h } else { -h };
+    let (a, b) = if s.from.z <= s.to.z {
+        (s.from, s.to)
+    } else {
+        (s.to, s.from)
+    };
+    let (ra, rb) = if a.r + b.r < 0.0 {
+        (-a.r, -b.r)
+    } else {
+        (a.r, b.r)
+    };
+    Some(Shape {
+        outer: vec![
+            [a.z - w, ra],
+            [b.z + w, rb],
+            [b.z + w, rb + h],
+            [a.z - w, ra + h],
+        ],
+        holes: vec![],
+    })
 }
 
 /// The shapes the program defines for itself, in program order, those a later contour

@@ -378,15 +378,17 @@ fn count_pass(tally: &mut Tally, s: &Segment, next: Option<&Segment>) {
     }
 }
 
-/// Whether a finishing shape lies in a bore: its first move goes out from its start point
-/// (the cycle's A; spec/simulation.md: the part lies on the side away from A), by |X| for
-/// a rear post's shape.
+/// Whether a finishing shape lies in a bore: it runs outward of its start point and
+/// nowhere inward of it (the cycle's A; spec/simulation.md: the part lies on the side away
+/// from A), by |X| for a rear post's shape. (Its first move alone said so for a G71; a
+/// G72's first move runs along Z at A's X, and a bore faced in layers was taken for an OD
+/// shape: the default insert carved a 12 mm gouge into the sleeve's wall, field run 9, A.)
 fn in_bore(shape: &Intended) -> bool {
-    // the shape's first move from A goes out of the bore's start (as the intents read it)
-    match shape.points.as_slice() {
-        [a, first, ..] => first.r.abs() > a.r.abs() + 1e-9,
-        _ => false,
-    }
+    let Some((a, rest)) = shape.points.split_first() else {
+        return false;
+    };
+    let a = a.r.abs();
+    rest.iter().all(|p| p.r.abs() >= a - 1e-9) && rest.iter().any(|p| p.r.abs() > a + 1e-9)
 }
 
 /// Whether a contour cut under G41/G42 keeps the part outside it, away from the axis (a
