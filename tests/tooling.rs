@@ -456,3 +456,39 @@ fn a_face_groove_with_no_entry_is_cut_by_a_face_blade() {
         "{notes:?}"
     );
 }
+
+/// Review 1128g (#1): a G75's escape at the bottom (R) runs along Z, as a G74's pecks do.
+/// Counted as a face groove's, it left a tool with no entry that grooves a bore by G75
+/// neither a radial nor a face blade: the default insert (and the radial default blade in
+/// the cycle) cut 548 mm² instead of 347, with four possible crashes. Only a G74's moves
+/// are a face groove's: the ID G75 with R is cut by the ID blade, as without R.
+#[test]
+fn a_g75_with_an_escape_is_still_a_radial_blade() {
+    let program = |r: &str| {
+        format!("O0304 (ID GROOVE BY G75 IN A DRILLED BORE)\nG21 G40 G99\nT0303\nG97 S400 M03\nG00 X0. Z3.\nG74 R0.5\nG74 Z-35. Q5000 F0.1\nG00 Z50.\nT0202\nG97 S500 M03\nG00 X18. Z2.\nZ-10.\nG75 R0.5\nG75 X26. Z-16. P1000 Q2500{r} F0.08\nG00 Z2.\nG00 X100. Z100.\nM30\n")
+    };
+    let drill =
+        "[[tool]]\nt = 3\nkind = \"drill\"\ndiameter = 20.0\npoint_angle = 118\nreach = 80.0\n";
+    let with = run_with(&program(" R0.3"), Some(drill), &["--stock", "50x40"]);
+    let without = run_with(&program(""), Some(drill), &["--stock", "50x40"]);
+    assert_eq!(with["verdict"], "clean", "{:#}", with["crashes"]);
+    assert!(
+        with["crashes"].as_array().unwrap().is_empty(),
+        "{:#}",
+        with["crashes"]
+    );
+    let notes = common::warning_messages(&with, "LS-STOCK");
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T02") && m.contains("width +z, shank -x")),
+        "{notes:?}"
+    );
+    // the escape takes 0.3 mm off each groove wall's bottom corner at most
+    assert!(
+        (removed(&with) - removed(&without)).abs() < 1.0,
+        "{} against {}",
+        removed(&with),
+        removed(&without)
+    );
+}

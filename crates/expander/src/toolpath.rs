@@ -169,6 +169,9 @@ pub enum ToolHint {
     /// A grooving cycle (G74/G75): with no table entry the default is a 3 mm grooving blade
     /// referenced at its left corner (spec/simulation.md, Tools).
     Grooving,
+    /// A G74 (face grooving, peck drilling): as [`ToolHint::Grooving`], its infeed along Z
+    /// (a tool with no entry that only pecks a face groove is taken for a face blade).
+    FaceGrooving,
     /// G75.1 with I: a grooving blade of this width whatever the table says, its reference
     /// corner on the start side, the blade extending toward +Z when `toward_plus_z`.
     Blade {

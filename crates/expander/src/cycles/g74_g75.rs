@@ -396,12 +396,12 @@ fn count(
 fn moves(axes: &Axes, p: &Params) -> Vec<Move> {
     let (dir_d, dir_s) = ((p.d1 - p.d0).signum(), (p.s1 - p.s0).signum());
     let mut moves = Vec::with_capacity(p.estimate);
-    let mut push = |m: Move| {
-        moves.push(Move {
-            hint: ToolHint::Grooving,
-            ..m
-        })
+    let hint = if axes.g74 {
+        ToolHint::FaceGrooving
+    } else {
+        ToolHint::Grooving
     };
+    let mut push = |m: Move| moves.push(Move { hint, ..m });
     for n in 0..p.plunges {
         // ⑤ the plunge positions: Δk apart, the last exactly at the end point.
         let s = if n + 1 == p.plunges {

@@ -339,7 +339,8 @@ const MIN_PASS: f64 = 2.0;
 fn count_plunge(tally: &mut Tally, s: &Segment) {
     let dr = s.to.r.abs() - s.from.r.abs();
     let dz = (s.to.z - s.from.z).abs();
-    if s.arc.is_none() && s.hint == ToolHint::Grooving && dr.abs() < dz {
+    // (a G75's escape runs along Z too: only a G74's moves are a face groove's)
+    if s.arc.is_none() && s.hint == ToolHint::FaceGrooving && dr.abs() < dz {
         tally.face_plunges += 1;
         return;
     }

@@ -78,7 +78,7 @@ fn blade_stub(b: GroovingBlade) -> Outline {
 pub(crate) fn hint_key(t: u32, hint: ToolHint) -> (u32, u8, u64) {
     match hint {
         ToolHint::Table => (t, 0, 0),
-        ToolHint::Grooving => (t, 1, 0),
+        ToolHint::Grooving | ToolHint::FaceGrooving => (t, 1, 0),
         ToolHint::Blade {
             width,
             toward_plus_z,
@@ -221,7 +221,7 @@ impl ToolTable {
         };
         match hint {
             ToolHint::Table => table(),
-            ToolHint::Grooving => match (self.get(t), self.use_default(t)) {
+            ToolHint::Grooving | ToolHint::FaceGrooving => match (self.get(t), self.use_default(t)) {
                 (Some(tool), _) => (tool.clone(), None),
                 (None, Some(tool)) => (tool.clone(), Some(super::by_use::taken_note(t, tool))),
                 (None, None) => (
