@@ -829,6 +829,30 @@ fn a_rapid_grazing_a_face_guessed_tools_left_is_a_possible_crash() {
         .collect();
     assert_eq!(certain.len(), 1, "{certain:#?}");
     assert_eq!(certain[0]["line"], 28, "{certain:#?}");
+
+    // a shop whose machine calls any rapid contact a crash (rapid_cut_tol = 0): the point
+    // 2 mm into the face is certain, and so is the graze (review 1128g, #2: both were
+    // possible, the gate passed)
+    let dir = tempfile::tempdir().unwrap();
+    let machine = dir.path().join("strict.toml");
+    std::fs::write(&machine, "rapid_cut_tol = 0.0\n").unwrap();
+    for (exit, line) in [("G40 G00 X15.\nG00 Z-22.\n", 28), ("G40 G00 X15.\n", 27)] {
+        let (out, v) = run_program(
+            "strict.nc",
+            &program(exit),
+            "fanuc-a",
+            None,
+            &["--stock", "40x40", "--machine", machine.to_str().unwrap()],
+        );
+        assert_eq!(out.code, 1, "{}", out.stderr);
+        let certain: Vec<_> = v["crashes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["assumed_tool"] != true)
+            .collect();
+        assert!(certain.iter().any(|c| c["line"] == line), "{certain:#?}");
+    }
 }
 
 /// Field run 8 (I): an OD finished by hand under G41 with a CNMG r0.8 in a PCLNR (tip 3,

@@ -326,15 +326,17 @@ pub(crate) fn enters_uncut(
         }
         // how deep a point of the chord lies in the stock: to the blank's edge or the
         // nearest sweep's, whichever is nearer
+        // (capped above the bar: only whether a point passes it counts; a bar of 0, a shop
+        // that calls every rapid contact a crash, keeps any point inside certain)
         let depth = |p: P| {
             near.iter()
                 .map(|poly| convex_distance(p, poly))
-                .fold(blank.depth_at(p, 2.0 * deeper_than), f64::min)
+                .fold(blank.depth_at(p, 2.0 * deeper_than + ENTERS), f64::min)
         };
         let at = |t: f64| [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
+        let step = (0.5 * deeper_than).max(DEPTH_STEP);
         let deep = left.iter().any(|&(s0, s1)| {
-            let n =
-                (((s1 - s0) * len / (0.5 * deeper_than)).ceil() as usize).clamp(1, DEPTH_SAMPLES);
+            let n = (((s1 - s0) * len / step).ceil() as usize).clamp(1, DEPTH_SAMPLES);
             (0..=n).any(|k| depth(at(s0 + (s1 - s0) * k as f64 / n as f64)) > deeper_than)
         });
         if deep {
@@ -344,8 +346,12 @@ pub(crate) fn enters_uncut(
     false
 }
 
-/// Most points of one stretch of a path in uncut stock looked at for its depth.
-const DEPTH_SAMPLES: usize = 64;
+/// The points of a stretch of a path in uncut stock looked at for its depth are half the
+/// bar apart (a peak between two is within a quarter of the bar of one), at least this far
+/// apart, mm, and at most [`DEPTH_SAMPLES`] of them.
+const DEPTH_STEP: f64 = 0.01;
+/// Most points of one stretch looked at (a 40 mm stretch at the 0.1 mm bar's 0.05).
+const DEPTH_SAMPLES: usize = 800;
 
 /// The distance from `p` (outside it) to the convex polygon `poly`.
 fn convex_distance(p: P, poly: &[P]) -> f64 {
