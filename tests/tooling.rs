@@ -492,3 +492,28 @@ fn a_g75_with_an_escape_is_still_a_radial_blade() {
         removed(&without)
     );
 }
+
+/// Field run 9 (A): a bush's counterbore roughed and finished by G72 with a boring tool
+/// that has no entry (the drill and the OD tool stated). A G72 shape's first move runs
+/// along Z at its start point's X, so the shape was not seen to lie in a bore: T03 stayed
+/// the OD default and carved a certain 12 mm gouge into the sleeve's wall. The shape runs
+/// outward of its start and nowhere inward: a bore, and T03 a boring bar; clean, as with
+/// T03 stated with tip 2.
+#[test]
+fn a_bore_faced_in_layers_by_g72_is_a_boring_bars() {
+    let program = "O0901 (BUSH - ID COUNTERBORE BY G72)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.3 W0.05 F0.25\nN10 G00 X44.\nG01 Z0. F0.1\nX48. Z-2.\nZ-42.\nN20 X52.\nG70 P10 Q20\nG00 X100. Z100.\nT0202\nG97 S600 M03\nG00 X0. Z3.\nG74 R0.5\nG74 Z-50. Q5000 F0.1\nG00 Z5.\nG00 X100. Z100.\nT0303\nG96 S150 M03\nG00 X23. Z2.\nG72 W1. R0.5\nG72 P30 Q40 U-0.3 W0.05 F0.15\nN30 G00 Z-41.\nG01 X30. F0.1\nZ-12.\nX36.\nZ-1.\nX38. Z0.\nN40 Z2.\nG42 G00 X23. Z2.\nG70 P30 Q40\nG40 G00 Z5.\nX100. Z100.\nM30\n";
+    let table = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 2\nkind = \"drill\"\ndiameter = 24.0\npoint_angle = 118\nreach = 80.0\n";
+    let j = run_with(
+        program,
+        Some(table),
+        &["--stock", "50x50", "--stock-z", "0.5"],
+    );
+    assert_eq!(j["verdict"], "clean", "{:#}", j["gouges"]);
+    let notes = common::warning_messages(&j, "LS-STOCK");
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T03") && m.contains("boring bar")),
+        "{notes:?}"
+    );
+}
