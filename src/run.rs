@@ -676,14 +676,33 @@ fn print_findings(name: &str, places: &Places, report: &render::Report) {
         );
         print_why(g.cause.as_ref(), g.remedy.as_ref());
     }
-    for (what, n) in [
-        ("crash(es)", report.crashes.len()),
-        ("gouge(s)", report.gouges.len()),
+    // the ones not printed, certain and possible apart (possible ones are not in the verdict)
+    let rest = |assumed: &mut dyn Iterator<Item = bool>| {
+        let (possible, certain): (Vec<bool>, Vec<bool>) =
+            assumed.skip(MAX_PRINTED).partition(|&a| a);
+        (certain.len(), possible.len())
+    };
+    for (what, (certain, possible)) in [
+        (
+            "crash(es)",
+            rest(&mut report.crashes.iter().map(|c| c.assumed)),
+        ),
+        (
+            "gouge(s)",
+            rest(&mut report.gouges.iter().map(|g| g.assumed)),
+        ),
     ] {
-        if n > MAX_PRINTED {
+        let mut more = vec![];
+        if certain > 0 {
+            more.push(format!("{certain} more {what}"));
+        }
+        if possible > 0 {
+            more.push(format!("{possible} more possible {what}"));
+        }
+        if !more.is_empty() {
             eprintln!(
-                "{name}: … and {} more {what}, listed in the reports",
-                n - MAX_PRINTED
+                "{name}: … and {}, listed in the reports",
+                more.join(" and ")
             );
         }
     }

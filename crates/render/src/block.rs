@@ -15,27 +15,39 @@ const DIAG_ROW: f64 = 18.0;
 /// Tools listed before "+N more".
 const MAX_TOOLS: usize = 4;
 
-/// The verdict line and its colour.
+/// The verdict line and its colour: the findings that make the verdict, then how many are
+/// only possible (a guessed tool's: not in the verdict). "GOUGE — 43 crashes, 1 gouge"
+/// stood over a run whose 43 crashes were all possible (field run 9, E).
 pub(crate) fn verdict_text(report: &Report) -> (String, &'static str) {
     let mut parts = Vec::new();
     if !report.alarms.is_empty() {
         parts.push(plural(report.alarms.len(), "alarm", "alarms"));
     }
-    if !report.crashes.is_empty() {
-        parts.push(plural(report.crashes.len(), "crash", "crashes"));
+    let crashes = report.crashes.iter().filter(|c| !c.assumed).count();
+    if crashes > 0 {
+        parts.push(plural(crashes, "crash", "crashes"));
     }
-    if !report.gouges.is_empty() {
-        let deepest = report
-            .gouges
+    let gouges: Vec<f64> = report
+        .gouges
+        .iter()
+        .filter(|g| !g.assumed)
+        .map(|g| g.depth_mm)
+        .collect();
+    if !gouges.is_empty() {
+        let deepest = gouges
             .iter()
-            .map(|g| g.depth_mm)
+            .copied()
             .filter(|d| d.is_finite())
             .fold(0.0, f64::max);
         parts.push(format!(
             "{} ({} deep)",
-            plural(report.gouges.len(), "gouge", "gouges"),
+            plural(gouges.len(), "gouge", "gouges"),
             mm(deepest)
         ));
+    }
+    let possible = report.crashes.len() - crashes + report.gouges.len() - gouges.len();
+    if possible > 0 {
+        parts.push(plural(possible, "possible finding", "possible findings"));
     }
     match report.verdict {
         Verdict::Clean => ("CLEAN — no gouge, no crash".to_string(), colour::OK),
@@ -278,4 +290,45 @@ pub(crate) fn title_block(doc: &mut Doc, report: &Report, top: f64) {
         rows.saturating_sub(used),
     );
     b.doc.close();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::{Crash, Gouge};
+
+    fn gouge(depth_mm: f64, assumed: bool) -> Gouge {
+        Gouge {
+            line: 12,
+            z: -10.0,
+            r: 12.0,
+            area_mm2: 1.0,
+            depth_mm,
+            assumed,
+            cause: None,
+            remedy: None,
+        }
+    }
+
+    /// Field run 9 (E): a run with one certain gouge and 43 possible crashes read
+    /// "GOUGE — 43 crashes, 1 gouge (12 mm deep)" over a verdict of 0 crashes. Only the
+    /// certain findings are counted as such; the possible ones are counted apart, and a
+    /// possible gouge's depth is not the headline's.
+    #[test]
+    fn the_headline_counts_possible_findings_apart() {
+        let report = Report {
+            verdict: Verdict::Gouge,
+            crashes: vec![
+                Crash {
+                    assumed: true,
+                    ..Crash::default()
+                };
+                43
+            ],
+            gouges: vec![gouge(12.0, false), gouge(20.0, true)],
+            ..Report::default()
+        };
+        let (text, _) = verdict_text(&report);
+        assert_eq!(text, "GOUGE — 1 gouge (12 mm deep), 44 possible findings");
+    }
 }
