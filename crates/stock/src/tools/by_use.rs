@@ -1,8 +1,9 @@
 //! A tool with no entry, taken for what its moves say it is (docs/field-rules.md §17):
-//! - one that only cuts thread passes (G32, G92, G76) is a sharp 60° threading insert, not
-//!   the 55° turning default: that default cut a 96° thread and scraped the flank at every
-//!   pull-out (field run 4, 5d). Its side is the side its passes come in from: from outside
-//!   the thread (an OD insert) or from the bore (an ID one);
+//! - one that only cuts thread passes (G32, G92, G76) is a sharp 60° threading insert (or
+//!   of the angle its first G76 states: field run 7), not the 55° turning default: that
+//!   default cut a 96° thread and scraped the flank at every pull-out (field run 4, 5d).
+//!   Its side is the side its passes come in from: from outside the thread (an OD insert)
+//!   or from the bore (an ID one);
 //! - one that only feeds along the axis at X0 (a centre drill, a G74 or G83 peck drill), or
 //!   in a drilling cycle off it (an offset indexable drill, §19), is a drill: the 55°
 //!   insert plunged there with its edge across the face, and the default G74 blade,
@@ -17,7 +18,8 @@
 //!   compensates as a boring bar's;
 //! - one that only plunges (no facing pass) is the default grooving blade, its body away
 //!   from the side it plunges from (field run 7, D: the OD default rapided into a bore for
-//!   a relief groove swept the wall and the finished OD).
+//!   a relief groove swept the wall and the finished OD); one that only pecks a G74 face
+//!   groove off the axis is a face blade, its body along +Z (field run 8, p02).
 //!
 //! Their size is a guess all the same, so their findings stay possible ones
 //! (spec/simulation.md, "Findings from assumed tools"). For a threading insert, a drill or
