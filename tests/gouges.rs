@@ -779,6 +779,15 @@ fn a_nick_at_the_compensation_start_up_names_the_start_up() {
         "{:#}",
         v["gouges"]
     );
+
+    // the same start-up inside a G71/G70 shape (review 1128g, #4: it still said G41)
+    let g70 = "O0016 (OD G71/G70, COMPENSATION STARTED ONTO THE CORNER)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X44. Z2.\nG71 U1.5 R0.5\nG71 P100 Q200 U0.4 W0.1 F0.2\nN100 G00 X26.\nG42 G01 X30. Z0. F0.1\nZ-27.\nN200 G40 G01 X44.\nG70 P100 Q200\nG00 X150. Z100.\nM30\n";
+    let (out, v) = run_fanuc("nick-g70.nc", g70, tools, "42x40");
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert_eq!(gouges.len(), 1, "{gouges:#?}");
+    let cause = gouges[0]["cause"]["text"].as_str().unwrap();
+    assert!(cause.contains("starts the compensation"), "{cause}");
 }
 
 /// Field run 7 (E), no table: T03 drills with G74 (taken for a Ø10 drill), T04 roughs a

@@ -99,7 +99,7 @@ fn stock_edge(at: P, s: &Settings) -> String {
 /// going into the part, or the part of the turning insert that reached it.
 pub(crate) fn gouge(
     g: &Finding,
-    intents: &[Intent],
+    (intents, comp_starts): (&[Intent], &[usize]),
     segments: &[Segment],
     s: &Settings,
     mounts: &mut Mounts,
@@ -170,7 +170,7 @@ pub(crate) fn gouge(
                 ),
                 numbers: vec![("depth_mm", g.depth)],
             },
-            side => startup(g, intents, &facts, segments, j)
+            side => startup(g, comp_starts, &facts, segments, j)
                 .unwrap_or_else(|| nose(g, &facts, seg, segments, (i, side))),
         },
     })
@@ -413,23 +413,20 @@ pub(super) fn wrong_side_owner(
     })
 }
 
-/// A nick the nose makes at the end of move `j` when that move starts the compensation of
-/// a contour and ends on the part: the control offsets the nose along it, and on the way
-/// the nose cuts the corner it arrives at (field run 8, J: an r0.8 nose from X26 Z2 onto
-/// the corner X30 Z0 under G42). The code is right; the start-up is not: naming G41/G42
-/// sent the programmer to the wrong fix.
+/// A nick the nose makes at the end of move `j` when that move starts a compensation
+/// (`comp_starts`: a hand contour's or a G70's) and ends on the part: the control offsets
+/// the nose along it, and on the way the nose cuts the corner it arrives at (field run 8,
+/// J: an r0.8 nose from X26 Z2 onto the corner X30 Z0 under G42). The code is right; the
+/// start-up is not: naming G41/G42 sent the programmer to the wrong fix.
 fn startup(
     g: &Finding,
-    intents: &[Intent],
+    comp_starts: &[usize],
     f: &Facts,
     segments: &[Segment],
     j: usize,
 ) -> Option<Cause> {
     let seg = &segments[j];
-    let starts = intents.iter().any(|it| {
-        it.owner
-            .is_some_and(|o| o.comp.is_some() && o.finish == j && o.tool == seg.tool)
-    });
+    let starts = comp_starts.binary_search(&j).is_ok();
     let end = [seg.to.z, seg.to.r.abs()];
     let at_end = geom::flat::dist([g.at[0], g.at[1].abs()], end) <= f.nose_radius + g.depth;
     (starts && at_end).then(|| Cause {

@@ -40,7 +40,13 @@ pub fn diagnose(findings: &mut Findings, toolpath: &Toolpath, s: &Settings, reru
     }
     if let Some(d) = deviation {
         for g in &mut d.gouges {
-            g.cause = cause::gouge(g, intents, segments, s, &mut mounts);
+            g.cause = cause::gouge(
+                g,
+                (intents, &toolpath.comp_starts),
+                segments,
+                s,
+                &mut mounts,
+            );
         }
         for l in &mut d.leftovers {
             l.cause = Some(cause::leftover(l, intents, segments, s));

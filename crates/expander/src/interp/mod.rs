@@ -116,6 +116,9 @@ pub struct Toolpath {
     /// digits, Haas A), `(tool, degrees)`: a tool with no entry that threads is taken to be
     /// of that angle (docs/field-rules.md §17).
     pub thread_angles: Vec<(u32, f64)>,
+    /// The moves that start a G41/G42 compensation (its start-up move), in order: a hand
+    /// contour's and a G70's alike.
+    pub comp_starts: Vec<usize>,
 }
 
 /// Expand a parsed program into segments.

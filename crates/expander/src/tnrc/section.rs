@@ -116,6 +116,7 @@ impl Interp<'_> {
             }
         }
         let c = compensate(&section, side, nose);
+        self.out.comp_starts.push(self.out.segments.len());
         self.out.segments.extend(c.segments);
         self.out.alarms.extend(c.alarms);
         if let Some(engaged) = self.tailstock_pending.take() {
