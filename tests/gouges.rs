@@ -893,3 +893,28 @@ fn a_gouge_from_the_wrong_compensation_side_names_the_code() {
     assert_eq!(remedy["line"], 9, "{remedy:#}");
     assert_eq!(remedy["verified"], true, "{remedy:#}");
 }
+
+/// Field run 9 (C): a bush whose bore is roughed by G71 with U+ instead of U− (the
+/// allowance on the bore's wall side: the roughing cuts 0.2 mm into the wall). The cause
+/// said "T03 (line 31) cuts into the contour T01 finished (from line 9)": the OD contour's
+/// zone spans the bore's gouge, but the gouge is measured from the bore's surface, which
+/// T03 finishes itself. The contour named is the one the gouge is measured from.
+#[test]
+fn a_gouge_in_a_bore_is_not_blamed_on_the_od_contours_tool() {
+    let program = "O0902 (BUSH - BORE G71 WITH U+ INSTEAD OF U-)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.3 W0.05 F0.25\nN10 G00 X44.\nG01 Z0. F0.1\nX48. Z-2.\nZ-42.\nN20 X52.\nG70 P10 Q20\nG00 X100. Z100.\nT0202\nG97 S600 M03\nG00 X0. Z3.\nG74 R0.5\nG74 Z-50. Q5000 F0.1\nG00 Z5.\nG00 X100. Z100.\nT0303\nG96 S150 M03\nG00 X23. Z2.\nG71 U1. R0.5\nG71 P30 Q40 U0.4 W0.05 F0.15\nN30 G00 G41 X36.\nG01 Z0. F0.1\nX32. Z-2.\nZ-40.\nN40 X23.\nG70 P30 Q40\nG40 G00 Z5.\nX100. Z100.\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 2\nkind = \"drill\"\ndiameter = 24.0\npoint_angle = 118\nreach = 80.0\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\ntip = 2\nentering_angle = 93\nshank = 16.0\n";
+    let (out, v) = run_program(
+        "uplus.nc",
+        program,
+        "fanuc-a",
+        Some(tools),
+        &["--stock", "50x50", "--stock-z", "0.5"],
+    );
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert!(!gouges.is_empty(), "{gouges:#?}");
+    for g in gouges {
+        let cause = g["cause"]["text"].as_str().unwrap();
+        assert!(!cause.contains("T01"), "{cause}");
+    }
+}

@@ -267,9 +267,12 @@ fn program_enters(
 /// The tool and first move of a contour that claims the gouge's place and was finished by
 /// another tool than the one that made the gouge.
 fn other_owner(g: &Finding, intents: &[Intent], seg: &Segment, i: usize) -> Option<(u32, usize)> {
+    // the contour whose surface the gouge is measured from: another's zone may span it (an
+    // OD contour's zone over a bore's gouge named the OD's tool, field run 9, C)
     intents
         .iter()
         .filter(|it| crate::assumed::Region::new(&it.zone).contains(g.at))
+        .filter(|it| along_outline(it, g.nearest))
         .filter_map(|it| it.owner)
         .find(|o| o.tool != seg.tool && i >= o.finish)
         .map(|o| (o.tool, o.finish))
@@ -405,11 +408,17 @@ pub(super) fn wrong_side_owner(
     intents.iter().find_map(|it| {
         let o = it.owner?;
         let c = o.comp?;
-        let along = it.outline.iter().any(|(pts, _)| {
-            pts.windows(2)
-                .any(|w| segment_distance(g.nearest, w[0], w[1]) <= 1e-3)
-        });
+        let along = along_outline(it, g.nearest);
         (c.wrong_side && o.tool == seg.tool && i >= o.finish && along).then_some((o, c))
+    })
+}
+
+/// Whether `p` lies on `it`'s drawn outline (within 10⁻³ mm).
+fn along_outline(it: &Intent, p: P) -> bool {
+    it.outline.iter().any(|(pts, closed)| {
+        let n = pts.len();
+        let edges = if *closed { n } else { n.saturating_sub(1) };
+        (0..edges).any(|k| segment_distance(p, pts[k], pts[(k + 1) % n]) <= 1e-3)
     })
 }
 
