@@ -195,3 +195,16 @@ fn run_body_on_a_found_radial_thread_ends() {
     .unwrap();
     run::body(&input);
 }
+
+/// Found by the `run` target on 3c53b18 (2026-11-28, sixth session; a timeout on the loaded
+/// box): another mutated grooving program with a garbled `G32.X.00` and `M98` calls of
+/// files that are not there. 0.39 s in release with the diagnosis's re-runs, 5.4 s in the
+/// instrumented build on an idle core: heavy, not endless. Kept so that it stays so.
+#[test]
+fn run_body_on_a_found_mutated_grooving_program_ends() {
+    let input = std::fs::read(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/findings/run-thread-stamps-2.bin"),
+    )
+    .unwrap();
+    run::body(&input);
+}
