@@ -21,6 +21,19 @@ pub(crate) fn load_with_use(
 ) -> Result<(stock::ToolTable, Loaded), ()> {
     let (tools, loaded) = load_with_hand_tips(program, path, tools, start_tool)?;
     let found = tools.tools_from_use(&loaded.toolpath);
+    // the entries whose tip their moves gave (a table tool found is one: it has an entry)
+    let tips: Vec<expander::Diagnostic> = found
+        .iter()
+        .filter(|f| tools.get(f.t).is_some())
+        .map(|f| {
+            expander::Diagnostic::new(
+                loaded.toolpath.segments[f.first].span,
+                "LS-STOCK",
+                stock::tip_taken_note(f.t),
+                format!("state T{:02}'s tip in the tool table: tip = 2", f.t),
+            )
+        })
+        .collect();
     let tools = tools.with_tools_from_use(&found);
     // a boring bar compensates as one (its tip): the program read again with it
     if found
@@ -34,6 +47,7 @@ pub(crate) fn load_with_use(
             .toolpath
             .warnings
             .extend(hands.filter(|w| w.code == "LS-HOLDER-HAND"));
+        again.toolpath.warnings.extend(tips);
         return Ok((tools, again));
     }
     Ok((tools, loaded))

@@ -517,3 +517,50 @@ fn a_bore_faced_in_layers_by_g72_is_a_boring_bars() {
         "{notes:?}"
     );
 }
+
+/// Field run 9 (B): a counterbore faced out by G94 in a drilled hole, the boring tool
+/// listed by its insert alone (`insert = "DCMT 070204"`: no `tip`, no holder). The entry
+/// took the documented tip 3, an OD tool: five certain crashes, where the same program
+/// with no entry for T03 at all was clean. A turning entry whose tip the table does not
+/// state takes its tip from its moves as a tool with no entry does (§17): cutting in bores
+/// only, tip 2, with an LS-STOCK note; a stated tip 3 is kept (the crashes stay).
+#[test]
+fn an_insert_listed_alone_that_bores_is_a_boring_bar() {
+    let program = "O0905 (BUSH - COUNTERBORE BY G94)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X52. Z2.\nG90 X49. Z-42. F0.25\nX48.\nG00 X100. Z100.\nT0202\nG97 S600 M03\nG00 X0. Z3.\nG74 R0.5\nG74 Z-50. Q5000 F0.1\nG00 Z5.\nG00 X100. Z100.\nT0303\nG96 S150 M03\nG00 X22. Z2.\nG94 X36. Z-1. F0.12\nZ-2.\nZ-3.\nZ-4.\nZ-5.\nG00 X100. Z100.\nM30\n";
+    let table = |t3: &str| {
+        format!("[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 2\nkind = \"drill\"\ndiameter = 24.0\npoint_angle = 118\nreach = 80.0\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\n{t3}")
+    };
+    let j = run_with(
+        program,
+        Some(&table("")),
+        &["--stock", "50x50", "--stock-z", "0.5"],
+    );
+    assert_eq!(j["verdict"], "clean", "{:#}", j["crashes"]);
+    let notes = common::warning_messages(&j, "LS-STOCK");
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T03 states its insert but not its tip")),
+        "{notes:?}"
+    );
+    // a stated tip is the table's word
+    let (dir, path) = temp_program("tip3.nc", program.as_bytes());
+    let tools = dir.path().join("tools.toml");
+    std::fs::write(&tools, table("tip = 3\n")).unwrap();
+    let out = latsim(&[
+        "run",
+        path.to_str().unwrap(),
+        "--control",
+        "fanuc-a",
+        "--stock",
+        "50x50",
+        "--stock-z",
+        "0.5",
+        "--tools",
+        tools.to_str().unwrap(),
+        "--json",
+        dir.path().join("r.json").to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert_eq!(out.code, 1, "{}", out.stderr);
+}

@@ -42,6 +42,6 @@ pub use section::rear_tools;
 pub use shape::{area, boolean, hausdorff, revolved_volume, symmetric_difference_area, Shape};
 pub use snapshot::{player_marks, EXACT_MAX_MOVES as SNAPSHOT_EXACT_MAX_MOVES};
 pub use tools::{
-    outward_travel, AxisDir, Body, GroovingBlade, HolderSize, Insert, ThreadSide, TipFromUse, Tool,
-    ToolFromUse, ToolTable,
+    outward_travel, tip_taken_note, AxisDir, Body, GroovingBlade, HolderSize, Insert, ThreadSide,
+    TipFromUse, Tool, ToolFromUse, ToolTable,
 };

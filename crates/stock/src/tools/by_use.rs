@@ -186,7 +186,7 @@ impl ToolTable {
             let k = match last {
                 Some((t, k)) if t == s.tool => k,
                 _ => {
-                    let k = self.get(s.tool).is_none().then(|| {
+                    let k = (self.get(s.tool).is_none() || self.tip_unstated(s.tool)).then(|| {
                         tallies
                             .iter()
                             .position(|t| t.t == s.tool)
@@ -262,7 +262,29 @@ impl ToolTable {
                     .iter()
                     .find(|&&(tool, _)| tool == t.t)
                     .map(|&(_, a)| a);
-                t.taken_for(angle).map(|tool| ToolFromUse {
+                let tool = match (self.get(t.t), t.taken_for(angle)?) {
+                    (None, tool) => tool,
+                    // an entry whose tip is unstated keeps its insert: only the tip the
+                    // moves say, a boring bar's
+                    (
+                        Some(Tool::Turning {
+                            insert,
+                            nose_radius,
+                            entering_angle,
+                            edge,
+                            ..
+                        }),
+                        Tool::Turning { tip: 2, .. },
+                    ) => Tool::Turning {
+                        insert: *insert,
+                        nose_radius: *nose_radius,
+                        tip: 2,
+                        entering_angle: *entering_angle,
+                        edge: *edge,
+                    },
+                    _ => return None,
+                };
+                Some(ToolFromUse {
                     t: t.t,
                     tool,
                     first: t.first,
@@ -271,15 +293,34 @@ impl ToolTable {
             .collect()
     }
 
+    /// Whether `t` is a turning entry whose tip the table does not state (an insert alone,
+    /// no `tip`, no holder): its tip is taken from its moves when they say bore (field run
+    /// 9, B: a DCMT listed by its insert alone was the tip-3 default, an OD tool, and its
+    /// bore a certain 12 mm gouge and 43 crashes, where no entry at all was clean).
+    fn tip_unstated(&self, t: u32) -> bool {
+        matches!(self.get(t), Some(Tool::Turning { .. })) && !self.tips.contains(&t)
+    }
+
     /// The table with the tools `found` taken for what their moves say: still no entries
     /// ([`ToolTable::get`] has none of them, their size is not stated), but what cuts for
     /// them ([`ToolTable::outline_for`], [`ToolTable::tool_or_default`]).
     pub fn with_tools_from_use(&self, found: &[ToolFromUse]) -> Self {
         let mut out = self.clone();
-        out.by_use
-            .extend(found.iter().map(|f| (f.t, f.tool.clone())));
+        for f in found {
+            match out.tools.iter_mut().find(|(n, _)| *n == f.t) {
+                // an entry's tip from its moves (its tip stays unstated)
+                Some((_, entry)) => *entry = f.tool.clone(),
+                None => out.by_use.push((f.t, f.tool.clone())),
+            }
+        }
         out
     }
+}
+
+/// The warning for tool `t`, whose entry states its insert but not its tip, taken for a
+/// boring bar (tip 2) from its moves.
+pub fn tip_taken_note(t: u32) -> String {
+    format!("T{t:02} states its insert but not its tip, and cuts in bores only: taken as tip 2, a boring bar; state its tip (or holder) to check it")
 }
 
 /// The warning for tool `t`, which has no entry and is taken for `tool` from its moves.

@@ -16,7 +16,7 @@ mod schema;
 
 use crate::StockError;
 pub use bodies::{Body, HolderSize};
-pub use by_use::{outward_travel, ToolFromUse};
+pub use by_use::{outward_travel, tip_taken_note, ToolFromUse};
 pub use hand::TipFromUse;
 pub use kinds::{AxisDir, GroovingBlade, Insert, ThreadSide, Tool};
 pub(crate) use outline_choice::hint_key;
