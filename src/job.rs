@@ -29,8 +29,16 @@ pub(crate) fn load_with_use(
             expander::Diagnostic::new(
                 loaded.toolpath.segments[f.first].span,
                 "LS-STOCK",
-                stock::tip_taken_note(f.t),
-                format!("state T{:02}'s tip in the tool table: tip = 2", f.t),
+                stock::tip_taken_note(f.t, &f.tool),
+                match f.tool {
+                    stock::Tool::Grooving(_) => {
+                        format!(
+                            "state T{:02}'s side in the tool table: shank_dir = \"-x\"",
+                            f.t
+                        )
+                    }
+                    _ => format!("state T{:02}'s tip in the tool table: tip = 2", f.t),
+                },
             )
         })
         .collect();
@@ -50,6 +58,8 @@ pub(crate) fn load_with_use(
         again.toolpath.warnings.extend(tips);
         return Ok((tools, again));
     }
+    let mut loaded = loaded;
+    loaded.toolpath.warnings.extend(tips);
     Ok((tools, loaded))
 }
 

@@ -564,3 +564,37 @@ fn an_insert_listed_alone_that_bores_is_a_boring_bar() {
     ]);
     assert_eq!(out.code, 1, "{}", out.stderr);
 }
+
+/// Field run 9 (r7): an ID groove plunged outward from a bore by a blade entry that states
+/// its width and reach but not its body's side (`shank_dir`). The entry took the default
+/// `+x`, an OD blade, whose body swept the bore's wall: 2 certain crashes and a 4 mm
+/// gouge. A grooving entry whose side the table does not state takes it from its plunges
+/// as a blade with no entry does: an ID blade, with an LS-STOCK note; the run removes
+/// what it removes with `shank_dir = "-x"` stated.
+#[test]
+fn a_blade_entry_without_its_side_that_plunges_from_a_bore_is_an_id_blade() {
+    let program = "O0907 (BUSH - BORE, THEN AN ID GROOVE)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.3 W0.05 F0.25\nN10 G00 X44.\nG01 Z0. F0.1\nX48. Z-2.\nZ-42.\nN20 X52.\nG70 P10 Q20\nG00 X100. Z100.\nT0202\nG97 S600 M03\nG00 X0. Z3.\nG74 R0.5\nG74 Z-50. Q5000 F0.1\nG00 Z5.\nG00 X100. Z100.\nT0303\nG96 S150 M03\nG00 X23. Z2.\nG71 U1. R0.5\nG71 P30 Q40 U-0.4 W0.05 F0.15\nN30 G00 G41 X36.\nG01 Z0. F0.1\nX32. Z-2.\nZ-40.\nN40 X23.\nG70 P30 Q40\nG40 G00 Z5.\nX100. Z100.\nT0505\nG97 S600 M03\nG00 X28. Z2.\nZ-20.\nG01 X36. F0.05\nG00 X28.\nZ2.\nG00 X100. Z100.\nM30\n";
+    let table = |side: &str| {
+        format!("[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 2\nkind = \"drill\"\ndiameter = 24.0\npoint_angle = 118\nreach = 80.0\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\ntip = 2\nentering_angle = 93\nshank = 16.0\n[[tool]]\nt = 5\nkind = \"grooving\"\nwidth = 3.0\nreach = 8.0\n{side}")
+    };
+    let unstated = run_with(program, Some(&table("")), &["--stock", "50x50"]);
+    let stated = run_with(
+        program,
+        Some(&table("shank_dir = \"-x\"\n")),
+        &["--stock", "50x50"],
+    );
+    assert_eq!(unstated["verdict"], "clean", "{:#}", unstated["crashes"]);
+    assert!(
+        (removed(&unstated) - removed(&stated)).abs() < 1e-6,
+        "{} against {}",
+        removed(&unstated),
+        removed(&stated)
+    );
+    let notes = common::warning_messages(&unstated, "LS-STOCK");
+    assert!(
+        notes
+            .iter()
+            .any(|m| m.contains("T05") && m.contains("ID blade")),
+        "{notes:?}"
+    );
+}

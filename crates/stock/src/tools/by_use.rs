@@ -282,6 +282,18 @@ impl ToolTable {
                         entering_angle: *entering_angle,
                         edge: *edge,
                     },
+                    // a blade whose body's side is unstated: the side its plunges say,
+                    // when they go outward from a bore (its width and reach its own)
+                    (Some(Tool::Grooving(entry)), Tool::Grooving(used))
+                        if entry.width_dir.is_z()
+                            && used.shank_dir == AxisDir::MinusX
+                            && entry.shank_dir != AxisDir::MinusX =>
+                    {
+                        Tool::Grooving(GroovingBlade {
+                            shank_dir: AxisDir::MinusX,
+                            ..*entry
+                        })
+                    }
                     _ => return None,
                 };
                 Some(ToolFromUse {
@@ -298,7 +310,8 @@ impl ToolTable {
     /// 9, B: a DCMT listed by its insert alone was the tip-3 default, an OD tool, and its
     /// bore a certain 12 mm gouge and 43 crashes, where no entry at all was clean).
     fn tip_unstated(&self, t: u32) -> bool {
-        matches!(self.get(t), Some(Tool::Turning { .. })) && !self.tips.contains(&t)
+        matches!(self.get(t), Some(Tool::Turning { .. } | Tool::Grooving(_)))
+            && !self.tips.contains(&t)
     }
 
     /// The table with the tools `found` taken for what their moves say: still no entries
@@ -317,10 +330,13 @@ impl ToolTable {
     }
 }
 
-/// The warning for tool `t`, whose entry states its insert but not its tip, taken for a
-/// boring bar (tip 2) from its moves.
-pub fn tip_taken_note(t: u32) -> String {
-    format!("T{t:02} states its insert but not its tip, and cuts in bores only: taken as tip 2, a boring bar; state its tip (or holder) to check it")
+/// The warning for tool `t`, whose entry does not state the side it cuts on, taken for
+/// `tool` (a boring bar, tip 2; an ID blade) from its moves.
+pub fn tip_taken_note(t: u32, tool: &Tool) -> String {
+    match tool {
+        Tool::Grooving(_) => format!("T{t:02} states its blade but not its body's side (shank_dir), and plunges outward from a bore: taken as an ID blade (shank_dir = \"-x\"); state shank_dir to check it"),
+        _ => format!("T{t:02} states its insert but not its tip, and cuts in bores only: taken as tip 2, a boring bar; state its tip (or holder) to check it"),
+    }
 }
 
 /// The warning for tool `t`, which has no entry and is taken for `tool` from its moves.

@@ -62,7 +62,8 @@ pub(super) struct Entry {
     pub(super) width_stated: bool,
     /// Whether a turning entry's tip is its holder's hand letter's (a holder, no `tip`).
     pub(super) tip_from_hand: bool,
-    /// Whether a turning entry states its tip (`tip`, or a holder whose hand gives it).
+    /// Whether an entry states the side it cuts on: a turning entry its tip (`tip`, or a
+    /// holder whose hand gives it), a grooving entry its body's (`shank_dir`).
     pub(super) tip_stated: bool,
 }
 
@@ -90,7 +91,8 @@ pub(super) fn read(text: &str) -> Result<Vec<Entry>, StockError> {
                 && (raw.nose_radius.is_some() || designation.is_some()),
             width_stated: raw.kind == "grooving" && raw.width.is_some(),
             tip_from_hand: raw.kind == "turning" && raw.holder.is_some() && raw.tip.is_none(),
-            tip_stated: raw.kind == "turning" && (raw.tip.is_some() || raw.holder.is_some()),
+            tip_stated: (raw.kind == "turning" && (raw.tip.is_some() || raw.holder.is_some()))
+                || (raw.kind == "grooving" && raw.shank_dir.is_some()),
             tool,
             designation,
             size,
