@@ -219,12 +219,7 @@ fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
     );
     let bar = "[[tool]]\nt = 4\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n";
     let stated = run_with(program, Some(bar), &["--stock", "30x60"]);
-    assert!(
-        (removed(&guessed) - removed(&stated)).abs() < 1e-6,
-        "{} vs {}",
-        removed(&guessed),
-        removed(&stated)
-    );
+    assert_removed_alike(&guessed, &stated, 1e-6);
 }
 
 /// Field run 6 (C): a tool with no entry that drills off the axis in a drilling cycle with
@@ -284,12 +279,7 @@ fn a_tool_that_bores_by_hand_is_a_boring_bar() {
     );
     let bar = "[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n";
     let stated = run_with(program, Some(bar), &blank);
-    assert!(
-        (removed(&guessed) - removed(&stated)).abs() < 1e-6,
-        "{} vs {}",
-        removed(&guessed),
-        removed(&stated)
-    );
+    assert_removed_alike(&guessed, &stated, 1e-6);
 }
 
 /// Field run 7 (D): a tool with no entry that only plunges is a grooving blade (the
@@ -339,12 +329,7 @@ fn a_g72_hub_step_does_not_turn_the_holders_hand() {
     let hand_notes = warning_messages(&by_hand, "LS-HOLDER-HAND").len();
     assert_eq!(hand_notes, 0, "{:#}", by_hand["warnings"]);
     let stated = run_with(program, Some(&format!("{table}tip = 3\n")), &blank);
-    assert!(
-        (removed(&by_hand) - removed(&stated)).abs() < 1e-9,
-        "{} vs {}",
-        removed(&by_hand),
-        removed(&stated)
-    );
+    assert_removed_alike(&by_hand, &stated, 1e-9);
 }
 
 /// A blade taken from its moves cuts as a blade everywhere (field run 7, p18 and B): a
@@ -399,12 +384,7 @@ fn a_hand_bore_entered_along_a_chamfer_is_a_boring_bar() {
         None,
         &["--stock", "50x40"],
     );
-    assert!(
-        (removed(&chamfered) - removed(&straight)).abs() < 0.5,
-        "{} vs {}",
-        removed(&chamfered),
-        removed(&straight)
-    );
+    assert_removed_alike(&chamfered, &straight, 0.5);
 }
 
 /// Field run 5's part-off with a back chamfer, no table and no G42: short moves along Z
@@ -430,6 +410,25 @@ fn removed(v: &serde_json::Value) -> f64 {
     v["removed_area_mm2"].as_f64().unwrap()
 }
 
+/// That two reports removed the same area (within `tol` mm²).
+fn assert_removed_alike(a: &serde_json::Value, b: &serde_json::Value, tol: f64) {
+    assert!(
+        (removed(a) - removed(b)).abs() < tol,
+        "{} against {}",
+        removed(a),
+        removed(b)
+    );
+}
+
+/// That a report notes, under LS-STOCK, tool `t` with `words` in the note.
+fn assert_stock_note(j: &serde_json::Value, t: &str, words: &str) {
+    let notes = common::warning_messages(j, "LS-STOCK");
+    assert!(
+        notes.iter().any(|m| m.contains(t) && m.contains(words)),
+        "{notes:?}"
+    );
+}
+
 /// Field run 8 (p02): a tool with no entry that only runs a G74 face groove off the axis is
 /// taken for a face-grooving blade, as seed 002 states one (3 mm, its width spanning +x from
 /// its inner corner, its body toward +Z), not the radial default, which stood 20 mm along X
@@ -442,19 +441,8 @@ fn a_face_groove_with_no_entry_is_cut_by_a_face_blade() {
     let table = std::fs::read_to_string(asset("tools/seed002-face3-drill10.toml")).unwrap();
     let stated = run_with(&program, Some(&table), &["--stock", "40x40"]);
     let guessed = run_with(&program, None, &["--stock", "40x40"]);
-    assert!(
-        (removed(&guessed) - removed(&stated)).abs() < 1e-3,
-        "{} against {}",
-        removed(&guessed),
-        removed(&stated)
-    );
-    let notes = common::warning_messages(&guessed, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T01") && m.contains("width +x, shank +z")),
-        "{notes:?}"
-    );
+    assert_removed_alike(&guessed, &stated, 1e-3);
+    assert_stock_note(&guessed, "T01", "width +x, shank +z");
 }
 
 /// Review 1128g (#1): a G75's escape at the bottom (R) runs along Z, as a G74's pecks do.
@@ -477,20 +465,9 @@ fn a_g75_with_an_escape_is_still_a_radial_blade() {
         "{:#}",
         with["crashes"]
     );
-    let notes = common::warning_messages(&with, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T02") && m.contains("width +z, shank -x")),
-        "{notes:?}"
-    );
+    assert_stock_note(&with, "T02", "width +z, shank -x");
     // the escape takes 0.3 mm off each groove wall's bottom corner at most
-    assert!(
-        (removed(&with) - removed(&without)).abs() < 1.0,
-        "{} against {}",
-        removed(&with),
-        removed(&without)
-    );
+    assert_removed_alike(&with, &without, 1.0);
 }
 
 /// Field run 9 (A): a bush's counterbore roughed and finished by G72 with a boring tool
@@ -509,13 +486,7 @@ fn a_bore_faced_in_layers_by_g72_is_a_boring_bars() {
         &["--stock", "50x50", "--stock-z", "0.5"],
     );
     assert_eq!(j["verdict"], "clean", "{:#}", j["gouges"]);
-    let notes = common::warning_messages(&j, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T03") && m.contains("boring bar")),
-        "{notes:?}"
-    );
+    assert_stock_note(&j, "T03", "boring bar");
 }
 
 /// Field run 9 (B): a counterbore faced out by G94 in a drilled hole, the boring tool
@@ -584,17 +555,6 @@ fn a_blade_entry_without_its_side_that_plunges_from_a_bore_is_an_id_blade() {
         &["--stock", "50x50"],
     );
     assert_eq!(unstated["verdict"], "clean", "{:#}", unstated["crashes"]);
-    assert!(
-        (removed(&unstated) - removed(&stated)).abs() < 1e-6,
-        "{} against {}",
-        removed(&unstated),
-        removed(&stated)
-    );
-    let notes = common::warning_messages(&unstated, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T05") && m.contains("ID blade")),
-        "{notes:?}"
-    );
+    assert_removed_alike(&unstated, &stated, 1e-6);
+    assert_stock_note(&unstated, "T05", "ID blade");
 }
