@@ -85,6 +85,10 @@ impl MemoryBudget {
 #[derive(Debug)]
 pub struct Ledger {
     held: Vec<AtomicU64>,
+    /// The most a program held when it was stopped over the budget: a program holding no
+    /// more goes on (the process's own memory may keep it over a small budget after the
+    /// program that grew has stopped; whether the small one then stopped too was a race).
+    stopped: AtomicU64,
 }
 
 impl Ledger {
@@ -95,6 +99,7 @@ impl Ledger {
                 .into_iter()
                 .map(|b| AtomicU64::new(b.max(1)))
                 .collect(),
+            stopped: AtomicU64::new(0),
         })
     }
 
@@ -105,13 +110,17 @@ impl Ledger {
         }
     }
 
-    /// Whether program `i` holds at least as much as every other program not done.
-    fn holds_most(&self, i: usize) -> bool {
+    /// Whether program `i`, the process being over its budget, is the one to stop: it holds
+    /// at least as much as every other program not done, and more than any program stopped
+    /// before it held (which it then becomes).
+    fn stops(&self, i: usize) -> bool {
         let mine = self.held.get(i).map_or(0, |h| h.load(Ordering::Relaxed));
-        self.held
+        let most = self
+            .held
             .iter()
             .enumerate()
-            .all(|(j, h)| j == i || h.load(Ordering::Relaxed) <= mine)
+            .all(|(j, h)| j == i || h.load(Ordering::Relaxed) <= mine);
+        most && self.stopped.fetch_max(mine, Ordering::Relaxed) < mine
     }
 }
 
@@ -180,7 +189,7 @@ impl RunMemory {
         let mine = self
             .batch
             .as_ref()
-            .is_none_or(|(ledger, i)| ledger.holds_most(*i));
+            .is_none_or(|(ledger, i)| ledger.stops(*i));
         mine.then_some(held)
     }
 }

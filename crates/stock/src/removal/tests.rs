@@ -936,5 +936,15 @@ fn a_run_over_its_memory_budget_stops_and_says_what_grew() {
         ledger.done(1);
         let alone = with(Some(RunMemory::in_batch(MemoryBudget::new(1), ledger, 0)));
         assert!(alone.over_budget.is_some());
+        // a program stopped over the budget leaves what it held as the bar: one holding no
+        // more goes on after it, whatever the process's own memory (it stopped too, or not,
+        // as the two raced)
+        let ledger = Ledger::new([1, 1]);
+        let first = RunMemory::in_batch(MemoryBudget::new(1), ledger.clone(), 1);
+        first.holds(u64::MAX / 2);
+        assert!(first.over().is_some(), "the one to stop");
+        ledger.done(1);
+        let after = with(Some(RunMemory::in_batch(MemoryBudget::new(1), ledger, 0)));
+        assert!(after.over_budget.is_none());
     }
 }
