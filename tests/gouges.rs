@@ -44,6 +44,35 @@ fn run_program(
     run_json(&args)
 }
 
+/// The one gouge of a run that fails on it (exit 1), at `line`, `depth` mm deep (within
+/// the tolerance given beside it).
+fn the_gouge<'a>(
+    out: &Out,
+    v: &'a serde_json::Value,
+    line: u32,
+    (depth, tol): (f64, f64),
+) -> &'a serde_json::Value {
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    let gouges = v["gouges"].as_array().unwrap();
+    assert_eq!(gouges.len(), 1, "{gouges:#?}");
+    let gouge = &gouges[0];
+    assert_eq!(gouge["line"], line, "{gouge:#}");
+    let found = gouge["depth_mm"].as_f64().unwrap();
+    assert!((found - depth).abs() < tol, "{gouge:#}");
+    gouge
+}
+
+/// That a run is clean: exit 0, no crash, no gouge.
+fn assert_clean(out: &Out, v: &serde_json::Value) {
+    assert_eq!(
+        (out.code, v["verdict"].as_str()),
+        (0, Some("clean")),
+        "{:#} {:#}",
+        v["crashes"],
+        v["gouges"]
+    );
+}
+
 /// The report's warnings of this code.
 fn warnings<'a>(v: &'a serde_json::Value, code: &str) -> Vec<&'a serde_json::Value> {
     v["warnings"]
@@ -650,12 +679,7 @@ fn a_later_blade_cut_is_judged_apart_from_the_gouge_beside_it() {
     let skim = "O0005 (SKIM PASS 0.4 UNDER 29.8, THEN A RELIEF GROOVE)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X48. Z2.\nG71 U2. R0.5\nG71 P100 Q200 U0.4 W0.1 F0.25\nN100 G00 G42 X26.\nG01 Z0. F0.15\nX29.8 Z-1.9\nZ-25.\nX38.\nX40. Z-26.\nZ-45.\nN200 G01 G40 X48.\nG70 P100 Q200\nG00 X29. Z2.\nG01 Z-20. F0.1\nG00 X48.\nG00 X150. Z100.\nT0303\nG97 S600 M03\nG00 X42. Z-22.\nG01 X26. F0.05\nG00 X42.\nG00 X150. Z100.\nM30\n";
     let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"-z\"\nshank_dir = \"+x\"\nreach = 15.0\n";
     let (out, v) = run_fanuc("skim.nc", skim, tools, "45x60");
-    assert_eq!(out.code, 1, "{}", out.stderr);
-    let gouges = v["gouges"].as_array().unwrap();
-    assert_eq!(gouges.len(), 1, "{gouges:#?}");
-    assert_eq!(gouges[0]["line"], 18, "{gouges:#?}");
-    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
-    assert!((depth - 0.4).abs() < 1e-3, "{gouges:#?}");
+    let gouge = the_gouge(&out, &v, 18, (0.4, 1e-3));
     let later = warnings(&v, "LS-LATER-CUT");
     assert!(later.iter().any(|w| w["line"] == 24), "{later:#?}");
 
@@ -668,12 +692,7 @@ fn a_later_blade_cut_is_judged_apart_from_the_gouge_beside_it() {
         Some(bush_tools),
         &["--stock", "42x40", "--bore", "24"],
     );
-    assert_eq!(
-        (out.code, v["verdict"].as_str()),
-        (0, Some("clean")),
-        "{:#}",
-        v["gouges"]
-    );
+    assert_clean(&out, &v);
     let later = warnings(&v, "LS-LATER-CUT");
     assert!(later.iter().any(|w| w["line"] == 23), "{later:#?}");
 }
@@ -691,24 +710,14 @@ fn a_bore_finished_under_g42_is_a_gouge_at_the_finishing_pass() {
     };
     let tools = "[[tool]]\nt = 2\nkind = \"drill\"\ndiameter = 24.0\npoint_angle = 118\nreach = 80.0\n[[tool]]\nt = 3\nkind = \"turning\"\ninsert = \"DCMT 070204\"\ntip = 2\nentering_angle = 93\nshank = 16.0\n";
     let (out, v) = run_fanuc("g42.nc", &program("G42"), tools, "40x40");
-    assert_eq!(out.code, 1, "{}", out.stderr);
-    let gouges = v["gouges"].as_array().unwrap();
-    assert_eq!(gouges.len(), 1, "{gouges:#?}");
-    assert_eq!(gouges[0]["line"], 16, "{gouges:#?}");
-    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
-    assert!((depth - 0.8).abs() < 1e-3, "{gouges:#?}");
-    let area = gouges[0]["area_mm2"].as_f64().unwrap();
-    assert!((area - 21.6).abs() < 0.01, "{gouges:#?}");
+    let gouge = the_gouge(&out, &v, 16, (0.8, 1e-3));
+    let area = gouge["area_mm2"].as_f64().unwrap();
+    assert!((area - 21.6).abs() < 0.01, "{gouge:#}");
     let side = warnings(&v, "LS-COMP-SIDE");
     assert_eq!(side.len(), 1, "{:#}", v["warnings"]);
     assert_eq!(side[0]["line"], 16);
     let (out, v) = run_fanuc("g41.nc", &program("G41"), tools, "40x40");
-    assert_eq!(
-        (out.code, v["verdict"].as_str()),
-        (0, Some("clean")),
-        "{:#}",
-        v["gouges"]
-    );
+    assert_clean(&out, &v);
     assert!(warnings(&v, "LS-COMP-SIDE").is_empty());
 }
 
@@ -725,23 +734,13 @@ fn a_skim_under_a_thread_crest_is_a_gouge_at_the_skim() {
     };
     let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 4\nkind = \"threading\"\nangle = 60\ntip_flat = 0.0\n";
     let (out, v) = run_fanuc("crest.nc", &program("29."), tools, "45x60");
-    assert_eq!(out.code, 1, "{}", out.stderr);
-    let gouges = v["gouges"].as_array().unwrap();
-    assert_eq!(gouges.len(), 1, "{gouges:#?}");
-    assert_eq!(gouges[0]["line"], 18, "{gouges:#?}");
-    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
-    assert!((depth - 0.4).abs() < 1e-3, "{gouges:#?}");
+    let gouge = the_gouge(&out, &v, 18, (0.4, 1e-3));
     // 0.4 mm × 18.3 mm (from the chamfer's Φ29 at Z-1.7 to Z-20), less the skim's r0.8 nose's fillet at Z-20 and the chamfer's triangle
-    let area = gouges[0]["area_mm2"].as_f64().unwrap();
-    assert!((area - 7.2).abs() < 0.05, "{gouges:#?}");
+    let area = gouge["area_mm2"].as_f64().unwrap();
+    assert!((area - 7.2).abs() < 0.05, "{gouge:#}");
 
     let (out, v) = run_fanuc("crest-ok.nc", &program("29.8"), tools, "45x60");
-    assert_eq!(
-        (out.code, v["verdict"].as_str()),
-        (0, Some("clean")),
-        "{:#}",
-        v["gouges"]
-    );
+    assert_clean(&out, &v);
 }
 
 /// Field run 8 (J): an OD finished by hand under G42 whose start-up move ends on the part's
@@ -761,24 +760,14 @@ fn a_nick_at_the_compensation_start_up_names_the_start_up() {
         tools,
         "42x40",
     );
-    assert_eq!(out.code, 1, "{}", out.stderr);
-    let gouges = v["gouges"].as_array().unwrap();
-    assert_eq!(gouges.len(), 1, "{gouges:#?}");
-    assert_eq!(gouges[0]["line"], 8, "{gouges:#?}");
-    let depth = gouges[0]["depth_mm"].as_f64().unwrap();
-    assert!((depth - 0.107).abs() < 0.002, "{gouges:#?}");
-    let cause = gouges[0]["cause"]["text"].as_str().unwrap();
+    let gouge = the_gouge(&out, &v, 8, (0.107, 0.002));
+    let cause = gouge["cause"]["text"].as_str().unwrap();
     assert!(cause.contains("starts the compensation"), "{cause}");
     assert!(!cause.contains("G41"), "{cause}");
 
     let air = program("G42 G00 X30. Z2.\nG01 Z0. F0.1\n");
     let (out, v) = run_fanuc("air.nc", &air, tools, "42x40");
-    assert_eq!(
-        (out.code, v["verdict"].as_str()),
-        (0, Some("clean")),
-        "{:#}",
-        v["gouges"]
-    );
+    assert_clean(&out, &v);
 
     // the same start-up inside a G71/G70 shape (review 1128g, #4: it still said G41)
     let g70 = "O0016 (OD G71/G70, COMPENSATION STARTED ONTO THE CORNER)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X44. Z2.\nG71 U1.5 R0.5\nG71 P100 Q200 U0.4 W0.1 F0.2\nN100 G00 X26.\nG42 G01 X30. Z0. F0.1\nZ-27.\nN200 G40 G01 X44.\nG70 P100 Q200\nG00 X150. Z100.\nM30\n";
@@ -811,12 +800,7 @@ fn a_rapid_grazing_a_face_guessed_tools_left_is_a_possible_crash() {
         None,
         &["--stock", "40x40"],
     );
-    assert_eq!(
-        (out.code, v["verdict"].as_str()),
-        (0, Some("clean")),
-        "{:#}",
-        v["crashes"]
-    );
+    assert_clean(&out, &v);
     let crashes = v["crashes"].as_array().unwrap();
     assert_eq!(crashes.len(), 1, "{crashes:#?}");
     assert_eq!(crashes[0]["line"], 27, "{crashes:#?}");

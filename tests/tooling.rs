@@ -145,6 +145,13 @@ fn run_without_table(program: &str) -> serde_json::Value {
 /// A program on the blank `stock` (`--stock` and such) with the tool table `table` (none:
 /// no table), and its JSON; the run must pass.
 fn run_with(program: &str, table: Option<&str>, stock: &[&str]) -> serde_json::Value {
+    let (out, json) = run_json_with(program, table, stock);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    json
+}
+
+/// [`run_with`], whatever the run's exit: its output and its JSON.
+fn run_json_with(program: &str, table: Option<&str>, stock: &[&str]) -> (Out, serde_json::Value) {
     let (dir, path) = temp_program("drill.nc", program.as_bytes());
     let json = dir.path().join("r.json");
     let tools = dir.path().join("tools.toml");
@@ -163,8 +170,8 @@ fn run_with(program: &str, table: Option<&str>, stock: &[&str]) -> serde_json::V
         args.extend(["--tools", tools.to_str().unwrap()]);
     }
     let out = latsim(&args);
-    assert_eq!(out.code, 0, "{}", out.stderr);
-    serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap()
+    let json = serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap();
+    (out, json)
 }
 
 /// Field run 3 (D): a tool with no entry that only feeds along the axis at X0 is taken for
@@ -210,13 +217,7 @@ fn a_tool_that_finishes_a_bore_under_g41_is_a_boring_bar() {
         gouges.iter().all(|g| g["assumed_tool"] == true),
         "{gouges:#?}"
     );
-    let notes = warning_messages(&guessed, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T04") && m.contains("boring bar")),
-        "{notes:?}"
-    );
+    assert_stock_note(&guessed, "T04", "boring bar");
     let bar = "[[tool]]\nt = 4\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n";
     let stated = run_with(program, Some(bar), &["--stock", "30x60"]);
     assert_removed_alike(&guessed, &stated, 1e-6);
@@ -237,13 +238,7 @@ fn an_offset_drill_with_no_entry_is_a_drill() {
     let hand = 25.0 * 6.0 - (0.5 + 12.5) * slope;
     let area = removed(&v);
     assert!((area - hand).abs() < 0.01, "{area} vs {hand}");
-    let notes = warning_messages(&v, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T05") && m.contains("taken for a drill")),
-        "{notes:?}"
-    );
+    assert_stock_note(&v, "T05", "taken for a drill");
     assert!(
         v["gouges"].as_array().unwrap().is_empty(),
         "{:#}",
@@ -262,13 +257,7 @@ fn a_tool_that_bores_by_hand_is_a_boring_bar() {
     let program = "O8000 (NUT M24X1.5)\nG21 G18 G40 G99\nT0303 (BORING BAR)\nG96 S150 M03\nG00 X20. Z2.\nG01 Z-20. F0.15\nX19.\nG00 Z2.\nX22.4\nG01 Z0. F0.1\nZ-20.\nX19.\nG00 Z2.\nG28 U0. W0.\nT0505 (ID THREAD 1.5)\nG97 S600 M03\nG00 X21. Z4.\nG76 P010060 Q50 R0.02\nG76 X24. Z-18. P920 Q250 F1.5\nG00 Z5.\nG28 U0. W0.\nM30\n";
     let blank = ["--stock", "36x30", "--bore", "18"];
     let guessed = run_with(program, None, &blank);
-    let notes = warning_messages(&guessed, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T03") && m.contains("boring bar")),
-        "{notes:?}"
-    );
+    assert_stock_note(&guessed, "T03", "boring bar");
     let thread = &guessed["threads"][0];
     assert_eq!(thread["side"], "id", "{thread:#}");
     let angle = thread["included_angle_deg"].as_f64().unwrap();
@@ -372,13 +361,7 @@ fn a_hand_bore_entered_along_a_chamfer_is_a_boring_bar() {
         None,
         &["--stock", "50x40"],
     );
-    let notes = warning_messages(&chamfered, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T04") && m.contains("boring bar")),
-        "{notes:?}"
-    );
+    assert_stock_note(&chamfered, "T04", "boring bar");
     let straight = run_with(
         &program("X24.4\nG01 Z0.5 F0.1\n"),
         None,
@@ -396,13 +379,7 @@ fn a_part_off_chamfering_by_hand_with_no_table_is_a_blade() {
     let program = "O5006 (PIN D40 X 13 - PART OFF WITH A BACK CHAMFER)\nG21 G40 G99\nG50 S3000\nT0101\nG96 S200 M03\nG00 X52. Z2. M08\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X36.\nG01 Z0. F0.1\nX40. Z-2.\nZ-16.\nN20 X52.\nG70 P10 Q20\nG28 U0. W0.\nT0909 (PART-OFF BLADE 3 MM)\nG96 S120 M03\nG00 X52. Z-14.1\nG01 X50. F0.1\nX48. Z-13.\nX39.5\nX43.\nZ-12.3\nX40.6\nX39.1 Z-13.\nX30.\nG00 X52.\nG28 U0. W0.\nM30\n";
     let v = run_with(program, None, &["--stock", "50x40"]);
     assert_eq!(v["verdict"], "clean", "{:#}", v["gouges"]);
-    let notes = warning_messages(&v, "LS-STOCK");
-    assert!(
-        notes
-            .iter()
-            .any(|m| m.contains("T09") && m.contains("grooving blade")),
-        "{notes:?}"
-    );
+    assert_stock_note(&v, "T09", "grooving blade");
 }
 
 /// A report's removed area, mm².
@@ -515,24 +492,11 @@ fn an_insert_listed_alone_that_bores_is_a_boring_bar() {
         "{notes:?}"
     );
     // a stated tip is the table's word
-    let (dir, path) = temp_program("tip3.nc", program.as_bytes());
-    let tools = dir.path().join("tools.toml");
-    std::fs::write(&tools, table("tip = 3\n")).unwrap();
-    let out = latsim(&[
-        "run",
-        path.to_str().unwrap(),
-        "--control",
-        "fanuc-a",
-        "--stock",
-        "50x50",
-        "--stock-z",
-        "0.5",
-        "--tools",
-        tools.to_str().unwrap(),
-        "--json",
-        dir.path().join("r.json").to_str().unwrap(),
-        "--quiet",
-    ]);
+    let (out, _) = run_json_with(
+        program,
+        Some(&table("tip = 3\n")),
+        &["--stock", "50x50", "--stock-z", "0.5"],
+    );
     assert_eq!(out.code, 1, "{}", out.stderr);
 }
 
