@@ -679,7 +679,7 @@ fn a_later_blade_cut_is_judged_apart_from_the_gouge_beside_it() {
     let skim = "O0005 (SKIM PASS 0.4 UNDER 29.8, THEN A RELIEF GROOVE)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X48. Z2.\nG71 U2. R0.5\nG71 P100 Q200 U0.4 W0.1 F0.25\nN100 G00 G42 X26.\nG01 Z0. F0.15\nX29.8 Z-1.9\nZ-25.\nX38.\nX40. Z-26.\nZ-45.\nN200 G01 G40 X48.\nG70 P100 Q200\nG00 X29. Z2.\nG01 Z-20. F0.1\nG00 X48.\nG00 X150. Z100.\nT0303\nG97 S600 M03\nG00 X42. Z-22.\nG01 X26. F0.05\nG00 X42.\nG00 X150. Z100.\nM30\n";
     let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n[[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"-z\"\nshank_dir = \"+x\"\nreach = 15.0\n";
     let (out, v) = run_fanuc("skim.nc", skim, tools, "45x60");
-    let gouge = the_gouge(&out, &v, 18, (0.4, 1e-3));
+    the_gouge(&out, &v, 18, (0.4, 1e-3));
     let later = warnings(&v, "LS-LATER-CUT");
     assert!(later.iter().any(|w| w["line"] == 24), "{later:#?}");
 
