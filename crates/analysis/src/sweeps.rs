@@ -1,7 +1,7 @@
 //! The sweeps of moves near a region: which feeds cut features (a blade's, a drill's, a
 //! threading tool's), whether a move's sweep may reach a box, and the union of the sweeps
-//! of the moves a rule takes. The deviation splits what feature cuts swept of gone part
-//! material; the intents give a thread's band back where a turning feed swept it.
+//! of the moves a rule takes: the deviation's split of what feature cuts swept of gone
+//! part material, and its gouges' makers.
 
 use expander::{Motion, Segment};
 use geom::flat::pts;

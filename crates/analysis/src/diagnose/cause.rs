@@ -5,7 +5,7 @@ use crate::deviation::Finding;
 use crate::findings::{Cause, CauseKind, Crash};
 use crate::{Intent, Settings};
 use expander::{Motion, Segment};
-use geom::flat::P;
+use geom::flat::{segment_distance, P};
 use stock::{Mounts, Tool};
 
 /// How near a move's sweep must come to a gouge's deepest point to have reached it, mm (the
@@ -301,7 +301,7 @@ fn steepness(a: P, b: P) -> Option<f64> {
 fn flank_deg(intents: &[Intent], p: P) -> Option<f64> {
     let mut best: Option<(f64, f64)> = None;
     for (a, b) in outline_edges(intents) {
-        let d = geom::flat::segment_distance(p, a, b);
+        let d = segment_distance(p, a, b);
         if let Some(deg) = steepness(a, b).filter(|_| best.is_none_or(|(bd, _)| d < bd)) {
             best = Some((d, deg));
         }
@@ -319,10 +319,7 @@ fn steepest_touched(intents: &[Intent], shape: &stock::Shape) -> Option<f64> {
     let bbox = geom::Rect::of(pts.iter().map(|&p| geom::Pt::from(p))).grown(TOUCH);
     outline_edges(intents)
         .filter(|&(a, b)| geom::Rect::of([geom::Pt::from(a), geom::Pt::from(b)]).intersects(&bbox))
-        .filter(|&(a, b)| {
-            pts.iter()
-                .any(|&p| geom::flat::segment_distance(p, a, b) <= TOUCH)
-        })
+        .filter(|&(a, b)| pts.iter().any(|&p| segment_distance(p, a, b) <= TOUCH))
         .filter_map(|(a, b)| steepness(a, b))
         .reduce(f64::max)
 }
@@ -415,11 +412,7 @@ pub(super) fn wrong_side_owner(
 
 /// Whether `p` lies on `it`'s drawn outline (within 10⁻³ mm).
 fn along_outline(it: &Intent, p: P) -> bool {
-    it.outline.iter().any(|(pts, closed)| {
-        let n = pts.len();
-        let edges = if *closed { n } else { n.saturating_sub(1) };
-        (0..edges).any(|k| segment_distance(p, pts[k], pts[(k + 1) % n]) <= 1e-3)
-    })
+    outline_edges(std::slice::from_ref(it)).any(|(a, b)| segment_distance(p, a, b) <= 1e-3)
 }
 
 /// A nick the nose makes at the end of move `j` when that move starts a compensation
@@ -568,18 +561,6 @@ fn box_distance(seg: &Segment, p: P) -> f64 {
     let dz = (z0 - p[0]).max(p[0] - z1).max(0.0);
     let dr = (r0 - p[1]).max(p[1] - r1).max(0.0);
     dz.hypot(dr)
-}
-
-/// Distance from `p` to the segment `a`–`b`.
-fn segment_distance(p: P, a: P, b: P) -> f64 {
-    let (dz, dr) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dz * dz + dr * dr;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dz + (p[1] - a[1]) * dr) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (a[0] + t * dz - p[0]).hypot(a[1] + t * dr - p[1])
 }
 
 /// Whether the intended boundary at `p` (an edge within 0.01 mm of it) is a slope: an edge
