@@ -150,17 +150,18 @@ fn own(
                 .collect();
             // the tool that finishes the contour, from where its first cycle began (a G71's
             // roughing before the G70): later feeds of other tools are theirs
+            let comp = match i.kind {
+                IntendedKind::Compensated { part_on_left } => Some(super::Comp {
+                    part_on_left,
+                    wrong_side: wrong_side(i, segments, tools),
+                }),
+                _ => None,
+            };
             let owner = segments.get(i.after_move).map(|s| super::Owner {
                 tool: s.tool,
                 began: i.began,
                 finish: i.after_move,
-                comp: match i.kind {
-                    IntendedKind::Compensated { part_on_left } => Some(super::Comp {
-                        part_on_left,
-                        wrong_side: wrong_side(i, segments, tools),
-                    }),
-                    _ => None,
-                },
+                comp,
             });
             let contour = |intent: Option<Intent>| intent.map(|x| Intent { owner, ..x });
             // read against the stock where its cycle began; a contour wholly in the air
@@ -178,7 +179,7 @@ fn own(
                     IntendedKind::Compensated { part_on_left } => {
                         // the side the tool's stated tip gives wins over a G41/G42 that
                         // contradicts it (LS-COMP-SIDE)
-                        let wrong = wrong_side(i, segments, tools);
+                        let wrong = comp.is_some_and(|c| c.wrong_side);
                         Intent::compensated(&pts, (part_on_left != below) != wrong, &stages)
                     }
                 }
