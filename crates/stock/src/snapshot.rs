@@ -20,9 +20,13 @@ const PLAYER: usize = 30;
 /// removal's tiles (the 10⁵-move cutting zig-zag: 29 of them added 3.2 s to a 4.1 s run).
 const PLAYER_LONG: usize = 10;
 
-use crate::overlay::{Engine, IShapes};
-use crate::removal::Strips;
+use crate::overlay::{Engine, IBox, IShapes};
+use crate::removal::joined;
 use crate::sweep::Sweeps;
+
+/// A stop whose snapshot is wanted: (moves done there, the tiles of every strip there, the
+/// sweep so far of a merged run still open there).
+pub(crate) type Stop = (usize, Vec<(IBox, IShapes)>, Option<Sweeps>);
 
 /// Move counts after which the HTML player shows the stock (its move slider): evenly
 /// spread over the program's `moves`.
@@ -114,32 +118,62 @@ impl Snapshots {
             || self.pinned.binary_search(&moves).is_ok()
     }
 
-    /// At an epoch that ended at a stop after `moves` moves (exact mode): takes the
-    /// snapshot wanted there, the union of the tiles of `strips`, less the sweep of a
-    /// merged run still `open` there (its cut comes when it ends).
-    pub(crate) fn at_stop(
-        &mut self,
-        moves: usize,
-        open: Option<&Sweeps>,
-        strips: &Strips,
-        engine: &mut Engine,
-    ) {
-        if !self.wanted(moves) {
+    /// At the end of an epoch with stops where snapshots are wanted (exact mode, or pinned
+    /// counts): for each, (moves done there, the tiles every strip had there, the sweep so
+    /// far of a merged run still open there), takes the snapshot: the union of the tiles,
+    /// less the open run's sweep (its cut comes when it ends). The unions are made on up to
+    /// `threads` threads: 29 of them on 1 000 small arcs were 20 ms on one.
+    pub(crate) fn at_stops(&mut self, stops: Vec<Stop>, threads: usize, engine: &mut Engine) {
+        let take = |(moves, tiles, open): Stop, engine: &mut Engine| {
+            let stock = joined(&tiles, engine);
+            let snap = match open {
+                Some(open) => {
+                    let polys = open
+                        .items
+                        .iter()
+                        .filter(|it| it.body.is_none())
+                        .flat_map(|it| open.polys_of(it));
+                    engine.difference(&stock, polys)
+                }
+                None => stock,
+            };
+            (moves, snap)
+        };
+        let threads = threads.clamp(1, stops.len().max(1));
+        if threads == 1 {
+            for stop in stops {
+                let snap = take(stop, engine);
+                self.out.push(snap);
+            }
             return;
         }
-        let stock = strips.stock(engine);
-        let snap = match open {
-            Some(open) => {
-                let polys = open
-                    .items
-                    .iter()
-                    .filter(|it| it.body.is_none())
-                    .flat_map(|it| open.polys_of(it));
-                engine.difference(&stock, polys)
-            }
-            None => stock,
-        };
-        self.out.push((moves, snap));
+        // stop m goes to thread m % threads; the calling thread takes the first share
+        let mut shares: Vec<Vec<Stop>> = (0..threads).map(|_| Vec::new()).collect();
+        for (m, stop) in stops.into_iter().enumerate() {
+            shares[m % threads].push(stop);
+        }
+        let mut shares = shares.into_iter();
+        let mine = shares.next().unwrap_or_default();
+        let taken: Vec<Vec<(usize, IShapes)>> = std::thread::scope(|s| {
+            let handles: Vec<_> = shares
+                .map(|share| {
+                    s.spawn(move || {
+                        let mut engine = Engine::new();
+                        share
+                            .into_iter()
+                            .map(|stop| take(stop, &mut engine))
+                            .collect::<Vec<_>>()
+                    })
+                })
+                .collect();
+            let mut all = vec![mine.into_iter().map(|stop| take(stop, engine)).collect()];
+            // a thread that panicked lost its snapshots; the player shows the others
+            all.extend(handles.into_iter().map(|h| h.join().unwrap_or_default()));
+            all
+        });
+        let mut taken: Vec<(usize, IShapes)> = taken.into_iter().flatten().collect();
+        taken.sort_by_key(|(k, _)| *k);
+        self.out.extend(taken);
     }
 
     /// At an epoch end (epoch mode): `stock()` is the stock holding the cuts of the first

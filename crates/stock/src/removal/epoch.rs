@@ -101,15 +101,23 @@ impl Strips {
 
     /// Cuts an epoch's sweeps into the strips (`lists[k]`: the sweeps that reach strip `k`),
     /// the workers taking strips in turn; the calling thread first does `meanwhile`
-    /// (building the next epoch), then joins them. Returns the rapid cuts found.
+    /// (building the next epoch), then joins them. Each strip ends its batches at the
+    /// epoch's `stops` and, where a snapshot is wanted, keeps a copy of its tiles there, so
+    /// no strip waits for another at a stop. Returns the rapid cuts found and, for each
+    /// stop whose snapshot is wanted, the tiles of every strip there.
     fn cut(
         &self,
-        lists: &[Vec<u32>],
+        (lists, stops): (&[Vec<u32>], &[Stop]),
         ctx: &Ctx,
         engine: &mut Engine,
         meanwhile: impl FnOnce(),
-    ) -> Vec<Fragment> {
+    ) -> (Vec<Fragment>, Vec<Vec<(IBox, IShapes)>>) {
         let next_strip = AtomicUsize::new(0);
+        let n = self.nodes.len();
+        let wanted = stops.iter().filter(|s| s.wanted).count();
+        // [wanted stop][strip]: each filled once, by the worker that takes the strip
+        let kept: Vec<Mutex<Vec<(IBox, IShapes)>>> =
+            (0..wanted * n).map(|_| Mutex::default()).collect();
         let work = |engine: &mut Engine| {
             let mut worker = Worker {
                 engine,
@@ -121,15 +129,33 @@ impl Strips {
             };
             loop {
                 let k = next_strip.fetch_add(1, Ordering::Relaxed);
-                if k >= self.nodes.len() {
+                if k >= n {
                     break;
                 }
-                if lists[k].is_empty() {
+                let list = &lists[k];
+                if list.is_empty() && wanted == 0 {
                     continue;
                 }
                 // a poisoned lock only means another worker panicked; its data is still whole
                 let mut strip = self.nodes[k].lock().unwrap_or_else(|e| e.into_inner());
-                strip.process(&lists[k], ctx, &mut worker);
+                let mut from = 0;
+                let mut w = 0;
+                for stop in stops {
+                    let to = from + list[from..].partition_point(|&i| (i as usize) < stop.items);
+                    if to > from {
+                        strip.process(&list[from..to], ctx, &mut worker);
+                    }
+                    from = to;
+                    if stop.wanted {
+                        let mut tiles = Vec::new();
+                        strip.gather(&mut tiles);
+                        *kept[w * n + k].lock().unwrap_or_else(|e| e.into_inner()) = tiles;
+                        w += 1;
+                    }
+                }
+                if from < list.len() {
+                    strip.process(&list[from..], ctx, &mut worker);
+                }
             }
             worker.frags
         };
@@ -137,10 +163,28 @@ impl Strips {
         // runs make 10⁵ contour moves a few hundred sweeps, which under the old bar of 256
         // were cut on this thread after the next epoch was built, not beside it.
         let total: usize = lists.iter().map(Vec::len).sum();
-        if self.threads <= 1 || total == 0 {
+        let frags = if self.threads <= 1 || total == 0 {
             meanwhile();
-            return work(engine);
-        }
+            work(engine)
+        } else {
+            self.cut_beside(work, engine, meanwhile)
+        };
+        let mut kept = kept
+            .into_iter()
+            .map(|m| m.into_inner().unwrap_or_else(|e| e.into_inner()));
+        let tiles = (0..wanted)
+            .map(|_| kept.by_ref().take(n).flatten().collect())
+            .collect();
+        (frags, tiles)
+    }
+
+    /// Runs `work` on the worker threads and, after `meanwhile`, on the calling thread.
+    fn cut_beside(
+        &self,
+        work: impl Fn(&mut Engine) -> Vec<Fragment> + Sync,
+        engine: &mut Engine,
+        meanwhile: impl FnOnce(),
+    ) -> Vec<Fragment> {
         std::thread::scope(|s| {
             let handles: Vec<_> = (1..self.threads)
                 .map(|_| s.spawn(|| work(&mut Engine::new())))
@@ -197,7 +241,7 @@ impl Strips {
 
 /// The union of the tiles' stock: stitched along the tile sides where they meet as cut
 /// tiles do, else by the boolean union (a debug build checks the stitch against it).
-pub(super) fn joined(tiles: &[(IBox, IShapes)], engine: &mut Engine) -> IShapes {
+pub(crate) fn joined(tiles: &[(IBox, IShapes)], engine: &mut Engine) -> IShapes {
     let union = |engine: &mut Engine| {
         let parts: Vec<IShapes> = tiles.iter().map(|(_, s)| s.clone()).collect();
         engine.union(&parts)
@@ -224,8 +268,22 @@ struct Epoch {
     sweeps: Sweeps,
     /// A merged run of feeds was still open at its end (its cut comes in a later epoch).
     open_run: bool,
-    /// That run's sweep so far, when a snapshot is wanted at the epoch's end.
-    open_sweep: Option<Sweeps>,
+    /// The stops in the epoch and at its end ([`crate::snapshot::stops`]), ascending.
+    stops: Vec<Stop>,
+}
+
+/// A stop in an epoch: every strip ends its batches there (so that every report of a run
+/// reads the same part) and keeps its tiles when a snapshot is wanted there.
+struct Stop {
+    /// Moves done at the stop.
+    moves: usize,
+    /// The epoch's sweeps built by then.
+    items: usize,
+    /// A snapshot is wanted there.
+    wanted: bool,
+    /// The sweep so far of a merged run of feeds still open there, when a snapshot is
+    /// wanted (its cut comes when it ends: the snapshot is the stock less it).
+    open: Option<Sweeps>,
 }
 
 impl Epoch {
@@ -272,7 +330,7 @@ pub(super) struct Epochs<'a> {
     hole: f64,
     /// Most moves an epoch holds.
     len: usize,
-    /// Move counts where an epoch ends besides (`snapshot::stops`), ascending.
+    /// Move counts where the strips end their batches (`snapshot::stops`), ascending.
     stops: Vec<usize>,
     /// Part-offs after which the stock was looked at for pieces that fell.
     checks: usize,
@@ -343,7 +401,7 @@ impl<'a> Epochs<'a> {
         let mut cut_moves = 0;
         let stop = AtomicBool::new(false);
         let mut next = Some(self.build(0, None));
-        while let Some(ep) = next.take() {
+        while let Some(mut ep) = next.take() {
             let lists = strips.lists(&ep.sweeps);
             // the next epoch's sweeps are built while the workers cut this one's, unless this
             // one ends with a part-off (the stock is looked at first: pieces that fell are
@@ -358,7 +416,7 @@ impl<'a> Epochs<'a> {
                 budget: opts.max_memory.as_ref(),
                 stop: &stop,
             };
-            let mut found = strips.cut(&lists, &ctx, engine, || {
+            let (mut found, kept) = strips.cut((&lists, &ep.stops), &ctx, engine, || {
                 if ahead {
                     next = Some(self.build(ep.end, None));
                 }
@@ -372,8 +430,12 @@ impl<'a> Epochs<'a> {
                     break;
                 }
             }
+            let wanted = std::mem::take(&mut ep.stops)
+                .into_iter()
+                .filter(|s| s.wanted);
+            let taken = wanted.zip(kept).map(|(s, tiles)| (s.moves, tiles, s.open));
             self.snapshots
-                .at_stop(ep.end, ep.open_sweep.as_ref(), strips, engine);
+                .at_stops(taken.collect(), strips.threads, engine);
             cut_moves = ep.cut_moves(cut_moves);
             // (at the last epoch end the stock is the final part, which the caller has anyway)
             if ep.end < moves {
@@ -478,9 +540,6 @@ impl<'a> Epochs<'a> {
         let (segments, tools, bore) = (self.segments, self.tools, self.bore);
         let looking = self.checks < MAX_SEPARATION_CHECKS;
         let mut end = (start + self.len).min(segments.len());
-        if let Some(&stop) = self.stops.iter().find(|&&k| k > start) {
-            end = end.min(stop);
-        }
         // a part-off may leave a piece: its epoch ends with it, so that the stock can be
         // looked at before the next move
         let mut hole = self.hole;
@@ -496,22 +555,42 @@ impl<'a> Epochs<'a> {
         if let Some((idx, pieces)) = fallen {
             self.builder.erase(idx, &pieces);
         }
+        let mut stops = Vec::new();
+        let mut next_stop = self.stops.partition_point(|&k| k <= start);
         for (k, seg) in segments[start..end].iter().enumerate() {
             self.builder
                 .push(start + k, seg, segments.get(start + k + 1));
+            let done = start + k + 1;
+            if done < end && self.stops.get(next_stop) == Some(&done) {
+                stops.push(self.stop(done));
+                next_stop += 1;
+            }
         }
         let parting = parting_at.is_some();
         if end == segments.len() || parting {
             self.builder.flush_run();
         }
-        let open_run = self.builder.has_open_run();
-        let open_sweep = (open_run && self.snapshots.wanted(end)).then(|| self.builder.peek_run());
+        if self.stops.get(next_stop) == Some(&end) {
+            stops.push(self.stop(end));
+        }
         Epoch {
             end,
             parting,
             sweeps: self.builder.take(),
-            open_run,
-            open_sweep,
+            open_run: self.builder.has_open_run(),
+            stops,
+        }
+    }
+
+    /// The stop after `moves` moves, the sweeps of those moves built.
+    fn stop(&mut self, moves: usize) -> Stop {
+        let wanted = self.snapshots.wanted(moves);
+        let open = (wanted && self.builder.has_open_run()).then(|| self.builder.peek_run());
+        Stop {
+            moves,
+            items: self.builder.count_at_stop(),
+            wanted,
+            open,
         }
     }
 }

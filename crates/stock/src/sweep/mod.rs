@@ -389,6 +389,13 @@ impl<'a> SweepBuilder<'a> {
         std::mem::replace(&mut self.out, done)
     }
 
+    /// How many sweeps are built so far, at a stop of the removal's batches: a pass group
+    /// closes there, as at [`SweepBuilder::take`] (the current run, if any, stays open).
+    pub(crate) fn count_at_stop(&mut self) -> usize {
+        self.close_group();
+        self.out.items.len()
+    }
+
     /// Takes the sweeps built so far (the current run, if any, stays open; a pass group
     /// closes).
     pub(crate) fn take(&mut self) -> Sweeps {
