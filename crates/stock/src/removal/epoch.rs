@@ -23,6 +23,9 @@ const STRIP_WIDTH: f64 = 30.0;
 const MAX_STRIPS: usize = 64;
 /// Segments handled between two progress reports (also bounds the sweeps held in memory).
 const EPOCH: usize = 32_768;
+/// About how many epochs a program short enough for exact snapshots is cut in: the first
+/// epoch's sweeps are built before any cutting starts, each later one's beside the cutting.
+const EXACT_EPOCHS: usize = 4;
 /// Most part-offs after which the stock is looked at for pieces that fell.
 const MAX_SEPARATION_CHECKS: usize = 1_000;
 
@@ -367,9 +370,10 @@ impl<'a> Epochs<'a> {
         Self {
             builder,
             // programs whose snapshots come from epoch ends get about 30 epochs (depending
-            // only on the program's length, so every report of a run reads the same removal)
+            // only on the program's length, so every report of a run reads the same removal);
+            // shorter ones a few, ending at stops
             len: if snapshots.exact() {
-                EPOCH
+                segments.len().div_ceil(EXACT_EPOCHS).max(1)
             } else {
                 (segments.len() / 30).clamp(1024, EPOCH)
             },
@@ -540,6 +544,12 @@ impl<'a> Epochs<'a> {
         let (segments, tools, bore) = (self.segments, self.tools, self.bore);
         let looking = self.checks < MAX_SEPARATION_CHECKS;
         let mut end = (start + self.len).min(segments.len());
+        if self.snapshots.exact() {
+            // ends at a stop, where every strip ends its batches anyway
+            end = self.stops[self.stops.partition_point(|&k| k < end)..]
+                .first()
+                .map_or(segments.len(), |&k| k.min(segments.len()));
+        }
         // a part-off may leave a piece: its epoch ends with it, so that the stock can be
         // looked at before the next move
         let mut hole = self.hole;
