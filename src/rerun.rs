@@ -45,6 +45,7 @@ impl Rerun for Rerunner<'_> {
         }
         Some(Rerunning {
             findings,
+            part: sim.final_shapes,
             alarms: toolpath.alarms.len(),
         })
     }

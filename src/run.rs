@@ -485,7 +485,16 @@ fn simulate(
             tol: args.tol,
             memory,
         };
-        analysis::diagnose::diagnose(&mut findings, &job.loaded.toolpath, &settings, &rerun);
+        analysis::diagnose::diagnose(
+            &mut findings,
+            (
+                &job.loaded.toolpath,
+                &sim.final_shapes,
+                &job.loaded.source.text,
+            ),
+            &settings,
+            &rerun,
+        );
     }
     (sim, findings)
 }

@@ -902,3 +902,51 @@ fn a_gouge_in_a_bore_is_not_blamed_on_the_od_contours_tool() {
         assert!(!cause.contains("T01"), "{cause}");
     }
 }
+
+/// Field run 10 (B1): no tool table. A shoulder turned by hand, Ø36 to Z-30, then a concave
+/// R4 fillet (`G02 X44. Z-34. R4.`, centre Z-30 Ø44) up to Ø44; a blade's rapid then runs
+/// along Ø36 from Z-22 to Z-32, its programmed point ending 22 − √(16 − 2²) − 18 = 0.536 mm
+/// inside the fillet's stock. Nothing has drilled the solid bar, so no earlier tool can be a
+/// boring bar that cut below the fillet: the point enters uncut stock whatever the tools, a
+/// certain crash (it was possible, the default insert's mirror image "maybe" having cut
+/// there, and the run CLEAN). Drilled first, the same rapid stays possible: a boring bar
+/// fed along that fillet could have taken the stock below it.
+#[test]
+fn a_rapid_into_a_fillet_of_a_solid_bar_is_certain_with_no_table() {
+    let program = |drill: &str| {
+        format!(
+            "G21 G99\nT0101\nG96 S180 M03\n{drill}G00 X46. Z2.\nG01 Z-45. F0.25\nG00 X48. Z2.\n\
+             G00 X40.\nG01 Z-30. F0.25\nG00 X46. Z2.\nG00 X36.\nG01 Z-30. F0.15\n\
+             G02 X44. Z-34. R4.\nG01 X52.\nG00 X60. Z50.\nT0303\nG97 S700 M03\n\
+             G00 X40. Z-22.\nG00 X36.\nG00 Z-32.\nG00 X60.\nM30\n"
+        )
+    };
+    let certain = |v: &serde_json::Value| -> Vec<u64> {
+        v["crashes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["assumed_tool"] != true)
+            .map(|c| c["line"].as_u64().unwrap())
+            .collect()
+    };
+    let (out, v) = run_program(
+        "fillet.nc",
+        &program(""),
+        "fanuc-a",
+        None,
+        &["--stock", "50x60"],
+    );
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert_eq!(certain(&v), [19], "{:#}", v["crashes"]);
+    let drilled = program("T0505\nG97 S900 M03\nG00 X0. Z5.\nG01 Z-30. F0.1\nG00 Z5.\nT0101\n");
+    let (out, v) = run_program(
+        "drilled.nc",
+        &drilled,
+        "fanuc-a",
+        None,
+        &["--stock", "50x60"],
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(certain(&v).is_empty(), "{:#}", v["crashes"]);
+}

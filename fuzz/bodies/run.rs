@@ -110,7 +110,7 @@ pub(crate) fn body(data: &[u8]) {
         settings: &settings,
         left: std::cell::Cell::new(MAX_RERUNS),
     };
-    analysis::diagnose::diagnose(&mut findings, &tp, &settings, &rerun);
+    analysis::diagnose::diagnose(&mut findings, (&tp, &sim.final_shapes, &text), &settings, &rerun);
     let _ = stock::area(&sim.final_shapes);
     let _ = findings.verdict;
 }
@@ -181,10 +181,11 @@ impl analysis::diagnose::Rerun for Rerunner<'_> {
             tools: &tools,
             ..*self.settings
         };
-        let (_, findings) =
+        let (sim, findings) =
             analysis::pipeline(&toolpath, self.intents, &settings, &Default::default(), &mut |_| {});
         Some(analysis::diagnose::Rerunning {
             findings,
+            part: sim.final_shapes,
             alarms: toolpath.alarms.len(),
         })
     }

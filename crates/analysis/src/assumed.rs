@@ -227,15 +227,14 @@ fn uncovered(spans: &[(f64, f64)], cover: &mut [(f64, f64)]) -> Vec<(f64, f64)> 
 /// the body as mounted when the table states the tool, or at least its nose and the way it
 /// points (an insert whose size is assumed: a bigger one cuts on the same side); for a
 /// feed of a tool the table says nothing of (`unknown_feed`: a default stands in, no nose
-/// stated), the
-/// default's edge and its mirror across the path (an OD insert or a boring bar: a T word
-/// alone does not tell which). The stock such a feed leaves is a guess too: the default OD
+/// stated), the default's edge and, where a bore may be (`bore`, [`bore_possible`]), its
+/// mirror across the path (an OD insert or a boring bar: a T word alone does not tell which). The stock such a feed leaves is a guess too: the default OD
 /// insert fed along a bore leaves the wall a boring bar would have cut, and a rapid back
 /// through that wall is no certain crash; a rapid into the bar beyond a shoulder either
 /// would have left stays certain. (A rapid cuts nothing in a sound program: it keeps its
 /// outline.)
-fn may_have_cut(m: &Mounted, unknown_feed: bool) -> Vec<Outline> {
-    if !unknown_feed {
+fn may_have_cut(m: &Mounted, unknown_feed: bool, bore: bool) -> Vec<Outline> {
+    if !unknown_feed || !bore {
         return [Some(&*m.edge), m.body.as_ref().map(|b| &b.outline)]
             .into_iter()
             .flatten()
@@ -253,6 +252,28 @@ fn may_have_cut(m: &Mounted, unknown_feed: bool) -> Vec<Outline> {
     };
     vec![(*m.edge).clone(), mirrored]
 }
+
+/// Whether a tool the table says nothing of may have worked inside a bore before move `i`:
+/// the blank is a tube, or an earlier feed ran along the axis into it (a drill, or a bore's
+/// first pass on centre). A boring bar enters through a bore (simulation.md, "ID tools are
+/// carried along Z"): in a solid bar nothing has drilled, every feed is an OD tool's, and
+/// the mirror image of the default insert (a boring bar) cannot have cut below its path
+/// (field run 10, B1: a blade's rapid 0.5 mm into the fillet a G02 left stayed "possible").
+fn bore_possible(segments: &[Segment], i: usize, blank: &[Shape]) -> bool {
+    let pts = || blank.iter().flat_map(|s| s.outer.iter());
+    let tube = pts().map(|p| p[1].abs()).fold(f64::INFINITY, f64::min) > ON_AXIS;
+    let face = pts().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max);
+    tube || segments[..i].iter().any(|s| {
+        s.motion == Motion::Feed
+            && s.from.r.abs().max(s.to.r.abs()) <= ON_AXIS
+            && s.to.z < s.from.z
+            && s.to.z < face
+    })
+}
+
+/// A feed along Z within this radius of the axis drills, mm (an offset drill included,
+/// field-rules §19).
+const ON_AXIS: f64 = 1.0;
 
 /// Whether `seg` is a feed of a tool whose size the table does not state.
 fn guessed_feed(tools: &ToolTable, seg: &Segment) -> bool {
@@ -272,6 +293,7 @@ pub(crate) fn enters_uncut(
     mounts: &mut Mounts,
     (chord_tol, deeper_than): (f64, f64),
 ) -> bool {
+    let bore = bore_possible(segments, i, blank);
     let blank = Region::new(blank);
     for [a, b] in section_chords(&segments[i], chord_tol) {
         let spans = blank.inside(a, b);
@@ -290,7 +312,7 @@ pub(crate) fn enters_uncut(
         for seg in &segments[..i] {
             let m = mounts.of(seg);
             let unknown = guessed_feed(tools, seg) && m.core.is_none();
-            let outlines = may_have_cut(&m, unknown);
+            let outlines = may_have_cut(&m, unknown, bore);
             let bb = geom::Rect::of(
                 outlines
                     .iter()
@@ -397,6 +419,7 @@ pub(crate) fn core_enters_uncut(
             .iter()
             .flat_map(|s| s.outer.iter().map(|&p| geom::Pt::from(p))),
     );
+    let bore = bore_possible(segments, i, blank);
     let mut earlier = Vec::new();
     for seg in &segments[..i] {
         if seg.motion == Motion::Thread {
@@ -404,7 +427,7 @@ pub(crate) fn core_enters_uncut(
         }
         let path = move_path(seg, chord_tol);
         let m = mounts.of(seg);
-        for part in &may_have_cut(&m, guessed_feed(tools, seg) && m.core.is_none()) {
+        for part in &may_have_cut(&m, guessed_feed(tools, seg) && m.core.is_none(), bore) {
             earlier.extend(float_sweep(part, &path).into_iter().filter(|poly| {
                 geom::Rect::of(poly.iter().map(|&p| geom::Pt::from(p))).intersects(&bb)
             }));

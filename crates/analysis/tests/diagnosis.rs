@@ -4,7 +4,7 @@
 use analysis::diagnose::{Change, Rerun, Rerunning};
 use analysis::{CauseKind, Findings, Intents, Settings};
 use expander::Machine;
-use stock::{Blank, SimOptions, ToolTable};
+use stock::{Blank, Shape, SimOptions, ToolTable};
 
 /// A program, its tools and blank, run like `latsim run` and re-runnable with a change.
 struct Job {
@@ -32,7 +32,7 @@ impl Job {
         self
     }
 
-    fn run(&self, text: &str, tools: &ToolTable) -> (expander::Toolpath, Findings) {
+    fn run(&self, text: &str, tools: &ToolTable) -> (expander::Toolpath, Findings, Vec<Shape>) {
         let program = gcode::parse(text).expect("program parses");
         let opts = expander::Options {
             tools: tools.facts(),
@@ -40,14 +40,14 @@ impl Job {
             ..Default::default()
         };
         let tp = expander::expand(&program, &self.machine, &opts);
-        let (_, f) = analysis::pipeline(
+        let (sim, f) = analysis::pipeline(
             &tp,
             &self.intents,
             &self.settings(tools),
             &SimOptions::default(),
             &mut |_| {},
         );
-        (tp, f)
+        (tp, f, sim.final_shapes)
     }
 
     fn settings<'a>(&'a self, tools: &'a ToolTable) -> Settings<'a> {
@@ -62,8 +62,13 @@ impl Job {
 
     /// The run, diagnosed.
     fn diagnosed(&self) -> (expander::Toolpath, Findings) {
-        let (tp, mut f) = self.run(&self.text, &self.tools);
-        analysis::diagnose::diagnose(&mut f, &tp, &self.settings(&self.tools), self);
+        let (tp, mut f, part) = self.run(&self.text, &self.tools);
+        analysis::diagnose::diagnose(
+            &mut f,
+            (&tp, &part, &self.text),
+            &self.settings(&self.tools),
+            self,
+        );
         (tp, f)
     }
 }
@@ -74,9 +79,10 @@ impl Rerun for Job {
             Change::Tool { t, entry } => (self.text.clone(), self.tools.replaced(*t, entry).ok()?),
             program => (program.edited(&self.text)?, self.tools.clone()),
         };
-        let (tp, findings) = self.run(&text, &tools);
+        let (tp, findings, part) = self.run(&text, &tools);
         Some(Rerunning {
             findings,
+            part,
             alarms: tp.alarms.len(),
         })
     }
@@ -419,4 +425,80 @@ fn a_bar_too_thick_for_the_bore_is_the_body() {
     let c = f.crashes[0].cause.as_ref().unwrap();
     assert_eq!(c.kind, CauseKind::Body, "{}", c.text);
     assert!(c.text.contains("boring bar"), "{}", c.text);
+}
+
+/// A grooving subprogram called twice (field run 10, B3): each call plunges a neck at Ø30,
+/// backs out to Ø36 and rapids 10 mm toward the chuck along Ø36 — the second call's rapid
+/// runs from Z-22 into the R4 fillet the turning left between Ø36 at Z-30 and Ø44 at Z-34
+/// (0.5 mm deep at Z-32). A retract inserted before that rapid (`G00 Z2.`) runs on every
+/// call: the incremental `W-10.` then ends at Z-8, the second neck is cut at Z-8 instead of
+/// Z-22, and the re-run has no finding (no shape to compare). No remedy that moves the
+/// program's own cuts is offered; the crash keeps its cause.
+#[test]
+fn a_fix_that_moves_the_programs_own_cuts_is_no_remedy() {
+    let text = "G99\nT0101\nG96 S180 M03\nG00 X46. Z2.\nG01 Z-45. F0.25\nG00 X48. Z2.\n\
+                G00 X40.\nG01 Z-30. F0.25\nG00 X46. Z2.\nG00 X36.\nG01 Z-30. F0.15\n\
+                G02 X44. Z-34. R4.\nG01 X52.\nG00 X60. Z50.\nT0303\nG97 S700 M03\n\
+                G00 X40. Z-12.\nM98 P0035 L2\nG00 X60.\nM30\nO0035\nG01 X30. F0.05\n\
+                G00 X36.\nW-10.\nM99\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n\
+                 [[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
+    let job = Job::new(text, tools, bar(50.0, 60.0));
+    let (tp, f) = job.diagnosed();
+    let c = f
+        .crashes
+        .iter()
+        .find(|c| !c.assumed)
+        .expect("the rapid into the fillet");
+    assert!(
+        (c.at[0] + 29.5).abs() < 0.5 && (c.at[1] - 18.0).abs() < 0.01,
+        "{:?}",
+        c.at
+    );
+    assert_eq!(c.cause.as_ref().unwrap().kind, CauseKind::Rapid);
+    assert_eq!(tp.segments[c.segment].span.line, 24);
+    // the retract the re-run alone would have taken: no finding, but the part lost a neck
+    let moved = job
+        .rerun(&Change::Insert {
+            line: 24,
+            text: "G00 Z2.".into(),
+        })
+        .unwrap();
+    assert!(moved.findings.crashes.iter().all(|c| c.assumed));
+    assert!(c.remedy.is_none(), "{:?}", c.remedy);
+}
+
+/// A plunge written `G00` where `G01` was meant, into a Φ40 bar at Z-10: fed, it cuts what
+/// it cut, and it meets the bar as the bar came: the remedy is the feed (a retract first
+/// would move the plunge to the face and turn 10 mm more of the bar). A rapid into a fillet
+/// the program turned (field run 10, B1) gets no such remedy: fed, it would take the
+/// fillet's stock off as the rapid did.
+#[test]
+fn a_rapid_plunge_into_the_bar_is_fed_but_not_one_into_a_turned_fillet() {
+    let text = "G99 M03 S600 T0101 F0.1\nG00 X42 Z-10\nG00 X38\nG01 Z-20\nG00 X50\nM30\n";
+    let (tp, f) = Job::new(text, D55, bar(40.0, 60.0)).diagnosed();
+    let c = &f.crashes[0];
+    assert_eq!(tp.segments[c.segment].span.line, 3);
+    let r = c.remedy.as_ref().expect("a checked remedy");
+    assert_eq!(
+        (r.line, r.edit.as_deref()),
+        (Some(3), Some("G01")),
+        "{}",
+        r.text
+    );
+
+    let text = "G99 M03 S600 T0101\nG00 X46. Z2.\nG01 Z-45. F0.25\nG00 X48. Z2.\nG00 X40.\n\
+                G01 Z-30. F0.25\nG00 X46. Z2.\nG00 X36.\nG01 Z-30. F0.15\nG02 X44. Z-34. R4.\n\
+                G01 X52.\nG00 X60. Z50.\nT0303\nG00 X40. Z-22.\nG00 X36.\nG00 Z-32.\n\
+                G00 X60.\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n\
+                 [[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
+    let (tp, f) = Job::new(text, tools, bar(50.0, 60.0)).diagnosed();
+    let c = f
+        .crashes
+        .iter()
+        .find(|c| !c.assumed)
+        .expect("the rapid into the fillet");
+    assert_eq!(tp.segments[c.segment].span.line, 16);
+    assert!(c.remedy.is_none(), "{:?}", c.remedy);
 }

@@ -28,10 +28,66 @@ fn inserted(source: &str, line: u32, blocks: &str) -> Option<String> {
     Some(format!("{}{blocks}{eol}{}", &source[..at], &source[at..]))
 }
 
-/// `source` with the rapid word of its 1-based line `line` (`G00`, `G0`) made `G01`;
-/// `None` when the line has none.
+/// `source` with the rapid word of its 1-based line `line` (`G00`, `G0`) made `G01`, and
+/// the feed word [`feed_word_for`] asks for written at the block's end; `None` when the line
+/// has no rapid word.
 fn fed(source: &str, line: u32) -> Option<String> {
-    replace_g(source, line, |n| (n == 0).then_some("G01"))
+    let mut text = replace_g(source, line, |n| (n == 0).then_some("G01"))?;
+    if let Some(f) = feed_word_for(source, line) {
+        let at = line_start(&text, line)?;
+        let end = text[at..].find('\n').map_or(text.len(), |e| at + e);
+        let block = &text[at..end];
+        // before the end-of-block `;` or the line end
+        let cut = block
+            .find(';')
+            .unwrap_or(block.trim_end_matches('\r').len());
+        text.insert_str(at + cut, &format!(" {f}"));
+    }
+    Some(text)
+}
+
+/// The feed word (`F0.05`) a rapid at 1-based line `line` made a feed must carry: the
+/// program's next one when no F word stands on that line or before it (a `G01` with no feed
+/// in force is an alarm: a blade's `G00 X20.` before the `G01 X-1. F0.05` that parts off);
+/// `None` when one does, or when the program has none.
+pub(super) fn feed_word_for(source: &str, line: u32) -> Option<String> {
+    let mut next = None;
+    for (k, text) in source.lines().enumerate() {
+        let f = feed_word(text);
+        if k < line as usize {
+            if f.is_some() {
+                return None;
+            }
+        } else if f.is_some() {
+            next = f;
+            break;
+        }
+    }
+    next
+}
+
+/// The F word of a block (outside its comments), as written.
+fn feed_word(block: &str) -> Option<String> {
+    let code = block.split(';').next().unwrap_or("");
+    let mut depth = 0;
+    let b = code.as_bytes();
+    for (k, &c) in b.iter().enumerate() {
+        match c {
+            b'(' => depth += 1,
+            b')' => depth = (depth - 1).max(0),
+            b'F' | b'f' if depth == 0 && (k == 0 || !b[k - 1].is_ascii_alphabetic()) => {
+                let n = b[k + 1..]
+                    .iter()
+                    .take_while(|d| d.is_ascii_digit() || **d == b'.')
+                    .count();
+                if n > 0 {
+                    return Some(format!("F{}", &code[k + 1..k + 1 + n]));
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// `source` with the G41 of its 1-based line `line` made G42, or its G42 made G41; `None`
@@ -83,7 +139,7 @@ fn line_start(source: &str, line: u32) -> Option<usize> {
 
 #[cfg(test)]
 mod tests {
-    use super::{fed, inserted, swapped};
+    use super::{fed, feed_word_for, inserted, swapped};
 
     #[test]
     fn a_compensation_word_becomes_the_other() {
@@ -98,9 +154,30 @@ mod tests {
 
     #[test]
     fn a_rapid_word_becomes_a_feed() {
-        assert_eq!(fed("A\nG00 X1 Z2\n", 2).as_deref(), Some("A\nG01 X1 Z2\n"));
-        assert_eq!(fed("N5 G0X1\n", 1).as_deref(), Some("N5 G01X1\n"));
+        assert_eq!(
+            fed("F1\nG00 X1 Z2\n", 2).as_deref(),
+            Some("F1\nG01 X1 Z2\n")
+        );
+        assert_eq!(fed("F.1\nN5 G0X1\n", 2).as_deref(), Some("F.1\nN5 G01X1\n"));
         assert_eq!(fed("G01 X1\n", 1), None);
+    }
+
+    /// With no feed in force, the rapid made a feed takes the program's next F word, written
+    /// before the block's end (`;`, a CR); a feed word in a comment is none.
+    #[test]
+    fn a_rapid_made_a_feed_with_no_feed_in_force_takes_the_next_one() {
+        let text = "(FEED F9)\nG00 X20.;\r\nG01 X-1. F0.05;\r\n";
+        assert_eq!(feed_word_for(text, 2).as_deref(), Some("F0.05"));
+        assert_eq!(
+            fed(text, 2).as_deref(),
+            Some("(FEED F9)\nG01 X20. F0.05;\r\nG01 X-1. F0.05;\r\n")
+        );
+        assert_eq!(
+            fed("G00 X20.\r\nG01 X-1. F0.05\n", 1).as_deref(),
+            Some("G01 X20. F0.05\r\nG01 X-1. F0.05\n")
+        );
+        assert_eq!(feed_word_for("G99 F0.2\nG00 X1\nG01 X0 F0.1\n", 2), None);
+        assert_eq!(feed_word_for("G00 X1\nM30\n", 1), None);
     }
 
     #[test]

@@ -23,8 +23,15 @@ const MAX_RERUN_MOVES: usize = 400_000;
 const MAX_MOVES_FOR_REMEDIES: usize = 200_000;
 
 /// Gives every crash and gouge of `findings` (and every leftover) its cause, and the first
-/// ones a checked remedy, re-running the program through `rerun`.
-pub fn diagnose(findings: &mut Findings, toolpath: &Toolpath, s: &Settings, rerun: &dyn Rerun) {
+/// ones a checked remedy, re-running the program through `rerun` (`part`: the part the
+/// program leaves, which a remedy must not change but where it acts; `source`: the main
+/// program's text, which a remedy edits).
+pub fn diagnose(
+    findings: &mut Findings,
+    (toolpath, part, source): (&Toolpath, &[stock::Shape], &str),
+    s: &Settings,
+    rerun: &dyn Rerun,
+) {
     let segments = &toolpath.segments;
     let Findings {
         crashes,
@@ -59,6 +66,8 @@ pub fn diagnose(findings: &mut Findings, toolpath: &Toolpath, s: &Settings, reru
     let mut budget = (MAX_RERUN_MOVES / segments.len().max(1)).clamp(1, MAX_RERUNS);
     let mut tries = remedy::Tries {
         original: &original,
+        part,
+        source,
         alarms: toolpath.alarms.len(),
         segments,
         tools: s.tools,
@@ -69,6 +78,8 @@ pub fn diagnose(findings: &mut Findings, toolpath: &Toolpath, s: &Settings, reru
             .flat_map(|sh| sh.outer.iter())
             .map(|p| p[0])
             .fold(f64::NEG_INFINITY, f64::max),
+        blank: &s.blank.shapes,
+        tol: s.tol,
         rerun,
         budget: &mut budget,
     };

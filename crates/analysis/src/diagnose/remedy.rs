@@ -45,6 +45,8 @@ pub enum Change {
 pub struct Rerunning {
     /// Its findings (not diagnosed).
     pub findings: Findings,
+    /// The part it leaves (the simulation's final section).
+    pub part: Vec<stock::Shape>,
     /// The controller alarms of its toolpath.
     pub alarms: usize,
 }
@@ -58,23 +60,37 @@ pub trait Rerun {
 
 /// How near a finding of a re-run must be to one of the original to be the same, mm.
 const SAME_PLACE: f64 = 0.5;
+/// How much of the part a change may take or keep besides what it was meant to, mm²: the
+/// noise of two runs' sections (a re-cut edge's chords), well under any groove…
+const SAME_PART: f64 = 0.01;
+/// …and this share of the cured finding's area (what the changed moves do at their ends).
+const SIDE_EFFECT: f64 = 0.02;
 
 /// The remedies tried for one program, within a budget of re-runs.
 pub(crate) struct Tries<'a> {
     pub(crate) original: &'a Findings,
+    /// The part the program as written leaves.
+    pub(crate) part: &'a [stock::Shape],
+    /// The main program's text.
+    pub(crate) source: &'a str,
     pub(crate) alarms: usize,
     pub(crate) segments: &'a [Segment],
     pub(crate) tools: &'a ToolTable,
     /// The Z of the blank's face, where a retract is clear of the part (plus a margin).
     pub(crate) face: f64,
+    /// The blank's shapes.
+    pub(crate) blank: &'a [stock::Shape],
+    /// The deviation's tolerance, mm.
+    pub(crate) tol: f64,
     pub(crate) rerun: &'a dyn Rerun,
     pub(crate) budget: &'a mut usize,
 }
 
 /// The finding a change must cure.
+#[derive(Clone, Copy)]
 enum Cured<'a> {
-    /// The crash at this place.
-    Crash(P),
+    /// The crash at this place, which took this much stock (mm²).
+    Crash(P, f64),
     /// This gouge, all of its region.
     Gouge(&'a Finding),
 }
@@ -115,7 +131,7 @@ impl Tries<'_> {
         // region, not only from where it was deepest: a tool that leaves the same flank 3.35
         // mm deep instead of 4.45 moved the deepest point 1.5 mm and cured nothing.
         let gone = match what {
-            Cured::Crash(at) => !rc.iter().any(|c| near(c.at, at)),
+            Cured::Crash(at, _) => !rc.iter().any(|c| near(c.at, at)),
             Cured::Gouge(g) => !rg
                 .iter()
                 .any(|r| near(r.at, g.at) || overlap(&r.shape, &g.shape)),
@@ -126,7 +142,48 @@ impl Tries<'_> {
             && rg
                 .iter()
                 .all(|g| og.iter().any(|o| overlap(&g.shape, &o.shape)));
-        gone && nothing_new && run.alarms <= self.alarms
+        gone && nothing_new && run.alarms <= self.alarms && self.same_part(&run.part, &what)
+    }
+
+    /// Whether the re-run's part differs from the program's only where the change was
+    /// meant to act: it may keep stock where the program gouged (the gouges' regions) or
+    /// where the cured crash's rapid cut (its area), and take stock where the program left
+    /// some (the leftovers' regions); anything else over [`SAME_PART`]. A change that cures
+    /// a finding by moving the program's own cuts is no fix (field run 10, B3: a retract
+    /// inserted into a subprogram called twice moved its second neck from Z-22 to Z-8; the
+    /// re-run had no finding, as a program without a shape to compare has none).
+    fn same_part(&self, part: &[stock::Shape], what: &Cured) -> bool {
+        use stock::BoolOp::Difference;
+        let leftovers = self
+            .original
+            .deviation
+            .as_ref()
+            .map_or(&[][..], |d| d.leftovers.as_slice());
+        // a region stops the tolerance short of the intended surface: the band between is
+        // the change's too (a 27 mm gouge cured by G42 keeps 0.59 mm² besides its 43.2)
+        let outside = |diff: Vec<stock::Shape>, fs: &[Finding]| {
+            let regions: Vec<stock::Shape> = fs.iter().map(|f| f.shape.clone()).collect();
+            let band: f64 = fs.iter().map(|f| perimeter(&f.shape)).sum::<f64>() * 2.0 * self.tol;
+            (stock::area(&stock::boolean(&diff, &regions, Difference)) - band).max(0.0)
+        };
+        let taken = outside(stock::boolean(self.part, part, Difference), leftovers);
+        let kept = outside(
+            stock::boolean(part, self.part, Difference),
+            gouges(self.original),
+        );
+        let crash = match what {
+            Cured::Crash(_, area) => *area,
+            Cured::Gouge(_) => 0.0,
+        };
+        // what the change does at the ends of the moves it changes (a nose the other side of
+        // a contour ends 0.8 mm further along the next shoulder: 0.62 mm² of a G90's face,
+        // beside a 43.2 mm² gouge cured)
+        let cured = match what {
+            Cured::Crash(_, area) => *area,
+            Cured::Gouge(g) => g.area,
+        };
+        let slack = SAME_PART + SIDE_EFFECT * cured;
+        taken <= slack && kept <= crash + slack
     }
 
     /// A checked remedy for a gouge: for the trailing edge, a tool with the clearance the
@@ -228,7 +285,7 @@ impl Tries<'_> {
                 line,
                 text: block.clone(),
             };
-            if self.fixes(&change, Cured::Crash(c.at)) {
+            if self.fixes(&change, Cured::Crash(c.at, c.area)) {
                 return Some(Remedy {
                     text: format!("{text}: insert `{block}` before line {line}"),
                     tool: None,
@@ -239,12 +296,28 @@ impl Tries<'_> {
                 });
             }
         }
-        if self.fixes(&Change::Feed { line }, Cured::Crash(c.at)) {
+        // fed, the rapid cuts what it cut: a cure for a G00 written for a G01 — a plunge or
+        // a pass along one axis that meets the bar as it came — none where it meets a
+        // surface an earlier cut made (a fillet the feed would take off as the rapid did:
+        // field run 10, B1), nor for a positioning move across the bar (fed, a diagonal
+        // through it)
+        let along_an_axis = seg.from.z == seg.to.z || seg.from.r == seg.to.r;
+        if along_an_axis
+            && on_outline(c.at, self.blank)
+            && self.fixes(&Change::Feed { line }, Cured::Crash(c.at, c.area))
+        {
+            let (edit, with) = match super::edit::feed_word_for(self.source, line) {
+                Some(f) => (
+                    format!("G01 {f}"),
+                    format!(" ({f}, the program's next feed: none is in force there)"),
+                ),
+                None => ("G01".to_string(), String::new()),
+            };
             return Some(Remedy {
-                text: format!("feed into the cut: G01 instead of G00 at line {line}"),
+                text: format!("feed into the cut: G01 instead of G00 at line {line}{with}"),
                 tool: None,
                 line: Some(line),
-                edit: Some("G01".into()),
+                edit: Some(edit),
                 verified: true,
                 ghost: vec![],
             });
@@ -252,6 +325,34 @@ impl Tries<'_> {
         None
     }
 }
+
+/// The length of a shape's outline and holes, mm.
+fn perimeter(s: &stock::Shape) -> f64 {
+    std::iter::once(&s.outer)
+        .chain(&s.holes)
+        .map(|ring| {
+            let n = ring.len();
+            (0..n)
+                .map(|k| geom::flat::dist(ring[k], ring[(k + 1) % n]))
+                .sum::<f64>()
+        })
+        .sum()
+}
+
+/// Whether `p` lies on the outline of one of `shapes` (within [`ON_OUTLINE`]).
+fn on_outline(p: P, shapes: &[stock::Shape]) -> bool {
+    shapes
+        .iter()
+        .flat_map(|s| std::iter::once(&s.outer).chain(&s.holes))
+        .any(|ring| {
+            let n = ring.len();
+            (0..n)
+                .any(|k| geom::flat::segment_distance(p, ring[k], ring[(k + 1) % n]) <= ON_OUTLINE)
+        })
+}
+
+/// How near the blank's outline a crash's first contact is on it, mm.
+const ON_OUTLINE: f64 = 0.01;
 
 /// How far past the blank's face a retract is clear of it, mm.
 const CLEAR: f64 = 2.0;
