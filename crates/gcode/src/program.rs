@@ -244,19 +244,49 @@ impl std::fmt::Debug for Blocks {
     }
 }
 
-/// A whole file: the main program first, then any further O programs (subprograms).
+/// A whole file: its O programs in the file's order, the main one ([`Program::main`]) and
+/// subprograms.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Program {
-    /// Main program first.
+    /// In the file's order; the main program is usually the first ([`Program::main`]).
     pub programs: Vec<Subprogram>,
     /// Things accepted with an assumption (shown as warnings in the report).
     pub notes: Vec<Note>,
 }
 
 impl Program {
-    /// The main program: the first one in the file.
+    /// The main program: the first one in the file ([`Program::main_index`]).
     pub fn main(&self) -> Option<&Subprogram> {
-        self.programs.first()
+        self.programs.get(self.main_index())
+    }
+
+    /// Which program is the main one: the first in the file, unless the first ends with M99
+    /// (a subprogram) and a later one that ends the program (M30, M02) calls it (`M98`,
+    /// `M198`, `G65` with its number): a FANUC punch-out lists the programs in number order,
+    /// so a subprogram may come first (field run 10, B2: O0020 ran as the main program and
+    /// crashed where O0010 called it after its own turning); then that caller.
+    pub fn main_index(&self) -> usize {
+        let (Some(first), true) = (self.programs.first(), self.programs.len() > 1) else {
+            return 0;
+        };
+        let Some(number) = first.number else {
+            return 0;
+        };
+        let last_m = |p: &Subprogram| {
+            p.blocks
+                .iter()
+                .rev()
+                .find(|b| b.has('M'))
+                .map(|b| b.has_m(&[99.0]))
+        };
+        if last_m(first) != Some(true) {
+            return 0;
+        }
+        let ends = |p: &Subprogram| (0..p.blocks.len()).any(|i| p.blocks.ends_program(i));
+        self.programs
+            .iter()
+            .position(|p| p.number != Some(number) && ends(p) && calls(p, number))
+            .unwrap_or(0)
     }
     /// Find an O program by number.
     pub fn find(&self, number: u32) -> Option<&Subprogram> {
@@ -307,5 +337,51 @@ impl Program {
     /// Number of blocks in all programs.
     pub fn block_count(&self) -> usize {
         self.programs.iter().map(|p| p.blocks.len()).sum()
+    }
+}
+
+/// Whether a block of `p` calls program `number`: `M98 P`, `M198 P` or `G65 P` naming it
+/// (FANUC's packed `M98 P30020`, three times O0020, included).
+fn calls(p: &Subprogram, number: u32) -> bool {
+    p.blocks.iter().any(|b| {
+        let call =
+            b.has_m(&[98.0, 198.0]) || b.words.iter().any(|w| w.letter == 'G' && w.value == 65.0);
+        call && b.get('P').is_some_and(|w| {
+            let v = w.value;
+            v.fract() == 0.0
+                && v >= 0.0
+                && (v as u64 == u64::from(number) || v as u64 % 10_000 == u64::from(number))
+        })
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    /// The main program is the first, unless the first ends with M99 and a later program
+    /// that ends with M30 calls it (a punch-out in number order, field run 10, B2).
+    #[test]
+    fn a_subprogram_listed_first_is_not_the_main_program() {
+        let main = |src: &str| {
+            let p = crate::parse(src).unwrap();
+            (p.main_index(), p.main().and_then(|m| m.number))
+        };
+        let sub = "O0020\nG00 X36. Z-38.\nU2. W-1.\nM99\n";
+        let caller = "O0010\nG00 X44. Z2.\nM98 P0020\nM30\n";
+        assert_eq!(main(&format!("{sub}{caller}")), (1, Some(10)));
+        assert_eq!(main(&format!("{caller}{sub}")), (0, Some(10)));
+        // FANUC's packed count and number (three times O0020), and G65
+        assert_eq!(
+            main(&format!("{sub}O0010\nM98 P30020\nM30\n")),
+            (1, Some(10))
+        );
+        assert_eq!(main(&format!("{sub}O0010\nG65 P20\nM30\n")), (1, Some(10)));
+        // a first program that ends the program, or that nothing calls, stays the main one
+        assert_eq!(
+            main("O0020\nG00 X1\nM30\nO0010\nM98 P20\nM30\n"),
+            (0, Some(20))
+        );
+        assert_eq!(main(&format!("{sub}O0010\nM98 P30\nM30\n")), (0, Some(20)));
+        // a caller that returns itself (M99) is no main program either
+        assert_eq!(main(&format!("{sub}O0010\nM98 P20\nM99\n")), (0, Some(20)));
     }
 }

@@ -128,6 +128,24 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
         it.warn(note.span, "W-ANNOTATION", note.message.clone(), "");
     }
     if let Some(main) = program.main() {
+        if let Some(first) = program
+            .programs
+            .first()
+            .filter(|_| program.main_index() > 0)
+        {
+            let name = |n: Option<u32>| n.map_or_else(String::new, |n| format!("O{n:04}"));
+            it.warn(
+                main.span,
+                "LS-MAIN-PROGRAM",
+                format!(
+                    "{} comes first in the file but is a subprogram (it ends with M99 and {} calls it): {} runs as the main program",
+                    name(first.number),
+                    name(main.number),
+                    name(main.number)
+                ),
+                "list the main program first if another reading was meant",
+            );
+        }
         it.warn_assumed_units(program, main);
         it.out.title = main.number.map(|n| format!("O{n:04}")).unwrap_or_default();
         if let Some(b) = reach::unreachable_tail(main) {
@@ -140,7 +158,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
         }
         let mut result = it
             .prepare_macros(program)
-            .and_then(|()| it.run(program, 0, 0, 0));
+            .and_then(|()| it.run(program, program.main_index(), 0, 0));
         if let (Ok(_), Some(p)) = (&result, it.corner.take()) {
             result = Err(it.corner_without_line(&p, "the program ends"));
         }
