@@ -502,3 +502,28 @@ fn a_rapid_plunge_into_the_bar_is_fed_but_not_one_into_a_turned_fillet() {
     assert_eq!(tp.segments[c.segment].span.line, 16);
     assert!(c.remedy.is_none(), "{:?}", c.remedy);
 }
+
+/// Field run 10 (B4): a DNMG 11 boring insert on a 93° bar in a Ø16 drilled hole reaches
+/// past the axis into the far wall; the crash is in the G71's own retract. A block inserted
+/// before the G71 line (`G00 X16.`) moved the cycle's start point, and the re-run dodged
+/// the crash by it: it was offered as "rapid to X16. first". A rapid a cycle makes is not
+/// the block's to split: no program remedy.
+#[test]
+fn a_rapid_a_cycle_makes_gets_no_block_inserted_before_the_cycle() {
+    let text = "G21 G40 G99\nT0505\nG97 S900 M03\nG00 X0. Z5.\nG01 Z-30. F0.1\nG00 Z5.\n\
+                G00 X100. Z100.\nT0606\nG96 S150 M03\nG00 X15. Z2.\nG71 U1. R0.5\n\
+                G71 P30 Q40 U-0.3 W0.05 F0.15\nN30 G00 X22.\nG01 X20. Z-1. F0.08\nZ-26.\n\
+                N40 X15.\nG70 P30 Q40\nG00 Z5.\nG00 X100. Z100.\nM30\n";
+    let tools = "[[tool]]\nt = 5\nkind = \"drill\"\ndiameter = 16.0\npoint_angle = 118\nreach = 50.0\n\
+                 [[tool]]\nt = 6\nkind = \"turning\"\ninsert = \"DNMG 110404\"\ntip = 2\nentering_angle = 93\nshank = 12.0\n";
+    let (tp, f) = Job::new(text, tools, bar(40.0, 50.0)).diagnosed();
+    let in_cycle: Vec<_> = f
+        .crashes
+        .iter()
+        .filter(|c| !c.assumed && tp.segments[c.segment].span.line == 12)
+        .collect();
+    assert!(!in_cycle.is_empty(), "{:#?}", f.crashes);
+    for c in in_cycle {
+        assert!(c.remedy.is_none(), "{:?}", c.remedy);
+    }
+}

@@ -264,6 +264,9 @@ impl Tries<'_> {
         }
         let seg = &self.segments[c.segment];
         let line = seg.span.line;
+        if !runs_once_as_rapids(self.segments, c.segment) {
+            return None;
+        }
         let (x, z) = (2.0 * seg.to.r, seg.to.z);
         let clear = self.face + CLEAR;
         let splits = [
@@ -324,6 +327,29 @@ impl Tries<'_> {
         }
         None
     }
+}
+
+/// Whether the block that made move `i` is a plain rapid run once: its moves (one, or a
+/// G28's two) are all rapids and follow each other. An edit of the block cures that rapid
+/// alone: not a cycle that made it among its passes (a block inserted before a G71 moves its
+/// start point, field run 10, B4), nor a block a loop or a subprogram runs again (B3: a
+/// retract before a subprogram's `W-10.` ran on every call).
+fn runs_once_as_rapids(segments: &[Segment], i: usize) -> bool {
+    let span = segments[i].span;
+    let mine = |s: &Segment| s.span.offset == span.offset && s.span.line == span.line;
+    let first = segments[..i]
+        .iter()
+        .rposition(|s| !mine(s))
+        .map_or(0, |k| k + 1);
+    let end = segments[i..]
+        .iter()
+        .position(|s| !mine(s))
+        .map_or(segments.len(), |k| i + k);
+    segments[first..end]
+        .iter()
+        .all(|s| s.motion == expander::Motion::Rapid)
+        && !segments[..first].iter().any(mine)
+        && !segments[end..].iter().any(mine)
 }
 
 /// The length of a shape's outline and holes, mm.
