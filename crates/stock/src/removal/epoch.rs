@@ -404,6 +404,9 @@ impl<'a> Epochs<'a> {
         // moves whose cuts are all in the tiles at the last epoch end
         let mut cut_moves = 0;
         let stop = AtomicBool::new(false);
+        // the snapshots of the last epoch's stops, joined beside the next epoch's cutting
+        let mut pending = Vec::new();
+        let mut side = Engine::new();
         let mut next = Some(self.build(0, None));
         while let Some(mut ep) = next.take() {
             let lists = strips.lists(&ep.sweeps);
@@ -424,6 +427,8 @@ impl<'a> Epochs<'a> {
                 if ahead {
                     next = Some(self.build(ep.end, None));
                 }
+                self.snapshots
+                    .at_stops(std::mem::take(&mut pending), 1, &mut side);
             });
             cuts.fragments.append(&mut found);
             if let Some(memory) = &opts.max_memory {
@@ -438,8 +443,7 @@ impl<'a> Epochs<'a> {
                 .into_iter()
                 .filter(|s| s.wanted);
             let taken = wanted.zip(kept).map(|(s, tiles)| (s.moves, tiles, s.open));
-            self.snapshots
-                .at_stops(taken.collect(), strips.threads, engine);
+            pending.extend(taken);
             cut_moves = ep.cut_moves(cut_moves);
             // (at the last epoch end the stock is the final part, which the caller has anyway)
             if ep.end < moves {
@@ -455,6 +459,9 @@ impl<'a> Epochs<'a> {
             if next.is_none() && ep.end < moves {
                 next = Some(self.build(ep.end, fallen));
             }
+        }
+        if cuts.over_budget.is_none() {
+            self.snapshots.at_stops(pending, strips.threads, engine);
         }
         cuts
     }
