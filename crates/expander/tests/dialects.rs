@@ -559,3 +559,30 @@ fn gsk_g92_words_are_checked() {
         assert!(tp.alarms[0].span.line == 2, "{src}: {:?}", tp.alarms[0]);
     }
 }
+
+/// Field run 10 (B6): a Haas program that states no units is read in the profile's
+/// (W-HAAS-UNITS); an alarm it then raises names that reading, since an inch program read in
+/// mm alarms for a reason its alarm alone does not show (a 0.125 step taken as 0.125 mm
+/// under a 0.8 mm nose). A program that states G20 or G21, or another control, is told
+/// nothing more.
+#[test]
+fn a_haas_alarm_names_the_units_assumed() {
+    let alarm = |control, src: &str| {
+        let tp = run_on(control, src);
+        assert_eq!(tp.alarms.len(), 1, "{:?}", tp.alarms);
+        tp.alarms[0].help.clone()
+    };
+    let help = alarm(Control::Haas, "T101\nM3 S500\nG0 X2. Z.1\nG1 Z-1.\nM30\n");
+    assert!(help.contains("read in mm (W-HAAS-UNITS)"), "{help}");
+    assert!(help.contains("state G20"), "{help}");
+    let help = alarm(
+        Control::Haas,
+        "G20\nT101\nM3 S500\nG0 X2. Z.1\nG1 Z-1.\nM30\n",
+    );
+    assert!(!help.contains("W-HAAS-UNITS"), "{help}");
+    let help = alarm(
+        Control::FanucA,
+        "T0101\nM3 S500\nG0 X2. Z.1\nG1 Z-1.\nM30\n",
+    );
+    assert!(!help.contains("W-HAAS-UNITS"), "{help}");
+}

@@ -179,6 +179,7 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
             Err(alarm) => it.out.alarms.push(alarm),
         }
         it.finish_macros(program);
+        it.name_units_assumed();
     }
     it.out
 }
@@ -200,6 +201,9 @@ pub(crate) struct Interp<'m> {
     s_clamp: f64,
     spindle_on: bool,
     spindle_warned: bool,
+    /// The units a Haas program that states none was read in (W-HAAS-UNITS), named in its
+    /// alarm: an inch program read in mm alarms for a reason its alarm would not say.
+    units_assumed: Option<&'static str>,
     /// A feed per minute too slow for any cut (a feed per revolution under G98) was warned.
     slow_feed_warned: bool,
     feed: f64,
@@ -293,6 +297,7 @@ impl<'m> Interp<'m> {
             s_clamp: 0.0,
             spindle_on: false,
             spindle_warned: false,
+            units_assumed: None,
             slow_feed_warned: false,
             feed: machine.power_on_feed,
             tool: opts.start_tool.unwrap_or(0),
@@ -393,11 +398,30 @@ impl<'m> Interp<'m> {
             .any(|b| self.has_g(&b, |t| t == G20 || t == G21));
         if !states {
             let unit = if self.inch { "inch" } else { "mm" };
+            self.units_assumed = Some(unit);
             self.warn(
                 main.blocks.first().map_or(main.span, |b| b.span),
                 "W-HAAS-UNITS",
                 format!("no G20/G21: assumed {unit} (the profile's power_on_units)"),
                 "state G20 (inch) or G21 (mm) at the top: a Haas runs in its Setting 9 units",
+            );
+        }
+    }
+
+    /// Adds to every alarm's help the units a program that states none was read in.
+    fn name_units_assumed(&mut self) {
+        let Some(unit) = self.units_assumed else {
+            return;
+        };
+        let (other, code) = if unit == "mm" {
+            ("inch", "G20")
+        } else {
+            ("mm", "G21")
+        };
+        for alarm in &mut self.out.alarms {
+            alarm.help = format!(
+                "{}; the program states no units and was read in {unit} (W-HAAS-UNITS): if it is written in {other}, state {code} at the top or set the profile's power_on_units",
+                alarm.help
             );
         }
     }
