@@ -507,7 +507,9 @@ fn a_rapid_plunge_into_the_bar_is_fed_but_not_one_into_a_turned_fillet() {
 /// past the axis into the far wall; the crash is in the G71's own retract. A block inserted
 /// before the G71 line (`G00 X16.`) moved the cycle's start point, and the re-run dodged
 /// the crash by it: it was offered as "rapid to X16. first". A rapid a cycle makes is not
-/// the block's to split: no program remedy.
+/// the block's to split: no program remedy. The cause says the tool is too big for the
+/// bore (it said "a rapid at X16 meets stock at Ø17.9", which sent the programmer to a
+/// coordinate that is right).
 #[test]
 fn a_rapid_a_cycle_makes_gets_no_block_inserted_before_the_cycle() {
     let text = "G21 G40 G99\nT0505\nG97 S900 M03\nG00 X0. Z5.\nG01 Z-30. F0.1\nG00 Z5.\n\
@@ -525,5 +527,14 @@ fn a_rapid_a_cycle_makes_gets_no_block_inserted_before_the_cycle() {
     assert!(!in_cycle.is_empty(), "{:#?}", f.crashes);
     for c in in_cycle {
         assert!(c.remedy.is_none(), "{:?}", c.remedy);
+        // the cause names the tool's far side, not the programmed diameter: the insert
+        // reaches 9–10 mm past the axis from its point at Ø15–16 (by hand: the 55° rhombus's
+        // far corner lies 17.7 mm below its tip), onto the Ø16–20 wall opposite
+        let text = &c.cause.as_ref().unwrap().text;
+        assert!(
+            text.starts_with("T06 (") && text.contains("past the axis"),
+            "{text}"
+        );
+        assert!(text.contains("too big for the bore"), "{text}");
     }
 }

@@ -33,7 +33,7 @@ fn tool_of(seg: &Segment, s: &Settings) -> Tool {
 
 /// The cause of a crash: the workholding, the tool's body, or a rapid into uncut stock
 /// (with the stock's edge it met: the face, or a diameter).
-pub(crate) fn crash(c: &Crash, segments: &[Segment], s: &Settings, _rear: &[u32]) -> Cause {
+pub(crate) fn crash(c: &Crash, segments: &[Segment], s: &Settings, rear: &[u32]) -> Cause {
     let seg = &segments[c.segment];
     let part = c.body.unwrap_or("cutting edge");
     let numbers = vec![("depth_mm", c.depth), ("area_mm2", c.area)];
@@ -60,6 +60,13 @@ pub(crate) fn crash(c: &Crash, segments: &[Segment], s: &Settings, _rear: &[u32]
             numbers,
         };
     }
+    if let Some(text) = past_the_axis(c, seg, s, rear) {
+        return Cause {
+            kind: CauseKind::Rapid,
+            text,
+            numbers,
+        };
+    }
     let what = if seg.motion == Motion::Rapid {
         "a rapid"
     } else {
@@ -77,6 +84,45 @@ pub(crate) fn crash(c: &Crash, segments: &[Segment], s: &Settings, _rear: &[u32]
         ),
         numbers,
     }
+}
+
+/// The cause of a crash made by the far side of a stated tool: the edge, where its point
+/// passes, reaches no radius as large as the contact's, and reaches past the axis as far
+/// (the section folds it onto the wall opposite). A DNMG 11 on a bar in a Ø16 hole: "a rapid
+/// at X16 meets stock at Ø17.9" sent the programmer to a coordinate that is right (field run
+/// 10, B4); the tool is too big for the bore.
+fn past_the_axis(c: &Crash, seg: &Segment, s: &Settings, rear: &[u32]) -> Option<String> {
+    const SLACK: f64 = 0.01;
+    let m = stock::Mounted::new(s.tools, seg.tool, seg.hint, rear.contains(&seg.tool));
+    let (a, b) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let len2 = d[0] * d[0] + d[1] * d[1];
+    let t = if len2 > 0.0 {
+        (((c.at[0] - a[0]) * d[0] + (c.at[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let r = a[1] + t * d[1];
+    // a front tool whose size is stated (a guessed outline is left out past the axis)
+    if r < 0.0 || m.edge.past_axis != stock::PastAxis::Fold {
+        return None;
+    }
+    let drs = m.edge.parts.iter().flatten().map(|p| p[1]);
+    let (lo, hi) = drs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    let past = -(r + lo);
+    if !(r + hi + SLACK < c.at[1] && past + SLACK >= c.at[1]) {
+        return None;
+    }
+    Some(format!(
+        "T{:02} ({}) reaches {past:.1} mm past the axis from its point at Ø{:.3}: its far side meets the wall opposite at Ø{:.3}, {:.3} mm deep — the tool is too big for the bore here (a smaller insert or bar, or a bigger bore first)",
+        seg.tool,
+        s.tools.describe(seg.tool).split_once(' ').map_or("", |x| x.1),
+        2.0 * r,
+        2.0 * c.at[1],
+        c.depth
+    ))
 }
 
 /// Which edge of the blank a point lies on: its face, or a diameter.
