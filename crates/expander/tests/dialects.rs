@@ -586,3 +586,32 @@ fn a_haas_alarm_names_the_units_assumed() {
     );
     assert!(!help.contains("W-HAAS-UNITS"), "{help}");
 }
+
+/// Field run 10 (B5): a program that writes system B's `G91` and system A's `G50 S`. Under
+/// fanuc-a the G91 alarm suggested fanuc-b, under fanuc-b the G50 alarm suggested fanuc-a:
+/// each help now says the program mixes both and names where the other control stops. A
+/// program in one system keeps the suggestion.
+#[test]
+fn a_program_mixing_systems_is_told_so_not_sent_back_and_forth() {
+    let mixed = "G21 G99\nG50 S3000\nG28 G91 X0 Z0\nG90 G00 X50. Z2.\nM30\n";
+    let tp = run_on(Control::FanucA, mixed);
+    assert_eq!(tp.alarms.len(), 1, "{:?}", tp.alarms);
+    let help = &tp.alarms[0].help;
+    assert!(
+        help.starts_with("the program mixes G-code systems: under --control fanuc-b line 2"),
+        "{help}"
+    );
+    let tp = run_on(Control::FanucB, mixed);
+    let help = &tp.alarms[0].help;
+    assert!(
+        help.starts_with("the program mixes G-code systems: under --control fanuc-a line 3"),
+        "{help}"
+    );
+    let b_only = "G21 G95\nG28 G91 X0 Z0\nG90 G00 X50. Z2.\nM30\n";
+    let tp = run_on(Control::FanucA, b_only);
+    assert!(
+        tp.alarms[0].help.starts_with("Run with --control fanuc-b?"),
+        "{:?}",
+        tp.alarms
+    );
+}

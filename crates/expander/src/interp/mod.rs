@@ -180,8 +180,43 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
         }
         it.finish_macros(program);
         it.name_units_assumed();
+        name_mixed_systems(&mut it.out.alarms, program);
     }
     it.out
+}
+
+/// An LS-DIALECT alarm suggests the control whose code it is (`--control fanuc-b`); when
+/// the program also writes a code that control does not read, no control reads it, and the
+/// help says so instead of sending the user back and forth (field run 10, B5: `G91` under
+/// fanuc-a, `G50 S` under fanuc-b).
+fn name_mixed_systems(alarms: &mut [crate::Diagnostic], program: &Program) {
+    for alarm in alarms.iter_mut().filter(|a| a.code == "LS-DIALECT") {
+        let Some(other) = crate::Control::ALL
+            .into_iter()
+            .find(|c| alarm.help.contains(&format!("--control {}?", c.key())))
+        else {
+            continue;
+        };
+        let foreign = program
+            .programs
+            .iter()
+            .flat_map(|p| p.blocks.iter())
+            .find_map(|b| {
+                b.words.iter().filter(|w| w.letter == 'G').find_map(|w| {
+                    let t = w.code_tenths()?;
+                    crate::dialect::canonical(other, t)
+                        .err()
+                        .map(|f| (b.span.line, f))
+                })
+            });
+        if let Some((line, f)) = foreign {
+            alarm.help = format!(
+                "the program mixes G-code systems: under --control {} line {line} stops too ({}); no control reads both: write the program for one",
+                other.key(),
+                f.message
+            );
+        }
+    }
 }
 
 /// The interpreter's state between blocks.
