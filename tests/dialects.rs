@@ -340,22 +340,13 @@ fn a_subprogram_listed_before_its_caller_is_not_run_as_the_main_program() {
     let text = "%\nO0020 (EDGE BREAK)\nG00 X42. Z-38.\nG01 X39. Z-39.5 F0.08\nG00 U6.\nM99\n\
                 O0010 (SHAFT)\nG21 G40 G99\nT0101\nG96 S180 M03\nG00 X44. Z2.\n\
                 G90 X40. Z-40. F0.25\nG00 X44. Z-38.\nM98 P0020\nG00 X100. Z100.\nM30\n%\n";
-    let (dir, path) = temp_program("sub-first.nc", text.as_bytes());
-    let json = dir.path().join("r.json");
-    let out = latsim(&[
-        "run",
-        path.to_str().unwrap(),
-        "--control",
-        "fanuc-a",
-        "--stock",
-        "44x60",
-        "--json",
-        json.to_str().unwrap(),
-    ]);
-    assert_eq!(out.code, 0, "{}", out.stderr);
-    assert!(out.stderr.contains("LS-MAIN-PROGRAM"), "{}", out.stderr);
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let (code, v, stderr) = run_json("sub-first.nc", text.as_bytes(), "fanuc-a", "44x60");
+    assert_eq!(code, 0, "{stderr}");
+    let main = &v["warnings"][0];
+    assert!(
+        main["code"] == "LS-MAIN-PROGRAM" && main["line"] == 7,
+        "{main}"
+    );
     assert_eq!(v["title"], "O0010", "{}", v["title"]);
     // the G90 took Ø44 down to Ø40 over 40 mm: 80 mm² of the half section, and the edge break
     let removed = v["removed_area_mm2"].as_f64().unwrap();
