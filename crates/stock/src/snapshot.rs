@@ -24,9 +24,9 @@ use crate::overlay::{Engine, IBox, IShapes};
 use crate::removal::joined;
 use crate::sweep::Sweeps;
 
-/// A stop whose snapshot is wanted: (moves done there, the tiles of every strip there, the
+/// What a stop whose snapshot is wanted kept: (moves done there, the tiles of every strip there, the
 /// sweep so far of a merged run still open there).
-pub(crate) type Stop = (usize, Vec<(IBox, IShapes)>, Option<Sweeps>);
+pub(crate) type Kept = (usize, Vec<(IBox, IShapes)>, Option<Sweeps>);
 
 /// Move counts after which the HTML player shows the stock (its move slider): evenly
 /// spread over the program's `moves`.
@@ -123,8 +123,8 @@ impl Snapshots {
     /// far of a merged run still open there), takes the snapshot: the union of the tiles,
     /// less the open run's sweep (its cut comes when it ends). The unions are made on up to
     /// `threads` threads: 29 of them on 1 000 small arcs were 20 ms on one.
-    pub(crate) fn at_stops(&mut self, stops: Vec<Stop>, threads: usize, engine: &mut Engine) {
-        let take = |(moves, tiles, open): Stop, engine: &mut Engine| {
+    pub(crate) fn at_stops(&mut self, stops: Vec<Kept>, threads: usize, engine: &mut Engine) {
+        let take = |(moves, tiles, open): Kept, engine: &mut Engine| {
             let stock = joined(&tiles, engine);
             let snap = match open {
                 Some(open) => {
@@ -148,7 +148,7 @@ impl Snapshots {
             return;
         }
         // stop m goes to thread m % threads; the calling thread takes the first share
-        let mut shares: Vec<Vec<Stop>> = (0..threads).map(|_| Vec::new()).collect();
+        let mut shares: Vec<Vec<Kept>> = (0..threads).map(|_| Vec::new()).collect();
         for (m, stop) in stops.into_iter().enumerate() {
             shares[m % threads].push(stop);
         }
