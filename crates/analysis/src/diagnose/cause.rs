@@ -115,13 +115,14 @@ fn past_the_axis(c: &Crash, seg: &Segment, s: &Settings, rear: &[u32]) -> Option
     if !(r + hi + SLACK < c.at[1] && past + SLACK >= c.at[1]) {
         return None;
     }
+    // what to change first: the picture's detail shows the first 70 characters
     Some(format!(
-        "T{:02} ({}) reaches {past:.1} mm past the axis from its point at Ø{:.3}: its far side meets the wall opposite at Ø{:.3}, {:.3} mm deep — the tool is too big for the bore here (a smaller insert or bar, or a bigger bore first)",
+        "T{:02} is too big for the bore here: from its point at Ø{:.3} it reaches {past:.1} mm past the axis, and its far side meets the wall opposite at Ø{:.3}, {:.3} mm deep ({}; a smaller insert or bar, or a bigger bore first)",
         seg.tool,
-        s.tools.describe(seg.tool).split_once(' ').map_or("", |x| x.1),
         2.0 * r,
         2.0 * c.at[1],
-        c.depth
+        c.depth,
+        s.tools.describe(seg.tool).split_once(' ').map_or("", |x| x.1),
     ))
 }
 
