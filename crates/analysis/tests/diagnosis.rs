@@ -525,16 +525,71 @@ fn a_rapid_a_cycle_makes_gets_no_block_inserted_before_the_cycle() {
         .filter(|c| !c.assumed && tp.segments[c.segment].span.line == 12)
         .collect();
     assert!(!in_cycle.is_empty(), "{:#?}", f.crashes);
-    for c in in_cycle {
+    for c in &in_cycle {
         assert!(c.remedy.is_none(), "{:?}", c.remedy);
-        // the cause names the tool's far side, not the programmed diameter: the insert
-        // reaches 9–10 mm past the axis from its point at Ø15–16 (by hand: the 55° rhombus's
-        // far corner lies 17.7 mm below its tip), onto the Ø16–20 wall opposite
-        let text = &c.cause.as_ref().unwrap().text;
-        assert!(
-            text.starts_with("T06 is too big for the bore here")
-                && text.contains("mm past the axis"),
-            "{text}"
-        );
     }
+    // the cause names the tool's far side, not the programmed diameter: the insert reaches
+    // 9–10 mm past the axis from its point at Ø15–16 (by hand: the 55° rhombus's far corner
+    // lies 17.7 mm below its tip), onto the wall opposite: at Ø17.9 it spans the bore
+    // (17.4 mm, less than a millimetre of play), at Ø19.7 its point only runs too low
+    let texts: Vec<&str> = in_cycle
+        .iter()
+        .map(|c| c.cause.as_ref().unwrap().text.as_str())
+        .collect();
+    assert!(
+        texts.iter().all(|t| t.contains("mm past the axis")),
+        "{texts:#?}"
+    );
+    assert!(
+        texts[0].starts_with("T06 is too big for the bore here"),
+        "{texts:#?}"
+    );
+}
+
+/// Review 1128h (#3): a small boring bar (D 55°, 7.75 mm edges, Φ10 bar: 11.5 mm across)
+/// fits the Ø16 drilled hole, but rapids on centre at X6: its far side, 8.5 mm past the axis,
+/// meets the wall opposite. The cause says it runs too near the axis and where its point must
+/// stay (above Ø7: 11.5 − 8), not that it is too big.
+#[test]
+fn a_tool_that_fits_the_bore_but_runs_near_the_axis_is_told_so() {
+    let text = "G21 G40 G99\nT0808\nG97 S700 M03\nG00 X0. Z5.\nG01 Z-30. F0.1\nG00 Z5.\n\
+                G00 X100. Z100.\nT0909\nG96 S150 M03\nG00 X20. Z2.\nG01 Z-25. F0.1\nX16.\n\
+                G00 Z2.\nG00 X6.\nG00 Z-32.5\nG00 Z2.\nG00 X100. Z100.\nM30\n";
+    let tools =
+        "[[tool]]\nt = 8\nkind = \"drill\"\ndiameter = 16.0\npoint_angle = 118\nreach = 80.0\n\
+                 [[tool]]\nt = 9\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n\
+                 entering_angle = 93\nedge = 7.75\nshank = 10.0\n";
+    let (tp, f) = Job::new(text, tools, bar(40.0, 60.0)).diagnosed();
+    let c = f
+        .crashes
+        .iter()
+        .find(|c| !c.assumed && tp.segments[c.segment].span.line == 15)
+        .expect("the rapid on centre");
+    let text = &c.cause.as_ref().unwrap().text;
+    assert!(
+        text.starts_with("T09 runs too near the axis here"),
+        "{text}"
+    );
+    assert!(text.ends_with("keep its point above Ø7.0)"), "{text}");
+}
+
+/// Review 1128h (#1): a 3 mm blade's groove plunge written `G00 X40.` into a diameter T01
+/// turned to Ø48. "Retract to Z2 first" plunged it in the air: the re-run kept exactly the
+/// crash's 12 mm² (the groove), within what a cured crash may keep, and was offered as
+/// checked. A rapid along one axis is a cut written G00: no split or retract is tried (and it
+/// is not fed either, as it meets a turned surface, not the bar as it came).
+#[test]
+fn a_groove_plunged_at_rapid_is_not_moved_into_the_air() {
+    let text = "G21 G99\nT0101\nG96 S180 M03\nG00 X52. Z2.\nG01 X48. F0.2\nZ-40.\n\
+                G00 X60. Z50.\nT0303\nG97 S600 M03\nG00 X52. Z-20.\nG00 X40.\nG04 X0.5\n\
+                G00 X52.\nG00 X60. Z50.\nM30\n";
+    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n\
+                 [[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
+    let (tp, f) = Job::new(text, tools, bar(50.0, 60.0)).diagnosed();
+    let c = f
+        .crashes
+        .iter()
+        .find(|c| !c.assumed && tp.segments[c.segment].span.line == 11)
+        .expect("the plunge");
+    assert!(c.remedy.is_none(), "{:?}", c.remedy);
 }

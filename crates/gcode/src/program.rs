@@ -260,33 +260,30 @@ impl Program {
         self.programs.get(self.main_index())
     }
 
-    /// Which program is the main one: the first in the file, unless the first ends with M99
-    /// (a subprogram) and a later one that ends the program (M30, M02) calls it (`M98`,
-    /// `M198`, `G65` with its number): a FANUC punch-out lists the programs in number order,
-    /// so a subprogram may come first (field run 10, B2: O0020 ran as the main program and
-    /// crashed where O0010 called it after its own turning); then that caller.
+    /// Which program is the main one: the first in the file, unless another program of the
+    /// file calls it (`M98`, `M198`, `G65` with its number): a FANUC punch-out lists the
+    /// programs in number order, so subprograms may come first (field run 10, B2: O3102 ran
+    /// as the main program and crashed where O3101 called it after its own turning); then
+    /// the first program no other one calls (a chain of subprograms listed first, a main
+    /// program that ends with M99 for a bar feeder: review 1128h, #2).
     pub fn main_index(&self) -> usize {
-        let (Some(first), true) = (self.programs.first(), self.programs.len() > 1) else {
-            return 0;
-        };
-        let Some(number) = first.number else {
-            return 0;
-        };
-        let last_m = |p: &Subprogram| {
-            p.blocks
-                .iter()
-                .rev()
-                .find(|b| b.has('M'))
-                .map(|b| b.has_m(&[99.0]))
-        };
-        if last_m(first) != Some(true) {
+        if self.programs.len() < 2 {
             return 0;
         }
-        let ends = |p: &Subprogram| (0..p.blocks.len()).any(|i| p.blocks.ends_program(i));
-        self.programs
-            .iter()
-            .position(|p| p.number != Some(number) && ends(p) && calls(p, number))
-            .unwrap_or(0)
+        let calls: Vec<Vec<u32>> = self.programs.iter().map(calls_in).collect();
+        let uncalled = |k: usize| {
+            self.programs[k].number.is_none_or(|n| {
+                // a call from another program (a program calling itself is a loop)
+                !calls
+                    .iter()
+                    .enumerate()
+                    .any(|(j, c)| j != k && c.contains(&n))
+            })
+        };
+        if uncalled(0) {
+            return 0;
+        }
+        (1..self.programs.len()).find(|&k| uncalled(k)).unwrap_or(0)
     }
     /// Find an O program by number.
     pub fn find(&self, number: u32) -> Option<&Subprogram> {
@@ -340,19 +337,21 @@ impl Program {
     }
 }
 
-/// Whether a block of `p` calls program `number`: `M98 P`, `M198 P` or `G65 P` naming it
-/// (FANUC's packed `M98 P30020`, three times O0020, included).
-fn calls(p: &Subprogram, number: u32) -> bool {
-    p.blocks.iter().any(|b| {
-        let call =
-            b.has_m(&[98.0, 198.0]) || b.words.iter().any(|w| w.letter == 'G' && w.value == 65.0);
-        call && b.get('P').is_some_and(|w| {
-            let v = w.value;
-            v.fract() == 0.0
-                && v >= 0.0
-                && (v as u64 == u64::from(number) || v as u64 % 10_000 == u64::from(number))
+/// The program numbers the blocks of `p` may call: `M98 P`, `M198 P` or `G65 P`, as
+/// written (Haas' five digits) and as FANUC's packed count and number (`M98 P30020`, three
+/// times O0020).
+fn calls_in(p: &Subprogram) -> Vec<u32> {
+    p.blocks
+        .iter()
+        .filter(|b| {
+            b.has_m(&[98.0, 198.0]) || b.words.iter().any(|w| w.letter == 'G' && w.value == 65.0)
         })
-    })
+        .filter_map(|b| {
+            let v = b.get('P')?.value;
+            (v.fract() == 0.0 && (0.0..1e9).contains(&v)).then_some(v as u32)
+        })
+        .flat_map(|v| [v, v % 10_000])
+        .collect()
 }
 
 #[cfg(test)]
@@ -375,13 +374,21 @@ mod tests {
             (1, Some(10))
         );
         assert_eq!(main(&format!("{sub}O0010\nG65 P20\nM30\n")), (1, Some(10)));
-        // a first program that ends the program, or that nothing calls, stays the main one
+        // a first program that nothing calls stays the main one
+        assert_eq!(main(&format!("{sub}O0010\nM98 P30\nM30\n")), (0, Some(20)));
         assert_eq!(
-            main("O0020\nG00 X1\nM30\nO0010\nM98 P20\nM30\n"),
+            main("O0020\nG00 X1\nM30\nO0030\nG00 X2\nM99\n"),
             (0, Some(20))
         );
-        assert_eq!(main(&format!("{sub}O0010\nM98 P30\nM30\n")), (0, Some(20)));
-        // a caller that returns itself (M99) is no main program either
-        assert_eq!(main(&format!("{sub}O0010\nM98 P20\nM99\n")), (0, Some(20)));
+        // a main program that ends with M99 (a bar feeder's loop), and a chain of
+        // subprograms listed first (review 1128h, #2)
+        assert_eq!(main(&format!("{sub}O0010\nM98 P20\nM99\n")), (1, Some(10)));
+        let chain = "O0001\nG00 X1\nM99\nO0002\nM98 P1\nM99\nO0100\nM98 P2\nM30\n";
+        assert_eq!(main(chain), (2, Some(100)));
+        // Haas' five-digit numbers
+        assert_eq!(
+            main("O12345\nG00 X1\nM99\nO00010\nM98 P12345\nM30\n"),
+            (1, Some(10))
+        );
     }
 }

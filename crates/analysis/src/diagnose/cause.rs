@@ -115,16 +115,35 @@ fn past_the_axis(c: &Crash, seg: &Segment, s: &Settings, rear: &[u32]) -> Option
     if !(r + hi + SLACK < c.at[1] && past + SLACK >= c.at[1]) {
         return None;
     }
-    // what to change first: the picture's detail shows the first 70 characters
-    Some(format!(
-        "T{:02} is too big for the bore here: from its point at Ø{:.3} it reaches {past:.1} mm past the axis, and its far side meets the wall opposite at Ø{:.3}, {:.3} mm deep ({}; a smaller insert or bar, or a bigger bore first)",
-        seg.tool,
+    // what to change first: the picture's detail shows the first 70 characters. A tool
+    // that spans the bore (less a millimetre of play) is too big for it; a smaller one only
+    // runs too near the axis (review 1128h, #3: a Φ10 bar retracting toward the centre of
+    // a Ø16 hole was told to be smaller)
+    let (span, wall) = (hi - lo, c.at[1]);
+    let tool = s.tools.describe(seg.tool);
+    let tool = tool.split_once(' ').map_or("", |x| x.1);
+    let reach = format!(
+        "from its point at Ø{:.3} it reaches {past:.1} mm past the axis, and its far side meets the wall opposite at Ø{:.3}, {:.3} mm deep",
         2.0 * r,
-        2.0 * c.at[1],
-        c.depth,
-        s.tools.describe(seg.tool).split_once(' ').map_or("", |x| x.1),
-    ))
+        2.0 * wall,
+        c.depth
+    );
+    Some(if span > 2.0 * wall - BORE_PLAY {
+        format!(
+            "T{:02} is too big for the bore here: {reach} ({tool}; a smaller insert or bar, or a bigger bore first)",
+            seg.tool
+        )
+    } else {
+        format!(
+            "T{:02} runs too near the axis here: {reach} ({tool}, {span:.1} mm across: keep its point above Ø{:.1})",
+            seg.tool,
+            2.0 * (-lo - wall)
+        )
+    })
 }
+
+/// Play a tool needs across a bore, mm: one that spans more of it is too big for it.
+const BORE_PLAY: f64 = 1.0;
 
 /// Which edge of the blank a point lies on: its face, or a diameter.
 fn stock_edge(at: P, s: &Settings) -> String {

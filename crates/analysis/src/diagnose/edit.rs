@@ -49,45 +49,72 @@ fn fed(source: &str, line: u32) -> Option<String> {
 /// The feed word (`F0.05`) a rapid at 1-based line `line` made a feed must carry: the
 /// program's next one when no F word stands on that line or before it (a `G01` with no feed
 /// in force is an alarm: a blade's `G00 X20.` before the `G01 X-1. F0.05` that parts off);
-/// `None` when one does, or when the program has none.
+/// `None` when one does, or when the program has no plain one. The F of a thread (G32, G33,
+/// G34, G76, G78, G92) is its lead, no feed (review 1128h, #4: `F1.5` of a G92 was offered
+/// as the feed into a face); a macro's `F#1` counts as a feed in force, and is none to copy.
 pub(super) fn feed_word_for(source: &str, line: u32) -> Option<String> {
-    let mut next = None;
     for (k, text) in source.lines().enumerate() {
-        let f = feed_word(text);
-        if k < line as usize {
-            if f.is_some() {
-                return None;
-            }
-        } else if f.is_some() {
-            next = f;
-            break;
+        match feed_word(text) {
+            Feed::None => {}
+            _ if k < line as usize => return None,
+            Feed::Plain(f) => return Some(f),
+            Feed::Other => return None,
         }
     }
-    next
+    None
 }
 
-/// The F word of a block (outside its comments), as written.
-fn feed_word(block: &str) -> Option<String> {
+/// A block's F word (outside its comments), if it is a feed.
+enum Feed {
+    None,
+    /// As written (`F0.05`).
+    Plain(String),
+    /// A macro's (`F#1`, `F[#1*2]`): a feed, but no number to copy.
+    Other,
+}
+
+/// The feed word of a block: its F (outside its comments), unless it is a thread's lead.
+fn feed_word(block: &str) -> Feed {
     let code = block.split(';').next().unwrap_or("");
     let mut depth = 0;
     let b = code.as_bytes();
+    let mut found = Feed::None;
+    let mut thread = false;
     for (k, &c) in b.iter().enumerate() {
+        let word_start = depth == 0 && (k == 0 || !b[k - 1].is_ascii_alphabetic());
         match c {
             b'(' => depth += 1,
             b')' => depth = (depth - 1).max(0),
-            b'F' | b'f' if depth == 0 && (k == 0 || !b[k - 1].is_ascii_alphabetic()) => {
-                let n = b[k + 1..]
+            b'G' | b'g' if word_start => {
+                let n: String = b[k + 1..]
                     .iter()
-                    .take_while(|d| d.is_ascii_digit() || **d == b'.')
+                    .take_while(|d| d.is_ascii_digit())
+                    .map(|&d| d as char)
+                    .collect();
+                thread |= matches!(n.parse::<u32>(), Ok(32 | 33 | 34 | 76 | 78 | 92));
+            }
+            b'F' | b'f' if word_start && matches!(found, Feed::None) => {
+                let rest = code[k + 1..].trim_start();
+                let n = rest
+                    .bytes()
+                    .take_while(|d| d.is_ascii_digit() || *d == b'.')
                     .count();
-                if n > 0 {
-                    return Some(format!("F{}", &code[k + 1..k + 1 + n]));
-                }
+                found = if n > 0 {
+                    Feed::Plain(format!("F{}", &rest[..n]))
+                } else if rest.starts_with(['#', '[']) {
+                    Feed::Other
+                } else {
+                    Feed::None
+                };
             }
             _ => {}
         }
     }
-    None
+    if thread {
+        Feed::None
+    } else {
+        found
+    }
 }
 
 /// `source` with the G41 of its 1-based line `line` made G42, or its G42 made G41; `None`
@@ -178,6 +205,20 @@ mod tests {
         );
         assert_eq!(feed_word_for("G99 F0.2\nG00 X1\nG01 X0 F0.1\n", 2), None);
         assert_eq!(feed_word_for("G00 X1\nM30\n", 1), None);
+        // a thread's F is its lead; a macro's F is a feed in force; a space may follow F
+        assert_eq!(
+            feed_word_for("G00 Z-3.\nG92 X28. Z-20. F1.5\nG01 X1 F0.1\n", 1).as_deref(),
+            Some("F0.1")
+        );
+        assert_eq!(
+            feed_word_for("G00 Z-3.\nG76 X28. Z-20. P900 Q300 F1.5\n", 1),
+            None
+        );
+        assert_eq!(feed_word_for("G01 F#1\nG00 X1\n", 2), None);
+        assert_eq!(
+            feed_word_for("G00 X1\nG01 X0 F 0.2\n", 1).as_deref(),
+            Some("F0.2")
+        );
     }
 
     #[test]

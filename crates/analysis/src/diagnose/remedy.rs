@@ -269,20 +269,33 @@ impl Tries<'_> {
         }
         let (x, z) = (2.0 * seg.to.r, seg.to.z);
         let clear = self.face + CLEAR;
-        let splits = [
-            (
-                format!("G00 X{}", num(x)),
-                format!("rapid to X{} first, then Z{}", num(x), num(z)),
-            ),
-            (
-                format!("G00 Z{}", num(z)),
-                format!("rapid to Z{} first, then X{}", num(z), num(x)),
-            ),
-            (
-                format!("G00 Z{}", num(clear)),
-                format!("retract to Z{} (clear of the face) first", num(clear)),
-            ),
-        ];
+        // a rapid that ends inside the bar went there to cut (a plunge, a pass written G00):
+        // split or sent out past the face first, it cuts in the air and the part loses what
+        // it was for (a groove plunged at Z2: review 1128h, #1); only fed is it cured. One
+        // that ends outside the bar only passed through it (a boring bar rapiding out
+        // through the wall): a retract along Z first cures that.
+        let along_an_axis = seg.from.z == seg.to.z || seg.from.r == seg.to.r;
+        let end = [seg.to.z, seg.to.r.abs()];
+        let bar = crate::assumed::Region::new(self.blank);
+        let ends_in_bar = bar.contains(end) && bar.depth_at(end, CLEAR) > IN_BAR;
+        let splits = if ends_in_bar {
+            vec![]
+        } else {
+            vec![
+                (
+                    format!("G00 X{}", num(x)),
+                    format!("rapid to X{} first, then Z{}", num(x), num(z)),
+                ),
+                (
+                    format!("G00 Z{}", num(z)),
+                    format!("rapid to Z{} first, then X{}", num(z), num(x)),
+                ),
+                (
+                    format!("G00 Z{}", num(clear)),
+                    format!("retract to Z{} (clear of the face) first", num(clear)),
+                ),
+            ]
+        };
         for (block, text) in splits {
             let change = Change::Insert {
                 line,
@@ -304,7 +317,6 @@ impl Tries<'_> {
         // surface an earlier cut made (a fillet the feed would take off as the rapid did:
         // field run 10, B1), nor for a positioning move across the bar (fed, a diagonal
         // through it)
-        let along_an_axis = seg.from.z == seg.to.z || seg.from.r == seg.to.r;
         if along_an_axis
             && on_outline(c.at, self.blank)
             && self.fixes(&Change::Feed { line }, Cured::Crash(c.at, c.area))
@@ -379,6 +391,9 @@ fn on_outline(p: P, shapes: &[stock::Shape]) -> bool {
 
 /// How near the blank's outline a crash's first contact is on it, mm.
 const ON_OUTLINE: f64 = 0.01;
+
+/// How far inside the blank a rapid's end lies when it went there to cut, mm.
+const IN_BAR: f64 = 0.01;
 
 /// How far past the blank's face a retract is clear of it, mm.
 const CLEAR: f64 = 2.0;

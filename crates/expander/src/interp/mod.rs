@@ -138,9 +138,8 @@ pub fn expand(program: &Program, machine: &Machine, opts: &Options) -> Toolpath 
                 main.span,
                 "LS-MAIN-PROGRAM",
                 format!(
-                    "{} comes first in the file but is a subprogram (it ends with M99 and {} calls it): {} runs as the main program",
+                    "{} comes first in the file but is a subprogram (another program of the file calls it): {}, the first program none calls, runs as the main program",
                     name(first.number),
-                    name(main.number),
                     name(main.number)
                 ),
                 "list the main program first if another reading was meant",
