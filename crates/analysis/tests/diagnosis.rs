@@ -92,6 +92,10 @@ fn bar(d: f64, l: f64) -> Blank {
     Blank::bar(d, l, 0.0, None).unwrap()
 }
 
+/// A CNMG 12 in a PCLNR (T01) and a 3 mm grooving blade reaching 20 mm (T03).
+const CNMG_AND_BLADE: &str = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n\
+     [[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
+
 const D55: &str =
     "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"DNMG 150404\"\nholder = \"PDJNR 2525M15\"\n";
 
@@ -441,9 +445,7 @@ fn a_fix_that_moves_the_programs_own_cuts_is_no_remedy() {
                 G02 X44. Z-34. R4.\nG01 X52.\nG00 X60. Z50.\nT0303\nG97 S700 M03\n\
                 G00 X40. Z-12.\nM98 P0035 L2\nG00 X60.\nM30\nO0035\nG01 X30. F0.05\n\
                 G00 X36.\nW-10.\nM99\n";
-    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n\
-                 [[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
-    let job = Job::new(text, tools, bar(50.0, 60.0));
+    let job = Job::new(text, CNMG_AND_BLADE, bar(50.0, 60.0));
     let (tp, f) = job.diagnosed();
     let c = f
         .crashes
@@ -491,9 +493,7 @@ fn a_rapid_plunge_into_the_bar_is_fed_but_not_one_into_a_turned_fillet() {
                 G01 Z-30. F0.25\nG00 X46. Z2.\nG00 X36.\nG01 Z-30. F0.15\nG02 X44. Z-34. R4.\n\
                 G01 X52.\nG00 X60. Z50.\nT0303\nG00 X40. Z-22.\nG00 X36.\nG00 Z-32.\n\
                 G00 X60.\nM30\n";
-    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n\
-                 [[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
-    let (tp, f) = Job::new(text, tools, bar(50.0, 60.0)).diagnosed();
+    let (tp, f) = Job::new(text, CNMG_AND_BLADE, bar(50.0, 60.0)).diagnosed();
     let c = f
         .crashes
         .iter()
@@ -583,9 +583,7 @@ fn a_groove_plunged_at_rapid_is_not_moved_into_the_air() {
     let text = "G21 G99\nT0101\nG96 S180 M03\nG00 X52. Z2.\nG01 X48. F0.2\nZ-40.\n\
                 G00 X60. Z50.\nT0303\nG97 S600 M03\nG00 X52. Z-20.\nG00 X40.\nG04 X0.5\n\
                 G00 X52.\nG00 X60. Z50.\nM30\n";
-    let tools = "[[tool]]\nt = 1\nkind = \"turning\"\ninsert = \"CNMG 120408\"\nholder = \"PCLNR 2525M12\"\n\
-                 [[tool]]\nt = 3\nkind = \"grooving\"\nwidth = 3.0\nwidth_dir = \"+z\"\nshank_dir = \"+x\"\nreach = 20.0\n";
-    let (tp, f) = Job::new(text, tools, bar(50.0, 60.0)).diagnosed();
+    let (tp, f) = Job::new(text, CNMG_AND_BLADE, bar(50.0, 60.0)).diagnosed();
     let c = f
         .crashes
         .iter()
