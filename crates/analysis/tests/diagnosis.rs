@@ -88,6 +88,18 @@ impl Rerun for Job {
     }
 }
 
+/// The crashes of `f` (not possible ones) made by moves of program line `line`.
+fn certain_crashes_at<'a>(
+    tp: &expander::Toolpath,
+    f: &'a Findings,
+    line: u32,
+) -> Vec<&'a analysis::Crash> {
+    f.crashes
+        .iter()
+        .filter(|c| !c.assumed && tp.segments[c.segment].span.line == line)
+        .collect()
+}
+
 fn bar(d: f64, l: f64) -> Blank {
     Blank::bar(d, l, 0.0, None).unwrap()
 }
@@ -519,11 +531,7 @@ fn a_rapid_a_cycle_makes_gets_no_block_inserted_before_the_cycle() {
     let tools = "[[tool]]\nt = 5\nkind = \"drill\"\ndiameter = 16.0\npoint_angle = 118\nreach = 50.0\n\
                  [[tool]]\nt = 6\nkind = \"turning\"\ninsert = \"DNMG 110404\"\ntip = 2\nentering_angle = 93\nshank = 12.0\n";
     let (tp, f) = Job::new(text, tools, bar(40.0, 50.0)).diagnosed();
-    let in_cycle: Vec<_> = f
-        .crashes
-        .iter()
-        .filter(|c| !c.assumed && tp.segments[c.segment].span.line == 12)
-        .collect();
+    let in_cycle = certain_crashes_at(&tp, &f, 12);
     assert!(!in_cycle.is_empty(), "{:#?}", f.crashes);
     for c in &in_cycle {
         assert!(c.remedy.is_none(), "{:?}", c.remedy);
@@ -560,11 +568,7 @@ fn a_tool_that_fits_the_bore_but_runs_near_the_axis_is_told_so() {
                  [[tool]]\nt = 9\nkind = \"turning\"\ninsert = \"D\"\nnose_radius = 0.4\ntip = 2\n\
                  entering_angle = 93\nedge = 7.75\nshank = 10.0\n";
     let (tp, f) = Job::new(text, tools, bar(40.0, 60.0)).diagnosed();
-    let c = f
-        .crashes
-        .iter()
-        .find(|c| !c.assumed && tp.segments[c.segment].span.line == 15)
-        .expect("the rapid on centre");
+    let c = certain_crashes_at(&tp, &f, 15)[0];
     let text = &c.cause.as_ref().unwrap().text;
     assert!(
         text.starts_with("T09 runs too near the axis here"),
@@ -584,10 +588,6 @@ fn a_groove_plunged_at_rapid_is_not_moved_into_the_air() {
                 G00 X60. Z50.\nT0303\nG97 S600 M03\nG00 X52. Z-20.\nG00 X40.\nG04 X0.5\n\
                 G00 X52.\nG00 X60. Z50.\nM30\n";
     let (tp, f) = Job::new(text, CNMG_AND_BLADE, bar(50.0, 60.0)).diagnosed();
-    let c = f
-        .crashes
-        .iter()
-        .find(|c| !c.assumed && tp.segments[c.segment].span.line == 11)
-        .expect("the plunge");
+    let c = certain_crashes_at(&tp, &f, 11)[0];
     assert!(c.remedy.is_none(), "{:?}", c.remedy);
 }

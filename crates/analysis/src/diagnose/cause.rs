@@ -95,14 +95,7 @@ fn past_the_axis(c: &Crash, seg: &Segment, s: &Settings, rear: &[u32]) -> Option
     const SLACK: f64 = 0.01;
     let m = stock::Mounted::new(s.tools, seg.tool, seg.hint, rear.contains(&seg.tool));
     let (a, b) = ([seg.from.z, seg.from.r], [seg.to.z, seg.to.r]);
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let len2 = d[0] * d[0] + d[1] * d[1];
-    let t = if len2 > 0.0 {
-        (((c.at[0] - a[0]) * d[0] + (c.at[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let r = a[1] + t * d[1];
+    let r = geom::flat::lerp(a, b, geom::flat::segment_param(c.at, a, b))[1];
     // a front tool whose size is stated (a guessed outline is left out past the axis)
     if r < 0.0 || m.edge.past_axis != stock::PastAxis::Fold {
         return None;

@@ -318,7 +318,7 @@ impl Tries<'_> {
         // field run 10, B1), nor for a positioning move across the bar (fed, a diagonal
         // through it)
         if along_an_axis
-            && on_outline(c.at, self.blank)
+            && bar.depth_at(c.at, 2.0 * ON_OUTLINE) <= ON_OUTLINE
             && self.fixes(&Change::Feed { line }, Cured::Crash(c.at, c.area))
         {
             let (edit, with) = match super::edit::feed_word_for(self.source, line) {
@@ -375,18 +375,6 @@ fn perimeter(s: &stock::Shape) -> f64 {
                 .sum::<f64>()
         })
         .sum()
-}
-
-/// Whether `p` lies on the outline of one of `shapes` (within [`ON_OUTLINE`]).
-fn on_outline(p: P, shapes: &[stock::Shape]) -> bool {
-    shapes
-        .iter()
-        .flat_map(|s| std::iter::once(&s.outer).chain(&s.holes))
-        .any(|ring| {
-            let n = ring.len();
-            (0..n)
-                .any(|k| geom::flat::segment_distance(p, ring[k], ring[(k + 1) % n]) <= ON_OUTLINE)
-        })
 }
 
 /// How near the blank's outline a crash's first contact is on it, mm.

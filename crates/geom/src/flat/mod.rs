@@ -27,14 +27,20 @@ pub fn dist(a: P, b: P) -> f64 {
 
 /// Distance from `q` to the segment `a b`.
 pub fn segment_distance(q: P, a: P, b: P) -> f64 {
+    let t = segment_param(q, a, b);
+    (q[0] - a[0] - t * (b[0] - a[0])).hypot(q[1] - a[1] - t * (b[1] - a[1]))
+}
+
+/// Where on the segment `a b` the point nearest `q` lies: 0 at `a`, 1 at `b` (0 for a
+/// segment of no length).
+pub fn segment_param(q: P, a: P, b: P) -> f64 {
     let d = [b[0] - a[0], b[1] - a[1]];
     let len2 = d[0] * d[0] + d[1] * d[1];
-    let t = if len2 > 0.0 {
+    if len2 > 0.0 {
         (((q[0] - a[0]) * d[0] + (q[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
     } else {
         0.0
-    };
-    (q[0] - a[0] - t * d[0]).hypot(q[1] - a[1] - t * d[1])
+    }
 }
 
 /// The point a fraction `t` of the way from `a` to `b`.
