@@ -80,6 +80,7 @@ pub fn diagnose(
             .fold(f64::NEG_INFINITY, f64::max),
         blank: &s.blank.shapes,
         tol: s.tol,
+        runs: std::cell::OnceCell::new(),
         rerun,
         budget: &mut budget,
     };

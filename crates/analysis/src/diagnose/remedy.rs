@@ -82,6 +82,8 @@ pub(crate) struct Tries<'a> {
     pub(crate) blank: &'a [stock::Shape],
     /// The deviation's tolerance, mm.
     pub(crate) tol: f64,
+    /// How many times each block runs, counted when a crash first asks.
+    pub(crate) runs: std::cell::OnceCell<BlockRuns>,
     pub(crate) rerun: &'a dyn Rerun,
     pub(crate) budget: &'a mut usize,
 }
@@ -264,7 +266,8 @@ impl Tries<'_> {
         }
         let seg = &self.segments[c.segment];
         let line = seg.span.line;
-        if !runs_once_as_rapids(self.segments, c.segment) {
+        let runs = self.runs.get_or_init(|| block_runs(self.segments));
+        if !runs_once_as_rapids(self.segments, runs, c.segment) {
             return None;
         }
         let (x, z) = (2.0 * seg.to.r, seg.to.z);
@@ -346,7 +349,8 @@ impl Tries<'_> {
 /// alone: not a cycle that made it among its passes (a block inserted before a G71 moves its
 /// start point, field run 10, B4), nor a block a loop or a subprogram runs again (B3: a
 /// retract before a subprogram's `W-10.` ran on every call).
-fn runs_once_as_rapids(segments: &[Segment], i: usize) -> bool {
+/// (`runs`: [`block_runs`] of the segments.)
+fn runs_once_as_rapids(segments: &[Segment], runs: &BlockRuns, i: usize) -> bool {
     let span = segments[i].span;
     let mine = |s: &Segment| s.span.offset == span.offset && s.span.line == span.line;
     let first = segments[..i]
@@ -357,11 +361,29 @@ fn runs_once_as_rapids(segments: &[Segment], i: usize) -> bool {
         .iter()
         .position(|s| !mine(s))
         .map_or(segments.len(), |k| i + k);
-    segments[first..end]
-        .iter()
-        .all(|s| s.motion == expander::Motion::Rapid)
-        && !segments[..first].iter().any(mine)
-        && !segments[end..].iter().any(mine)
+    runs.get(&(span.offset, span.line)) == Some(&1)
+        && segments[first..end]
+            .iter()
+            .all(|s| s.motion == expander::Motion::Rapid)
+}
+
+/// How many times each block (its span's offset and line) runs: its runs of consecutive
+/// moves. Counted once for a program, not once a crash (a CAM program's thousand crashes
+/// each scanned its 10⁵ moves).
+pub(crate) type BlockRuns = std::collections::HashMap<(u32, u32), u32>;
+
+/// [`BlockRuns`] of `segments`.
+pub(crate) fn block_runs(segments: &[Segment]) -> BlockRuns {
+    let mut runs = BlockRuns::new();
+    let mut last = None;
+    for s in segments {
+        let key = (s.span.offset, s.span.line);
+        if last != Some(key) {
+            *runs.entry(key).or_insert(0) += 1;
+            last = Some(key);
+        }
+    }
+    runs
 }
 
 /// The length of a shape's outline and holes, mm.
